@@ -1,0 +1,37 @@
+"""regimemap: regime maps of a freestanding rigid block pushed by a horizontal force.
+
+For a rigid block of aspect ratio ``gamma = H/B`` on a rigid base with Coulomb
+friction ``mu``, pushed by a horizontal force ``F = m g k`` at height
+``h = kprime*H`` above its centre of mass, regimemap tells which motion starts
+(rest, slide, rock, slide-rock) at every point of the k-mu plane.
+
+The library imports numpy only; matplotlib is imported by the drawing modules
+when they are used.
+"""
+
+from __future__ import annotations
+
+from importlib.metadata import PackageNotFoundError, version as _version
+
+from .classify import PRIORITY, classify, label_grid
+from .modes import MAP_MODES, Mode
+from .params import Case, Parameters
+from .solver import Hypothesis, admissible
+
+try:
+    __version__ = _version("regimemap")
+except PackageNotFoundError:  # pragma: no cover - running from a source tree
+    __version__ = "0+unknown"
+
+__all__ = [
+    "Case",
+    "Hypothesis",
+    "MAP_MODES",
+    "Mode",
+    "PRIORITY",
+    "Parameters",
+    "admissible",
+    "classify",
+    "label_grid",
+    "__version__",
+]

@@ -1,0 +1,267 @@
+"""One mode per point: :func:`classify` (scattered points) and :func:`label_grid`.
+
+The final map (Figs 3.9a-3.11 above C, 4.7a-b below C) in one rule valid for
+every k' in [-1, 1] (k' signed, ``upper = 1/gamma - k k'`` is CD above C and AB
+below C, ``lower = -1/gamma - k k'`` is DC, ``mu*`` is (3.24)/(4.40))::
+
+    RE     if mu >= k and k <= k_A                       (3.4)-(3.5), (4.7), (4.10)
+    SL     elif lower <= mu <= upper                     Section III.2, (4.18)-(4.19)
+    SRO'-  elif mu < lower                               (4.92); Section 4.7
+    RO     elif mu >= mu*(k)                             (3.17), (3.24), (4.37), (4.40)
+    SRO-   elif ak + b >= 0                              (3.42), (4.67)-(4.79)
+    SRO+   else                                          (3.44)-(3.45)
+
+It equals the report's regions resolved by :data:`PRIORITY`, which is Section
+4.7's rule: inside the slide region neither corner can pivot (SL wins over RO
+and SRO-); below DC the body pivots about O', not O (SRO'- wins over RO and
+SRO-); slide-rock about O for mu >= mu_B' "simply can not happen" (it loses to
+RE, SL and RO, which the solver finds admissible at each of its points).
+
+Boundaries.  A point exactly on a boundary gets the label of the first rule
+above that it satisfies: rest on OA and on AB/AE (limiting equilibrium does
+not move), slide on CD/AB and on DC (the reaction just reaches a corner), rock
+on mu*(k) (friction just sufficient).  The tests check that the solver admits
+this label at boundary points too.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .modes import Mode
+from .params import Parameters
+from .validation import (
+    MAX_GRID_POINTS,
+    check_axis,
+    check_gamma,
+    check_kprime,
+    check_nonnegative_array,
+)
+
+__all__ = ["classify", "label_grid", "PRIORITY", "column_segments", "choose"]
+
+#: Section 4.7's order: where several modes are admissible the first one holds.
+PRIORITY: tuple[Mode, ...] = (
+    Mode.RE,
+    Mode.SL,
+    Mode.SRO_PRIME_MINUS,
+    Mode.RO,
+    Mode.SRO_MINUS,
+    Mode.SRO_PLUS,
+    Mode.RO_PRIME,
+    Mode.SRO_PRIME_PLUS,
+)
+
+_RE, _SL, _RO, _SM, _SP, _SPM = (np.uint8(m) for m in (
+    Mode.RE, Mode.SL, Mode.RO, Mode.SRO_MINUS, Mode.SRO_PLUS, Mode.SRO_PRIME_MINUS))
+
+
+def choose(admissible: dict[Mode, np.ndarray]) -> np.ndarray:
+    """The first admissible mode of :data:`PRIORITY` at each point (uint8 codes).
+
+    Points where nothing is admissible get 255 (never seen for valid input).
+    """
+    shape = np.broadcast(*admissible.values()).shape
+    out = np.full(shape, 255, dtype=np.uint8)
+    free = np.ones(shape, dtype=bool)
+    for mode in PRIORITY:
+        if mode in admissible:
+            hit = free & admissible[mode]
+            out[hit] = mode
+            free &= ~hit
+    return out
+
+
+def _constants(gamma: Any, kprime: Any) -> tuple[Any, ...]:
+    """a, b, c, d (3.18)-(3.21) and gamma*(1+k'), 1/gamma, exactly as Parameters computes them."""
+    g2 = gamma * gamma
+    a = 4.0 + g2 - 3.0 * g2 * kprime
+    b = 3.0 * gamma
+    c = 3.0 * gamma * (1.0 + kprime)
+    d = 1.0 + 4.0 * g2
+    return a, b, c, d, gamma * (1.0 + kprime), 1.0 / gamma
+
+
+def _thresholds(k: np.ndarray, gamma: Any, kprime: Any) -> tuple[np.ndarray, ...]:
+    """Per-k quantities of the rule: (rest possible, lower, upper, mu*, ak+b >= 0)."""
+    a, b, c, d, gk, inv_g = _constants(gamma, kprime)
+    rest_ok = k * gk <= 1.0
+    kk = k * kprime
+    upper = inv_g - kk
+    lower = -inv_g - kk
+    f = a * k + b
+    mu_s = np.abs(f) / (c * k + d)
+    return rest_ok, lower, upper, mu_s, f >= 0.0
+
+
+def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
+    g = np.asarray(gamma, dtype=np.float64) if not np.isscalar(gamma) else gamma
+    kp = np.asarray(kprime, dtype=np.float64) if not np.isscalar(kprime) else kprime
+    if np.ndim(g) == 0:
+        g = check_gamma(g if np.isscalar(g) else g.item())
+    else:
+        bad = ~(np.isfinite(g) & (g > 0))
+        if bad.any():
+            raise ValueError(f"gamma must be finite numbers > 0, got {g[bad].ravel()[0]!r}")
+    if np.ndim(kp) == 0:
+        kp = check_kprime(kp if np.isscalar(kp) else kp.item())
+    else:
+        bad = ~(np.isfinite(kp) & (kp >= -1.0) & (kp <= 1.0))
+        if bad.any():
+            raise ValueError(f"kprime must be numbers in [-1, 1], got {kp[bad].ravel()[0]!r}")
+        kp = kp + 0.0  # fold -0.0
+    return g, kp
+
+
+def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -> np.ndarray:
+    """Mode code at each point (k, mu) for aspect ratio gamma and force height kprime.
+
+    Parameters
+    ----------
+    k : array_like
+        Force F/(mg) >= 0.
+    mu : array_like
+        Coefficient of friction >= 0.
+    gamma : array_like
+        Aspect ratio H/B > 0.
+    kprime : array_like
+        Force height h/H in [-1, 1] (negative below the centre of mass).
+        All four broadcast together like the arguments of a numpy ufunc.
+
+    Returns
+    -------
+    numpy.ndarray of uint8
+        :class:`~regimemap.modes.Mode` codes, of the broadcast shape (0-d for
+        scalars).  ``Mode(out[i])`` gives the mode.
+
+    Raises
+    ------
+    ValueError
+        If any k or mu is negative, NaN or infinite, gamma is not > 0, or kprime
+        is outside [-1, 1] (the message names the parameter and the range).
+
+    Notes
+    -----
+    The rule and its boundary convention are in the module docstring; the
+    equations are (3.4)-(3.5), (3.24), (3.42), (3.44)-(3.45) above C and
+    (4.7)-(4.21), (4.40), (4.92) with Section 4.7 below C.
+
+    Examples
+    --------
+    >>> from regimemap import Mode, classify
+    >>> Mode(classify(0.1, 0.5, 3.0, 0.4)).label
+    'RE'
+    >>> [Mode(c).label for c in classify([0.3, 0.5], [0.2, 0.8], 3.0, 0.4)]
+    ['SL', 'RO']
+    """
+    k = check_nonnegative_array("k", k)
+    mu = check_nonnegative_array("mu", mu)
+    g, kp = _check_param_arrays(gamma, kprime)
+    if np.ndim(g) or np.ndim(kp):
+        k, mu, g, kp = np.broadcast_arrays(k, mu, g, kp)
+    else:
+        k, mu = np.broadcast_arrays(k, mu)
+    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, g, kp)
+    out = np.where(f_pos, _SM, _SP)
+    np.copyto(out, _RO, where=mu >= mu_s)
+    np.copyto(out, _SL, where=mu <= upper)
+    np.copyto(out, _SPM, where=mu < lower)
+    np.copyto(out, _RE, where=(mu >= k) & rest_ok)
+    return out
+
+
+def column_segments(k: np.ndarray, mu_sorted: np.ndarray, gamma: float, kprime: float
+                    ) -> tuple[np.ndarray, np.ndarray]:
+    """Labels and run lengths along each column of a grid whose mu axis is sorted.
+
+    Along a column (fixed k) the rule of :func:`classify` gives, from mu = 0
+    up, at most five runs: SRO'-, SL, SRO-/SRO+, RO, RE.  The run ends are
+    counted with ``searchsorted`` against the very thresholds ``classify``
+    compares with, so the two agree exactly.
+
+    Returns
+    -------
+    labels, counts : ndarray, shape (len(k), 5)
+        Mode codes and run lengths (sum of each row = len(mu_sorted)).
+    """
+    n = mu_sorted.size
+    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, gamma, kprime)
+    n_k = np.where(rest_ok, np.searchsorted(mu_sorted, k, side="left"), n)
+    c1 = np.minimum(np.searchsorted(mu_sorted, lower, side="left"), n_k)
+    c2 = np.minimum(np.searchsorted(mu_sorted, upper, side="right"), n_k)
+    c3 = np.minimum(np.maximum(np.searchsorted(mu_sorted, mu_s, side="left"), c2), n_k)
+    counts = np.stack([c1, c2 - c1, c3 - c2, n_k - c3, n - n_k], axis=1)
+    labels = np.empty((k.size, 5), dtype=np.uint8)
+    labels[:, 0] = _SPM
+    labels[:, 1] = _SL
+    labels[:, 2] = np.where(f_pos, _SM, _SP)
+    labels[:, 3] = _RO
+    labels[:, 4] = _RE
+    return labels, counts
+
+
+def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: float) -> np.ndarray:
+    """Mode codes on the rectilinear grid ``k_axis x mu_axis``.
+
+    Parameters
+    ----------
+    k_axis, mu_axis : array_like, 1-D
+        Values of k and of mu (finite, >= 0; any order).
+    gamma : float
+        Aspect ratio H/B > 0.
+    kprime : float
+        Force height h/H in [-1, 1].
+
+    Returns
+    -------
+    numpy.ndarray of uint8, shape (len(mu_axis), len(k_axis))
+        ``out[i, j] == classify(k_axis[j], mu_axis[i], gamma, kprime)`` exactly
+        (rows mu, columns k, as an image with origin lower left when mu_axis
+        increases), C-contiguous.
+
+    Raises
+    ------
+    ValueError
+        For invalid parameters, axes that are not 1-D finite numbers >= 0, or
+        a grid of more than :data:`~regimemap.validation.MAX_GRID_POINTS` points.
+
+    Notes
+    -----
+    Each column is cut into at most five runs by ``searchsorted`` against the
+    thresholds of :func:`classify` and filled with ``numpy.repeat``: the cost is
+    that of writing the labels, not of evaluating every hypothesis.
+    """
+    g = check_gamma(gamma)
+    kp = check_kprime(kprime)
+    k_axis = check_axis("k_axis", k_axis)
+    mu_axis = check_axis("mu_axis", mu_axis)
+    if k_axis.size * mu_axis.size > MAX_GRID_POINTS:
+        raise ValueError(
+            f"grid of {mu_axis.size} x {k_axis.size} points exceeds the limit of "
+            f"{MAX_GRID_POINTS} points"
+        )
+    if mu_axis.size == 0 or k_axis.size == 0:
+        return np.empty((mu_axis.size, k_axis.size), dtype=np.uint8)
+    diffs = np.diff(mu_axis)
+    if np.all(diffs >= 0):
+        order = None
+        mu_sorted = mu_axis
+    elif np.all(diffs <= 0):
+        order = "reversed"
+        mu_sorted = mu_axis[::-1]
+    else:
+        order = np.argsort(mu_axis, kind="stable")
+        mu_sorted = mu_axis[order]
+    labels, counts = column_segments(k_axis, mu_sorted, g, kp)
+    cols = np.repeat(labels.ravel(), counts.ravel()).reshape(k_axis.size, mu_sorted.size)
+    grid = np.ascontiguousarray(cols.T)
+    if order is None:
+        return grid
+    if isinstance(order, str):
+        return grid[::-1]
+    out = np.empty_like(grid)
+    out[order] = grid
+    return out

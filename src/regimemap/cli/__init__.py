@@ -1,0 +1,50 @@
+"""The ``regimemap`` command line (click).
+
+A thin layer: each command parses and validates its options, calls the
+library, and writes files atomically.  matplotlib is imported only inside the
+commands that draw, so ``regimemap --help`` and the non-plotting commands start
+fast.  Commands live in their own modules and are registered below.
+"""
+
+from __future__ import annotations
+
+import sys
+
+import click
+
+from .. import __version__
+from ._common import CONTEXT_SETTINGS, run_main
+
+__all__ = ["cli", "main"]
+
+
+@click.group(context_settings=CONTEXT_SETTINGS)
+@click.version_option(__version__, "--version", "-V", prog_name="regimemap")
+def cli() -> None:
+    """Regime maps of a freestanding rigid block pushed by a horizontal force.
+
+    For a block of aspect ratio GAMMA = H/B on a base with friction MU, pushed
+    by F = m g k at height h = KPRIME*H above its centre of mass, regimemap
+    tells which motion starts: rest (RE), slide (SL), rock (RO) or slide-rock
+    (SRO-, SRO+, SRO'-).
+
+    \b
+    Examples:
+      regimemap plot --gamma 3 --kprime 0.4
+      regimemap figure 3.9a -o fig.svg
+      regimemap figures --out figures --format png,svg
+    """
+
+
+def _register() -> None:
+    # Each command module adds its commands to ``cli``; importing them is cheap
+    # (no matplotlib at import time).
+    from . import commands  # noqa: F401
+
+
+_register()
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Entry point of the console script: errors become one line on stderr."""
+    sys.exit(run_main(cli, argv))

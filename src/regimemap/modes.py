@@ -1,0 +1,100 @@
+"""Modes of response at initiation, as integer codes.
+
+The report (Chapters III and IV) names the modes RE (rest), SL (slide), RO (rock
+about the left corner O), SRO- (slide-rock about O with the corner O slipping
+left, x_O'' <= 0), SRO+ (slide-rock about O with O slipping right) and SRO'-
+(slide-rock about the right corner O' with O' slipping left).  Two more contact
+hypotheses exist for the equations-of-motion solver: rock about O' (RO') and
+slide-rock about O' with O' slipping right (SRO'+).  The report shows (4.57)
+that RO' is never possible; the solver confirms that neither ever wins.
+
+Codes are small integers so that whole maps fit in ``uint8`` arrays, after the
+integer regime codes of ``fluids.two_phase``.
+"""
+
+from __future__ import annotations
+
+from enum import IntEnum
+
+__all__ = ["Mode", "MAP_MODES", "UNDEFINED"]
+
+#: Code stored by :func:`regimemap.classify` for points that have no mode
+#: (never produced for valid input; reserved).
+UNDEFINED = 255
+
+
+class Mode(IntEnum):
+    """A mode of response at initiation (integer code).
+
+    Attributes
+    ----------
+    label : str
+        The report's symbol in plain text: ``RE``, ``SL``, ``RO``, ``SRO-``,
+        ``SRO+``, ``SRO'-``, ``RO'`` or ``SRO'+``.
+    tex : str
+        The symbol as matplotlib mathtext, e.g. ``$SRO_{-}$``.
+    description : str
+        A short English description.
+    """
+
+    RE = 0
+    SL = 1
+    RO = 2
+    SRO_MINUS = 3
+    SRO_PLUS = 4
+    SRO_PRIME_MINUS = 5
+    RO_PRIME = 6
+    SRO_PRIME_PLUS = 7
+
+    @property
+    def label(self) -> str:
+        return _LABELS[self][0]
+
+    @property
+    def tex(self) -> str:
+        return _LABELS[self][1]
+
+    @property
+    def description(self) -> str:
+        return _LABELS[self][2]
+
+    @classmethod
+    def from_label(cls, label: str) -> "Mode":
+        """Return the mode whose :attr:`label` is ``label`` (case-insensitive).
+
+        Raises
+        ------
+        ValueError
+            If no mode has that label; the message lists the labels.
+        """
+        wanted = label.strip().upper().replace("’", "'")
+        for mode in cls:
+            if mode.label.upper() == wanted or mode.name == wanted:
+                return mode
+        known = ", ".join(m.label for m in cls)
+        raise ValueError(f"unknown mode {label!r}; known modes: {known}")
+
+    def __str__(self) -> str:  # pragma: no cover - trivial
+        return self.label
+
+
+_LABELS = {
+    Mode.RE: ("RE", r"$RE$", "rest"),
+    Mode.SL: ("SL", r"$SL$", "slide"),
+    Mode.RO: ("RO", r"$RO$", "rock about O"),
+    Mode.SRO_MINUS: ("SRO-", r"$SRO_{-}$", "slide-rock about O, O slipping left"),
+    Mode.SRO_PLUS: ("SRO+", r"$SRO_{+}$", "slide-rock about O, O slipping right"),
+    Mode.SRO_PRIME_MINUS: ("SRO'-", r"$SRO'_{-}$", "slide-rock about O', O' slipping left"),
+    Mode.RO_PRIME: ("RO'", r"$RO'$", "rock about O'"),
+    Mode.SRO_PRIME_PLUS: ("SRO'+", r"$SRO'_{+}$", "slide-rock about O', O' slipping right"),
+}
+
+#: The modes that can appear on a map (the report's six), in code order.
+MAP_MODES: tuple[Mode, ...] = (
+    Mode.RE,
+    Mode.SL,
+    Mode.RO,
+    Mode.SRO_MINUS,
+    Mode.SRO_PLUS,
+    Mode.SRO_PRIME_MINUS,
+)
