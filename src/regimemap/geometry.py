@@ -1,0 +1,191 @@
+"""Regions of the k-mu plane as vector polygons (for crisp SVG/PDF fills).
+
+Along any vertical line (fixed k) every region of the report is one interval
+of mu, so a region is exactly described by its lower and upper edges as
+functions of k.  The polygons below sample those edges on a fine k grid that
+contains every characteristic abscissa of the map (k_A, k_B', b/|a|, k_D,
+the pole d/c, the crossing C' ...), and locate the ends of each run of
+non-empty columns by bisection, so the fills meet the boundary curves without
+a staircase.  Nothing here imports matplotlib.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Callable, Iterable
+
+import numpy as np
+
+from .classify import _thresholds
+from .curves import _crossing_mu_star_lower, mu_star_signed
+from .modes import MAP_MODES, Mode
+from .params import Parameters
+
+__all__ = [
+    "Interval",
+    "final_intervals",
+    "raw_intervals",
+    "breakpoints",
+    "region_polygons",
+]
+
+#: (lo, hi) arrays of mu per k; the interval is empty where lo >= hi (NaN-free).
+Interval = tuple[np.ndarray, np.ndarray]
+
+
+def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, Interval]:
+    """The interval of mu of each mode of the final map (:func:`regimemap.classify`) at each k.
+
+    Intervals are clipped to [0, mu_cap]; a mode absent from a column has lo == hi.
+    """
+    k = np.asarray(k, dtype=np.float64)
+    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, p.gamma, p.kprime)
+    e4 = np.where(rest_ok, k, np.inf)
+    e1 = np.minimum(np.maximum(lower, 0.0), e4)
+    e2 = np.minimum(np.maximum(upper, e1), e4)
+    e3 = np.minimum(np.maximum(mu_s, e2), e4)
+    cap = lambda v: np.clip(v, 0.0, mu_cap)  # noqa: E731
+    e1, e2, e3, e4c = cap(e1), cap(e2), cap(e3), cap(e4)
+    sro = (e2, e3)
+    empty = (e3, e3)
+    return {
+        Mode.SRO_PRIME_MINUS: (np.zeros_like(k), e1),
+        Mode.SL: (e1, e2),
+        Mode.SRO_MINUS: tuple(np.where(f_pos, s, e) for s, e in zip(sro, empty)),  # type: ignore[dict-item]
+        Mode.SRO_PLUS: tuple(np.where(f_pos, e, s) for s, e in zip(sro, empty)),  # type: ignore[dict-item]
+        Mode.RO: (e3, e4c),
+        Mode.RE: (e4c, np.full_like(k, mu_cap)),
+    }
+
+
+def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> Interval:
+    """The interval of mu of the report's raw region of ``mode`` (:mod:`regimemap.regions`)."""
+    k = np.asarray(k, dtype=np.float64)
+    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, p.gamma, p.kprime)
+    zero = np.zeros_like(k)
+    top = np.full_like(k, mu_cap)
+    mode = Mode(mode)
+    if mode is Mode.RE:
+        lo, hi = np.where(rest_ok, k, top), top
+    elif mode is Mode.SL:
+        lo, hi = np.maximum(lower, 0.0), np.minimum(k, upper)
+    elif mode is Mode.RO:
+        rock_ok = k * (p.gamma * (1.0 + p.kprime)) >= 1.0
+        lo, hi = np.where(rock_ok, mu_s, top), top
+    elif mode is Mode.SRO_MINUS:
+        ms = mu_star_signed(p, k)
+        mb = p.mu_Bprime
+        lo1, hi1 = np.maximum(upper, 0.0), np.minimum(ms, mb)
+        lo2, hi2 = np.maximum(np.maximum(ms, mb), 0.0), upper
+        use2 = (hi2 - lo2) > (hi1 - lo1)
+        lo, hi = np.where(use2, lo2, lo1), np.where(use2, hi2, hi1)
+    elif mode is Mode.SRO_PLUS:
+        lo = zero
+        hi = np.where(~f_pos, np.minimum(mu_s, k * p.kprime - 1.0 / p.gamma), zero)
+    elif mode is Mode.SRO_PRIME_MINUS:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mss = (p.a * k - p.b) / (p.d - p.c * k)
+        bound = np.where(p.c * k >= p.d, lower, np.minimum(lower, mss))
+        lo, hi = zero, bound
+    else:
+        lo, hi = zero, zero
+    lo = np.clip(lo, 0.0, mu_cap)
+    hi = np.clip(hi, 0.0, mu_cap)
+    return lo, np.maximum(hi, lo)
+
+
+def breakpoints(p: Parameters) -> list[float]:
+    """Abscissae where a region may start or end or a boundary has a corner."""
+    pts = [0.0, p.k_A, p.k_Bprime, p.b_over_abs_a, p.k_D, p.k_pole, p.k_F, p.mu_A]
+    kc = _crossing_mu_star_lower(p) if p.kprime < 0 else None
+    if kc is not None:
+        pts.append(kc)
+    # where the upper line crosses mu = 0 (above C) and mu_B' (below C)
+    if p.kprime != 0.0:
+        pts.append((1.0 / p.gamma - p.mu_Bprime) / p.kprime)
+    return sorted({float(x) for x in pts if math.isfinite(x) and x >= 0.0})
+
+
+def _sample_k(p: Parameters, k_max: float, samples: int) -> np.ndarray:
+    k = np.linspace(0.0, k_max, samples)
+    extra = [x for x in breakpoints(p) if 0.0 <= x <= k_max]
+    # put each breakpoint in with its two neighbours, so corners are exact
+    eps = k_max * 1e-9
+    extra += [x - eps for x in extra if x - eps > 0] + [x + eps for x in extra if x + eps < k_max]
+    return np.unique(np.concatenate([k, extra]))
+
+
+def _refine_edge(width: Callable[[np.ndarray], np.ndarray], k_in: float, k_out: float,
+                 iterations: int = 48) -> float:
+    """Bisect between a non-empty column k_in and an empty one k_out."""
+    for _ in range(iterations):
+        mid = 0.5 * (k_in + k_out)
+        if width(np.array([mid]))[0] > 0.0:
+            k_in = mid
+        else:
+            k_out = mid
+        if abs(k_out - k_in) <= 1e-12 * max(1.0, abs(k_in)):
+            break
+    return k_in
+
+
+def region_polygons(p: Parameters, k_max: float, mu_max: float,
+                    modes: Iterable[Mode] | None = None, raw: bool = False,
+                    samples: int = 801, overshoot: float = 1.5) -> dict[Mode, list[np.ndarray]]:
+    """Polygons (arrays of (k, mu) vertices) of each mode's region within the view.
+
+    Parameters
+    ----------
+    p : Parameters
+    k_max, mu_max : float
+        The view is [0, k_max] x [0, mu_max]; polygons extend a little beyond
+        (``overshoot`` x mu_max) and are meant to be clipped by the axes.
+    modes : iterable of Mode, optional
+        Which modes (default: the six map modes).
+    raw : bool
+        The report's raw region of each mode (single-mode figures) instead of
+        the final map.
+    samples : int
+        Number of k samples (breakpoints are added).
+
+    Returns
+    -------
+    dict[Mode, list[ndarray of shape (n, 2)]]
+        For each mode, one closed polygon per run of k where it is present.
+    """
+    modes = tuple(MAP_MODES if modes is None else modes)
+    mu_cap = mu_max * overshoot
+    k = _sample_k(p, k_max, samples)
+
+    def intervals(kk: np.ndarray) -> dict[Mode, Interval]:
+        if raw:
+            return {m: raw_intervals(m, p, kk, mu_cap) for m in modes}
+        return final_intervals(p, kk, mu_cap)
+
+    cols = intervals(k)
+    out: dict[Mode, list[np.ndarray]] = {}
+    for mode in modes:
+        lo, hi = cols[mode]
+        present = (hi - lo) > 0.0
+        polys: list[np.ndarray] = []
+        if present.any():
+            idx = np.flatnonzero(present)
+            runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
+
+            def width(kk: np.ndarray, mode: Mode = mode) -> np.ndarray:
+                l, h = intervals(kk)[mode]
+                return h - l
+
+            for run in runs:
+                ks = list(k[run])
+                i0, i1 = run[0], run[-1]
+                if i0 > 0:
+                    ks.insert(0, _refine_edge(width, k[i0], k[i0 - 1]))
+                if i1 < k.size - 1:
+                    ks.append(_refine_edge(width, k[i1], k[i1 + 1]))
+                kk = np.asarray(ks)
+                l, h = intervals(kk)[mode]
+                poly = np.concatenate([np.column_stack([kk, l]), np.column_stack([kk[::-1], h[::-1]])])
+                polys.append(poly)
+        out[mode] = polys
+    return out
