@@ -1,0 +1,78 @@
+"""`make bench`: throughput of the mode engine and timings of the drawing commands.
+
+Prints points per second for label_grid (2000 x 2000 grid) and classify
+(4 million scattered points), the solver's rate for comparison, and then the
+plotting timings of bench/bench_plot.py.  Times are the best of several runs
+(wall clock, this machine); the targets of the issues are shown beside them.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import os
+import platform
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+import regimemap
+from regimemap import classify, label_grid
+from regimemap.solver import admissible
+
+
+def best_of(fn, repeat: int = 7) -> float:
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def engine() -> list[tuple[str, float, str, str]]:
+    rows = []
+    k = np.linspace(0, 3, 2000)
+    mu = np.linspace(0, 3, 2000)
+    for gamma, kprime in ((3.0, 0.4), (1.0, -0.3)):
+        t = best_of(lambda: label_grid(k, mu, gamma, kprime))
+        rows.append((f"label_grid 2000x2000 (gamma={gamma}, k'={kprime})", 4e6 / t, "points/s",
+                     ">= 100e6"))
+    rng = np.random.default_rng(0)
+    ks = rng.uniform(0, 3, 4_000_000)
+    ms = rng.uniform(0, 3, 4_000_000)
+    for gamma, kprime in ((3.0, 0.4), (1.0, -0.3)):
+        t = best_of(lambda: classify(ks, ms, gamma, kprime), repeat=5)
+        rows.append((f"classify 4e6 scattered (gamma={gamma}, k'={kprime})", 4e6 / t, "points/s",
+                     ">= 20e6"))
+    n = 200_000
+    t = best_of(lambda: admissible(ks[:n], ms[:n], 3.0, 0.4), repeat=3)
+    rows.append(("solver: every hypothesis at every point", n / t, "points/s", "(reference)"))
+    return rows
+
+
+def main() -> int:
+    print(f"regimemap {regimemap.__version__}, numpy {np.__version__}, Python "
+          f"{platform.python_version()}, {os.cpu_count()} cores, {platform.machine()}")
+    print()
+    print(f"{'benchmark':58s} {'result':>14s}  {'unit':9s} target")
+    for name, value, unit, target in engine():
+        print(f"{name:58s} {value:14,.0f}  {unit:9s} {target}")
+    plot = Path(__file__).with_name("bench_plot.py")
+    if plot.exists():
+        spec = importlib.util.spec_from_file_location("bench_plot", plot)
+        mod = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        if hasattr(mod, "main"):
+            mod.main()
+        else:
+            for key, value in mod.run().items():
+                print(f"{key:58s} {value}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
