@@ -98,22 +98,33 @@ def _thresholds(k: np.ndarray, gamma: Any, kprime: Any) -> tuple[np.ndarray, ...
 
 
 def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
-    g = np.asarray(gamma, dtype=np.float64) if not np.isscalar(gamma) else gamma
-    kp = np.asarray(kprime, dtype=np.float64) if not np.isscalar(kprime) else kprime
-    if np.ndim(g) == 0:
-        g = check_gamma(g if np.isscalar(g) else g.item())
-    else:
-        bad = ~(np.isfinite(g) & (g > 0))
-        if bad.any():
-            raise ValueError(f"gamma must be finite numbers > 0, got {g[bad].ravel()[0]!r}")
-    if np.ndim(kp) == 0:
-        kp = check_kprime(kp if np.isscalar(kp) else kp.item())
-    else:
-        bad = ~(np.isfinite(kp) & (kp >= -1.0) & (kp <= 1.0))
-        if bad.any():
-            raise ValueError(f"kprime must be numbers in [-1, 1], got {kp[bad].ravel()[0]!r}")
-        kp = kp + 0.0  # fold -0.0
-    return g, kp
+    """gamma and kprime as floats (scalars) or float arrays, each value checked."""
+    out = []
+    for name, value, check in (("gamma", gamma, check_gamma), ("kprime", kprime, check_kprime)):
+        if np.ndim(value) == 0:
+            out.append(check(value.item() if isinstance(value, np.ndarray) else value))
+            continue
+        try:
+            arr = np.asarray(value, dtype=np.float64)
+        except (TypeError, ValueError):
+            raise ValueError(f"{name} must be an array of numbers, got {value!r}") from None
+        # the allowed sets are intervals: checking NaN, the minimum and the
+        # maximum with the scalar check gives the same messages and ranges
+        if arr.size:
+            if np.isnan(arr).any():
+                check(float("nan"))
+            check(float(arr.min()))
+            check(float(arr.max()))
+        out.append(arr + 0.0 if name == "kprime" else arr)  # fold -0.0
+    return out[0], out[1]
+
+
+def _broadcast(*arrays: Any) -> list[np.ndarray]:
+    try:
+        return np.broadcast_arrays(*arrays)
+    except ValueError:
+        shapes = ", ".join(f"{n} {np.shape(a)}" for n, a in zip(("k", "mu", "gamma", "kprime"), arrays))
+        raise ValueError(f"k, mu, gamma and kprime must broadcast to one shape, got {shapes}") from None
 
 
 def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -> np.ndarray:
@@ -161,9 +172,9 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
     mu = check_nonnegative_array("mu", mu)
     g, kp = _check_param_arrays(gamma, kprime)
     if np.ndim(g) or np.ndim(kp):
-        k, mu, g, kp = np.broadcast_arrays(k, mu, g, kp)
+        k, mu, g, kp = _broadcast(k, mu, g, kp)
     else:
-        k, mu = np.broadcast_arrays(k, mu)
+        k, mu = _broadcast(k, mu)
     rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, g, kp)
     out = np.where(f_pos, _SM, _SP)
     np.copyto(out, _RO, where=mu >= mu_s)
@@ -261,7 +272,7 @@ def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: floa
     if order is None:
         return grid
     if isinstance(order, str):
-        return grid[::-1]
+        return np.ascontiguousarray(grid[::-1])
     out = np.empty_like(grid)
     out[order] = grid
     return out

@@ -195,9 +195,12 @@ def solve(hypothesis: Hypothesis, k: ArrayLike, mu: ArrayLike, gamma: ArrayLike,
             A[:, 5, 3] = 1.0
             A[:, 5, 4] = -sigma * muf
 
+    # Singular systems (e.g. 4 + g^2 - 3 mu g = 0 in (3.30)) have no unique
+    # solution.  |det A| is compared with Hadamard's bound, the product of the
+    # row norms, so the test does not depend on the scale of gamma, k or mu.
     det = np.linalg.det(A)
-    scale = np.abs(A).reshape(n, -1).max(axis=1) ** 6
-    solvable = np.abs(det) > 1e-12 * scale
+    hadamard = np.prod(np.linalg.norm(A, axis=2), axis=1)
+    solvable = np.abs(det) > 1e-12 * hadamard
     A_safe = A.copy()
     A_safe[~solvable] = np.eye(6)
     rhs_safe = rhs.copy()
