@@ -1,0 +1,147 @@
+"""``regimemap classify``: the mode at a design point, its physics and its margin."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from typing import Any
+
+import click
+
+from . import cli
+from ._common import RunError, gamma_option, kprime_option, output_path
+
+__all__ = ["classify_cmd"]
+
+
+class _NonNegative(click.ParamType):
+    """A finite float >= 0 (k, mu)."""
+
+    name = "number"
+
+    def __init__(self, what: str):
+        self.what = what
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            self.fail(f"{self.what} must be a finite number >= 0, got {value!r}", param, ctx)
+        if not math.isfinite(v) or v < 0.0:
+            self.fail(f"{self.what} must be a finite number >= 0, got {value!r}", param, ctx)
+        return v
+
+
+@cli.command(
+    "classify",
+    short_help="Mode, physics at initiation and margin at a design point (or a CSV of points).",
+)
+@gamma_option(required=False)
+@kprime_option(required=False)
+@click.option("--k", "k", type=_NonNegative("k"), metavar="K",
+              help="Force F/(mg) >= 0 (one point).")
+@click.option("--mu", "mu", type=_NonNegative("mu"), metavar="MU",
+              help="Friction coefficient >= 0 (one point).")
+@click.option("--points", "points_file", type=click.Path(exists=True, dir_okay=False),
+              metavar="FILE.csv",
+              help="Classify every row of a CSV with columns k,mu and optionally gamma,kprime,name.")
+@click.option("--json", "as_json", is_flag=True,
+              help="Print JSON (one object per point) instead of text / CSV.")
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
+              help="With --points: write to FILE (atomically) instead of standard output; "
+                   "a .json suffix selects JSON.")
+def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
+                 points_file: str | None, as_json: bool, output: str | None) -> None:
+    """Which motion starts at a design point (k, mu), and how far it is from changing.
+
+    For one point prints the mode of the map (Section 4.7 of the report below
+    the centre of mass), the reactions and accelerations at initiation from
+    the equations of motion (fx, fy divided by m g; xi, where f_y acts, over
+    B; xdd, ydd over g; thdd = theta'' B/g; slip, the acceleration of the
+    slipping contact over g, none when it sticks), the report's case, every
+    mode the equations admit there, and the margin: the smallest relative
+    change of k (mu fixed) and of mu (k fixed), up or down, that changes the
+    mode, with the mode it changes to.  The search covers all k >= 0 and
+    mu >= 0 exactly; "no change" means none exists; relative changes from a
+    value of 0 are not defined (the absolute change is given).
+
+    With --points FILE.csv every row is classified; rows without gamma or
+    kprime use --gamma/--kprime (required only then).  Output is CSV (or
+    JSON with --json or an -o FILE.json).
+
+    \b
+    Examples:
+      regimemap classify --gamma 3 --kprime 0.4 --k 0.5 --mu 0.8
+      regimemap classify --gamma 3 --kprime -0.6 --k 3.5 --mu 2.3 --json
+      regimemap classify --points caissons.csv --gamma 3 -o results.csv
+      regimemap classify --points caissons.csv -o results.json
+    """
+    from ..points import DesignPoint, read_points_csv
+    from ..query import CSV_COLUMNS, format_result, query_points, result_row
+
+    if points_file is None:
+        if output is not None:
+            raise click.UsageError("-o/--output is for --points; one point prints to standard "
+                                   "output", ctx=click.get_current_context())
+        missing = [n for n, v in (("--gamma", gamma), ("--kprime", kprime), ("--k", k),
+                                  ("--mu", mu)) if v is None]
+        if missing:
+            raise click.UsageError(
+                f"missing option(s) {', '.join(missing)}: give --gamma (> 0), --kprime (in [-1, 1]), "
+                "--k (>= 0) and --mu (>= 0), or --points FILE.csv")
+        assert k is not None and mu is not None
+        try:
+            res = query_points([DesignPoint(k, mu)], gamma=gamma, kprime=kprime)[0]
+        except ValueError as exc:  # pragma: no cover - inputs are validated above
+            raise RunError(str(exc)) from None
+        if as_json:
+            click.echo(json.dumps(res.as_dict(), indent=2, allow_nan=False))
+        else:
+            click.echo(format_result(res))
+        return
+
+    # -- many points ------------------------------------------------------------------
+    if k is not None or mu is not None:
+        raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
+    try:
+        pts = read_points_csv(points_file)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="'--points'") from None
+    for i, pt in enumerate(pts, start=1):
+        for opt, own, default in (("--gamma", pt.gamma, gamma), ("--kprime", pt.kprime, kprime)):
+            if own is None and default is None:
+                who = f"row {i}" + (f" ({pt.name!r})" if pt.name else "")
+                col = opt.lstrip("-")
+                raise click.UsageError(
+                    f"{opt} is required: {who} of {points_file} has no {col} column value "
+                    f"(give {opt} or add a {col} column)")
+    to_json = as_json or (output is not None and output.lower().endswith(".json"))
+    if output is not None:
+        output_path(output, "--output")
+    try:
+        results = query_points(pts, gamma=gamma, kprime=kprime)
+    except ValueError as exc:
+        raise RunError(str(exc)) from None
+    if to_json:
+        text = json.dumps({"count": len(results), "points": [r.as_dict() for r in results]},
+                          indent=1, allow_nan=False) + "\n"
+    else:
+        buf = io.StringIO()
+        w = csv.DictWriter(buf, fieldnames=list(CSV_COLUMNS), lineterminator="\n")
+        w.writeheader()
+        for r in results:
+            w.writerow(result_row(r))
+        text = buf.getvalue()
+    if output is None:
+        click.echo(text, nl=False)
+        return
+    from .._atomic import atomic_open
+
+    try:
+        with atomic_open(output, "w", encoding="utf-8", newline="") as fh:
+            fh.write(text)
+    except OSError as exc:
+        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    click.echo(f"wrote {len(results)} point(s) to {output}", err=True)
