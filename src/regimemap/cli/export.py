@@ -1,0 +1,63 @@
+"""``regimemap export``: the map as data (.npz grid, .csv grid, .json vectors)."""
+
+from __future__ import annotations
+
+import click
+
+from . import cli
+from ._common import RunError, gamma_option, kprime_option, output_path, positive_float, resolution_type
+
+__all__ = ["export_cmd"]
+
+
+@cli.command("export", short_help="Write the map as a grid (.npz, .csv) or as vectors (.json).")
+@gamma_option()
+@kprime_option()
+@click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
+              help="Right end of the k axis (default: automatic, as in 'plot').")
+@click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
+              help="Top of the mu axis (default: automatic, as in 'plot').")
+@click.option("--resolution", type=resolution_type, default=401, show_default=True,
+              metavar="N", help="Grid samples along each axis for .npz/.csv (2 to 5000).")
+@click.option("--format", "fmt", type=click.Choice(["npz", "csv", "json"], case_sensitive=False),
+              default=None, help="Format (default: from the suffix of -o).")
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
+              help="Output file: .npz, .csv or .json (written atomically).")
+def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float | None,
+               resolution: int, fmt: str | None, output: str) -> None:
+    """Export the regime map for GAMMA and KPRIME as data.
+
+    \b
+    .npz   arrays k (1-D), mu (1-D), mode (2-D uint8 codes, rows mu, columns k),
+           labels (label of each code: labels[mode]), gamma, kprime, case and
+           the derived constants; read with numpy.load.
+    .csv   columns k,mu,mode (mode as label: RE, SL, RO, SRO-, SRO+, SRO'-),
+           one row per grid point, mu outer, k inner.
+    .json  boundary curves as polylines with their equations, named points,
+           case, parameters and constants (non-finite as null), the region
+           polygons and the parts where several modes are admissible.
+
+    The view defaults to the one 'plot' chooses.  The grid has N x N points,
+    N <= 5000 (25 million points at most).
+
+    \b
+    Examples:
+      regimemap export --gamma 3 --kprime 0.4 -o map.npz
+      regimemap export --gamma 3 --kprime -0.6 --resolution 201 -o map.csv
+      regimemap export --gamma 3 --kprime -0.6 --k-max 4 --mu-max 3 -o map.json
+    """
+    from ..export import export_map, format_of
+    from ..params import Parameters
+
+    try:
+        fmt = format_of(output, fmt)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
+    output_path(output, "--output")
+    p = Parameters(gamma, kprime)
+    try:
+        export_map(output, p, k_max=k_max, mu_max=mu_max, resolution=resolution, fmt=fmt)
+    except OSError as exc:
+        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    what = "vector geometry" if fmt == "json" else f"{resolution} x {resolution} grid"
+    click.echo(f"wrote {output} ({fmt}, {what}; gamma = {gamma:g}, k' = {kprime:g})", err=True)
