@@ -1,0 +1,315 @@
+"""Where the equations of motion admit several modes at once (non-uniqueness).
+
+Below the centre of mass (k' < 0) the report's regions overlap (Section IV.7):
+for mu > mu_B' = (4+g^2)/(3g), (4.49), the slide-rock about O equations have a
+second branch ((4.69)-(4.70), (4.80)-(4.81)) and the rigid-body equations with
+Coulomb friction admit more than one motion at the same (k, mu) - the
+non-uniqueness known as Painleve's paradox.  Section 4.7 keeps one mode (see
+:data:`regimemap.classify.PRIORITY`): slide inside the slide region, slide-rock
+about O' below the line DC.  The independent solver (:mod:`regimemap.solver`)
+confirms the overlaps: with parameters tried so far the admissible sets are
+{SL, RO, SRO-} (chosen: SL) and {RO, SRO-, SRO'-} (chosen: SRO'-).
+
+This module finds those parts of the map exactly, from the per-column
+intervals of the raw regions (:func:`regimemap.geometry.raw_intervals`, whose
+predicates equal the solver's admissibility away from boundaries): along each
+vertical line k = const every raw region is one interval of mu, so the column
+is cut at every interval end and each piece is covered by a known set of
+modes.  Pieces covered by two or more modes (with positive length) are the
+ambiguous parts; they are joined across columns into polygons whose vertices
+lie on the boundary curves.  Boundaries themselves (where the modes of both
+sides are admissible, a set of zero area) are not ambiguity.  Nothing here
+imports matplotlib.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .classify import PRIORITY
+from .geometry import breakpoints, raw_intervals
+from .modes import MAP_MODES, Mode
+from .params import Parameters
+
+__all__ = [
+    "AmbiguousRegion",
+    "ambiguous_regions",
+    "column_pieces",
+    "admissible_set",
+    "set_label",
+]
+
+_MODES: tuple[Mode, ...] = tuple(m for m in PRIORITY if m in MAP_MODES)
+
+
+def set_label(modes: tuple[Mode, ...], chosen: Mode, tex: bool = False) -> str:
+    """``"{SL, RO, SRO-} -> SL (Section 4.7)"``, or its mathtext form for figures."""
+    if tex:
+        body = ", ".join(m.tex.strip("$") for m in modes)
+        return rf"$\{{{body}\}}$" + "\n" + rf"$\rightarrow {chosen.tex.strip('$')}$ (§4.7)"
+    return "{" + ", ".join(m.label for m in modes) + "} -> " + chosen.label + " (Section 4.7)"
+
+
+@dataclass(frozen=True)
+class AmbiguousRegion:
+    """One connected part of the map where several modes are admissible.
+
+    Attributes
+    ----------
+    modes : tuple of Mode
+        The admissible set, in code order (RE, SL, RO, SRO-, SRO+, SRO'-).
+    chosen : Mode
+        The mode Section 4.7 (and :func:`regimemap.classify`) gives these points.
+    polygon : ndarray, shape (n, 2)
+        Closed polygon of (k, mu) vertices: the lower edge left to right, then
+        the upper edge right to left.
+    k, lo, hi : ndarray
+        The columns the polygon was built from: at each k the part spans
+        lo <= mu <= hi.
+    """
+
+    modes: tuple[Mode, ...]
+    chosen: Mode
+    polygon: np.ndarray
+    k: np.ndarray
+    lo: np.ndarray
+    hi: np.ndarray
+
+    @property
+    def label(self) -> str:
+        """Plain-text label, e.g. ``{SL, RO, SRO-} -> SL (Section 4.7)``."""
+        return set_label(self.modes, self.chosen)
+
+    @property
+    def tex(self) -> str:
+        """Mathtext label for figures, on two lines (the set, then "-> chosen (§4.7)")."""
+        return set_label(self.modes, self.chosen, tex=True)
+
+    def area(self) -> float:
+        """Area of the polygon (shoelace formula)."""
+        x, y = self.polygon[:, 0], self.polygon[:, 1]
+        return 0.5 * abs(float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+    def anchor(self, k_max: float = np.inf, mu_max: float = np.inf) -> tuple[float, float] | None:
+        """A point well inside the part and inside the view [0, k_max] x [0, mu_max].
+
+        The middle of the widest column (after clipping to the view); None if
+        no column of the part is in the view.
+        """
+        inview = self.k <= k_max
+        lo = self.lo
+        hi = np.minimum(self.hi, mu_max)
+        w = np.where(inview, hi - lo, -np.inf)
+        if w.size == 0 or not np.isfinite(w).any() or w.max() <= 0.0:
+            return None
+        # prefer columns away from the ends of the part (a more central label)
+        centrality = np.minimum(np.abs(self.k - self.k[0]), np.abs(self.k[-1] - self.k)) ** 0.5
+        score = np.where(w > 0.0, np.where(w > 0.0, w, 0.0) * centrality, -np.inf)
+        i = int(np.argmax(score)) if np.isfinite(score).any() and score.max() > 0 else int(np.argmax(w))
+        return float(self.k[i]), float(0.5 * (lo[i] + hi[i]))
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready: labels, the chosen mode and the polygon as [[k, mu], ...]."""
+        return {
+            "modes": [m.label for m in self.modes],
+            "chosen": self.chosen.label,
+            "label": self.label,
+            "polygon": self.polygon.tolist(),
+        }
+
+
+def _mask_modes(mask: int) -> tuple[Mode, ...]:
+    """The modes of a bit mask, in code order (RE, SL, RO, SRO-, SRO+, SRO'-)."""
+    return tuple(m for m in MAP_MODES if mask >> int(m) & 1)
+
+
+def column_pieces(p: Parameters, k: np.ndarray, mu_cap: float
+                  ) -> list[list[tuple[int, float, float]]]:
+    """Cut each column at every raw-interval end; return its ambiguous pieces.
+
+    Parameters
+    ----------
+    p : Parameters
+    k : ndarray, 1-D
+        Columns.
+    mu_cap : float
+        Top of the columns (intervals are clipped to [0, mu_cap]).
+
+    Returns
+    -------
+    list (one per column) of lists of ``(mask, lo, hi)``
+        ``mask`` has bit ``int(mode)`` set for each admissible mode; only
+        pieces of positive length covered by two or more modes are listed,
+        from the bottom up; adjacent pieces with the same set are merged.
+    """
+    k = np.asarray(k, dtype=np.float64)
+    ivs = {m: raw_intervals(m, p, k, mu_cap) for m in _MODES}
+    ends = [np.zeros_like(k), np.full_like(k, mu_cap)]
+    for lo, hi in ivs.values():
+        ends += [lo, hi]
+    E = np.sort(np.stack(ends, axis=1), axis=1)  # (n, 2 + 2*modes)
+    a, b = E[:, :-1], E[:, 1:]
+    mid = 0.5 * (a + b)
+    mask = np.zeros(mid.shape, dtype=np.int64)
+    for m, (lo, hi) in ivs.items():
+        inside = (hi[:, None] > lo[:, None]) & (lo[:, None] <= mid) & (mid <= hi[:, None])
+        mask |= inside.astype(np.int64) << int(m)
+    positive = b > a
+    pop = np.zeros(mask.shape, dtype=np.int64)
+    for m in _MODES:
+        pop += (mask >> int(m)) & 1
+    multi = positive & (pop >= 2)
+    out: list[list[tuple[int, float, float]]] = []
+    for j in range(k.size):
+        pieces: list[tuple[int, float, float]] = []
+        for s in np.flatnonzero(multi[j]):
+            m_, lo_, hi_ = int(mask[j, s]), float(a[j, s]), float(b[j, s])
+            if pieces and pieces[-1][0] == m_ and pieces[-1][2] == lo_:
+                pieces[-1] = (m_, pieces[-1][1], hi_)
+            else:
+                pieces.append((m_, lo_, hi_))
+        out.append(pieces)
+    return out
+
+
+def admissible_set(p: Parameters, k: float, mu: float) -> tuple[Mode, ...]:
+    """The modes whose raw region contains (k, mu) (exact, from the column intervals).
+
+    Equal to the solver's admissible set off the boundaries.
+    """
+    mu_cap = max(2.0 * mu, 1.0)
+    ivs = {m: raw_intervals(m, p, np.array([float(k)]), mu_cap) for m in _MODES}
+    return tuple(m for m, (lo, hi) in ivs.items() if hi[0] > lo[0] and lo[0] <= mu <= hi[0])
+
+
+def _sample_k(p: Parameters, k_max: float, samples: int) -> np.ndarray:
+    k = np.linspace(0.0, k_max, samples)
+    extra = [x for x in breakpoints(p) + _extra_breaks(p) if 0.0 <= x <= k_max]
+    eps = k_max * 1e-9
+    extra += [x - eps for x in extra if x - eps > 0] + [x + eps for x in extra if x + eps < k_max]
+    return np.unique(np.concatenate([k, extra]))
+
+
+def _extra_breaks(p: Parameters) -> list[float]:
+    """Abscissae where an edge of an ambiguous part may have a corner (besides breakpoints)."""
+    mb = p.mu_Bprime
+    out = [mb]  # OA meets mu = mu_B'
+    den = p.a - mb * p.c
+    if den != 0.0:
+        out.append((mb * p.d - p.b) / den)  # mu* meets mu = mu_B'
+    if p.kprime != 0.0:
+        out.append((-1.0 / p.gamma - mb) / p.kprime)  # DC meets mu = mu_B'
+        # DC meets OA (mu = k): k = -1/g - k k'
+        if 1.0 + p.kprime != 0.0:
+            out.append((-1.0 / p.gamma) / (1.0 + p.kprime))
+    return [float(x) for x in out if np.isfinite(x) and x >= 0.0]
+
+
+def _pieces_at(p: Parameters, k: float, mu_cap: float) -> list[tuple[int, float, float]]:
+    return column_pieces(p, np.array([k]), mu_cap)[0]
+
+
+def _refine(p: Parameters, mask: int, track: int, k_in: float, k_out: float, mu_cap: float,
+            iterations: int = 60) -> float:
+    """Bisect between a column holding the part (k_in) and one without (k_out)."""
+    def has(kk: float) -> bool:
+        return sum(1 for m, _, _ in _pieces_at(p, kk, mu_cap) if m == mask) > track
+
+    for _ in range(iterations):
+        mid = 0.5 * (k_in + k_out)
+        if mid in (k_in, k_out):
+            break
+        if has(mid):
+            k_in = mid
+        else:
+            k_out = mid
+        if abs(k_out - k_in) <= 1e-13 * max(1.0, abs(k_in)):
+            break
+    return k_in
+
+
+def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
+                      samples: int = 801) -> list[AmbiguousRegion]:
+    """The parts of [0, k_max] x [0, mu_max] where several modes are admissible.
+
+    Parameters
+    ----------
+    p : Parameters
+    k_max, mu_max : float
+        The view.  Polygons are clipped to it (mu to [0, mu_max], k to
+        [0, k_max]); pass a larger extent and clip when drawing if the edges
+        of the view should not appear as edges of a part.
+    samples : int
+        Columns on [0, k_max] (the abscissae of every corner are added, and
+        the ends of each part are located by bisection).
+
+    Returns
+    -------
+    list of AmbiguousRegion
+        Sorted by the chosen mode (in :data:`PRIORITY` order), the set, then k;
+        empty above C (k' >= 0), where the regions do not overlap.
+
+    Examples
+    --------
+    >>> from regimemap.params import Parameters
+    >>> [r.label for r in ambiguous_regions(Parameters(3.0, -0.6), 4.0, 3.0)]
+    ['{SL, RO, SRO-} -> SL (Section 4.7)']
+    >>> ambiguous_regions(Parameters(3.0, 0.4), 4.0, 3.0)
+    []
+    """
+    if not (np.isfinite(k_max) and np.isfinite(mu_max)) or k_max <= 0 or mu_max <= 0:
+        raise ValueError(f"k_max and mu_max must be finite numbers > 0, got {k_max!r}, {mu_max!r}")
+    k = _sample_k(p, float(k_max), int(samples))
+    cols = column_pieces(p, k, float(mu_max))
+    # tracks: (mask, t) -> per-column (lo, hi) or NaN
+    tracks: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}
+    for j, pieces in enumerate(cols):
+        seen: dict[int, int] = {}
+        for m_, lo_, hi_ in pieces:
+            t = seen.get(m_, 0)
+            seen[m_] = t + 1
+            if (m_, t) not in tracks:
+                tracks[(m_, t)] = (np.full(k.size, np.nan), np.full(k.size, np.nan))
+            tracks[(m_, t)][0][j] = lo_
+            tracks[(m_, t)][1][j] = hi_
+    out: list[AmbiguousRegion] = []
+    for (mask, t), (lo, hi) in tracks.items():
+        present = np.isfinite(lo)
+        idx = np.flatnonzero(present)
+        runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
+        modes = _mask_modes(mask)
+        chosen = next(m for m in PRIORITY if m in modes)
+        for run in runs:
+            ks = list(k[run])
+            los = list(lo[run])
+            his = list(hi[run])
+            i0, i1 = run[0], run[-1]
+            if i0 > 0:
+                ke = _refine(p, mask, t, k[i0], k[i0 - 1], float(mu_max))
+                if ke < ks[0]:
+                    pc = [pc for pc in _pieces_at(p, ke, float(mu_max)) if pc[0] == mask]
+                    if len(pc) > t:
+                        ks.insert(0, ke)
+                        los.insert(0, pc[t][1])
+                        his.insert(0, pc[t][2])
+            if i1 < k.size - 1:
+                ke = _refine(p, mask, t, k[i1], k[i1 + 1], float(mu_max))
+                if ke > ks[-1]:
+                    pc = [pc for pc in _pieces_at(p, ke, float(mu_max)) if pc[0] == mask]
+                    if len(pc) > t:
+                        ks.append(ke)
+                        los.append(pc[t][1])
+                        his.append(pc[t][2])
+            kk, ll, hh = np.asarray(ks), np.asarray(los), np.asarray(his)
+            if kk[-1] - kk[0] <= 1e-12 * max(1.0, float(k_max)):
+                # a single column, e.g. k = k_A where the RE and RO regions share
+                # their boundary: a line, not an area
+                continue
+            poly = np.concatenate([np.column_stack([kk, ll]), np.column_stack([kk[::-1], hh[::-1]])])
+            out.append(AmbiguousRegion(modes, chosen, poly, kk, ll, hh))
+    order = {m: i for i, m in enumerate(PRIORITY)}
+    out.sort(key=lambda r: (order[r.chosen], tuple(int(m) for m in r.modes), float(r.k[0])))
+    return out
