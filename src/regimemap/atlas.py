@@ -1,0 +1,455 @@
+"""Many maps at once: an atlas of small multiples and an animation over k'.
+
+:func:`atlas_figure` draws the all-mode map (:func:`regimemap.render.draw_map`)
+for every pair of a list of gamma (rows) and a list of k' (columns), on
+shared axes, with one legend and each panel titled with its gamma and k'.
+:func:`write_animation` writes a GIF of the map as k' sweeps a range, on
+fixed axes, with matplotlib's ``PillowWriter`` (no pyplot).
+
+The value lists use the syntax of the command line (:func:`parse_values`):
+``1,2,3`` (a list) or ``-1:1:41`` (start:stop:count, both ends included, as
+``numpy.linspace``).  Limits: :data:`MAX_PANELS` panels and
+:data:`MAX_FRAMES` frames.
+
+matplotlib is imported inside the functions that draw, never at import time.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Callable, Sequence
+
+import numpy as np
+
+from .modes import MAP_MODES, Mode
+from .params import Parameters
+from .validation import check_gamma, check_kprime
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+__all__ = [
+    "MAX_PANELS",
+    "MAX_FRAMES",
+    "MAX_VALUES",
+    "SHARE",
+    "parse_values",
+    "atlas_extents",
+    "atlas_figure",
+    "write_atlas",
+    "sweep_extent",
+    "shared_extent",
+    "points_outside",
+    "write_animation",
+]
+
+#: Largest number of panels of an atlas (rows x columns).
+MAX_PANELS = 48
+#: Largest number of frames of an animation.
+MAX_FRAMES = 400
+#: Largest number of values in one list (rows or columns of an atlas).
+MAX_VALUES = 400
+#: How the axes of an atlas are shared: one view for the whole figure, one per row, or none.
+SHARE: tuple[str, ...] = ("all", "row", "none")
+
+#: Size of one atlas panel in inches (width, height).
+PANEL_SIZE: tuple[float, float] = (2.7, 2.35)
+#: Samples of k per panel / frame (fewer than a single map: the panels are small).
+SAMPLES = 401
+
+
+def _fmt(x: float) -> str:
+    return f"{x:g}"
+
+
+def parse_values(text: str, name: str, check: Callable[[float], float],
+                 max_count: int = MAX_VALUES) -> list[float]:
+    """Parse ``"a,b,c"`` or ``"start:stop:count"`` into a list of checked floats.
+
+    Parameters
+    ----------
+    text : str
+        A comma-separated list of numbers, or ``start:stop:count`` (count
+        values from start to stop, both included; count >= 1, and count = 1
+        needs start == stop).
+    name : str
+        Parameter name for messages (``gamma``, ``kprime``).
+    check : callable
+        Validates one value (e.g. :func:`regimemap.validation.check_kprime`),
+        raising ValueError naming the allowed range.
+    max_count : int
+        Most values accepted.
+
+    Returns
+    -------
+    list of float
+
+    Raises
+    ------
+    ValueError
+        With the offending piece and the expected syntax.
+
+    Examples
+    --------
+    >>> parse_values("-1:1:5", "kprime", check_kprime)
+    [-1.0, -0.5, 0.0, 0.5, 1.0]
+    >>> parse_values("1, 2,3", "gamma", check_gamma)
+    [1.0, 2.0, 3.0]
+    """
+    syntax = f"a list like 1,2,3 or a range start:stop:count like -1:1:41"
+    s = text.strip()
+    if not s:
+        raise ValueError(f"{name}: empty; give {syntax}")
+    if ":" in s:
+        parts = s.split(":")
+        if len(parts) != 3:
+            raise ValueError(f"{name}: {text!r} is not start:stop:count ({syntax})")
+        try:
+            start, stop = float(parts[0]), float(parts[1])
+        except ValueError:
+            raise ValueError(f"{name}: start and stop of {text!r} must be numbers ({syntax})") from None
+        try:
+            count = int(parts[2])
+        except ValueError:
+            raise ValueError(f"{name}: the count of {text!r} must be a whole number >= 1, "
+                             f"got {parts[2]!r}") from None
+        if count < 1:
+            raise ValueError(f"{name}: the count of {text!r} must be a whole number >= 1, got {count}")
+        if count > max_count:
+            raise ValueError(f"{name}: {count} values in {text!r} exceed the limit of {max_count}")
+        if count == 1 and start != stop:
+            raise ValueError(f"{name}: {text!r} asks for 1 value between two different ends; "
+                             f"use a count >= 2 or start == stop")
+        for v, what in ((start, "start"), (stop, "stop")):
+            try:
+                check(v)
+            except ValueError as exc:
+                raise ValueError(f"{what} of {text!r}: {exc}") from None
+        values = np.linspace(start, stop, count).tolist()
+    else:
+        values = []
+        for piece in s.split(","):
+            piece = piece.strip()
+            if not piece:
+                raise ValueError(f"{name}: empty item in {text!r} ({syntax})")
+            try:
+                values.append(float(piece))
+            except ValueError:
+                raise ValueError(f"{name}: {piece!r} is not a number ({syntax})") from None
+        if len(values) > max_count:
+            raise ValueError(f"{name}: {len(values)} values exceed the limit of {max_count}")
+    out = []
+    for v in values:
+        out.append(check(v))
+    return out
+
+
+def _extent_of(p: Parameters) -> tuple[float, float]:
+    from .view import auto_extent
+
+    return auto_extent(p)
+
+
+def atlas_extents(gammas: Sequence[float], kprimes: Sequence[float], share: str = "all",
+                  k_max: float | None = None, mu_max: float | None = None
+                  ) -> list[list[tuple[float, float]]]:
+    """The view (k_max, mu_max) of every panel: rows gamma, columns k'.
+
+    ``share="all"``: one view for every panel, :func:`shared_extent` of all
+    panels' automatic views (:func:`regimemap.view.auto_extent`); ``"row"``:
+    one per row; ``"none"``: each panel's own automatic view.  A given
+    ``k_max`` or ``mu_max`` overrides the automatic value everywhere.
+    """
+    if share not in SHARE:
+        raise ValueError(f"share must be one of {', '.join(SHARE)}, got {share!r}")
+    own = [[_extent_of(Parameters(g, kp)) for kp in kprimes] for g in gammas]
+    if share == "all":
+        km, mm = shared_extent([e for row in own for e in row])
+        own = [[(km, mm) for _ in row] for row in own]
+    elif share == "row":
+        own = [[shared_extent(row)] * len(row) for row in own]
+    return [[(k_max if k_max is not None else e[0], mu_max if mu_max is not None else e[1])
+             for e in row] for row in own]
+
+
+def shared_extent(extents: Sequence[tuple[float, float]]) -> tuple[float, float]:
+    """One view for several maps: the upper quartile of their automatic views, rounded up.
+
+    The automatic view of a single map (:func:`regimemap.view.auto_extent`)
+    reaches out to far points such as D or B', which run off to infinity as
+    k' nears 0 or -1; the largest of several views would shrink every other
+    map into a corner, the median would cut point A off too many of them.
+    The 75th percentile (of k_max and of mu_max separately, rounded up to a
+    nice number) keeps A in view for most maps; :func:`points_outside` tells
+    which maps lose it.
+    """
+    from .view import nice_ceil
+
+    ks = np.array([e[0] for e in extents], dtype=float)
+    ms = np.array([e[1] for e in extents], dtype=float)
+    if ks.size == 1:
+        return float(ks[0]), float(ms[0])
+    return (float(nice_ceil(float(np.percentile(ks, 75.0)))),
+            float(nice_ceil(float(np.percentile(ms, 75.0)))))
+
+
+def points_outside(params: Sequence[Parameters], k_max: float, mu_max: float) -> list[Parameters]:
+    """The maps whose point A (k_A, mu_A) exists but lies outside [0, k_max] x [0, mu_max]."""
+    return [p for p in params
+            if math.isfinite(p.k_A) and (p.k_A > k_max or p.mu_A > mu_max)]
+
+
+def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
+    """Legend handles in the renderer's style: one per mode, and the line styles."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    from .render import MODE_STYLE
+
+    handles: list[Any] = []
+    for mode in modes:
+        st = MODE_STYLE[mode]
+        h = Patch(facecolor=st.color, edgecolor="0.4", linewidth=0.4, hatch=st.hatch,
+                  hatchcolor=st.hatch_color, label=f"{mode.tex}  {mode.description}")
+        h.set_hatch_linewidth(0.45)
+        handles.append(h)
+    handles.append(Line2D([], [], color="black", linewidth=1.15, label="boundary of a region"))
+    handles.append(Line2D([], [], color="0.3", linewidth=0.7, dashes=(4.0, 2.5),
+                          label="construction line"))
+    if dotted:
+        handles.append(Line2D([], [], color="0.1", linewidth=1.0, dashes=(1.0, 2.0),
+                              label=r"dotted line $\mu = k|k'|$ (4.22)"))
+    return handles
+
+
+def _panel_title(g: float, kp: float) -> str:
+    return rf"$\gamma = {_fmt(g)}$, $k' = {_fmt(kp)}$"
+
+
+def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
+                 k_max: float | None = None, mu_max: float | None = None,
+                 panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
+                 dpi: float = 150, curves: bool = True, labels: bool = True) -> "Figure":
+    """Small multiples of the all-mode map: rows gamma, columns k'.
+
+    Parameters
+    ----------
+    gammas, kprimes : sequence of float
+        Aspect ratios (rows) and force heights (columns); at most
+        :data:`MAX_PANELS` panels in all.
+    share : {"all", "row", "none"}
+        Share the axes over the whole figure (default; tick labels only on
+        the outer panels), within each row, or not at all
+        (:func:`atlas_extents`; a shared view is :func:`shared_extent`).
+    k_max, mu_max : float, optional
+        Fix the view instead of the automatic one.
+    panel_size : (float, float)
+        Size of one panel in inches.
+    samples : int
+        Samples of k per panel.
+    dpi : float
+        Resolution of raster output.
+    curves, labels : bool
+        Draw the boundary curves / named points, and the mode symbols in
+        regions large enough (see :func:`regimemap.render.draw_map`).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        With an Agg canvas (no pyplot); one Axes per panel, in row-major
+        order, each with the title ``gamma = ..., k' = ...``, and one legend.
+
+    Raises
+    ------
+    ValueError
+        Invalid gamma or k', an empty list, or too many panels.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from .render import draw_map, style_context
+
+    gammas = [check_gamma(g) for g in gammas]
+    kprimes = [check_kprime(k) for k in kprimes]
+    nr, nc = len(gammas), len(kprimes)
+    if nr == 0 or nc == 0:
+        raise ValueError("an atlas needs at least one gamma and one kprime")
+    if nr * nc > MAX_PANELS:
+        raise ValueError(f"{nr} x {nc} = {nr * nc} panels exceed the limit of {MAX_PANELS}")
+    extents = atlas_extents(gammas, kprimes, share, k_max, mu_max)
+    pw, ph = panel_size
+    left, right, top, bottom = 0.62, 0.2, 0.7, 1.3
+    wspace, hspace = (0.3 if share == "all" else 0.5), (0.42 if share == "all" else 0.6)
+    fw = left + right + nc * pw + (nc - 1) * wspace
+    fh = top + bottom + nr * ph + (nr - 1) * hspace
+    with style_context():
+        fig = Figure(figsize=(fw, fh), dpi=dpi)
+        FigureCanvasAgg(fig)
+        shared: "Axes | None" = None
+        row_first: "Axes | None" = None
+        for i, g in enumerate(gammas):
+            for j, kp in enumerate(kprimes):
+                x0 = (left + j * (pw + wspace)) / fw
+                y0 = (bottom + (nr - 1 - i) * (ph + hspace)) / fh
+                kw: dict[str, Any] = {}
+                if share == "all" and shared is not None:
+                    kw = {"sharex": shared, "sharey": shared}
+                elif share == "row" and j > 0 and row_first is not None:
+                    kw = {"sharex": row_first, "sharey": row_first}
+                ax = fig.add_axes((x0, y0, pw / fw, ph / fh), **kw)
+                if shared is None:
+                    shared = ax
+                if j == 0:
+                    row_first = ax
+                km, mm = extents[i][j]
+                art = draw_map(ax, Parameters(g, kp), k_max=km, mu_max=mm, legend=False,
+                               title=_panel_title(g, kp), samples=samples, curves=curves,
+                               labels=labels)
+                # the curves' names (mu*(k), mu = k|k'| ...) crowd a small panel and
+                # spill into the next one: the legend and the full map name them
+                for t in art.curve_labels.values():
+                    t.remove()
+                ax.title.set_fontsize(9)
+                ax.xaxis.label.set_fontsize(10)
+                ax.yaxis.label.set_fontsize(10)
+                ax.tick_params(labelsize=7.5)
+                if share == "all":
+                    if i < nr - 1:
+                        ax.tick_params(labelbottom=False)
+                        ax.set_xlabel("")
+                    if j > 0:
+                        ax.tick_params(labelleft=False)
+                        ax.set_ylabel("")
+                elif share == "row" and j > 0:
+                    ax.tick_params(labelleft=False)
+                    ax.set_ylabel("")
+                ax.set_gid(f"panel-{i}-{j}")
+        handles = _legend_handles(MAP_MODES, dotted=curves and min(kprimes) < 0.0)
+        fig.legend(handles=handles, loc="lower center", ncols=min(4, max(2, nc)),
+                   bbox_to_anchor=(0.5, 0.1 / fh), fontsize=8, frameon=False,
+                   handlelength=2.2, handleheight=1.1, columnspacing=1.5)
+        title = (r"Regime maps: rows $\gamma = H/B$, columns $k' = h/H$"
+                 + ("" if share == "none" else
+                    f" (axes shared {'across the figure' if share == 'all' else 'in each row'})"))
+        fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / fh, va="top")
+    return fig
+
+
+def write_atlas(path: str | os.PathLike[str], gammas: Sequence[float], kprimes: Sequence[float],
+                *, fmt: str | None = None, dpi: float | None = None, **kwargs: Any) -> Path:
+    """Draw :func:`atlas_figure` and save it atomically (png, svg or pdf).
+
+    Returns the path written.
+    """
+    from .render import format_from_path, save_figure
+
+    fmt = format_from_path(path, fmt)
+    fig = atlas_figure(gammas, kprimes, **kwargs)
+    return save_figure(fig, path, fmt=fmt, dpi=dpi)
+
+
+# --------------------------------------------------------------------------------------
+# animation
+# --------------------------------------------------------------------------------------
+def sweep_extent(gamma: float, kprimes: Sequence[float]) -> tuple[float, float]:
+    """One view for every frame: :func:`shared_extent` of the frames' automatic views."""
+    return shared_extent([_extent_of(Parameters(gamma, kp)) for kp in kprimes])
+
+
+def _pillow_writer(fps: float) -> Any:
+    """matplotlib's PillowWriter, saving GIF whatever the (temporary) file name."""
+    from matplotlib.animation import PillowWriter
+
+    class _GifWriter(PillowWriter):
+        def finish(self) -> None:  # as PillowWriter.finish, with the format given
+            self._frames[0].save(
+                self.outfile, format="GIF", save_all=True, append_images=self._frames[1:],
+                duration=int(1000 / self.fps), loop=0)
+
+    return _GifWriter(fps=fps)
+
+
+def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
+                    k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
+                    dpi: float = 80.0, figsize: tuple[float, float] | None = None,
+                    samples: int = SAMPLES,
+                    progress: Callable[[int, int], None] | None = None) -> tuple[int, tuple[int, int]]:
+    """Write a GIF of the map of ``gamma`` as k' runs through ``kprimes``.
+
+    Parameters
+    ----------
+    path : path-like
+        Output ``.gif`` (written atomically).
+    gamma : float
+        Aspect ratio H/B.
+    kprimes : sequence of float
+        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1]).
+    k_max, mu_max : float, optional
+        The view of every frame (default :func:`sweep_extent`; the axes are
+        the same in every frame).
+    fps : float
+        Frames per second (0.5 to 50).
+    dpi : float
+        Pixels per inch of the frames.
+    figsize : (float, float), optional
+        Inches (default that of :func:`regimemap.render.new_figure`).
+    samples : int
+        Samples of k per frame.
+    progress : callable, optional
+        Called as ``progress(i, n)`` after frame i of n.
+
+    Returns
+    -------
+    (frames, (width, height))
+        Number of frames written and their size in pixels.
+
+    Notes
+    -----
+    Each frame is the all-mode map with the default title, which states the
+    case and (gamma, k'); the legend lists all six modes in every frame, so
+    it does not jump.
+    """
+    from ._atomic import atomic_path
+    from .render import FIGSIZE, draw_map, new_figure, style_context
+
+    g = check_gamma(gamma)
+    kps = [check_kprime(k) for k in kprimes]
+    if not kps:
+        raise ValueError("an animation needs at least one kprime")
+    if len(kps) > MAX_FRAMES:
+        raise ValueError(f"{len(kps)} frames exceed the limit of {MAX_FRAMES}")
+    if not (0.5 <= fps <= 50.0):
+        raise ValueError(f"fps must be a number in [0.5, 50], got {fps!r}")
+    if Path(path).suffix.lower() != ".gif":
+        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+    if k_max is None or mu_max is None:
+        ek, em = sweep_extent(g, kps)
+        k_max = ek if k_max is None else k_max
+        mu_max = em if mu_max is None else mu_max
+    size = figsize or FIGSIZE
+    fig, ax = new_figure(size, dpi)
+    writer = _pillow_writer(fps)
+    handles = None
+    with style_context(), atomic_path(path) as tmp:
+        writer.setup(fig, str(tmp), dpi=dpi)
+        for i, kp in enumerate(kps):
+            ax.cla()
+            draw_map(ax, Parameters(g, kp), k_max=k_max, mu_max=mu_max, legend=False,
+                     samples=samples)
+            if handles is None:
+                handles = _legend_handles(MAP_MODES, dotted=min(kps) < 0.0)
+            ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncols=2,
+                      fontsize=8.5, frameon=False, handlelength=2.2, handleheight=1.1,
+                      columnspacing=1.5, borderaxespad=0.0)
+            ax.text(0.99, 0.98, rf"$k' = {kp:+.3f}$", transform=ax.transAxes, ha="right", va="top",
+                    fontsize=11, zorder=10,
+                    bbox={"boxstyle": "round,pad=0.3", "fc": "white", "ec": "0.3", "lw": 0.6})
+            writer.grab_frame()
+            if progress is not None:
+                progress(i + 1, len(kps))
+        frame_size = tuple(int(v) for v in writer.frame_size)
+        writer.finish()
+    return len(kps), (frame_size[0], frame_size[1])

@@ -1,0 +1,187 @@
+"""``regimemap atlas`` (small multiples) and ``regimemap animate`` (a GIF sweeping k')."""
+
+from __future__ import annotations
+
+from typing import Any, Callable
+
+import click
+
+from . import cli
+from ._common import RunError, gamma_option, output_path, positive_float
+
+__all__ = ["atlas_cmd", "animate_cmd"]
+
+# kept equal to regimemap.atlas.MAX_PANELS / MAX_FRAMES (checked by the tests); not imported
+# here so that loading the command line stays light
+_MAX_PANELS = 48
+_MAX_FRAMES = 400
+
+
+class _Values(click.ParamType):
+    """A list ``a,b,c`` or a range ``start:stop:count`` of checked numbers."""
+
+    def __init__(self, name: str, check: Callable[[float], float], max_count: int):
+        self.name = f"{name}-list"
+        self._what = name
+        self._check = check
+        self._max = max_count
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
+        if isinstance(value, list):
+            return value
+        from ..atlas import parse_values
+
+        try:
+            return parse_values(str(value), self._what, self._check, self._max)
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
+
+
+def _gamma_check(v: float) -> float:
+    from ..validation import check_gamma
+
+    return check_gamma(v)
+
+
+def _kprime_check(v: float) -> float:
+    from ..validation import check_kprime
+
+    return check_kprime(v)
+
+
+def _figure_output(path: str) -> str:
+    from ..render import format_from_path
+
+    try:
+        fmt = format_from_path(path)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
+    output_path(path, "--output")
+    return fmt
+
+
+@cli.command("atlas", short_help="Small multiples of the map: rows gamma, columns k'.")
+@click.option("--gamma", "gammas", required=True, metavar="LIST",
+              type=_Values("gamma", _gamma_check, _MAX_PANELS),
+              help="Aspect ratios H/B (> 0), one row each: 1,2,3 or start:stop:count.")
+@click.option("--kprime", "kprimes", required=True, metavar="LIST",
+              type=_Values("kprime", _kprime_check, _MAX_PANELS),
+              help="Force heights h/H in [-1, 1], one column each: -0.6,0,0.4 or -1:1:5.")
+@click.option("--share", type=click.Choice(["all", "row", "none"]), default="all",
+              show_default=True,
+              help="Axes shared by the whole figure, within each row, or not at all.")
+@click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
+              help="Right end of the k axis of every panel (default: automatic).")
+@click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
+              help="Top of the mu axis of every panel (default: automatic).")
+@click.option("--dpi", type=click.IntRange(30, 600), default=150, show_default=True,
+              help="Resolution of PNG output.")
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
+              help="Output file: .png, .svg or .pdf (written atomically).")
+def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: float | None,
+              mu_max: float | None, dpi: int, output: str) -> None:
+    """Draw the all-mode map for every GAMMA (rows) and KPRIME (columns) on one page.
+
+    The panels share their axes (--share all, the default), so regions can be
+    compared by eye; --share row gives each row its own view, --share none
+    each panel.  A shared view is the upper quartile of the panels' automatic
+    views (a panel with k' near 0 or -1 would otherwise push the axes far
+    out); panels whose point A falls outside are named on standard error;
+    --k-max/--mu-max fix the view.  One legend serves all panels; each panel is titled with its
+    gamma and k'.  At most 48 panels.
+
+    Lists are comma-separated (1,2,3) or ranges start:stop:count with both
+    ends included (-1:1:5 is -1, -0.5, 0, 0.5, 1).
+
+    \b
+    Examples:
+      regimemap atlas --gamma 1,2,3 --kprime -0.6,-0.2,0,0.4,0.9 -o atlas.svg
+      regimemap atlas --gamma 3 --kprime -1:1:5 --share none -o row.png
+      regimemap atlas --gamma 0.5:3:6 --kprime -0.4 --mu-max 3 -o slender.pdf
+    """
+    n = len(gammas) * len(kprimes)
+    if n > _MAX_PANELS:
+        raise click.UsageError(
+            f"{len(gammas)} gamma x {len(kprimes)} kprime = {n} panels exceed the limit of "
+            f"{_MAX_PANELS}; give fewer values to --gamma or --kprime")
+    fmt = _figure_output(output)
+    from ..atlas import write_atlas
+
+    try:
+        write_atlas(output, gammas, kprimes, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
+                    dpi=dpi)
+    except OSError as exc:
+        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    click.echo(f"wrote {output} ({len(gammas)} x {len(kprimes)} panels)", err=True)
+    if share != "none":
+        from ..atlas import atlas_extents, points_outside
+        from ..params import Parameters
+
+        ext = atlas_extents(gammas, kprimes, share, k_max, mu_max)
+        lost = [f"gamma = {g:g}, k' = {kp:g}" for i, g in enumerate(gammas)
+                for j, kp in enumerate(kprimes)
+                if points_outside([Parameters(g, kp)], *ext[i][j])]
+        _note_outside(lost)
+
+
+@cli.command("animate", short_help="A GIF of the map as k' sweeps a range.")
+@gamma_option()
+@click.option("--kprime", "kprimes", required=True, metavar="RANGE",
+              type=_Values("kprime", _kprime_check, _MAX_FRAMES),
+              help="k' of the frames: start:stop:count (e.g. -1:1:41) or a list -1,-0.5,0.")
+@click.option("--fps", type=click.FloatRange(0.5, 50.0), default=8.0, show_default=True,
+              help="Frames per second.")
+@click.option("--dpi", type=click.IntRange(30, 300), default=80, show_default=True,
+              help="Pixels per inch (the frame is 6.4 x 5.6 inches: 512 x 448 at 80).")
+@click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
+              help="Right end of the k axis (default: upper quartile of the frames' automatic views).")
+@click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
+              help="Top of the mu axis (default: upper quartile of the frames' automatic views).")
+@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE.gif",
+              help="Output GIF (written atomically).")
+def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max: float | None,
+                mu_max: float | None, output: str) -> None:
+    """Animate the map of GAMMA as k' runs through a range (a GIF).
+
+    Every frame shows the all-mode map on the same axes (the upper quartile
+    of the frames' automatic views, or --k-max/--mu-max; frames whose point A
+    falls outside are named on standard error), its title states the
+    report's case, and the frame's k' is written in the top right corner.
+    At most 400 frames.
+
+    \b
+    Examples:
+      regimemap animate --gamma 3 --kprime -1:1:41 -o sweep.gif
+      regimemap animate --gamma 1.5 --kprime -0.8:0:17 --fps 4 --k-max 5 --mu-max 3 -o below.gif
+    """
+    from pathlib import Path
+
+    if Path(output).suffix.lower() != ".gif":
+        raise click.BadParameter(f"the animation is a GIF: give a file ending in .gif, got {output!r}",
+                                 param_hint="'-o' / '--output'")
+    output_path(output, "--output")
+    from ..atlas import write_animation
+
+    try:
+        n, (w, h) = write_animation(output, gamma, kprimes, k_max=k_max, mu_max=mu_max, fps=fps,
+                                    dpi=dpi)
+    except OSError as exc:
+        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    click.echo(f"wrote {output} ({n} frames, {w} x {h} pixels, {fps:g} frames/s)", err=True)
+    from ..atlas import points_outside, sweep_extent
+    from ..params import Parameters
+
+    ek, em = sweep_extent(gamma, kprimes)
+    view = (k_max if k_max is not None else ek, mu_max if mu_max is not None else em)
+    lost = [f"k' = {p.kprime:g}" for p in points_outside([Parameters(gamma, kp) for kp in kprimes],
+                                                         *view)]
+    _note_outside(lost)
+
+
+def _note_outside(lost: list[str]) -> None:
+    """Tell which maps have their point A outside the shared view."""
+    if not lost:
+        return
+    shown = ", ".join(lost[:6]) + (f" and {len(lost) - 6} more" if len(lost) > 6 else "")
+    click.echo(f"note: point A lies outside the shared view for {shown}; "
+               "give --k-max/--mu-max to widen it", err=True)
