@@ -16,6 +16,7 @@ from importlib.metadata import PackageNotFoundError, version as _version
 from .classify import PRIORITY, classify, label_grid
 from .modes import MAP_MODES, Mode
 from .params import Case, Parameters
+from .query import PointResult, margin, query_point, query_points
 from .solver import Hypothesis, admissible
 
 try:
@@ -30,8 +31,12 @@ __all__ = [
     "Mode",
     "PRIORITY",
     "Parameters",
+    "PointResult",
     "admissible",
     "classify",
     "label_grid",
+    "margin",
+    "query_point",
+    "query_points",
     "__version__",
 ]

@@ -31,8 +31,13 @@ def cli() -> None:
     \b
     Examples:
       regimemap plot --gamma 3 --kprime 0.4
+      regimemap plot --gamma 3 --kprime -0.2 --show-ambiguity -o map.svg
       regimemap figure 3.9a -o fig.svg
       regimemap figures --out figures --format png,svg
+      regimemap classify --gamma 3 --kprime 0.4 --k 0.45 --mu 0.6
+      regimemap export --gamma 3 --kprime 0.4 -o map.json
+      regimemap atlas --gamma 1,2,3 --kprime -0.6,-0.2,0,0.4,0.9 -o atlas.svg
+      regimemap animate --gamma 3 --kprime -1:1:41 -o sweep.gif
     """
 
 
