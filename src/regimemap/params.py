@@ -89,7 +89,9 @@ def case_of(gamma: float, kprime: float) -> Case:
     if kprime >= 0.0:
         if kprime <= (1.0 + g2) / (3.0 * g2):
             return Case.ABOVE_1A
-        if 4.0 + g2 - 3.0 * g2 * kprime >= 0.0:
+        # a >= 0 (3.18); the second test keeps the tie k' = (4+g^2)/(3g^2) in
+        # case 1 when rounding makes a a hair negative there
+        if 4.0 + g2 - 3.0 * g2 * kprime >= 0.0 or kprime <= (4.0 + g2) / (3.0 * g2):
             return Case.ABOVE_1B
         return Case.ABOVE_2_3
     if -kprime <= (1.0 + g2) / (4.0 + g2):
@@ -228,8 +230,8 @@ class Parameters:
 
     @property
     def k_F(self) -> float:
-        """k_F = b/a where mu** = 0 (Section IV.6); defined below C."""
-        return self.b / self.a
+        """k_F = b/a where mu** = 0 (Section IV.6); defined below C (inf when a <= 0)."""
+        return math.inf if self.a <= 0.0 else self.b / self.a
 
     @property
     def k_pole(self) -> float:
