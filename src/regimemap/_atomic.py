@@ -1,30 +1,70 @@
 """Write output files atomically: a temporary file in the same folder, renamed into place.
 
 A failure or an interrupt while writing leaves either the old file or none,
-never a half-written one.
+never a half-written one.  The temporary file is named ``.<name>.<random>.part``
+(hidden, beside the target, so the final rename never crosses file systems) and
+is removed on any exception, including KeyboardInterrupt.
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
+import stat
 import tempfile
 from pathlib import Path
 from typing import IO, Iterator
 
 __all__ = ["atomic_path", "atomic_open", "check_output_path"]
 
+#: Longest part of the target's name kept in the temporary file's name (the
+#: temporary name adds about 15 characters; most file systems allow 255).
+_TMP_NAME_CHARS = 200
+
+
+def _folder_of(p: Path) -> Path:
+    return p.parent if str(p.parent) else Path(".")
+
 
 def check_output_path(path: str | os.PathLike[str], param: str = "output") -> Path:
-    """Return ``path`` as a Path if its folder exists and is writable, else raise ValueError."""
-    p = Path(path)
-    folder = p.parent if str(p.parent) else Path(".")
-    if p.exists() and p.is_dir():
-        raise ValueError(f"{param} {str(p)!r} is a folder, not a file")
-    if not folder.is_dir():
-        raise ValueError(f"{param} folder {str(folder)!r} does not exist")
+    """Return ``path`` as a Path if a file can be written there, else raise ValueError.
+
+    Checks that the name is usable, that ``path`` is not a folder, that its
+    folder exists and is a folder, and that a file can be created in it (by
+    creating and removing an empty hidden file: permission bits alone do not
+    tell, e.g. for root or on read-only and virtual file systems).  The message
+    starts with ``param`` (e.g. ``--output folder 'x' does not exist``).
+    """
+    text = os.fspath(path)
+    if isinstance(text, bytes):
+        text = os.fsdecode(text)
+    if not text.strip():
+        raise ValueError(f"{param} must be a file name, got {text!r}")
+    if "\x00" in text:
+        raise ValueError(f"{param} {text!r} contains a NUL character")
+    p = Path(text)
+    name_bytes = len(os.fsencode(p.name))
+    if name_bytes > 255:
+        raise ValueError(f"{param} file name is too long ({name_bytes} bytes > 255)")
+    folder = _folder_of(p)
+    try:
+        if p.is_dir():
+            raise ValueError(f"{param} {str(p)!r} is a folder, not a file")
+        if folder.exists() and not folder.is_dir():
+            raise ValueError(f"{param} folder {str(folder)!r} is a file, not a folder")
+        if not folder.is_dir():
+            raise ValueError(f"{param} folder {str(folder)!r} does not exist")
+    except OSError as exc:  # e.g. a path too long, or a loop of links
+        raise ValueError(f"{param} {text!r} cannot be used: {exc.strerror}") from None
     if not os.access(folder, os.W_OK | os.X_OK):
         raise ValueError(f"{param} folder {str(folder)!r} is not writable")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".regimemap-probe.", dir=folder)
+    except OSError as exc:
+        raise ValueError(f"{param} folder {str(folder)!r} is not writable ({exc.strerror})") from None
+    os.close(fd)
+    with contextlib.suppress(OSError):
+        os.unlink(probe)
     return p
 
 
@@ -33,16 +73,34 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     """Yield a temporary path beside ``path``; on success rename it to ``path``.
 
     On any exception (including KeyboardInterrupt) the temporary file is
-    removed and ``path`` is left as it was.
+    removed and ``path`` is left as it was.  If ``path`` is a symbolic link
+    the file it points to is replaced (the link is kept).  The new file gets
+    the permissions of the file it replaces, or the default ``0o666 & ~umask``.
+
+    Notes
+    -----
+    The temporary name ends in ``.part``: writers that choose a format from
+    the suffix (``Figure.savefig``) must be given the format explicitly, and
+    ``numpy.savez`` must be given an open file (it appends ``.npz`` to names).
     """
     target = Path(path)
-    folder = target.parent if str(target.parent) else Path(".")
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".part", dir=folder)
-    os.close(fd)
+    if target.is_symlink():
+        target = Path(os.path.realpath(target))
+    folder = _folder_of(target)
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name[:_TMP_NAME_CHARS]}.", suffix=".part",
+                                   dir=folder)
+    except OSError as exc:
+        raise OSError(exc.errno, f"cannot create a file in {str(folder)!r}: {exc.strerror}",
+                      str(target)) from None
     tmp_path = Path(tmp)
     try:
+        os.close(fd)
         yield tmp_path
-        mode = 0o666 & ~_umask()
+        try:
+            mode = stat.S_IMODE(os.stat(target).st_mode)
+        except OSError:
+            mode = 0o666 & ~_umask()
         os.chmod(tmp_path, mode)
         os.replace(tmp_path, target)
     except BaseException:
@@ -53,7 +111,14 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
 
 @contextlib.contextmanager
 def atomic_open(path: str | os.PathLike[str], mode: str = "w", **kwargs) -> Iterator[IO]:
-    """Open a temporary file beside ``path`` for writing; rename it into place on success."""
+    """Open a temporary file beside ``path`` for writing; rename it into place on success.
+
+    ``mode`` must be a writing mode (``"w"``, ``"wb"``, ``"x"`` is not
+    supported).  On any exception inside the ``with`` block the target is
+    untouched.
+    """
+    if not mode.startswith("w"):
+        raise ValueError(f"atomic_open mode must start with 'w', got {mode!r}")
     with atomic_path(path) as tmp:
         with open(tmp, mode, **kwargs) as fh:
             yield fh

@@ -5,13 +5,28 @@ from __future__ import annotations
 import csv
 import math
 import os
+import re
+import stat
 from dataclasses import dataclass
-from typing import Iterable
 
-__all__ = ["DesignPoint", "parse_point_spec", "read_points_csv", "MAX_POINTS"]
+from .validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
+
+__all__ = ["DesignPoint", "parse_point_spec", "read_points_csv", "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
 
 #: Largest number of rows accepted from a points file.
 MAX_POINTS = 1_000_000
+#: Largest points file accepted, in bytes (checked before reading a regular
+#: file, and while reading a pipe or a device).
+MAX_POINTS_FILE_BYTES = 128 * 1024 * 1024
+#: Longest line accepted, in characters.
+_MAX_LINE = 65536
+
+# A decimal number as written in a CSV file or on the command line (ASCII digits,
+# optional sign, fraction and exponent) or one of the words float() knows for
+# infinities and NaN (refused afterwards with a clearer message).  Python's
+# float() alone would also take "1_000" and non-ASCII digits.
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infinity|nan)",
+                     re.ASCII | re.IGNORECASE)
 
 
 @dataclass(frozen=True)
@@ -25,21 +40,22 @@ class DesignPoint:
     kprime: float | None = None
 
 
-def _number(text: str, what: str, where: str, lo: float = 0.0, hi: float = math.inf,
-            lo_open: bool = False) -> float:
-    try:
-        v = float(text)
-    except (TypeError, ValueError):
-        raise ValueError(f"{where}: {what} must be a number, got {text!r}") from None
-    if not math.isfinite(v) or v < lo or v > hi or (lo_open and v <= lo):
-        if what == "gamma":
-            rng = "a finite number > 0"
-        elif what == "kprime":
-            rng = "a number in [-1, 1]"
-        else:
-            rng = "a finite number >= 0"
+def _number(text: str, what: str, where: str) -> float:
+    """``text`` as the value of ``what`` (k, mu, gamma or kprime), with the library's ranges."""
+    if what == "gamma":
+        rng, lo, hi = f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]", GAMMA_MIN, GAMMA_MAX
+    elif what == "kprime":
+        rng, lo, hi = "a number in [-1, 1]", -1.0, 1.0
+    else:
+        rng, lo, hi = f"a finite number >= 0 (at most {MAX_VALUE:g})", 0.0, MAX_VALUE
+    if not text:
+        raise ValueError(f"{where}: {what} is missing; it must be {rng}")
+    if not _NUMBER.fullmatch(text):
+        raise ValueError(f"{where}: {what} must be {rng}, got {text!r} (not a number)")
+    v = float(text)
+    if not math.isfinite(v) or v < lo or v > hi:
         raise ValueError(f"{where}: {what} must be {rng}, got {text!r}")
-    return v
+    return v + 0.0  # fold -0.0
 
 
 def parse_point_spec(spec: str) -> DesignPoint:
@@ -59,42 +75,86 @@ def parse_point_spec(spec: str) -> DesignPoint:
     return DesignPoint(k, mu, name.strip())
 
 
+def _open_points_file(path: str):
+    try:
+        st = os.stat(path)
+    except OSError as exc:
+        raise ValueError(f"cannot read points file {path!r}: {exc.strerror}") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise ValueError(f"points file {path!r} is a folder, not a file")
+    if stat.S_ISREG(st.st_mode) and st.st_size > MAX_POINTS_FILE_BYTES:
+        raise ValueError(
+            f"points file {path!r} is {st.st_size} bytes, more than the limit of "
+            f"{MAX_POINTS_FILE_BYTES} bytes"
+        )
+    try:
+        return open(path, newline="", encoding="utf-8-sig")
+    except OSError as exc:
+        raise ValueError(f"cannot read points file {path!r}: {exc.strerror}") from None
+
+
+def _lines(fh, path: str):
+    """The lines of ``fh``, refusing endless lines and files beyond the size limit."""
+    total = 0
+    number = 0
+    while True:
+        line = fh.readline(_MAX_LINE + 1)
+        if not line:
+            return
+        number += 1
+        if len(line) > _MAX_LINE:
+            raise ValueError(f"{path}, line {number}: not CSV text (a line longer than "
+                             f"{_MAX_LINE} characters)")
+        total += len(line)
+        if total > MAX_POINTS_FILE_BYTES:
+            raise ValueError(f"points file {path!r} is more than the limit of "
+                             f"{MAX_POINTS_FILE_BYTES} bytes")
+        yield line
+
+
 def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
     """Read design points from a CSV file with a header row.
 
     Required columns ``k`` and ``mu``; optional ``gamma``, ``kprime`` and
-    ``name`` (other columns are ignored).  Blank lines are skipped.
+    ``name`` (other columns are ignored; names are case-insensitive).  Blank
+    lines are skipped, also before the header.  At most :data:`MAX_POINTS`
+    points and :data:`MAX_POINTS_FILE_BYTES` bytes.
 
     Raises
     ------
     ValueError
         Naming the file, the line and the column of the first bad value, or a
-        missing column.
+        missing or repeated column.
     """
     path = os.fspath(path)
-    try:
-        fh = open(path, newline="", encoding="utf-8-sig")
-    except OSError as exc:
-        raise ValueError(f"cannot read points file {path!r}: {exc.strerror}") from None
+    fh = _open_points_file(path)
     with fh:
-        reader = csv.reader(fh)
+        reader = csv.reader(_lines(fh, path))
         try:
-            header = next(reader)
-        except StopIteration:
-            raise ValueError(f"{path}: empty file; expected a header with columns k,mu") from None
-        except (csv.Error, UnicodeDecodeError) as exc:
-            raise ValueError(f"{path}, line 1: not CSV text ({exc})") from None
-        cols = [h.strip().lower() for h in header]
-        missing = [c for c in ("k", "mu") if c not in cols]
-        if missing:
-            raise ValueError(
-                f"{path}, line 1: missing column(s) {', '.join(missing)}; the header must name k and mu"
-            )
-        idx = {c: cols.index(c) for c in ("k", "mu", "gamma", "kprime", "name") if c in cols}
-        points: list[DesignPoint] = []
-        try:
-            rows: Iterable[list[str]] = reader
-            for row in rows:
+            header: list[str] | None = None
+            for row in reader:
+                if row and any(c.strip() for c in row):
+                    header = row
+                    break
+            if header is None:
+                raise ValueError(f"{path}: empty file; expected a header with columns k,mu")
+            where = f"{path}, line {reader.line_num}"
+            if any("\x00" in c for c in header):
+                raise ValueError(f"{where}: not CSV text (NUL bytes; a binary file?)")
+            cols = [h.strip().lower() for h in header]
+            missing = [c for c in ("k", "mu") if c not in cols]
+            if missing:
+                raise ValueError(
+                    f"{where}: missing column(s) {', '.join(missing)}; the header must name k and mu"
+                    f" (got {', '.join(repr(h) for h in header[:6])})"
+                )
+            known = ("k", "mu", "gamma", "kprime", "name")
+            twice = [c for c in known if cols.count(c) > 1]
+            if twice:
+                raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
+            idx = {c: cols.index(c) for c in known if c in cols}
+            points: list[DesignPoint] = []
+            for row in reader:
                 line = reader.line_num
                 if not row or all(not c.strip() for c in row):
                     continue
@@ -109,13 +169,13 @@ def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
                 mu = _number(cell("mu"), "mu", f"{where}, column mu")
                 gamma = kprime = None
                 if "gamma" in idx and cell("gamma"):
-                    gamma = _number(cell("gamma"), "gamma", f"{where}, column gamma", lo_open=True)
+                    gamma = _number(cell("gamma"), "gamma", f"{where}, column gamma")
                 if "kprime" in idx and cell("kprime"):
-                    kprime = _number(cell("kprime"), "kprime", f"{where}, column kprime", -1.0, 1.0)
+                    kprime = _number(cell("kprime"), "kprime", f"{where}, column kprime")
                 name = cell("name") if "name" in idx else ""
+                if len(points) >= MAX_POINTS:
+                    raise ValueError(f"{where}: more than {MAX_POINTS} points (the limit)")
                 points.append(DesignPoint(k, mu, name, gamma, kprime))
-                if len(points) > MAX_POINTS:
-                    raise ValueError(f"{path}: more than {MAX_POINTS} points")
         except (csv.Error, UnicodeDecodeError) as exc:
-            raise ValueError(f"{path}, line {reader.line_num}: not CSV text ({exc})") from None
+            raise ValueError(f"{path}, line {reader.line_num + 1}: not CSV text ({exc})") from None
     return points

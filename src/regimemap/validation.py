@@ -2,7 +2,11 @@
 
 Every check raises :class:`ValueError` whose message names the parameter, the
 value received and the allowed range, e.g.
-``gamma must be a finite number > 0, got -1.0``.
+``gamma must be a finite number in [0.001, 1000], got -1.0``.
+
+Booleans, strings, ``None``, complex numbers and sequences are refused where a
+number is expected (``float(True)`` and ``float("3")`` would otherwise slip
+through); the command line converts its text arguments before checking them.
 """
 
 from __future__ import annotations
@@ -22,6 +26,10 @@ __all__ = [
     "check_resolution",
     "MAX_GRID_POINTS",
     "MAX_RESOLUTION",
+    "GAMMA_MIN",
+    "GAMMA_MAX",
+    "MAX_VALUE",
+    "MAX_AXIS",
 ]
 
 #: Largest grid accepted by :func:`regimemap.label_grid` and the CLI
@@ -29,17 +37,60 @@ __all__ = [
 MAX_GRID_POINTS = 25_000_000
 #: Largest number of samples along one axis of a map.
 MAX_RESOLUTION = 5000
+#: Range of the aspect ratio gamma = H/B.  Beyond it gamma**2 under- or
+#: overflows in the report's constants (a = 4 + g^2 - 3 g^2 k' ...), which
+#: would give wrong labels or a division by zero; every real block is inside.
+GAMMA_MIN = 1e-3
+GAMMA_MAX = 1e3
+#: Largest k, mu (and plot limit) accepted: above about 1e150 the products
+#: a*k, c*k of the rule overflow to inf and the labels would be wrong.
+MAX_VALUE = 1e100
+#: Largest end of a plotted or exported axis (--k-max, --mu-max): the view is
+#: sampled a little beyond it, and the samples must stay below MAX_VALUE.
+MAX_AXIS = 1e6
+#: kprime closer to 0 than this is taken as 0 (a subnormal k' would make
+#: gamma*|k'| underflow to 0 in 1/(gamma |k'|)); the map is the same.
+_KPRIME_ZERO = 1e-300
 
 
-def _as_float(name: str, value: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, (numbers.Real, np.floating, np.integer)):
-        try:
-            if isinstance(value, (str, bytes)) or isinstance(value, bool):
-                raise TypeError
-            value = float(value)
-        except (TypeError, ValueError):
-            raise ValueError(f"{name} must be a number, got {value!r}") from None
-    return float(value)
+def _describe(value: Any) -> str:
+    """``repr`` of a bad value, short, with plain floats (``nan``, not ``np.float64(nan)``)."""
+    if isinstance(value, (np.str_, np.bytes_)):
+        value = value.item()
+    if isinstance(value, np.bool_):
+        text = repr(bool(value))
+    elif isinstance(value, (float, np.floating)) and not isinstance(value, bool):
+        text = repr(float(value))
+    elif isinstance(value, np.integer):
+        text = repr(int(value))
+    elif isinstance(value, np.complexfloating):
+        text = repr(complex(value))
+    else:
+        text = repr(value)
+    if len(text) > 60:
+        text = text[:57] + "..."
+    return text
+
+
+def _is_number(value: Any) -> bool:
+    """True for real numbers (Python or numpy, including 0-d numeric arrays), not for bools."""
+    if isinstance(value, (bool, np.bool_)):
+        return False
+    if isinstance(value, (numbers.Real, np.floating, np.integer)):
+        return True
+    if isinstance(value, np.ndarray) and value.ndim == 0:
+        return value.dtype.kind in "iuf"
+    return False
+
+
+def _as_float(name: str, value: Any, allowed: str) -> float:
+    """``float(value)`` if ``value`` is a real number, else ValueError naming ``name`` and ``allowed``."""
+    if not _is_number(value):
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)} (not a number)")
+    try:
+        return float(value)
+    except (TypeError, ValueError, OverflowError):  # pragma: no cover - exotic numbers
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)}") from None
 
 
 def check_gamma(gamma: Any) -> float:
@@ -48,11 +99,13 @@ def check_gamma(gamma: Any) -> float:
     Raises
     ------
     ValueError
-        If gamma is not a finite number > 0.
+        If gamma is not a finite number in [GAMMA_MIN, GAMMA_MAX] = [0.001, 1000]
+        (in particular if it is <= 0, NaN or infinite).
     """
-    g = _as_float("gamma", gamma)
-    if not math.isfinite(g) or g <= 0.0:
-        raise ValueError(f"gamma must be a finite number > 0, got {gamma!r}")
+    allowed = f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]"
+    g = _as_float("gamma", gamma, allowed)
+    if not math.isfinite(g) or not (GAMMA_MIN <= g <= GAMMA_MAX):
+        raise ValueError(f"gamma must be {allowed}, got {_describe(gamma)}")
     return g
 
 
@@ -64,57 +117,134 @@ def check_kprime(kprime: Any) -> float:
     ValueError
         If kprime is not a number in [-1, 1].
     """
-    kp = _as_float("kprime", kprime)
+    allowed = "a number in [-1, 1]"
+    kp = _as_float("kprime", kprime, allowed)
     if not math.isfinite(kp) or not (-1.0 <= kp <= 1.0):
-        raise ValueError(f"kprime must be a number in [-1, 1], got {kprime!r}")
-    if kp == 0.0:
-        kp = 0.0  # fold -0.0 into +0.0
+        raise ValueError(f"kprime must be {allowed}, got {_describe(kprime)}")
+    if abs(kp) < _KPRIME_ZERO:
+        kp = 0.0  # fold -0.0 (and subnormal values) into +0.0
     return kp
 
 
-def check_positive(name: str, value: Any) -> float:
-    """Return ``value`` as a float if it is finite and > 0, else raise."""
-    v = _as_float(name, value)
-    if not math.isfinite(v) or v <= 0.0:
-        raise ValueError(f"{name} must be a finite number > 0, got {value!r}")
+def check_positive(name: str, value: Any, hi: float = MAX_VALUE) -> float:
+    """Return ``value`` as a float if it is > 0 and <= ``hi`` (default MAX_VALUE = 1e100), else raise."""
+    allowed = f"a finite number > 0 (at most {hi:g})"
+    v = _as_float(name, value, allowed)
+    if not math.isfinite(v) or v <= 0.0 or v > hi:
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)}")
     return v
 
 
-def check_nonnegative_array(name: str, value: Any) -> np.ndarray:
-    """Return ``value`` as a float64 array of finite numbers >= 0, else raise."""
+def _as_float_array(name: str, value: Any) -> np.ndarray:
+    """``value`` as a float64 array; bools, strings, None, complex and objects are refused."""
+    allowed = _ARRAY_ALLOWED
+    if value is None or isinstance(value, (str, bytes)):
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)} (not a number)")
     try:
-        arr = np.asarray(value, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be numbers >= 0, got {value!r}") from None
-    if arr.size and not np.all(np.isfinite(arr)):
-        bad = arr[~np.isfinite(arr)].ravel()[0]
-        raise ValueError(f"{name} must be finite numbers >= 0, got {bad!r}")
-    if arr.size and np.any(arr < 0.0):
-        bad = arr[arr < 0.0].ravel()[0]
-        raise ValueError(f"{name} must be numbers >= 0, got {float(bad)!r}")
+        raw = np.asarray(value)
+    except (TypeError, ValueError):  # ragged nested sequences
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)} (not an array of numbers)") from None
+    kind = raw.dtype.kind
+    if kind == "O":
+        for item in raw.flat:
+            if item is None or isinstance(item, (bool, np.bool_, str, bytes, complex,
+                                                 np.complexfloating)):
+                raise ValueError(f"{name} must be {allowed}, got {_describe(item)} (not a number)")
+    elif kind not in "iuf":
+        what = {"b": "bool", "c": "complex", "U": "text", "S": "bytes",
+                "M": "datetime", "m": "timedelta"}.get(kind, raw.dtype.name)
+        bad = raw.flat[0] if raw.size and kind in "bcMm" else value
+        raise ValueError(f"{name} must be {allowed}, got {_describe(bad)} ({what}, not a number)")
+    try:
+        return np.asarray(raw, dtype=np.float64)
+    except (TypeError, ValueError, OverflowError):  # pragma: no cover - exotic objects
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)}") from None
+
+
+_ARRAY_ALLOWED = f"finite numbers >= 0 (at most {MAX_VALUE:g})"
+
+
+def _where(arr: np.ndarray, mask: np.ndarray) -> str:
+    if arr.ndim == 0:
+        return ""
+    idx = np.unravel_index(int(np.flatnonzero(mask)[0]), arr.shape)
+    return f" at index {idx[0] if len(idx) == 1 else tuple(int(i) for i in idx)}"
+
+
+def check_nonnegative_array(name: str, value: Any) -> np.ndarray:
+    """Return ``value`` as a float64 array of numbers in [0, MAX_VALUE], else raise.
+
+    The message names ``name``, the first bad value and its index.  The check
+    uses two reductions (min and max), so it allocates nothing of the size of
+    ``value`` when all is well.
+    """
+    arr = _as_float_array(name, value)
+    if arr.size:
+        lo = arr.min()
+        hi = arr.max()
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            mask = ~np.isfinite(arr)
+        elif lo < 0.0:
+            mask = arr < 0.0
+        elif hi > MAX_VALUE:
+            mask = arr > MAX_VALUE
+        else:
+            return arr
+        bad = arr[mask].ravel()[0]
+        raise ValueError(f"{name} must be {_ARRAY_ALLOWED}, got {_describe(bad)}{_where(arr, mask)}")
     return arr
 
 
-def check_axis(name: str, value: Any) -> np.ndarray:
-    """Return a 1-D axis of finite numbers >= 0, or raise."""
+def check_axis(name: str, value: Any, max_size: int = MAX_GRID_POINTS) -> np.ndarray:
+    """Return a 1-D axis of at most ``max_size`` finite numbers >= 0, or raise.
+
+    The shape and the size are checked before any value is looked at, so a
+    huge axis is refused at once.
+    """
+    shape = np.shape(value) if isinstance(value, np.ndarray) else None
+    if shape is not None:
+        if len(shape) != 1:
+            raise ValueError(f"{name} must be a 1-D array, got an array of shape {shape}")
+        if shape[0] > max_size:
+            raise ValueError(
+                f"{name} has {shape[0]} values, more than the limit of {max_size} "
+                "(MAX_GRID_POINTS)"
+            )
     arr = check_nonnegative_array(name, value)
     if arr.ndim != 1:
         raise ValueError(f"{name} must be a 1-D array, got an array of shape {arr.shape}")
+    if arr.size > max_size:
+        raise ValueError(
+            f"{name} has {arr.size} values, more than the limit of {max_size} (MAX_GRID_POINTS)"
+        )
     return arr
 
 
 def check_resolution(name: str, value: Any) -> int:
-    """Return a number of samples along one axis, 2..MAX_RESOLUTION, or raise."""
-    if isinstance(value, bool):
-        raise ValueError(f"{name} must be a whole number in [2, {MAX_RESOLUTION}], got {value!r}")
+    """Return a number of samples along one axis, 2..MAX_RESOLUTION, or raise.
+
+    Accepts an int, a float with an integral value, or (from the command line)
+    a string of digits.
+    """
+    msg = f"{name} must be a whole number in [2, {MAX_RESOLUTION}], got {_describe(value)}"
+    if isinstance(value, (bool, np.bool_)):
+        raise ValueError(msg)
     try:
-        n = int(value)
-        if n != value and not (isinstance(value, str) and str(n) == value.strip()):
+        if isinstance(value, str):
+            text = value.strip()
+            if not text.lstrip("+-").isdigit() or not text.isascii():
+                raise ValueError
+            n = int(text)
+        elif isinstance(value, (numbers.Integral, np.integer)):
+            n = int(value)
+        elif isinstance(value, (numbers.Real, np.floating)):
+            if not math.isfinite(float(value)) or float(value) != int(value):
+                raise ValueError
+            n = int(value)
+        else:
             raise TypeError
     except (TypeError, ValueError, OverflowError):
-        raise ValueError(
-            f"{name} must be a whole number in [2, {MAX_RESOLUTION}], got {value!r}"
-        ) from None
+        raise ValueError(msg) from None
     if not 2 <= n <= MAX_RESOLUTION:
-        raise ValueError(f"{name} must be a whole number in [2, {MAX_RESOLUTION}], got {value!r}")
+        raise ValueError(msg)
     return n

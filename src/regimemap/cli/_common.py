@@ -9,7 +9,15 @@ from typing import Any, Callable
 
 import click
 
-from ..validation import check_gamma, check_kprime, check_positive, check_resolution
+from ..validation import (
+    GAMMA_MAX,
+    GAMMA_MIN,
+    MAX_AXIS,
+    check_gamma,
+    check_kprime,
+    check_positive,
+    check_resolution,
+)
 
 __all__ = [
     "CONTEXT_SETTINGS",
@@ -18,6 +26,7 @@ __all__ = [
     "positive_float",
     "resolution_type",
     "output_path",
+    "output_dir",
     "run_main",
     "RunError",
 ]
@@ -34,31 +43,36 @@ class RunError(click.ClickException):
 class _Checked(click.ParamType):
     """A click type that validates with one of regimemap.validation's checks."""
 
-    def __init__(self, name: str, check: Callable[[Any], Any]):
+    def __init__(self, name: str, check: Callable[[Any], Any], allowed: str = "a number"):
         self.name = name
         self._check = check
+        self._allowed = allowed
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        if not isinstance(value, str):
-            return self._check(value)
-        try:
-            number: Any = float(value)
-        except ValueError:
-            self.fail(f"{value!r} is not a number", param, ctx)
+        number: Any = value
+        if isinstance(value, str):
+            try:
+                number = float(value)
+            except ValueError:
+                self.fail(f"{self.name} must be {self._allowed}, got {value!r} (not a number)",
+                          param, ctx)
         try:
             return self._check(number)
         except ValueError as exc:
-            # the message names the parameter; click prefixes the option name
+            # the message names the parameter, the range and the value as typed;
+            # click prefixes the option name
+            if isinstance(value, str):
+                self.fail(f"{self.name} must be {self._allowed}, got {value!r}", param, ctx)
             self.fail(str(exc), param, ctx)
 
 
-GAMMA = _Checked("gamma", check_gamma)
-KPRIME = _Checked("kprime", check_kprime)
+GAMMA = _Checked("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
+KPRIME = _Checked("kprime", check_kprime, "a number in [-1, 1]")
 
 
-def positive_float(name: str) -> click.ParamType:
-    """A click type for a finite float > 0."""
-    return _Checked(name, lambda v: check_positive(name, v))
+def positive_float(name: str, hi: float = MAX_AXIS) -> click.ParamType:
+    """A click type for a finite float in (0, hi] (default: MAX_AXIS, for axis limits)."""
+    return _Checked(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
 
 
 class _Resolution(click.ParamType):
@@ -77,7 +91,8 @@ resolution_type = _Resolution()
 def gamma_option(**kwargs: Any) -> Callable:
     """``--gamma`` (aspect ratio H/B > 0)."""
     kwargs.setdefault("required", True)
-    return click.option("--gamma", type=GAMMA, help="Aspect ratio gamma = H/B (> 0).",
+    return click.option("--gamma", type=GAMMA,
+                        help=f"Aspect ratio gamma = H/B ({GAMMA_MIN:g} to {GAMMA_MAX:g}).",
                         **kwargs)
 
 
@@ -99,32 +114,107 @@ def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
         raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'")
 
 
+def _one_line(text: str) -> str:
+    """``text`` on one line (newlines and runs of blanks become one space)."""
+    return " ".join(str(text).split())
+
+
+def _say(message: str) -> None:
+    try:
+        click.echo(_one_line(message), err=True)
+    except (OSError, ValueError):  # pragma: no cover - stderr closed
+        pass
+
+
+def _error_message(exc: BaseException) -> str:
+    if isinstance(exc, OSError) and exc.strerror:
+        where = exc.filename if exc.filename is not None else None
+        return f"{exc.strerror}: {str(where)!r}" if where is not None else exc.strerror
+    return str(exc) or type(exc).__name__
+
+
+def output_dir(path: str | os.PathLike[str], param: str = "--out") -> Path:
+    """Check that ``path`` is an existing folder where files can be created; usage error if not.
+
+    Like :func:`output_path` for a folder: the check creates and removes an
+    empty hidden file, since permission bits do not tell (root, read-only or
+    virtual file systems such as /proc).
+    """
+    import tempfile
+
+    p = Path(path)
+    if not str(path).strip():
+        raise click.BadParameter(f"must be a folder, got {str(path)!r}", param_hint=f"'{param}'")
+    if p.exists() and not p.is_dir():
+        raise click.BadParameter(f"{str(path)!r} is a file, not a folder", param_hint=f"'{param}'")
+    if not p.is_dir():
+        raise click.BadParameter(f"folder {str(path)!r} does not exist", param_hint=f"'{param}'")
+    if not os.access(p, os.W_OK | os.X_OK):
+        raise click.BadParameter(f"folder {str(path)!r} is not writable", param_hint=f"'{param}'")
+    try:
+        fd, probe = tempfile.mkstemp(prefix=".regimemap-probe.", dir=p)
+    except OSError as exc:
+        raise click.BadParameter(f"folder {str(path)!r} is not writable ({exc.strerror})",
+                                 param_hint=f"'{param}'") from None
+    os.close(fd)
+    try:
+        os.unlink(probe)
+    except OSError:  # pragma: no cover
+        pass
+    return p
+
+
+def _guess_path(group: click.Command, argv: list[str] | None) -> str:
+    """``regimemap CMD`` from the arguments, for usage errors click reports without a context."""
+    args = sys.argv[1:] if argv is None else argv
+    commands = getattr(group, "commands", {})
+    for a in args:
+        if a in commands:
+            return f"regimemap {a}"
+        if not a.startswith("-"):
+            break
+    return "regimemap"
+
+
 def run_main(group: click.Command, argv: list[str] | None = None) -> int:
     """Run ``group`` and return an exit code; no traceback ever reaches the user.
 
-    Usage errors exit 2, failures while running exit 1, an interrupt exits 130.
+    Every error is one line on stderr:
+
+    * usage errors (bad option or value, unknown command) exit 2:
+      ``regimemap plot: error: Invalid value for '--gamma': ... (see 'regimemap plot --help')``;
+    * failures while running (:class:`RunError`, ``ValueError``, ``OSError``)
+      exit 1: ``regimemap: error: ...``;
+    * an unexpected exception (a bug) exits 1 with ``regimemap: internal error: ...``
+      (set ``REGIMEMAP_DEBUG=1`` to see the traceback);
+    * an interrupt (Ctrl-C) exits 130.
     """
     try:
         group.main(args=argv, prog_name="regimemap", standalone_mode=False)
     except click.exceptions.Abort:
-        click.echo("regimemap: interrupted", err=True)
+        _say("regimemap: interrupted")
         return 130
+    except click.UsageError as exc:
+        path = exc.ctx.command_path if exc.ctx is not None else _guess_path(group, argv)
+        _say(f"{path}: error: {exc.format_message()} (see '{path} --help')")
+        return exc.exit_code
     except click.ClickException as exc:
-        exc.show()
+        _say(f"regimemap: error: {exc.format_message()}")
         return exc.exit_code
     except click.exceptions.Exit as exc:
         return exc.exit_code
     except KeyboardInterrupt:
-        click.echo("regimemap: interrupted", err=True)
+        _say("regimemap: interrupted")
         return 130
     except BrokenPipeError:
         return 1
     except (ValueError, OSError) as exc:
-        click.echo(f"regimemap: error: {exc}", err=True)
+        _say(f"regimemap: error: {_error_message(exc)}")
         return 1
-    except Exception as exc:  # pragma: no cover - a bug; still one line, no traceback
-        click.echo(f"regimemap: internal error: {type(exc).__name__}: {exc}", err=True)
+    except Exception as exc:  # a bug; still one line, no traceback
         if os.environ.get("REGIMEMAP_DEBUG"):
             raise
+        _say(f"regimemap: internal error: {type(exc).__name__}: {exc}"
+             " (please report it; REGIMEMAP_DEBUG=1 shows the traceback)")
         return 1
     return 0

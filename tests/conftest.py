@@ -1,0 +1,88 @@
+"""Shared test settings: hypothesis profiles and a headless matplotlib.
+
+Hypothesis profiles (choose with ``HYPOTHESIS_PROFILE=name`` in the
+environment, or ``pytest --hypothesis-profile=name``):
+
+``quick`` (the default)
+    few examples, derandomized (the same examples every run), no deadline:
+    the whole suite stays fast and never flakes.
+``ci``
+    more examples, still derandomized; for the continuous-integration job.
+``thorough``
+    many random examples, for a long local run when changing the engine.
+"""
+
+from __future__ import annotations
+
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")  # before anything imports pyplot; no window ever opens
+
+try:
+    from hypothesis import HealthCheck, settings
+except ImportError:  # pragma: no cover - hypothesis is a test dependency
+    settings = None  # type: ignore[assignment]
+else:
+    _common = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow],
+                   print_blob=True)
+    settings.register_profile("quick", max_examples=25, derandomize=True, **_common)
+    settings.register_profile("ci", max_examples=150, derandomize=True, **_common)
+    settings.register_profile("thorough", max_examples=2000, **_common)
+    settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "quick"))
+
+
+# -- running the command line in-process ---------------------------------------------------------------
+
+import dataclasses  # noqa: E402
+
+import pytest  # noqa: E402
+
+
+@dataclasses.dataclass
+class CliRun:
+    """What a user sees from one run of ``regimemap``: exit code, stdout, stderr."""
+
+    code: int
+    stdout: str
+    stderr: str
+
+    @property
+    def output(self) -> str:
+        return self.stdout + self.stderr
+
+    def error_lines(self) -> list[str]:
+        return [ln for ln in self.stderr.splitlines() if "error:" in ln or "interrupted" in ln]
+
+
+def invoke_cli(args: list[str], env: dict[str, str | None] | None = None) -> CliRun:
+    """Run ``regimemap ARGS`` as :func:`regimemap.cli.main` does (through ``run_main``).
+
+    Exceptions are *not* caught here: one escaping ``run_main`` is a bug the
+    test must see.
+    """
+    from click.testing import CliRunner
+
+    from regimemap.cli import cli
+    from regimemap.cli._common import run_main
+
+    runner = CliRunner()
+    full_env = {"REGIMEMAP_DEBUG": None, "COLUMNS": "100"}
+    full_env.update(env or {})
+    with runner.isolation(env=full_env) as streams:
+        code = run_main(cli, list(args))
+        out, err = streams[0], streams[1]
+        import sys
+
+        sys.stdout.flush()
+        sys.stderr.flush()
+        stdout = out.getvalue().decode("utf-8", "replace")
+        stderr = err.getvalue().decode("utf-8", "replace")
+    return CliRun(code, stdout, stderr)
+
+
+@pytest.fixture(scope="session")
+def run_cli():
+    """A function ``run_cli(args) -> CliRun`` (session-scoped, so hypothesis tests may use it)."""
+    return invoke_cli
