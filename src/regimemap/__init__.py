@@ -11,18 +11,12 @@ when they are used.
 
 from __future__ import annotations
 
-from importlib.metadata import PackageNotFoundError, version as _version
-
+from ._version import __version__
 from .classify import PRIORITY, classify, label_grid
 from .modes import MAP_MODES, Mode
 from .params import Case, Parameters
 from .query import PointResult, margin, query_point, query_points
 from .solver import Hypothesis, admissible
-
-try:
-    __version__ = _version("regimemap")
-except PackageNotFoundError:  # pragma: no cover - running from a source tree
-    __version__ = "0+unknown"
 
 __all__ = [
     "Case",

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import csv
 import io
 import json
 import math
@@ -129,6 +128,8 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
                           indent=1, allow_nan=False) + "\n"
     else:
         buf = io.StringIO()
+        import csv  # only when writing CSV: keeps start-up light
+
         w = csv.DictWriter(buf, fieldnames=list(CSV_COLUMNS), lineterminator="\n")
         w.writeheader()
         for r in results:
