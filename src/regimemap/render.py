@@ -1,0 +1,843 @@
+"""Draw regime maps with matplotlib, without pyplot and its global state.
+
+The numbers come from :mod:`regimemap.view` (extent, curves, named points,
+label anchors) and :mod:`regimemap.geometry` (region polygons); this module
+only turns them into artists.  Every drawing function takes an
+:class:`~matplotlib.axes.Axes` and returns what it drew.
+
+>>> from regimemap import Parameters
+>>> from regimemap.render import render_map, save_figure
+>>> fig = render_map(Parameters(gamma=3, kprime=0.4))
+>>> save_figure(fig, "map.svg")  # doctest: +SKIP
+
+Output is byte-stable: two renders of the same map give identical PNG, SVG
+and PDF files (fixed ``svg.hashsalt``, no dates in the metadata), PDF fonts
+are embedded as TrueType (``pdf.fonttype: 42``), and fills and lines are
+vector paths in SVG and PDF.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Iterable, Iterator, Sequence
+
+import numpy as np
+
+from .modes import MAP_MODES, Mode
+from .params import Parameters
+from .view import (
+    MapData,
+    compute_map,
+    curve_label_anchor,
+    interior_point,
+    label_anchor,
+    leader_label_anchor,
+    view_points,
+)
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.artist import Artist
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+    from matplotlib.legend import Legend
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    from matplotlib.text import Text
+
+    from .figures import FigurePreset
+    from .points import DesignPoint
+
+__all__ = [
+    "ModeStyle",
+    "MODE_STYLE",
+    "FORMATS",
+    "DEFAULT_DPI",
+    "FIGSIZE",
+    "MapArtists",
+    "draw_map",
+    "draw_design_points",
+    "map_figure",
+    "render_map",
+    "render_preset",
+    "new_figure",
+    "fit_figure",
+    "save_figure",
+    "default_title",
+    "style_context",
+    "format_from_path",
+]
+
+#: Output formats (file suffixes) that :func:`save_figure` writes.
+FORMATS: tuple[str, ...] = ("png", "svg", "pdf")
+#: Resolution of PNG output (dots per inch): 960 px across a map, sharp on
+#: screens and in the README; use 300 for print (SVG or PDF are better there).
+DEFAULT_DPI = 150
+#: Size of a map figure in inches (width, height): fits a page width at 100 %.
+FIGSIZE: tuple[float, float] = (6.4, 5.6)
+
+
+@dataclass(frozen=True)
+class ModeStyle:
+    """How a mode's region is filled.
+
+    Attributes
+    ----------
+    color : str
+        Fill colour (Paul Tol's *light* scheme, colour-blind safe and light
+        enough for black labels and lines on top).
+    hatch : str
+        matplotlib hatch pattern, distinct per mode so that maps stay
+        readable in greyscale print.
+    hatch_color : tuple
+        RGBA of the hatch lines.
+    """
+
+    color: str
+    hatch: str
+    hatch_color: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.35)
+
+
+#: Fill style of each mode.  Neighbouring regions (RE|SL along OA, SL|SRO- on
+#: CD, SRO-|RO on mu*, SL|SRO'- on DC ...) differ in hue, in lightness and in
+#: hatch direction.
+MODE_STYLE: dict[Mode, ModeStyle] = {
+    Mode.RE: ModeStyle("#DDDDDD", ".."),  # pale grey: nothing moves
+    Mode.SL: ModeStyle("#EEDD88", "//"),  # light yellow
+    Mode.RO: ModeStyle("#EE8866", "\\\\"),  # orange
+    Mode.SRO_MINUS: ModeStyle("#77AADD", "--"),  # light blue
+    Mode.SRO_PLUS: ModeStyle("#44BB99", "||"),  # mint
+    Mode.SRO_PRIME_MINUS: ModeStyle("#FFAABB", "xx"),  # pink
+    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # never on a map
+    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never on a map
+}
+
+_HATCH_LW = 0.45
+_LINE_LW = 1.15
+_CONSTRUCTION = {"color": "0.3", "linewidth": 0.7, "dashes": (4.0, 2.5)}
+_DOTTED = {"color": "0.1", "linewidth": 1.0, "dashes": (1.0, 2.0)}
+
+# zorders: fills < hatch < construction lines < boundaries < points < labels
+_Z_FILL, _Z_CONS, _Z_LINE, _Z_POINT, _Z_LABEL, _Z_DESIGN = 1.0, 2.0, 2.5, 3.0, 4.0, 5.0
+
+#: rcParams for every map (applied with :func:`style_context`, never globally).
+_RC: dict[str, Any] = {
+    "svg.hashsalt": "regimemap",
+    "svg.fonttype": "path",
+    "pdf.fonttype": 42,
+    "ps.fonttype": 42,
+    "pdf.compression": 6,
+    "hatch.linewidth": _HATCH_LW,
+    "mathtext.fontset": "dejavusans",
+    "font.family": "sans-serif",
+    "font.sans-serif": ["DejaVu Sans"],
+    "axes.unicode_minus": True,
+    "path.simplify": False,
+    "savefig.bbox": None,
+    "savefig.pad_inches": 0.1,
+    "savefig.facecolor": "white",
+    "savefig.edgecolor": "white",
+    "savefig.transparent": False,
+    "figure.facecolor": "white",
+    "axes.linewidth": 0.8,
+    "xtick.direction": "out",
+    "ytick.direction": "out",
+}
+
+
+@contextlib.contextmanager
+def style_context() -> Iterator[None]:
+    """matplotlib ``rc_context`` with regimemap's fixed style (no global change)."""
+    import matplotlib
+
+    with matplotlib.rc_context(_RC):
+        yield
+
+
+# -- the artists of one map ------------------------------------------------------------------
+
+
+@dataclass
+class MapArtists:
+    """What :func:`draw_map` drew, and the data behind it.
+
+    Attributes
+    ----------
+    data : MapData
+        Polygons, curves, named points and extent (:mod:`regimemap.view`).
+    fills : dict[Mode, list[Patch]]
+        The region patches of each mode.
+    curves : dict[str, list[Line2D]]
+        Line pieces of each curve (boundary pieces solid, construction
+        pieces dashed), by the report's name (``OA``, ``mu_star`` ...).
+    curve_labels : dict[str, Text]
+        Labels of the curves (``mu_star``: ":math:`\\mu^*(k)`" ...).
+    region_labels : dict[Mode, list[Text]]
+        Mode symbols written inside the regions.
+    point_markers : dict[str, Line2D]
+        Markers of the named points (``A``, ``B'`` ...).
+    point_labels : dict[str, Text]
+        Names of the points, and of line ends (``B``, ``C``).
+    legend : Legend or None
+    title : Text or None
+    extra : list[Artist]
+        Anything else drawn on the axes by regimemap (design points ...).
+    """
+
+    data: MapData
+    fills: dict[Mode, list["Patch"]] = field(default_factory=dict)
+    curves: dict[str, list["Line2D"]] = field(default_factory=dict)
+    curve_labels: dict[str, "Text"] = field(default_factory=dict)
+    region_labels: dict[Mode, list["Text"]] = field(default_factory=dict)
+    point_markers: dict[str, "Line2D"] = field(default_factory=dict)
+    point_labels: dict[str, "Text"] = field(default_factory=dict)
+    legend: "Legend | None" = None
+    title: "Text | None" = None
+    extra: list["Artist"] = field(default_factory=list)
+
+    @property
+    def extent(self) -> tuple[float, float]:
+        """``(k_max, mu_max)`` of the view."""
+        return (self.data.k_max, self.data.mu_max)
+
+    @property
+    def polygons(self) -> dict[Mode, list[np.ndarray]]:
+        """The region polygons (k, mu) that the fills show."""
+        return self.data.polygons
+
+
+def _fmt(x: float) -> str:
+    return f"{x:g}"
+
+
+def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
+                  raw: bool = False) -> str:
+    """A caption-like title: what is shown, the report's case, and (gamma, k').
+
+    Example: ``All modes, case 1, 0 <= k' <= (1+g^2)/(3g^2), a >= 0`` over
+    ``(gamma = 3, k' = 0.2)``, in mathtext.
+    """
+    modes = tuple(MAP_MODES if modes is None else modes)
+    if raw and len(modes) == 1:
+        what = f"Region of {modes[0].tex} ({modes[0].description}) before Section 4.7"
+    elif set(modes) >= set(MAP_MODES) or len(modes) > 2:
+        what = "All modes" if set(modes) >= set(MAP_MODES) else "Modes " + ", ".join(
+            m.tex for m in modes)
+    else:
+        what = "Modes " + ", ".join(m.tex for m in modes)
+    return (f"{what}, {params.case.tex}\n"
+            rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$)")
+
+
+def _point_text(name: str) -> str:
+    """A point name as plain text with Unicode primes (B' -> B\u2032, C'' -> C\u2033).
+
+    Drawn in the oblique face that mathtext uses for variables, so it looks
+    like ``$B'$`` without the cost of parsing mathtext.
+    """
+    return name.replace("''", "\u2033").replace("'", "\u2032")
+
+
+# Offsets (points) of the names of the report's points, chosen so that the
+# name sits where the report writes it and off the lines through the point.
+_POINT_OFFSET: dict[str, tuple[float, float, str, str]] = {
+    "O": (-4.0, -4.0, "right", "top"),
+    "A": (-5.0, 3.0, "right", "bottom"),
+    "B'": (5.0, -3.0, "left", "top"),
+    "C": (5.0, 0.0, "left", "center"),
+    "C'": (5.0, -3.0, "left", "top"),
+    "D": (3.0, 3.0, "left", "bottom"),
+    "E": (3.0, 3.0, "left", "bottom"),
+    "F": (-3.0, 3.0, "right", "bottom"),
+    "G": (3.0, 3.0, "left", "bottom"),
+}
+
+_REGION_FS = 11.0
+_POINT_FS = 10.0
+_CURVE_FS = 10.0
+
+
+def _symbol(mode: Mode) -> tuple[str, str]:
+    """A mode's symbol for a region label: (text, fontstyle).
+
+    ``$RE$``, ``$SL$`` and ``$RO$`` are written as plain oblique text: the
+    face mathtext uses for them (same glyphs; the box behind them is a little
+    taller), without the cost of parsing mathtext.  Symbols with sub- or
+    superscripts stay mathtext (Unicode subscripts sit too high).
+    """
+    tex = mode.tex
+    inner = tex[1:-1]
+    if tex.startswith("$") and tex.endswith("$") and inner.isalpha():
+        return inner, "italic"
+    return tex, "normal"
+
+
+def _text_size(text: str, fontsize: float) -> tuple[float, float]:
+    """Rough size (points) of a short label with its white box, without drawing it."""
+    plain = text.replace("$", "").replace("_{-}", "-").replace("_{+}", "+").replace("\\", "")
+    plain = plain.replace("mu", "m").replace("{", "").replace("}", "").replace("^", "")
+    return (0.62 * fontsize * len(plain) + 5.0, 1.25 * fontsize + 4.0)
+
+
+class _Frame:
+    """Conversions between data, view fractions and points for one Axes (no drawing)."""
+
+    def __init__(self, ax: "Axes", k_max: float, mu_max: float):
+        w_in, h_in = ax.figure.get_size_inches()
+        pos = ax.get_position()
+        self.w_pt = 72.0 * w_in * pos.width
+        self.h_pt = 72.0 * h_in * pos.height
+        self.k_max, self.mu_max = k_max, mu_max
+
+    def box(self, k: float, mu: float, dx: float, dy: float, size: tuple[float, float],
+            ha: str, va: str) -> tuple[float, float, float, float]:
+        """Box (view fractions) of a text of ``size`` (points) at (k, mu) + (dx, dy) points."""
+        x = k / self.k_max + dx / self.w_pt
+        y = mu / self.mu_max + dy / self.h_pt
+        w, h = size[0] / self.w_pt, size[1] / self.h_pt
+        x0 = {"left": x, "right": x - w}.get(ha, x - w / 2)
+        y0 = {"bottom": y, "top": y - h}.get(va, y - h / 2)
+        return (x0, y0, x0 + w, y0 + h)
+
+
+def _no_zero_formatter() -> Any:
+    """Tick labels as usual, but none at 0 (the origin is named O, as in the report)."""
+    from matplotlib.ticker import ScalarFormatter
+
+    class NoZeroFormatter(ScalarFormatter):
+        def __call__(self, x: float, pos: int | None = None) -> str:
+            return "" if x == 0 else super().__call__(x, pos)
+
+    return NoZeroFormatter()
+
+
+def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
+             mu_max: float | None = None, modes: Iterable[Mode] | None = None,
+             raw: bool = False, curves: bool = True, labels: bool = True,
+             legend: bool = True, title: str | None = None, samples: int = 801,
+             hatches: bool = True, include: Iterable[tuple[float, float]] = (),
+             data: MapData | None = None, legend_kw: dict[str, Any] | None = None) -> MapArtists:
+    """Draw the regime map of ``params`` on ``ax``.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+    params : Parameters
+    k_max, mu_max : float, optional
+        The view ``[0, k_max] x [0, mu_max]`` (default :func:`regimemap.view.auto_extent`).
+    modes : iterable of Mode, optional
+        Modes to shade (default all six).
+    raw : bool
+        Shade the report's raw region of each mode (single-mode figures)
+        instead of the final map.
+    curves : bool
+        Draw the boundary curves and the report's named points.
+    labels : bool
+        Write the mode symbol inside each region large enough to hold it (with
+        a leader line when the region is too thin).
+    legend : bool
+        Add a legend of the shaded modes and of the line styles, below the axes.
+    title : str, optional
+        Axes title; default :func:`default_title`; ``""`` for none.
+    samples : int
+        Samples of k for polygons and curves.
+    hatches : bool
+        Hatch the fills (distinct per mode, for greyscale print).
+    include : iterable of (k, mu)
+        Points to keep in the automatic view.
+    data : MapData, optional
+        Precomputed :func:`regimemap.view.compute_map` result (the other data
+        arguments are then ignored).
+    legend_kw : dict, optional
+        Extra keyword arguments of :meth:`~matplotlib.axes.Axes.legend`.
+
+    Returns
+    -------
+    MapArtists
+    """
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch, Polygon
+
+    if data is None:
+        data = compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                           samples=samples, curves=curves, include=include)
+    out = MapArtists(data=data)
+    k_max, mu_max = data.k_max, data.mu_max
+    frame = _Frame(ax, k_max, mu_max)
+    ax.set_xlim(0.0, k_max)
+    ax.set_ylim(0.0, mu_max)
+    ax.set_xlabel("$k$", fontsize=12, labelpad=2)
+    ax.set_ylabel(r"$\mu$", fontsize=12, labelpad=6, rotation=0, va="center")
+    ax.tick_params(labelsize=9)
+    if curves and "O" in data.points:
+        ax.xaxis.set_major_formatter(_no_zero_formatter())
+        ax.yaxis.set_major_formatter(_no_zero_formatter())
+
+    # fills
+    for mode in data.modes:
+        st = MODE_STYLE[mode]
+        patches = []
+        for poly in data.polygons.get(mode, []):
+            if len(poly) < 3:
+                continue
+            patch = Polygon(poly, closed=True, facecolor=st.color, edgecolor="none",
+                            linewidth=0.0, hatch=st.hatch if hatches else None,
+                            hatchcolor=st.hatch_color, zorder=_Z_FILL,
+                            alpha=0.75 if data.raw and len(data.modes) > 1 else None,
+                            label=f"_{mode.label}")
+            patch.set_hatch_linewidth(_HATCH_LW)
+            ax.add_patch(patch)
+            patches.append(patch)
+        out.fills[mode] = patches
+
+    obstacles: list[tuple[float, float, float, float]] = []
+    # curves, their labels and the named points
+    if curves:
+        for name, cd in data.curves.items():
+            lines = []
+            for pts, is_boundary in cd.runs():
+                if cd.dotted:
+                    kw: dict[str, Any] = dict(_DOTTED)
+                elif is_boundary:
+                    kw = {"color": "black", "linewidth": _LINE_LW}
+                else:
+                    kw = dict(_CONSTRUCTION)
+                line = Line2D(pts[:, 0], pts[:, 1], zorder=_Z_LINE if is_boundary else _Z_CONS,
+                              solid_capstyle="round", solid_joinstyle="round",
+                              label=f"_{name}", **kw)
+                ax.add_line(line)
+                lines.append(line)
+            out.curves[name] = lines
+        for name, pt in data.points.items():
+            (marker,) = ax.plot([pt.k], [pt.mu], linestyle="none", marker="o", markersize=3.2,
+                                color="black", zorder=_Z_POINT, clip_on=False, label=f"_{name}")
+            out.point_markers[name] = marker
+            dx, dy, ha, va = _POINT_OFFSET.get(name, (4.0, 4.0, "left", "bottom"))
+            text = _point_text(name)
+            out.point_labels[name] = ax.annotate(
+                text, (pt.k, pt.mu), xytext=(dx, dy), textcoords="offset points",
+                ha=ha, va=va, fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL,
+                annotation_clip=False,
+                bbox={"boxstyle": "square,pad=0.05", "fc": "white", "ec": "none", "alpha": 0.6})
+            obstacles.append(frame.box(pt.k, pt.mu, dx, dy, _text_size(text, _POINT_FS), ha, va))
+            obstacles.append(frame.box(pt.k, pt.mu, 0.0, 0.0, (6.0, 6.0), "center", "center"))
+        for name, (k, mu) in data.line_ends.items():
+            if name in out.point_labels:
+                continue
+            at_top = mu >= 0.99 * mu_max
+            k, mu = min(k, k_max), min(mu, mu_max)
+            dx, dy = (4.0, -2.0) if at_top else (-3.0, 4.0)
+            ha, va = ("left", "top") if at_top else ("right", "bottom")
+            text = _point_text(name)
+            out.point_labels[name] = ax.annotate(
+                text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
+                fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
+            obstacles.append(frame.box(k, mu, dx, dy, _text_size(text, _POINT_FS), ha, va))
+    lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
+    if curves:
+        for name, cd in data.curves.items():
+            if cd.label:
+                placed = _curve_label(ax, frame, cd, obstacles, lines)
+                if placed is not None:
+                    out.curve_labels[name] = placed
+
+    # region labels
+    if labels:
+        small: list[tuple[Mode, np.ndarray]] = []
+        for mode in data.modes:
+            texts = []
+            size = _text_size(mode.tex, _REGION_FS)
+            box = (size[0] / frame.w_pt, size[1] / frame.h_pt)
+            for poly in data.polygons.get(mode, []):
+                anchor = label_anchor(poly, k_max, mu_max, box, obstacles=obstacles, lines=lines)
+                if anchor is None:
+                    small.append((mode, poly))
+                    continue
+                text, style = _symbol(mode)
+                texts.append(ax.text(
+                    anchor[0], anchor[1], text, ha="center", va="center",
+                    fontsize=_REGION_FS, fontstyle=style, zorder=_Z_LABEL,
+                    bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "none",
+                          "alpha": 0.8}))
+                obstacles.append(frame.box(anchor[0], anchor[1], 0, 0, size, "center", "center"))
+            out.region_labels[mode] = texts
+        for mode, poly in small:  # too thin for a label: a label with a leader line
+            t = _leader_label(ax, frame, mode, poly, obstacles, lines)
+            if t is not None:
+                out.region_labels.setdefault(mode, []).append(t)
+
+    if legend:
+        handles: list[Any] = []
+        for mode in data.modes:
+            if not any(len(p) >= 3 for p in data.polygons.get(mode, [])):
+                continue
+            st = MODE_STYLE[mode]
+            h = Patch(facecolor=st.color, edgecolor="0.4", linewidth=0.4,
+                      hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
+                      label=f"{mode.tex}  {mode.description}")
+            h.set_hatch_linewidth(_HATCH_LW)
+            handles.append(h)
+        if curves and data.curves:
+            handles.append(Line2D([], [], color="black", linewidth=_LINE_LW,
+                                  label="boundary of a region"))
+            if any(not b for c in data.curves.values() if not c.dotted for _, b in c.runs()):
+                handles.append(Line2D([], [], label="construction line", **_CONSTRUCTION))
+            dotted = [c for c in data.curves.values() if c.dotted]
+            if dotted:
+                handles.append(Line2D([], [], label="dotted line " + dotted[0].label, **_DOTTED))
+        kw = {
+            "loc": "upper center", "bbox_to_anchor": (0.5, -0.135), "ncol": 2,
+            "fontsize": 8.5, "frameon": False, "handlelength": 2.2, "handleheight": 1.1,
+            "columnspacing": 1.5, "borderaxespad": 0.0,
+        }
+        kw.update(legend_kw or {})
+        if handles:
+            out.legend = ax.legend(handles=handles, **kw)
+
+    if title is None:
+        title = default_title(params, modes=data.modes, raw=data.raw)
+    if title:
+        # an explicit y turns off matplotlib's automatic title placement, which
+        # measures every tick label first (the layout here is fixed anyway)
+        out.title = ax.set_title(title, fontsize=9.5, loc="left", pad=6, y=1.0)
+    return out
+
+
+def _curve_label(ax: "Axes", frame: _Frame, cd: Any,
+                 obstacles: list[tuple[float, float, float, float]],
+                 lines: Sequence[np.ndarray]) -> "Text | None":
+    """Write a curve's label beside it, clear of the lines and of the other labels."""
+    k_max, mu_max = frame.k_max, frame.mu_max
+    size = _text_size(cd.label, _CURVE_FS)
+    box = (size[0] / frame.w_pt, size[1] / frame.h_pt)
+    at = curve_label_anchor(cd.points, k_max, mu_max, box, lines, obstacles)
+    if at is not None:
+        obstacles.append(frame.box(at[0], at[1], 0.0, 0.0, size, "center", "center"))
+        return ax.text(at[0], at[1], cd.label, ha="center", va="center", fontsize=_CURVE_FS,
+                       zorder=_Z_LABEL, clip_on=False,
+                       bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none",
+                             "alpha": 0.7})
+    # crowded (lines close together): a label with a leader to a point of the curve
+    for frac in (0.8, 0.6, 0.4):
+        target = _point_along(cd.points, k_max, mu_max, frac)
+        if target is None:
+            return None
+        at = leader_label_anchor(target, k_max, mu_max, box, lines, obstacles)
+        if at is not None:
+            obstacles.append(frame.box(at[0], at[1], 0.0, 0.0, size, "center", "center"))
+            return ax.annotate(
+                cd.label, target, xytext=at, textcoords="data", ha="center", va="center",
+                fontsize=_CURVE_FS, zorder=_Z_LABEL,
+                bbox={"boxstyle": "round,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8},
+                arrowprops={"arrowstyle": "-", "color": "0.2", "lw": 0.6, "shrinkA": 0.0,
+                            "shrinkB": 0.0})
+    return None
+
+
+def _point_along(pts: np.ndarray, k_max: float, mu_max: float, frac: float
+                 ) -> tuple[float, float] | None:
+    """The point at ``frac`` of the visible length of a polyline (data coordinates)."""
+    q = view_points(pts, k_max, mu_max, 0.003)
+    q = q[(q[:, 0] >= 0) & (q[:, 0] <= 1) & (q[:, 1] >= 0) & (q[:, 1] <= 1)]
+    if len(q) < 2:
+        return None
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(q, axis=0).T))])
+    i = int(np.clip(np.searchsorted(s, frac * s[-1]), 0, len(q) - 1))
+    return float(q[i, 0] * k_max), float(q[i, 1] * mu_max)
+
+
+def _leader_label(ax: "Axes", frame: _Frame, mode: Mode, poly: np.ndarray,
+                  obstacles: list[tuple[float, float, float, float]],
+                  lines: Sequence[np.ndarray]) -> "Text | None":
+    """Label a region too thin to hold its symbol, with an arrow pointing into it."""
+    target = interior_point(poly, frame.k_max, frame.mu_max)
+    if target is None:
+        return None
+    size = _text_size(mode.tex, _REGION_FS)
+    box = (size[0] / frame.w_pt, size[1] / frame.h_pt)
+    at = leader_label_anchor(target, frame.k_max, frame.mu_max, box, lines, obstacles)
+    if at is None:
+        return None
+    obstacles.append(frame.box(at[0], at[1], 0.0, 0.0, size, "center", "center"))
+    text, style = _symbol(mode)
+    return ax.annotate(
+        text, target, xytext=at, textcoords="data", ha="center", va="center",
+        fontsize=_REGION_FS, fontstyle=style, zorder=_Z_LABEL,
+        bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.3", "lw": 0.5,
+              "alpha": 0.9},
+        arrowprops={"arrowstyle": "-|>", "color": "black", "lw": 0.8,
+                    "shrinkA": 0.0, "shrinkB": 1.0, "mutation_scale": 8})
+
+
+# -- design points ---------------------------------------------------------------------------
+
+
+def draw_design_points(ax: "Axes", points: Sequence["DesignPoint"], *, fontsize: float = 8.5
+                       ) -> list["Artist"]:
+    """Mark design points on a map: a black dot with a white rim and the point's name.
+
+    Black with a white rim and a white-backed name reads on every fill colour,
+    in colour and in greyscale.
+
+    Parameters
+    ----------
+    ax : Axes
+    points : sequence of DesignPoint
+        Points (k, mu, name); unnamed points get no text.
+
+    Returns
+    -------
+    list of Artist
+        The markers (one Line2D for all) and the name annotations.
+    """
+    artists: list[Any] = []
+    if not points:
+        return artists
+    ks = [pt.k for pt in points]
+    mus = [pt.mu for pt in points]
+    (dots,) = ax.plot(ks, mus, linestyle="none", marker="o", markersize=6.0,
+                      markerfacecolor="black", markeredgecolor="white", markeredgewidth=1.2,
+                      zorder=_Z_DESIGN, label="_design points")
+    artists.append(dots)
+    for pt in points:
+        if not pt.name:
+            continue
+        artists.append(ax.annotate(
+            pt.name, (pt.k, pt.mu), xytext=(5.0, 5.0), textcoords="offset points", ha="left",
+            va="bottom", fontsize=fontsize, zorder=_Z_DESIGN,
+            bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.2", "lw": 0.5,
+                  "alpha": 0.9}))
+    return artists
+
+
+# -- figures -------------------------------------------------------------------------------
+
+#: Layout of a map figure, in inches: width, axes size, margins, legend rows.
+_W, _AX_W, _AX_H = 6.4, 5.5, 3.6
+_LEFT, _TOP, _BOTTOM0, _ROW = 0.62, 0.62, 0.5, 0.2
+
+
+def _size_for(rows: int, left: float = _LEFT
+              ) -> tuple[float, float, tuple[float, float, float, float]]:
+    """Figure (width, height) and axes rectangle (figure fractions) for ``rows`` legend rows."""
+    bottom = _BOTTOM0 + rows * _ROW + (0.12 if rows else 0.0)
+    h = _TOP + _AX_H + bottom
+    w = _W + (left - _LEFT)
+    return w, h, (left / w, bottom / h, _AX_W / w, _AX_H / h)
+
+
+def _left_margin(ax: "Axes") -> float:
+    """Left margin (inches) that fits the mu tick labels and the axis label, without drawing."""
+    lo, hi = ax.get_ylim()
+    locs = [v for v in ax.yaxis.get_major_locator().tick_values(lo, hi) if lo <= v <= hi]
+    fmt = ax.yaxis.get_major_formatter()
+    try:
+        fmt.set_locs(locs)
+        labels = fmt.format_ticks(locs)
+    except Exception:  # pragma: no cover - an exotic formatter
+        labels = [f"{v:g}" for v in locs]
+    n = max((len(t) for t in labels), default=3)
+    return max(_LEFT, 0.26 + 0.075 * n)
+
+
+def new_figure(figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
+               fig: "Figure | None" = None) -> tuple["Figure", "Axes"]:
+    """A Figure (Agg canvas, no pyplot) with one map Axes.
+
+    Parameters
+    ----------
+    figsize : (float, float), optional
+        Size in inches; default: :data:`FIGSIZE`, re-fitted to the legend by
+        :func:`map_figure`.
+    dpi : float
+    fig : Figure, optional
+        A figure to clear and reuse (keeps its canvas, renderer and their
+        text caches: much faster when drawing many maps).
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    with style_context():
+        reuse = None
+        if fig is None:
+            fig = Figure(figsize=figsize or FIGSIZE, dpi=dpi)
+            FigureCanvasAgg(fig)
+        else:
+            if len(fig.axes) == 1 and not fig.texts and not fig.legends:
+                reuse = fig.axes[0]  # clearing an Axes is cheaper than making one
+            else:
+                fig.clear()
+            if fig.dpi != dpi:
+                fig.set_dpi(dpi)
+            if figsize is not None:
+                fig.set_size_inches(figsize)
+        w, h = fig.get_size_inches()
+        rect = (_LEFT / w, 1.0 - (_TOP + _AX_H) / h, _AX_W / w, _AX_H / h)
+        if reuse is not None:
+            reuse.clear()
+            reuse.set_position(rect)
+            ax = reuse
+        else:
+            ax = fig.add_axes(rect)
+    return fig, ax
+
+
+def fit_figure(fig: "Figure", ax: "Axes") -> None:
+    """Resize a map figure so the legend below the axes fits; the axes keep their size.
+
+    Call it again after adding legend entries (e.g. after
+    ``regimemap.render_ambiguity.draw_ambiguity``).
+    """
+    rows = 0
+    legend = ax.get_legend()
+    if legend is not None:
+        n = len(legend.legend_handles)
+        ncol = getattr(legend, "_ncols", 2)
+        rows = -(-n // max(ncol, 1))
+    w, h, rect = _size_for(rows, _left_margin(ax))
+    if tuple(np.round(fig.get_size_inches(), 6)) != (round(w, 6), round(h, 6)):
+        fig.set_size_inches(w, h)
+    ax.set_position(rect)
+
+
+def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None,
+               dpi: float = DEFAULT_DPI, points: Sequence["DesignPoint"] = (),
+               fig: "Figure | None" = None, **kwargs: Any
+               ) -> tuple["Figure", "Axes", MapArtists]:
+    """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
+
+    ``kwargs`` go to :func:`draw_map`; design ``points`` are marked with
+    :func:`draw_design_points` and kept in the automatic view.  Unless
+    ``figsize`` is given, the figure height is fitted to the legend and the
+    axes are 5.5 x 3.6 inches.
+    """
+    fig, ax = new_figure(figsize, dpi, fig)
+    include = list(kwargs.pop("include", ())) + [(pt.k, pt.mu) for pt in points]
+    with style_context():
+        artists = draw_map(ax, params, include=include, **kwargs)
+        if points:
+            artists.extra.extend(draw_design_points(ax, points))
+        if figsize is None:
+            fit_figure(fig, ax)
+    return fig, ax, artists
+
+
+def render_map(params: Parameters, **kwargs: Any) -> "Figure":
+    """A Figure with the map of ``params`` (see :func:`map_figure` and :func:`draw_map`)."""
+    return map_figure(params, **kwargs)[0]
+
+
+def render_preset(preset: "FigurePreset | str", *, dpi: float = DEFAULT_DPI,
+                  samples: int = 801, hatches: bool = True, fig: "Figure | None" = None
+                  ) -> "Figure":
+    """A Figure of one of the report's figures (:mod:`regimemap.figures`).
+
+    Pass the previous figure as ``fig`` to reuse it (faster for many figures).
+    """
+    from .figures import get_preset
+
+    if isinstance(preset, str):
+        preset = get_preset(preset)
+    return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
+                      mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
+                      title=preset.title, samples=samples, hatches=hatches)[0]
+
+
+# -- saving ----------------------------------------------------------------------------------
+
+
+def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> str:
+    """The output format: ``fmt`` if given, else the file suffix (png, svg or pdf).
+
+    Raises
+    ------
+    ValueError
+        For an unknown format or suffix, or a suffix that contradicts ``fmt``;
+        the message lists png, svg, pdf.
+    """
+    suffix = Path(path).suffix.lower().lstrip(".")
+    if fmt is not None:
+        fmt = fmt.lower().lstrip(".")
+        if fmt not in FORMATS:
+            raise ValueError(f"unknown format {fmt!r}; use one of {', '.join(FORMATS)}")
+        if suffix and suffix in FORMATS and suffix != fmt:
+            raise ValueError(f"file suffix .{suffix} does not match format {fmt!r}")
+        return fmt
+    if not suffix:
+        raise ValueError(f"no file suffix in {str(path)!r}; use one of {', '.join(FORMATS)}")
+    if suffix not in FORMATS:
+        raise ValueError(f"unknown file suffix .{suffix}; use one of {', '.join(FORMATS)}")
+    return suffix
+
+
+def _metadata(fmt: str) -> dict[str, Any]:
+    from . import __version__
+
+    creator = f"regimemap {__version__}"
+    if fmt == "png":
+        return {"Software": creator}
+    if fmt == "svg":
+        return {"Date": None, "Creator": creator}
+    if fmt == "pdf":
+        return {"CreationDate": None, "Creator": creator, "Producer": creator}
+    return {}
+
+
+def save_figure(fig: "Figure", path: str | os.PathLike[str], fmt: str | None = None,
+                dpi: float | None = None) -> Path:
+    """Write ``fig`` to ``path`` atomically (temporary file in the same folder, then rename).
+
+    Parameters
+    ----------
+    fig : Figure
+    path : path-like
+    fmt : {"png", "svg", "pdf"}, optional
+        Default: from the file suffix.
+    dpi : float, optional
+        Resolution of PNG output (default: the figure's, :data:`DEFAULT_DPI`).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown format (message lists png, svg, pdf).
+    OSError
+        If the file cannot be written (nothing is left behind).
+    """
+    from ._atomic import atomic_path
+
+    fmt = format_from_path(path, fmt)
+    target = Path(path)
+    extra: dict[str, Any] = {}
+    if fmt == "png":
+        # zlib level 1: ~20 % faster to write than the default 6, ~15 % larger files
+        extra["pil_kwargs"] = {"compress_level": 1}
+    with style_context(), _quiet_font_subsetting(), atomic_path(target) as tmp:
+        fig.savefig(tmp, format=fmt, dpi=dpi if dpi is not None else fig.dpi,
+                    metadata=_metadata(fmt), **extra)
+    return target
+
+
+@contextlib.contextmanager
+def _quiet_font_subsetting() -> Iterator[None]:
+    """Silence fontTools' "'created' timestamp seems very low" while fonts are embedded.
+
+    Embedding TrueType fonts (PDF, ``pdf.fonttype: 42``) reads the bundled
+    fonts' ``head`` tables, whose old dates make fontTools log two harmless
+    warnings; the logger's level is restored afterwards.
+    """
+    import logging
+
+    logger = logging.getLogger("fontTools.ttLib.tables._h_e_a_d")
+    level = logger.level
+    logger.setLevel(logging.ERROR)
+    try:
+        yield
+    finally:
+        logger.setLevel(level)
