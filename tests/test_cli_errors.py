@@ -300,9 +300,6 @@ def test_figures_bad_out_folder(tmp_path, inputs, make, pattern):
     assert_clean_failure(invoke_cli(["figures", "--out", str(make(tmp_path)), "--format", "svg"]), 2, pattern)
 
 
-@pytest.mark.xfail(strict=True, reason="cli/plot.py _check_dir trusts os.access, which is True for root "
-                   "on /proc: 'figures --out /proc' renders, then fails to write with exit 1; it should "
-                   "be a usage error (exit 2) like -o /proc/x.png (use _common.output_dir)")
 def test_figures_out_read_only_folder_is_a_usage_error():
     needs("figures")
     assert_clean_failure(invoke_cli(["figures", "--out", "/proc", "--format", "svg"]), 2, "not writable")
@@ -785,14 +782,7 @@ def test_the_harness_catches_a_writer_that_is_not_atomic(tmp_path, inputs, monke
     assert target.read_bytes() != OLD and len(target.read_bytes()) == 64  # cut short: what we prevent
 
 
-_NAMES_NO_FILE = pytest.mark.xfail(strict=True, reason="cli/plot.py: plot and figure do not wrap "
-                                   "save_figure's OSError, so a full disk reads 'regimemap: error: No "
-                                   "space left on device' without the file (export, atlas ... say "
-                                   "'cannot write FILE: ...')")
-
-
-@pytest.mark.parametrize("key", [pytest.param(k, marks=_NAMES_NO_FILE) if k.startswith(("plot", "figure-"))
-                                 else k for k in sorted(SINGLE_FILE_WRITERS)])
+@pytest.mark.parametrize("key", sorted(SINGLE_FILE_WRITERS))
 def test_write_error_names_the_file(tmp_path, inputs, monkeypatch, key):
     needs(SINGLE_FILE_WRITERS[key][0])
     out_dir = tmp_path / "out"

@@ -1,0 +1,396 @@
+"""``regimemap plot``, ``regimemap figure`` and ``regimemap figures``.
+
+Importing this module does not import matplotlib (``regimemap --help`` stays
+fast); the commands import :mod:`regimemap.render` when they run.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Any, Sequence
+
+import click
+
+from . import cli
+from ._common import (
+    RunError,
+    gamma_option,
+    kprime_option,
+    output_dir,
+    output_path,
+    positive_float,
+    resolution_type,
+)
+
+#: Output formats, as in :data:`regimemap.render.FORMATS` (repeated so that
+#: this module need not import the renderer).
+FORMATS = ("png", "svg", "pdf")
+#: PNG resolution of every command (dots per inch), as :data:`regimemap.render.DEFAULT_DPI`.
+DEFAULT_DPI = 150
+DEFAULT_SAMPLES = 801
+
+
+# -- option types --------------------------------------------------------------------------
+
+
+class _Dpi(click.ParamType):
+    name = "dpi"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            self.fail(f"{value!r} is not a number; use a resolution in [20, 1200]", param, ctx)
+        if not (math.isfinite(v) and 20.0 <= v <= 1200.0):
+            self.fail(f"dpi must be a number in [20, 1200], got {value!r}", param, ctx)
+        return v
+
+
+class _Format(click.ParamType):
+    name = "png|svg|pdf"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        v = str(value).strip().lower().lstrip(".")
+        if v not in FORMATS:
+            self.fail(f"unknown format {value!r}; use one of {', '.join(FORMATS)}", param, ctx)
+        return v
+
+
+class _FormatList(click.ParamType):
+    name = "FORMATS"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> tuple[str, ...]:
+        if isinstance(value, tuple):
+            return value
+        items = [v.strip().lower().lstrip(".") for v in str(value).split(",") if v.strip()]
+        bad = [v for v in items if v not in FORMATS]
+        if not items or bad:
+            what = f"unknown format {bad[0]!r}" if bad else "no format given"
+            self.fail(f"{what}; use a comma-separated list of {', '.join(FORMATS)}", param, ctx)
+        return tuple(dict.fromkeys(items))
+
+
+class _Modes(click.ParamType):
+    name = "MODES"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> tuple[Any, ...]:
+        from ..modes import MAP_MODES, Mode
+
+        if isinstance(value, tuple):
+            return value
+        out = []
+        valid = ", ".join(m.label for m in MAP_MODES)
+        for item in str(value).split(","):
+            if not item.strip():
+                continue
+            try:
+                mode = Mode.from_label(item)
+            except ValueError:
+                self.fail(f"unknown mode {item.strip()!r}; valid modes: {valid}", param, ctx)
+            if mode not in MAP_MODES:
+                self.fail(f"mode {mode.label} never appears on a map; valid modes: {valid}",
+                          param, ctx)
+            out.append(mode)
+        if not out:
+            self.fail(f"no mode given; valid modes: {valid}", param, ctx)
+        return tuple(dict.fromkeys(out))
+
+
+class _PointSpec(click.ParamType):
+    name = "K,MU[:NAME]"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from ..points import DesignPoint, parse_point_spec
+
+        if isinstance(value, DesignPoint):
+            return value
+        try:
+            return parse_point_spec(str(value))
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
+
+
+# -- helpers -------------------------------------------------------------------------------
+
+
+def _num(x: float) -> str:
+    return f"{x:g}"
+
+
+def plot_stem(gamma: float, kprime: float) -> str:
+    """The default file name of ``plot`` without suffix: ``regime-g<gamma>-kp<kprime>``.
+
+    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``.
+    """
+    return f"regime-g{_num(gamma)}-kp{_num(kprime)}"
+
+
+def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> tuple[Path, str]:
+    """The output path and format from ``-o`` and ``--format`` (usage errors exit 2)."""
+    if output is None:
+        fmt = fmt or "png"
+        return output_path(f"{default_name}.{fmt}", "--output"), fmt
+    path = Path(output)
+    suffix = path.suffix.lower().lstrip(".")
+    if suffix and suffix in FORMATS:
+        if fmt is not None and fmt != suffix:
+            raise click.BadParameter(
+                f"file suffix .{suffix} does not match --format {fmt}", param_hint="'--format'")
+        fmt = suffix
+    elif suffix and fmt is None:
+        raise click.BadParameter(
+            f"unknown file suffix .{suffix} in {output!r}; use one of {', '.join(FORMATS)} "
+            "(or give --format)", param_hint="'-o' / '--output'")
+    else:
+        # no suffix (or an unknown one with --format): add the format's suffix, as matplotlib does
+        fmt = fmt or "png"
+        path = path.with_name(f"{path.name}.{fmt}")
+    return output_path(path, "--output"), fmt
+
+
+def _check_dir(path: str, option: str) -> Path:
+    return output_dir(path, option)
+
+
+def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
+    """Save through the renderer; a failing write names the file (exit 1)."""
+    try:
+        save_figure(fig, path, fmt, dpi=dpi)
+    except OSError as exc:
+        raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
+
+
+def _read_points(files: Sequence[str], specs: Sequence[Any], gamma: float, kprime: float
+                 ) -> list[Any]:
+    """Design points from ``--points`` files and ``--point`` specs, for this map."""
+    points = list(specs)
+    if files:
+        from ..points import read_points_csv  # imports csv: only when needed
+    for f in files:
+        try:
+            points.extend(read_points_csv(f))
+        except ValueError as exc:
+            raise click.BadParameter(str(exc), param_hint="'--points'") from None
+    keep, other = [], []
+    for pt in points:
+        same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
+            pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
+        (keep if same else other).append(pt)
+    if other:
+        names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in other[:5])
+        more = f" and {len(other) - 5} more" if len(other) > 5 else ""
+        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime "
+                   f"and are not drawn on this map: {names}{more}", err=True)
+    return keep
+
+
+_PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
+          ("$", ""), ("{", ""), ("}", ""))
+
+
+def _plain(tex: str) -> str:
+    """A caption in plain ASCII for the terminal (mathtext removed)."""
+    for a, b in _PLAIN:
+        tex = tex.replace(a, b)
+    return tex
+
+
+def _written(path: Path) -> None:
+    click.echo(str(path))
+
+
+# -- plot ------------------------------------------------------------------------------------
+
+_PLOT_HELP = """Draw the regime map of a block for one GAMMA and KPRIME.
+
+Shades the region of each mode (rest RE, slide SL, rock RO, slide-rock SRO-,
+SRO+, SRO'-), draws the boundary curves mu*(k), mu**(k) and the report's
+lines with the named points (O, A, B', C, D ...), and writes PNG, SVG or PDF
+(from the suffix of -o, or --format).  Without -o the file is
+regime-g<GAMMA>-kp<KPRIME>.<format> in the current folder, e.g.
+regime-g3-kp0.4.png.
+
+\b
+Examples:
+  regimemap plot --gamma 3 --kprime 0.4
+  regimemap plot --gamma 3 --kprime 0.4 -o map.svg
+  regimemap plot --gamma 3 --kprime -0.3 --format pdf -o figs/below
+  regimemap plot --gamma 3 --kprime 0.4 --point 0.45,0.6:caisson-A
+  regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
+  regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
+"""
+
+
+@cli.command("plot", help=_PLOT_HELP, short_help="Draw the regime map of one gamma and kprime.")
+@gamma_option()
+@kprime_option()
+@click.option("-o", "--output", metavar="FILE",
+              help="Output file; its suffix (.png, .svg, .pdf) sets the format. "
+                   "Default: regime-g<GAMMA>-kp<KPRIME>.<format>.")
+@click.option("--format", "fmt", type=_Format(), default=None,
+              help="png, svg or pdf (default: from the suffix of -o, else png).")
+@click.option("--k-max", type=positive_float("k-max"), default=None,
+              help="Right end of the k axis (default: shows the map's characteristic points).")
+@click.option("--mu-max", type=positive_float("mu-max"), default=None,
+              help="Top of the mu axis (default: automatic).")
+@click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
+              help="Samples of k for the region polygons and curves (2-5000).")
+@click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
+              help="Resolution of PNG output (20-1200 dots per inch).")
+@click.option("--title", default=None,
+              help="Title above the map (mathtext allowed); '' for none. "
+                   "Default: what is shown, the report's case, gamma and kprime.")
+@click.option("--no-curves", is_flag=True, help="Do not draw the boundary curves and points.")
+@click.option("--no-labels", is_flag=True, help="Do not write the mode symbols in the regions.")
+@click.option("--no-legend", is_flag=True, help="Do not draw the legend.")
+@click.option("--modes", type=_Modes(), default=None,
+              help="Comma-separated modes to shade, e.g. RE,SL,RO (default: all). "
+                   "Valid: RE, SL, RO, SRO-, SRO+, SRO'-.")
+@click.option("--raw", is_flag=True,
+              help="Shade each mode's region as the report derives it, before Section 4.7 "
+                   "resolves overlaps (regions may overlap; use with --modes).")
+@click.option("--point", "point_specs", type=_PointSpec(), multiple=True,
+              help="Mark a design point K,MU or K,MU:NAME (repeatable).")
+@click.option("--points", "points_files", multiple=True, metavar="FILE.csv",
+              help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
+                   "(repeatable); rows with another gamma/kprime are skipped with a warning.")
+@click.option("--show-ambiguity", is_flag=True,
+              help="Also mark where the report's raw regions overlap (needs "
+                   "regimemap.render_ambiguity).")
+def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | None,
+                 k_max: float | None, mu_max: float | None, resolution: int, dpi: float,
+                 title: str | None, no_curves: bool, no_labels: bool, no_legend: bool,
+                 modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
+                 points_files: tuple[str, ...], show_ambiguity: bool) -> None:
+    from ..params import Parameters
+
+    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime))
+    params = Parameters(gamma, kprime)
+    points = _read_points(points_files, point_specs, params.gamma, params.kprime)
+    draw_ambiguity = None
+    if show_ambiguity:
+        try:
+            from ..render_ambiguity import draw_ambiguity  # type: ignore[import-not-found]
+        except ModuleNotFoundError as exc:
+            if exc.name and exc.name.endswith("render_ambiguity"):
+                raise RunError("--show-ambiguity is not available") from None
+            raise
+
+    from ..render import fit_figure, map_figure, save_figure, style_context
+
+    fig, ax, artists = map_figure(
+        params, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+        curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title,
+        samples=resolution)
+    if draw_ambiguity is not None:
+        with style_context():
+            artists.extra.extend(draw_ambiguity(ax, params, artists.data.k_max,
+                                                artists.data.mu_max) or [])
+            fit_figure(fig, ax)  # the overlay may have added legend entries
+    k_hi, mu_hi = artists.extent
+    outside = [p for p in points if p.k > k_hi or p.mu > mu_hi]
+    if outside:
+        names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in outside[:5])
+        click.echo(f"regimemap: warning: {len(outside)} point(s) outside the view "
+                   f"k <= {_num(k_hi)}, mu <= {_num(mu_hi)}: {names}", err=True)
+    _save(save_figure, fig, path, fmt, dpi)
+    _written(path)
+
+
+# -- figure / figures ------------------------------------------------------------------------
+
+_FIGURE_HELP = """Draw one figure of the report (e.g. 3.9a, 4.7b).
+
+Each figure uses parameters strictly inside its caption's case (see
+'regimemap figures --list').  Without -o the file is fig-<ID>.<format>.
+
+\b
+Examples:
+  regimemap figure 3.9a
+  regimemap figure 4.7a -o fig47a.pdf
+  regimemap figure 3.11 --format svg --dpi 300
+"""
+
+
+def _preset_or_usage_error(fid: str) -> Any:
+    from ..figures import FIGURE_IDS, get_preset, suggest_ids
+
+    try:
+        return get_preset(fid)
+    except KeyError:
+        near = suggest_ids(fid)
+        hint = f" Did you mean {' or '.join(near)}?" if near else ""
+        raise click.BadParameter(
+            f"no figure {fid!r} in the report.{hint} Known: {', '.join(FIGURE_IDS)}",
+            param_hint="'FIGURE_ID'") from None
+
+
+@cli.command("figure", help=_FIGURE_HELP, short_help="Draw one figure of the report.")
+@click.argument("figure_id", metavar="FIGURE_ID")
+@click.option("-o", "--output", metavar="FILE",
+              help="Output file (.png, .svg, .pdf); default fig-<ID>.<format>.")
+@click.option("--format", "fmt", type=_Format(), default=None,
+              help="png, svg or pdf (default: from the suffix of -o, else png).")
+@click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
+              help="Resolution of PNG output (20-1200 dots per inch).")
+def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: float) -> None:
+    preset = _preset_or_usage_error(figure_id)
+    path, fmt = _resolve_output(output, fmt, f"fig-{preset.id}")
+
+    from ..render import render_preset, save_figure
+
+    fig = render_preset(preset, dpi=dpi)
+    _save(save_figure, fig, path, fmt, dpi)
+    _written(path)
+
+
+_FIGURES_HELP = """Draw all 24 figures of the report into a folder.
+
+Writes fig-<ID>.<format> for every figure (3.1 ... 3.11, 4.2 ... 4.7b) and
+every format, in one process.  The output is byte-identical from run to run.
+PNGs are 150 dpi by default (use --dpi 300 for print; SVG and PDF are vector).
+
+\b
+Examples:
+  regimemap figures
+  regimemap figures --out figures --format png,svg
+  regimemap figures --out paper --format pdf
+  regimemap figures --list
+"""
+
+
+@cli.command("figures", help=_FIGURES_HELP, short_help="Draw all 24 figures of the report.")
+@click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
+              help="Existing, writable folder for the files.")
+@click.option("--format", "formats", type=_FormatList(), default="png", show_default=True,
+              help="Comma-separated formats: png, svg, pdf.")
+@click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
+              help="Resolution of PNG output (20-1200 dots per inch).")
+@click.option("--list", "list_only", is_flag=True,
+              help="List the figures with their parameters and captions; draw nothing.")
+def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool) -> None:
+    from ..figures import PRESETS
+
+    if list_only:
+        for p in PRESETS.values():
+            what = "final map" if not p.raw else "raw region of " + p.modes[0].label
+            click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
+                       f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
+                       f"{_plain(p.caption)}")
+        return
+    folder = _check_dir(out_dir, "--out")
+
+    from ..render import render_preset, save_figure
+
+    fig = None  # one Figure for all: its renderer keeps the text caches warm
+    count = 0
+    for preset in PRESETS.values():
+        fig = render_preset(preset, dpi=dpi, fig=fig)
+        for fmt in formats:
+            _save(save_figure, fig, folder / preset.filename(fmt), fmt, dpi)
+            count += 1
+    click.echo(f"wrote {count} files ({len(PRESETS)} figures x {', '.join(formats)}) "
+               f"to {folder}")
