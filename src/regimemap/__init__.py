@@ -15,7 +15,6 @@ from ._version import __version__
 from .classify import PRIORITY, classify, label_grid
 from .modes import MAP_MODES, Mode
 from .params import Case, Parameters
-from .query import PointResult, margin, query_point, query_points
 from .solver import Hypothesis, admissible
 
 __all__ = [
@@ -34,3 +33,13 @@ __all__ = [
     "query_points",
     "__version__",
 ]
+
+_LAZY = {"PointResult", "margin", "query_point", "query_points"}
+
+
+def __getattr__(name: str):  # PEP 562: the point query is imported on first use
+    if name in _LAZY:
+        from . import query
+
+        return getattr(query, name)
+    raise AttributeError(f"module 'regimemap' has no attribute {name!r}")
