@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from .classify import PRIORITY
-from .geometry import breakpoints, raw_intervals
+from .geometry import bisect_edge, breakpoints, raw_intervals
 from .modes import MAP_MODES, Mode
 from .params import Parameters
 
@@ -212,23 +212,13 @@ def _pieces_at(p: Parameters, k: float, mu_cap: float) -> list[tuple[int, float,
     return column_pieces(p, np.array([k]), mu_cap)[0]
 
 
-def _refine(p: Parameters, mask: int, track: int, k_in: float, k_out: float, mu_cap: float,
-            iterations: int = 60) -> float:
+def _refine(p: Parameters, mask: int, track: int, k_in: float, k_out: float, mu_cap: float
+            ) -> float:
     """Bisect between a column holding the part (k_in) and one without (k_out)."""
     def has(kk: float) -> bool:
         return sum(1 for m, _, _ in _pieces_at(p, kk, mu_cap) if m == mask) > track
 
-    for _ in range(iterations):
-        mid = 0.5 * (k_in + k_out)
-        if mid in (k_in, k_out):
-            break
-        if has(mid):
-            k_in = mid
-        else:
-            k_out = mid
-        if abs(k_out - k_in) <= 1e-13 * max(1.0, abs(k_in)):
-            break
-    return k_in
+    return bisect_edge(has, k_in, k_out)
 
 
 def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,

@@ -26,6 +26,7 @@ __all__ = [
     "final_intervals",
     "raw_intervals",
     "breakpoints",
+    "bisect_edge",
     "region_polygons",
 ]
 
@@ -115,16 +116,21 @@ def _sample_k(p: Parameters, k_max: float, samples: int) -> np.ndarray:
     return np.unique(np.concatenate([k, extra]))
 
 
-def _refine_edge(width: Callable[[np.ndarray], np.ndarray], k_in: float, k_out: float,
-                 iterations: int = 48) -> float:
-    """Bisect between a non-empty column k_in and an empty one k_out."""
+def bisect_edge(present: Callable[[float], bool], k_in: float, k_out: float,
+                iterations: int = 60) -> float:
+    """The last k where ``present`` holds, between k_in (it holds) and k_out (it does not).
+
+    Bisection to a relative width of 1e-13 (or adjacent floats).
+    """
     for _ in range(iterations):
         mid = 0.5 * (k_in + k_out)
-        if width(np.array([mid]))[0] > 0.0:
+        if mid in (k_in, k_out):
+            break
+        if present(mid):
             k_in = mid
         else:
             k_out = mid
-        if abs(k_out - k_in) <= 1e-12 * max(1.0, abs(k_in)):
+        if abs(k_out - k_in) <= 1e-13 * max(1.0, abs(k_in)):
             break
     return k_in
 
@@ -172,17 +178,17 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
             idx = np.flatnonzero(present)
             runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
 
-            def width(kk: np.ndarray, mode: Mode = mode) -> np.ndarray:
-                l, h = intervals(kk)[mode]
-                return h - l
+            def present(kk: float, mode: Mode = mode) -> bool:
+                l, h = intervals(np.array([kk]))[mode]
+                return bool(h[0] - l[0] > 0.0)
 
             for run in runs:
                 ks = list(k[run])
                 i0, i1 = run[0], run[-1]
                 if i0 > 0:
-                    ks.insert(0, _refine_edge(width, k[i0], k[i0 - 1]))
+                    ks.insert(0, bisect_edge(present, k[i0], k[i0 - 1]))
                 if i1 < k.size - 1:
-                    ks.append(_refine_edge(width, k[i1], k[i1 + 1]))
+                    ks.append(bisect_edge(present, k[i1], k[i1 + 1]))
                 kk = np.asarray(ks)
                 l, h = intervals(kk)[mode]
                 poly = np.concatenate([np.column_stack([kk, l]), np.column_stack([kk[::-1], h[::-1]])])
