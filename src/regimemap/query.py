@@ -71,7 +71,8 @@ from typing import Any, Iterable, Sequence
 
 import numpy as np
 
-from .classify import PRIORITY, classify
+from .classify import PRIORITY, _thresholds, classify
+from .classify import _constants as _classify_constants
 from .modes import Mode
 from .params import Case, Parameters
 from .points import DesignPoint
@@ -350,12 +351,8 @@ class PointResult:
 # the margin engine (vectorised over points)
 # --------------------------------------------------------------------------------------
 def _constants(g: np.ndarray, kp: np.ndarray) -> tuple[np.ndarray, ...]:
-    g2 = g * g
-    a = 4.0 + g2 - 3.0 * g2 * kp  # (3.18), (4.42)
-    b = 3.0 * g  # (3.19), (4.43)
-    c = 3.0 * g * (1.0 + kp)  # (3.20), (4.44)
-    d = 1.0 + 4.0 * g2  # (3.21), (4.45)
-    return a, b, c, d
+    """a, b, c, d of (3.18)-(3.21), (4.42)-(4.45), computed exactly as classify does."""
+    return _classify_constants(g, kp)[:4]
 
 
 def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray) -> np.ndarray:
@@ -376,10 +373,8 @@ def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray) -> np.ndarray:
 
 def _roots_along_mu(k: np.ndarray, g: np.ndarray, kp: np.ndarray) -> np.ndarray:
     """Every mu where the rule of classify may change along the line of constant k; shape (n, 4)."""
-    a, b, c, d = _constants(g, kp)
-    kk = k * kp
-    mu_s = np.abs(a * k + b) / (c * k + d)
-    return np.stack([k, 1.0 / g - kk, -1.0 / g - kk, mu_s], axis=1)
+    _, lower, upper, mu_s, _ = _thresholds(k, g, kp)
+    return np.stack([k, upper, lower, mu_s], axis=1)
 
 
 def _classify_along(var: str, values: np.ndarray, other: np.ndarray, g: np.ndarray,
@@ -544,10 +539,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
     for h, r in responses.items():
         adm_mode[h.mode] = adm_mode[h.mode] | r.ok if h.mode in adm_mode else r.ok
     margins = {var: _margin_arrays(var, k, mu, g, kp, m0) for var in ("k", "mu")}
-    a, b, c, d = _constants(g, kp)
-    mu_s = np.abs(a * k + b) / (c * k + d)
-    upper = 1.0 / g - k * kp
-    lower = -1.0 / g - k * kp
+    _, lower, upper, mu_s, _ = _thresholds(k, g, kp)
     with np.errstate(divide="ignore"):
         k_A = np.where(kp > -1.0, 1.0 / (g * (1.0 + kp)), np.inf)
     mu_B = (4.0 + g * g) / (3.0 * g)
