@@ -252,3 +252,80 @@ def test_main_entry_point_exit_codes(tmp_path):
                                 str(tmp_path / "m.gif")], capture_output=True, text=True)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
     assert "png, svg, pdf" in bad.stderr
+
+
+# -- start-up: the cyclic GC is paused while matplotlib is imported --------------------------
+
+
+def test_gc_paused_until_matplotlib_is_imported_then_restored():
+    import gc
+
+    from regimemap.cli._common import gc_paused_at_start, import_matplotlib
+
+    assert gc.isenabled()
+    frozen_before = gc.get_freeze_count()
+    with gc_paused_at_start():
+        assert not gc.isenabled()  # the heavy imports run without collections
+        import_matplotlib()
+        assert gc.isenabled()  # ... then drawing collects again
+        assert gc.get_freeze_count() > frozen_before  # what the imports made is frozen
+        import_matplotlib()  # a second call changes nothing
+        assert gc.isenabled()
+    assert gc.isenabled() and gc.get_freeze_count() == frozen_before
+
+
+def test_gc_left_disabled_when_the_caller_disabled_it():
+    import gc
+
+    from regimemap.cli._common import gc_paused_at_start, import_matplotlib
+
+    gc.disable()
+    try:
+        with gc_paused_at_start():
+            import_matplotlib()
+            assert not gc.isenabled()
+        assert not gc.isenabled() and gc.get_freeze_count() == 0
+    finally:
+        gc.enable()
+
+
+@pytest.mark.parametrize("args", [["--version"], ["plot", "--gamma", "0", "--kprime", "0"],
+                                  ["plot", "--gamma", "3", "--kprime", "0.4", "-o", "{tmp}/m.svg"],
+                                  ["figure", "3.9a", "-o", "{tmp}/f.png"]])
+def test_main_restores_the_gc(tmp_path, capsys, args):
+    import gc
+
+    from regimemap.cli import main
+
+    with pytest.raises(SystemExit):
+        main([a.format(tmp=tmp_path) for a in args])
+    assert gc.isenabled() and gc.get_freeze_count() == 0
+
+
+def test_drawing_commands_import_matplotlib_with_the_gc_paused(tmp_path):
+    """In the console script no collection runs while matplotlib is imported; drawing collects."""
+    code = (
+        "import gc, sys\n"
+        "n = [0]\n"
+        "gc.callbacks.append(lambda phase, info: phase == 'start' and n.__setitem__(0, n[0] + 1))\n"
+        "import regimemap.cli.plot as plot\n"
+        "original, seen = plot.import_matplotlib, {}\n"
+        "def probe():\n"
+        "    seen['mpl_before'] = 'matplotlib' in sys.modules\n"
+        "    seen['before'] = n[0]\n"
+        "    original()\n"
+        "    seen['after'] = n[0]\n"
+        "plot.import_matplotlib = probe\n"
+        "from regimemap.cli import main\n"
+        "try:\n"
+        f"    main(['plot', '--gamma', '3', '--kprime', '0.4', '-o', {str(tmp_path / 'm.png')!r}])\n"
+        "except SystemExit as e:\n"
+        "    assert e.code == 0, e.code\n"
+        "print(seen['mpl_before'], seen['after'] - seen['before'], n[0] - seen['after'],\n"
+        "      gc.isenabled(), file=sys.stderr)\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    mpl_before, during, after, enabled = out.stderr.split()
+    assert mpl_before == "False"  # matplotlib really is imported in there ...
+    assert during == "0"  # ... without a collection
+    assert int(after) > 0 and enabled == "True"  # drawing collects again

@@ -13,7 +13,7 @@ import sys
 import click
 
 from .. import __version__
-from ._common import CONTEXT_SETTINGS, run_main
+from ._common import CONTEXT_SETTINGS, gc_paused_at_start, run_main
 
 __all__ = ["cli", "main"]
 
@@ -51,5 +51,11 @@ _register()
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Entry point of the console script: errors become one line on stderr."""
-    sys.exit(run_main(cli, argv))
+    """Entry point of the console script: errors become one line on stderr.
+
+    The cyclic garbage collector is paused while the process starts (see
+    ``regimemap.cli._common.import_matplotlib``).
+    """
+    with gc_paused_at_start():
+        code = run_main(cli, argv)
+    sys.exit(code)

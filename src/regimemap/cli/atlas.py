@@ -7,7 +7,7 @@ from typing import Any, Callable
 import click
 
 from . import cli
-from ._common import RunError, gamma_option, output_path, positive_float
+from ._common import RunError, gamma_option, import_matplotlib, output_path, positive_float
 
 __all__ = ["atlas_cmd", "animate_cmd"]
 
@@ -105,6 +105,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
             f"{len(gammas)} gamma x {len(kprimes)} kprime = {n} panels exceed the limit of "
             f"{_MAX_PANELS}; give fewer values to --gamma or --kprime")
     fmt = _figure_output(output)
+    import_matplotlib()
     from ..atlas import write_atlas
 
     try:
@@ -160,6 +161,7 @@ def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max:
         raise click.BadParameter(f"the animation is a GIF: give a file ending in .gif, got {output!r}",
                                  param_hint="'-o' / '--output'")
     output_path(output, "--output")
+    import_matplotlib()
     from ..atlas import write_animation
 
     try:

@@ -16,6 +16,7 @@ from . import cli
 from ._common import (
     RunError,
     gamma_option,
+    import_matplotlib,
     kprime_option,
     output_dir,
     output_path,
@@ -279,6 +280,7 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
                 raise RunError("--show-ambiguity is not available") from None
             raise
 
+    import_matplotlib()
     from ..render import fit_figure, map_figure, save_figure, style_context
 
     fig, ax, artists = map_figure(
@@ -340,6 +342,7 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     preset = _preset_or_usage_error(figure_id)
     path, fmt = _resolve_output(output, fmt, f"fig-{preset.id}")
 
+    import_matplotlib()
     from ..render import render_preset, save_figure
 
     fig = render_preset(preset, dpi=dpi)
@@ -383,6 +386,7 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
         return
     folder = _check_dir(out_dir, "--out")
 
+    import_matplotlib()
     from ..render import render_preset, save_figure
 
     fig = None  # one Figure for all: its renderer keeps the text caches warm
