@@ -203,26 +203,10 @@ def points_outside(params: Sequence[Parameters], k_max: float, mu_max: float) ->
 
 
 def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
-    """Legend handles in the renderer's style: one per mode, and the line styles."""
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import Patch
+    """The map key's handles (:func:`regimemap._legend.key_handles`) for every mode."""
+    from ._legend import key_handles
 
-    from .render import MODE_STYLE
-
-    handles: list[Any] = []
-    for mode in modes:
-        st = MODE_STYLE[mode]
-        h = Patch(facecolor=st.color, edgecolor="0.4", linewidth=0.4, hatch=st.hatch,
-                  hatchcolor=st.hatch_color, label=f"{mode.tex}  {mode.description}")
-        h.set_hatch_linewidth(0.45)
-        handles.append(h)
-    handles.append(Line2D([], [], color="black", linewidth=1.15, label="boundary of a region"))
-    handles.append(Line2D([], [], color="0.3", linewidth=0.7, dashes=(4.0, 2.5),
-                          label="construction line"))
-    if dotted:
-        handles.append(Line2D([], [], color="0.1", linewidth=1.0, dashes=(1.0, 2.0),
-                              label=r"dotted line $\mu = k|k'|$ (4.22)"))
-    return handles
+    return key_handles(modes, dotted_label=r"dotted line $\mu = k|k'|$ (4.22)" if dotted else None)
 
 
 def _panel_title(g: float, kp: float) -> str:
@@ -270,6 +254,7 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
+    from ._legend import key_legend
     from .render import draw_map, style_context
 
     gammas = [check_gamma(g) for g in gammas]
@@ -281,7 +266,12 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         raise ValueError(f"{nr} x {nc} = {nr * nc} panels exceed the limit of {MAX_PANELS}")
     extents = atlas_extents(gammas, kprimes, share, k_max, mu_max)
     pw, ph = panel_size
-    left, right, top, bottom = 0.62, 0.2, 0.7, 1.3
+    handles = _legend_handles(MAP_MODES, dotted=curves and min(kprimes) < 0.0)
+    key_cols = min(4, max(2, nc))
+    key_rows = -(-len(handles) // key_cols)
+    # the key below the panels: 0.1 in from the edge, ~0.2 in a row, then the
+    # bottom panels' tick labels and k
+    left, right, top, bottom = 0.62, 0.2, 0.7, 0.62 + 0.2 * key_rows
     wspace, hspace = (0.3 if share == "all" else 0.5), (0.42 if share == "all" else 0.6)
     fw = left + right + nc * pw + (nc - 1) * wspace
     fh = top + bottom + nr * ph + (nr - 1) * hspace
@@ -327,10 +317,9 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                     ax.tick_params(labelleft=False)
                     ax.set_ylabel("")
                 ax.set_gid(f"panel-{i}-{j}")
-        handles = _legend_handles(MAP_MODES, dotted=curves and min(kprimes) < 0.0)
-        fig.legend(handles=handles, loc="lower center", ncols=min(4, max(2, nc)),
+        key_legend(fig, handles, loc="lower center", ncols=key_cols,
                    bbox_to_anchor=(0.5, 0.1 / fh), fontsize=8, frameon=False,
-                   handlelength=2.2, handleheight=1.1, columnspacing=1.5)
+                   handleheight=1.1, columnspacing=1.5)
         title = (r"Regime maps: rows $\gamma = H/B$, columns $k' = h/H$"
                  + ("" if share == "none" else
                     f" (axes shared {'across the figure' if share == 'all' else 'in each row'})"))
@@ -413,6 +402,7 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     it does not jump.
     """
     from ._atomic import atomic_path
+    from ._legend import key_legend
     from .render import FIGSIZE, draw_map, new_figure, style_context
 
     g = check_gamma(gamma)
@@ -441,9 +431,9 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
                      samples=samples)
             if handles is None:
                 handles = _legend_handles(MAP_MODES, dotted=min(kps) < 0.0)
-            ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncols=2,
-                      fontsize=8.5, frameon=False, handlelength=2.2, handleheight=1.1,
-                      columnspacing=1.5, borderaxespad=0.0)
+            key_legend(ax, handles, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncols=2,
+                       fontsize=8.5, frameon=False, handleheight=1.1, columnspacing=1.5,
+                       borderaxespad=0.0)
             ax.text(0.99, 0.98, rf"$k' = {kp:+.3f}$", transform=ax.transAxes, ha="right", va="top",
                     fontsize=11, zorder=10,
                     bbox={"boxstyle": "round,pad=0.3", "fc": "white", "ec": "0.3", "lw": 0.6})

@@ -358,7 +358,7 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
     MapArtists
     """
     from matplotlib.lines import Line2D
-    from matplotlib.patches import Patch, Polygon
+    from matplotlib.patches import Polygon
 
     if data is None:
         data = compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
@@ -469,32 +469,23 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
                 out.region_labels.setdefault(mode, []).append(t)
 
     if legend:
-        handles: list[Any] = []
-        for mode in data.modes:
-            if not any(len(p) >= 3 for p in data.polygons.get(mode, [])):
-                continue
-            st = MODE_STYLE[mode]
-            h = Patch(facecolor=st.color, edgecolor="0.4", linewidth=0.4,
-                      hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
-                      label=f"{mode.tex}  {mode.description}")
-            h.set_hatch_linewidth(_HATCH_LW)
-            handles.append(h)
-        if curves and data.curves:
-            handles.append(Line2D([], [], color="black", linewidth=_LINE_LW,
-                                  label="boundary of a region"))
-            if any(not b for c in data.curves.values() if not c.dotted for _, b in c.runs()):
-                handles.append(Line2D([], [], label="construction line", **_CONSTRUCTION))
-            dotted = [c for c in data.curves.values() if c.dotted]
-            if dotted:
-                handles.append(Line2D([], [], label="dotted line " + dotted[0].label, **_DOTTED))
+        from ._legend import key_handles, key_legend
+
+        shown = [m for m in data.modes if any(len(p) >= 3 for p in data.polygons.get(m, []))]
+        plain = [c for c in data.curves.values() if not c.dotted] if curves else []
+        dotted = [c for c in data.curves.values() if c.dotted] if curves else []
+        handles = key_handles(
+            shown, hatches=hatches, boundary=bool(plain or dotted),
+            construction=any(not b for c in plain for _, b in c.runs()),
+            dotted_label=("dotted line " + dotted[0].label) if dotted else None)
         kw = {
             "loc": "upper center", "bbox_to_anchor": (0.5, -0.135), "ncol": 2,
-            "fontsize": 8.5, "frameon": False, "handlelength": 2.2, "handleheight": 1.1,
+            "fontsize": 8.5, "frameon": False, "handleheight": 1.1,
             "columnspacing": 1.5, "borderaxespad": 0.0,
         }
         kw.update(legend_kw or {})
         if handles:
-            out.legend = ax.legend(handles=handles, **kw)
+            out.legend = key_legend(ax, handles, **kw)
 
     if title is None:
         title = default_title(params, modes=data.modes, raw=data.raw)

@@ -80,6 +80,8 @@ def _add_to_legend(ax: Axes, handle: Artist) -> Artist | None:
         "borderaxespad": old.borderaxespad,
         "borderpad": old.borderpad,
         "labelspacing": old.labelspacing,
+        # the map key's handlers (swatch and symbol, short line samples)
+        "handler_map": old.get_legend_handler_map(),
     }
     if getattr(old, "_bbox_to_anchor", None) is not None:
         # the anchor in axes fractions (independent of the dpi the figure is saved at)
