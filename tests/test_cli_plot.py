@@ -329,3 +329,30 @@ def test_drawing_commands_import_matplotlib_with_the_gc_paused(tmp_path):
     assert mpl_before == "False"  # matplotlib really is imported in there ...
     assert during == "0"  # ... without a collection
     assert int(after) > 0 and enabled == "True"  # drawing collects again
+
+
+def test_console_script_skips_the_final_collections(tmp_path):
+    """console_main freezes the heap before the interpreter exits (atexit still runs)."""
+    code = (
+        "import atexit, gc, sys\n"
+        "atexit.register(lambda: print('FROZEN', gc.get_freeze_count() > 0, file=sys.stderr))\n"
+        f"sys.argv = ['regimemap', 'plot', '--gamma', '3', '--kprime', '0.4', '-o', "
+        f"{str(tmp_path / 'm.png')!r}]\n"
+        "from regimemap.cli import console_main\n"
+        "console_main()\n"
+    )
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert "FROZEN True" in out.stderr
+    assert out.stdout.strip() == str(tmp_path / "m.png")  # stdout flushed at exit
+    assert (tmp_path / "m.png").read_bytes().startswith(PNG)
+
+
+def test_python_dash_m_regimemap(tmp_path):
+    ok = subprocess.run([sys.executable, "-m", "regimemap", "--version"], capture_output=True,
+                        text=True)
+    assert ok.returncode == 0 and "regimemap" in ok.stdout
+    bad = subprocess.run([sys.executable, "-m", "regimemap", "plot", "--gamma", "-1",
+                          "--kprime", "0"], capture_output=True, text=True, cwd=tmp_path)
+    assert bad.returncode == 2 and "Traceback" not in bad.stderr and "--gamma" in bad.stderr
+    assert list(tmp_path.iterdir()) == []

@@ -7,9 +7,9 @@ construction, dotted) follow with a short line in the swatch column, so every
 description starts at the same place.
 
 Only the symbol needs mathtext, and only for sub- and superscripts; the
-descriptions are plain text, which matplotlib lays out and draws in C (a whole
-label such as ``"$SRO_{-}$  slide-rock about O"`` would be parsed and drawn
-glyph by glyph as mathtext).
+descriptions are plain text.  (A whole label such as
+``"$SRO_{-}$  slide-rock about O"`` is one more mathtext parse per entry, and
+its parts could not be aligned.)
 
 This module imports matplotlib; :mod:`regimemap.render` and
 :mod:`regimemap.atlas` import it only when they draw.
