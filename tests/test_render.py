@@ -315,3 +315,43 @@ def test_no_pyplot_and_no_global_rcparams():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "no-pyplot []"
+
+
+# -- names of the points ------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("gamma", [1.0, 3.0, 4.0, 6.0])
+def test_point_names_never_overlap(gamma):
+    """E and F (and D, G) on the k axis can nearly coincide; their names must not."""
+    import itertools
+
+    for kprime in (-0.6, -0.3, -0.2, -0.1, 0.0, 0.2, 0.4, 0.85):
+        fig, ax, art = map_figure(Parameters(gamma, kprime), dpi=72)
+        fig.canvas.draw()
+        r = fig.canvas.get_renderer()
+        boxes = {n: t.get_window_extent(r) for n, t in art.point_labels.items()}
+        for a, b in itertools.combinations(boxes, 2):
+            A, B = boxes[a], boxes[b]
+            overlap_x = min(A.x1, B.x1) - max(A.x0, B.x0)
+            overlap_y = min(A.y1, B.y1) - max(A.y0, B.y0)
+            assert overlap_x <= 0.5 or overlap_y <= 0.5, (gamma, kprime, a, b)
+
+
+def test_point_offsets_for_crowded_axis_points():
+    from types import SimpleNamespace as P
+
+    from regimemap.render import _ABOVE, _LEFT_OF, _RIGHT_OF, _POINT_OFFSET, _point_offsets
+
+    frame = P(k_max=1.0, w_pt=400.0)  # 1 unit of k = 400 points
+    pts = {"O": P(k=0.0, mu=0.0), "F": P(k=0.50, mu=0.0), "E": P(k=0.51, mu=0.0),
+           "D": P(k=0.52, mu=0.0), "G": P(k=0.9, mu=0.0), "A": P(k=0.5, mu=0.5)}
+    off = _point_offsets(pts, frame)
+    assert off["F"] == _LEFT_OF and off["E"] == _ABOVE and off["D"] == _RIGHT_OF
+    assert off["G"] == _POINT_OFFSET["G"] and off["A"] == _POINT_OFFSET["A"]
+    assert off["O"] == _POINT_OFFSET["O"]
+    # E right of F: the order decides, not the name
+    off = _point_offsets({"E": P(k=0.50, mu=0.0), "F": P(k=0.51, mu=0.0)}, frame)
+    assert off["E"] == _LEFT_OF and off["F"] == _RIGHT_OF
+    # no room on the left inside the axes: above instead
+    off = _point_offsets({"F": P(k=0.01, mu=0.0), "E": P(k=0.02, mu=0.0)}, frame)
+    assert off["F"] == _ABOVE and off["E"] == _RIGHT_OF

@@ -253,6 +253,37 @@ _POINT_OFFSET: dict[str, tuple[float, float, str, str]] = {
     "F": (-3.0, 3.0, "right", "bottom"),
     "G": (3.0, 3.0, "left", "bottom"),
 }
+_LEFT_OF = (-3.0, 3.0, "right", "bottom")
+_RIGHT_OF = (3.0, 3.0, "left", "bottom")
+_ABOVE = (0.0, 7.0, "center", "bottom")
+
+
+def _point_offsets(points: dict[str, Any], frame: "_Frame"
+                   ) -> dict[str, tuple[float, float, str, str]]:
+    """Offsets of the point names; names of points close together on the k axis kept apart.
+
+    D, E, F and G lie on the k axis and may nearly coincide (E and F at
+    gamma = 3, k' = -0.2 are 0.05 apart).  Of two points closer than their
+    names are wide, the left one is named on its left and the right one on its
+    right; a point crowded on both sides is named above.
+    """
+    out = {name: _POINT_OFFSET.get(name, (4.0, 4.0, "left", "bottom")) for name in points}
+    on_axis = sorted((pt.k, name) for name, pt in points.items() if pt.mu == 0.0 and name != "O")
+    x = [k / frame.k_max * frame.w_pt for k, _ in on_axis]
+    width = _text_size("M", _POINT_FS)[0] + 6.0  # a name and the gaps either side (points)
+    for i in range(len(on_axis) - 1):
+        if x[i + 1] - x[i] >= width:
+            continue
+        left, right = on_axis[i][1], on_axis[i + 1][1]
+        if out[left] == _RIGHT_OF and i > 0 and x[i] - x[i - 1] < width:
+            out[left] = _ABOVE  # already pushed right by its left neighbour
+        elif x[i] >= width:
+            out[left] = _LEFT_OF
+        else:
+            out[left] = _ABOVE  # no room left of it, inside the axes
+        out[right] = _RIGHT_OF
+    return out
+
 
 _REGION_FS = 11.0
 _POINT_FS = 10.0
@@ -410,11 +441,12 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
                 ax.add_line(line)
                 lines.append(line)
             out.curves[name] = lines
+        offsets = _point_offsets(data.points, frame)
         for name, pt in data.points.items():
             (marker,) = ax.plot([pt.k], [pt.mu], linestyle="none", marker="o", markersize=3.2,
                                 color="black", zorder=_Z_POINT, clip_on=False, label=f"_{name}")
             out.point_markers[name] = marker
-            dx, dy, ha, va = _POINT_OFFSET.get(name, (4.0, 4.0, "left", "bottom"))
+            dx, dy, ha, va = offsets[name]
             text = _point_text(name)
             out.point_labels[name] = ax.annotate(
                 text, (pt.k, pt.mu), xytext=(dx, dy), textcoords="offset points",
