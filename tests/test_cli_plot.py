@@ -156,6 +156,26 @@ def test_show_ambiguity_when_available(runner, tmp_path):
     assert (tmp_path / "m.png").read_bytes().startswith(PNG)
 
 
+def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkeypatch):
+    """The overlay rebuilds the legend; the map's MapArtists then holds the new one."""
+    import regimemap.render as render
+
+    seen = []
+    original = render.map_figure
+
+    def spy(*args, **kwargs):
+        fig, ax, art = original(*args, **kwargs)
+        seen.append((ax, art))
+        return fig, ax, art
+
+    monkeypatch.setattr(render, "map_figure", spy)
+    _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "-0.2", "--k-max", "16",
+                            "--mu-max", "3", "--show-ambiguity", "-o", str(tmp_path / "m.svg")]))
+    (ax, art), = seen
+    assert art.legend is ax.get_legend()
+    assert "several modes admissible" in [t.get_text() for t in art.legend.get_texts()]
+
+
 # -- figure / figures ----------------------------------------------------------------------------
 
 

@@ -119,6 +119,13 @@ def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
     list of Artist
         The stipples, outlines and annotations drawn (and the legend, if it
         was rebuilt); empty when no part is in view (e.g. above C).
+
+    Notes
+    -----
+    A legend cannot take a new entry in place: the axes' legend is replaced
+    by a new one with the same entries, placement and handlers, plus this one.
+    A :class:`~regimemap.render.MapArtists` of the map then still holds the
+    old legend; set its ``legend`` to ``ax.get_legend()``.
     """
     st = AMBIGUITY_STYLE
     # a slightly larger view, clipped by the axes, so the edges of the view are

@@ -291,6 +291,7 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
         with style_context():
             artists.extra.extend(draw_ambiguity(ax, params, artists.data.k_max,
                                                 artists.data.mu_max) or [])
+            artists.legend = ax.get_legend()  # rebuilt with one more entry
             fit_figure(fig, ax)  # the overlay may have added legend entries
     k_hi, mu_hi = artists.extent
     outside = [p for p in points if p.k > k_hi or p.mu > mu_hi]
