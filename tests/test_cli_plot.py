@@ -294,6 +294,22 @@ def test_gc_paused_until_matplotlib_is_imported_then_restored():
     assert gc.isenabled() and gc.get_freeze_count() == frozen_before
 
 
+def test_gc_does_not_thaw_what_the_caller_froze():
+    import gc
+
+    from regimemap.cli._common import gc_paused_at_start, import_matplotlib
+
+    gc.freeze()
+    try:
+        frozen = gc.get_freeze_count()
+        with gc_paused_at_start():
+            import_matplotlib()
+            assert gc.isenabled()
+        assert gc.isenabled() and gc.get_freeze_count() >= frozen
+    finally:
+        gc.unfreeze()
+
+
 def test_gc_left_disabled_when_the_caller_disabled_it():
     import gc
 

@@ -173,14 +173,14 @@ def output_dir(path: str | os.PathLike[str], param: str = "--out") -> Path:
 # ``regimemap plot`` is a short process that spends most of its time importing
 # matplotlib, which allocates ~120 000 long-lived objects.  With the collector
 # running, CPython scans them again and again while they are being created
-# (~35-40 ms of a 0.6 s run, measured with gc.callbacks).  The console script
+# (~35-40 ms of a 0.6 s run, measured with gc.callbacks).  ``cli.main``
 # therefore pauses the collector at start; a drawing command calls
 # :func:`import_matplotlib`, which imports matplotlib, freezes what the imports
 # allocated (``gc.freeze``: later collections skip it) and resumes collecting,
 # so commands that draw many figures (figures, atlas, animate) still free their
 # garbage.  Library users and click's test runner are not affected.
 
-_gc_state = {"paused": False, "frozen": False}
+_gc_state = {"paused": False, "frozen": False, "may_freeze": False}
 
 
 @contextlib.contextmanager
@@ -189,6 +189,8 @@ def gc_paused_at_start() -> Iterator[None]:
     was_enabled = gc.isenabled()
     gc.disable()
     _gc_state["paused"] = was_enabled  # a caller that disabled it keeps it disabled
+    # gc.unfreeze() cannot tell whose objects it thaws: freeze only if nobody else has
+    _gc_state["may_freeze"] = gc.get_freeze_count() == 0
     try:
         yield
     finally:
@@ -210,8 +212,9 @@ def import_matplotlib() -> None:
 
     if _gc_state["paused"]:
         _gc_state["paused"] = False
-        gc.freeze()
-        _gc_state["frozen"] = True
+        if _gc_state["may_freeze"]:
+            gc.freeze()
+            _gc_state["frozen"] = True
         gc.enable()
 
 
