@@ -19,7 +19,7 @@ import numpy as np
 
 import regimemap
 from regimemap import classify, label_grid
-from regimemap.solver import admissible
+from regimemap.mechanics.solver import admissible
 
 
 def best_of(fn, repeat: int = 7) -> float:

@@ -8,14 +8,14 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify
-from regimemap.ambiguity import (
+from regimemap.maps.ambiguity import (
     AmbiguousRegion,
     admissible_set,
     ambiguous_regions,
     column_pieces,
     set_label,
 )
-from regimemap.solver import admissible
+from regimemap.mechanics.solver import admissible
 
 from ._sweep import sweep
 
@@ -201,7 +201,7 @@ def test_bad_view_rejected():
 
 
 def _map_axes(gamma, kprime, **kw):
-    from regimemap.render import map_figure
+    from regimemap.drawing.mapplot import map_figure
 
     fig, ax, art = map_figure(Parameters(gamma, kprime), samples=201, **kw)
     return fig, ax, art
@@ -210,7 +210,7 @@ def _map_axes(gamma, kprime, **kw):
 def test_draw_ambiguity_outlines_and_annotates():
     from matplotlib.patches import Polygon as MplPolygon
 
-    from regimemap.render_ambiguity import GID, LEGEND_LABEL, draw_ambiguity
+    from regimemap.drawing.ambiguity import GID, LEGEND_LABEL, draw_ambiguity
 
     fig, ax, art = _map_axes(3.0, -0.6, k_max=4.0, mu_max=3.0)
     n_before = len(ax.patches)
@@ -231,7 +231,7 @@ def test_draw_ambiguity_outlines_and_annotates():
 
 
 def test_draw_ambiguity_nothing_above_c_or_out_of_view():
-    from regimemap.render_ambiguity import draw_ambiguity
+    from regimemap.drawing.ambiguity import draw_ambiguity
 
     fig, ax, art = _map_axes(3.0, 0.4)
     n = len(ax.get_children())
@@ -246,7 +246,7 @@ def test_draw_ambiguity_without_legend():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from regimemap.render_ambiguity import LEGEND_LABEL, draw_ambiguity
+    from regimemap.drawing.ambiguity import LEGEND_LABEL, draw_ambiguity
 
     fig = Figure()
     FigureCanvasAgg(fig)

@@ -7,7 +7,7 @@ import pytest
 from PIL import Image
 
 from regimemap import Parameters
-from regimemap.atlas import (
+from regimemap.drawing.atlas import (
     MAX_FRAMES,
     MAX_PANELS,
     atlas_extents,
@@ -19,8 +19,8 @@ from regimemap.atlas import (
     write_animation,
     write_atlas,
 )
-from regimemap.validation import check_gamma, check_kprime
-from regimemap.view import auto_extent
+from regimemap.mechanics.validation import check_gamma, check_kprime
+from regimemap.maps.view import auto_extent
 
 
 def _panels(fig):
@@ -109,7 +109,7 @@ def test_animation_frames_and_size(tmp_path):
 
 def test_animation_fixed_axes(tmp_path, monkeypatch):
     """Every frame is drawn on the same view."""
-    import regimemap.render as render
+    import regimemap.drawing.mapplot as render
 
     seen = []
     real = render.draw_map

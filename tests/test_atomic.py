@@ -1,4 +1,4 @@
-"""Atomic output (:mod:`regimemap._atomic`): a failed or interrupted write leaves the old file or none."""
+"""Atomic output (:mod:`regimemap.io.atomic`): a failed or interrupted write leaves the old file or none."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap._atomic import atomic_open, atomic_path, check_output_path
+from regimemap.io.atomic import atomic_open, atomic_path, check_output_path
 
 OLD = b"old content\n\x00\xff binary too\n"
 

@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 
 from regimemap import PRIORITY, Mode, Parameters, classify, label_grid
-from regimemap.classify import choose
-from regimemap.curves import lower_line, mu_star, upper_line
-from regimemap.regions import RAW_REGIONS
-from regimemap.solver import admissible
+from regimemap.maps.classify import choose
+from regimemap.mechanics.curves import lower_line, mu_star, upper_line
+from regimemap.mechanics.regions import RAW_REGIONS
+from regimemap.mechanics.solver import admissible
 
 from ._sweep import sample_points, sweep
 

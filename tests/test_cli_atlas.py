@@ -6,7 +6,7 @@ import pytest
 from click.testing import CliRunner
 from PIL import Image
 
-from regimemap import atlas as atlas_mod
+from regimemap.drawing import atlas as atlas_mod
 from regimemap.cli import atlas as cli_atlas
 from regimemap.cli import cli
 

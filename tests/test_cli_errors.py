@@ -346,12 +346,12 @@ def test_bad_points_file(tmp_path, inputs, monkeypatch, command, name, pattern):
 
 def _break(monkeypatch, exc: BaseException):
     """Make the library call of 'export' raise ``exc``."""
-    import regimemap.export
+    import regimemap.io.export
 
     def boom(*a, **k):
         raise exc
 
-    monkeypatch.setattr(regimemap.export, "export_map", boom)
+    monkeypatch.setattr(regimemap.io.export, "export_map", boom)
 
 
 @pytest.mark.parametrize("exc,code,pattern", [
@@ -704,7 +704,7 @@ _FUZZ_EXAMPLES = max(4, settings.default.max_examples // 3)
 def test_random_arguments_never_crash(name, tmp_path_factory, monkeypatch):
     needs(name)
     if name == "figures":  # keep a valid 'figures' run short: two figures instead of 24
-        import regimemap.figures as figs
+        import regimemap.drawing.presets as figs
 
         monkeypatch.setattr(figs, "PRESETS", dict(list(figs.PRESETS.items())[:2]))
 
@@ -764,7 +764,7 @@ def test_nan_is_not_silently_accepted_anywhere(tmp_path):
 def test_the_harness_catches_a_writer_that_is_not_atomic(tmp_path, inputs, monkeypatch):
     """Sanity check of WriteFailure: with a naive (non-atomic) writer the old file is lost."""
     needs("export")
-    import regimemap._atomic as atomic
+    import regimemap.io.atomic as atomic
 
     @contextlib.contextmanager
     def naive_path(path):

@@ -140,17 +140,8 @@ def test_plot_warns_about_points_outside_the_view(runner, tmp_path):
     assert "outside the view" in res.output and "far" in res.output
 
 
-def test_show_ambiguity_missing_module(runner, tmp_path, monkeypatch):
-    monkeypatch.setitem(sys.modules, "regimemap.render_ambiguity", None)
-    res = runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "-0.3", "--show-ambiguity",
-                              "-o", str(tmp_path / "m.png")])
-    assert res.exit_code == 1
-    assert "--show-ambiguity is not available" in res.output
-    assert not (tmp_path / "m.png").exists()
-
-
 def test_show_ambiguity_when_available(runner, tmp_path):
-    pytest.importorskip("regimemap.render_ambiguity")
+    pytest.importorskip("regimemap.drawing.ambiguity")
     _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "-0.3", "--show-ambiguity",
                             "-o", str(tmp_path / "m.png"), "--dpi", "40"]))
     assert (tmp_path / "m.png").read_bytes().startswith(PNG)
@@ -158,7 +149,7 @@ def test_show_ambiguity_when_available(runner, tmp_path):
 
 def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkeypatch):
     """The overlay rebuilds the legend; the map's MapArtists then holds the new one."""
-    import regimemap.render as render
+    import regimemap.drawing.mapplot as render
 
     seen = []
     original = render.map_figure

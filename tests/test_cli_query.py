@@ -12,8 +12,8 @@ import pytest
 from click.testing import CliRunner
 
 from regimemap.cli import cli
-from regimemap.points import DesignPoint
-from regimemap.query import CSV_COLUMNS, query_point, query_points
+from regimemap.io.points import DesignPoint
+from regimemap.maps.query import CSV_COLUMNS, query_point, query_points
 
 
 def run(*args: str):

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from regimemap import Parameters
-from regimemap.curves import (
+from regimemap.mechanics.curves import (
     dotted_line,
     line_OA,
     lower_line,
@@ -15,7 +15,7 @@ from regimemap.curves import (
     named_points,
     upper_line,
 )
-from regimemap.solver import Hypothesis, solve
+from regimemap.mechanics.solver import Hypothesis, solve
 
 
 def test_mu_star_is_friction_needed_to_rock():

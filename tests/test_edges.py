@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Case, Mode, Parameters, classify, label_grid
-from regimemap.curves import (
+from regimemap.mechanics.curves import (
     dotted_line,
     lower_line,
     mu_star,
@@ -25,9 +25,9 @@ from regimemap.curves import (
     named_points,
     upper_line,
 )
-from regimemap.geometry import breakpoints, region_polygons
-from regimemap.solver import admissible
-from regimemap.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
+from regimemap.maps.geometry import breakpoints, region_polygons
+from regimemap.mechanics.solver import admissible
+from regimemap.mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
 
 pytestmark = pytest.mark.filterwarnings("error")  # any warning fails the test
 

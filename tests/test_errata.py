@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify
-from regimemap.curves import lower_line, mu_star_signed, mu_star_star
-from regimemap.solver import Hypothesis, admissible, solve
+from regimemap.mechanics.curves import lower_line, mu_star_signed, mu_star_star
+from regimemap.mechanics.solver import Hypothesis, admissible, solve
 
 
 def test_E1_moment_of_inertia_is_one_third():

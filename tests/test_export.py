@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify
-from regimemap.curves import named_points
-from regimemap.export import (
+from regimemap.mechanics.curves import named_points
+from regimemap.io.export import (
     DEFAULT_RESOLUTION,
     boundary_curves,
     export_map,
@@ -19,8 +19,8 @@ from regimemap.export import (
     map_geometry,
     map_grid,
 )
-from regimemap.validation import MAX_RESOLUTION
-from regimemap.view import auto_extent
+from regimemap.mechanics.validation import MAX_RESOLUTION
+from regimemap.maps.view import auto_extent
 
 CASES = [(3.0, 0.4), (3.0, 0.9), (1.0, 0.0), (3.0, -0.2), (3.0, -0.6), (2.0, -1.0), (0.5, 1.0)]
 
@@ -100,7 +100,7 @@ def test_json_polylines_satisfy_their_equations(tmp_path, gamma, kprime):
                 n_pts += 1
     assert n_pts > 0
     # the same curves, checked against the library's own functions
-    from regimemap.curves import lower_line, mu_star, mu_star_star, upper_line
+    from regimemap.mechanics.curves import lower_line, mu_star, mu_star_star, upper_line
 
     funcs = {"OA": lambda k: k, "mu_star": lambda k: mu_star(p, k),
              "mu_star_star": lambda k: mu_star_star(p, k)}
@@ -169,7 +169,7 @@ def test_above_c_json_curves():
 
 
 def test_resolution_limits_refused_before_allocating(tmp_path, monkeypatch):
-    import regimemap.export as ex
+    import regimemap.io.export as ex
 
     def boom(*a, **k):  # pragma: no cover - must not be reached
         raise AssertionError("allocated a grid")
@@ -199,7 +199,7 @@ def test_format_of():
 
 
 def test_atomic_write_leaves_no_partial_file(tmp_path, monkeypatch):
-    import regimemap.export as ex
+    import regimemap.io.export as ex
 
     path = tmp_path / "map.json"
     path.write_text("old")

@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, classify
-from regimemap.geometry import final_intervals, raw_intervals, region_polygons
-from regimemap.regions import raw_region
+from regimemap.maps.geometry import final_intervals, raw_intervals, region_polygons
+from regimemap.mechanics.regions import raw_region
 
 
 def _inside(poly: np.ndarray, pts: np.ndarray) -> np.ndarray:

@@ -1,4 +1,4 @@
-"""regimemap._legend: the map key (swatch, symbol column, plain descriptions)."""
+"""regimemap.drawing.key: the map key (swatch, symbol column, plain descriptions)."""
 
 from __future__ import annotations
 
@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters
-from regimemap.render import MODE_STYLE, map_figure
+from regimemap.drawing.mapplot import MODE_STYLE, map_figure
 
 
 def _key_parts(legend):
@@ -31,7 +31,7 @@ def test_map_key_entries_swatch_symbol_description():
     from matplotlib.lines import Line2D
     from matplotlib.text import Text
 
-    from regimemap._legend import ModeSwatch
+    from regimemap.drawing.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, 0.4))
     labels = [t.get_text() for t in art.legend.get_texts()]
@@ -61,8 +61,8 @@ def test_every_symbol_sits_between_its_swatch_and_the_descriptions():
     from matplotlib.figure import Figure
     from matplotlib.text import Text
 
-    from regimemap._legend import ModeSwatch, key_handles, key_legend
-    from regimemap.render import style_context
+    from regimemap.drawing.key import ModeSwatch, key_handles, key_legend
+    from regimemap.drawing.mapplot import style_context
 
     for fontsize in (7.0, 8.5, 11.0):
         with style_context():
@@ -97,7 +97,7 @@ def test_every_symbol_sits_between_its_swatch_and_the_descriptions():
 def test_line_samples_are_as_long_as_the_swatches():
     from matplotlib.lines import Line2D
 
-    from regimemap._legend import ModeSwatch
+    from regimemap.drawing.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, -0.3))
     fig.canvas.draw()
@@ -114,7 +114,7 @@ def test_line_samples_are_as_long_as_the_swatches():
 
 def test_swatch_colour_in_the_raster():
     """The PNG shows each swatch in its mode's colour (between the hatch lines)."""
-    from regimemap._legend import ModeSwatch
+    from regimemap.drawing.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, -0.3), dpi=100)
     fig.canvas.draw()
@@ -140,8 +140,8 @@ def test_ambiguity_overlay_keeps_the_key():
     """draw_ambiguity rebuilds the legend with one more entry; swatches and symbols stay."""
     from matplotlib.text import Text
 
-    from regimemap._legend import ModeSwatch
-    from regimemap.render_ambiguity import LEGEND_LABEL, draw_ambiguity
+    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.ambiguity import LEGEND_LABEL, draw_ambiguity
 
     fig, ax, art = map_figure(Parameters(3.0, -0.6), k_max=4.0, mu_max=3.0)
     before = [(type(c[0]), [x.get_text() for x in c if isinstance(x, Text)])
@@ -154,8 +154,8 @@ def test_ambiguity_overlay_keeps_the_key():
 
 
 def test_atlas_key_has_every_mode():
-    from regimemap._legend import ModeSwatch
-    from regimemap.atlas import atlas_figure
+    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.atlas import atlas_figure
 
     fig = atlas_figure([3.0], [-0.3, 0.4], samples=101)
     (leg,) = fig.legends

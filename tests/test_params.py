@@ -7,7 +7,7 @@ import math
 import pytest
 
 from regimemap import Case, Parameters
-from regimemap.curves import mu_star, upper_line
+from regimemap.mechanics.curves import mu_star, upper_line
 
 
 def test_constants_match_report_both_chapters():

@@ -7,8 +7,8 @@ import re
 
 import pytest
 
-from regimemap import points as points_mod
-from regimemap.points import MAX_POINTS_FILE_BYTES, DesignPoint, parse_point_spec, read_points_csv
+from regimemap.io import points as points_mod
+from regimemap.io.points import MAX_POINTS_FILE_BYTES, DesignPoint, parse_point_spec, read_points_csv
 
 
 def _write(tmp_path, text: str | bytes, name: str = "pts.csv"):

@@ -9,8 +9,8 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify
-from regimemap.points import DesignPoint
-from regimemap.query import (
+from regimemap.io.points import DesignPoint
+from regimemap.maps.query import (
     CSV_COLUMNS,
     HYPOTHESES_OF_MODE,
     Crossing,
@@ -19,7 +19,7 @@ from regimemap.query import (
     query_points,
     result_row,
 )
-from regimemap.solver import Hypothesis, admissible, solve
+from regimemap.mechanics.solver import Hypothesis, admissible, solve
 
 from ._sweep import sample_points, sweep
 
@@ -256,7 +256,7 @@ def test_unsolvable_system_reported_not_invented(monkeypatch):
     """Where the solver cannot solve the chosen hypothesis, the physics is None, not garbage."""
     import dataclasses
 
-    import regimemap.query as q
+    import regimemap.maps.query as q
 
     real = q.solve
 

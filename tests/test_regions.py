@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters
-from regimemap.regions import RAW_REGIONS, raw_region
-from regimemap.solver import admissible
+from regimemap.mechanics.regions import RAW_REGIONS, raw_region
+from regimemap.mechanics.solver import admissible
 
 from ._sweep import sample_points, sweep
 

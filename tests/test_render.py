@@ -1,4 +1,4 @@
-"""regimemap.render: fills where the modes are, vector and byte-stable output, no pyplot."""
+"""regimemap.drawing.mapplot: fills where the modes are, vector and byte-stable output, no pyplot."""
 
 from __future__ import annotations
 
@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
-from regimemap.figures import PRESETS
-from regimemap.points import DesignPoint
-from regimemap.render import (
+from regimemap.drawing.presets import PRESETS
+from regimemap.io.points import DesignPoint
+from regimemap.drawing.mapplot import (
     FORMATS,
     MODE_STYLE,
     MapArtists,
@@ -39,7 +39,7 @@ def _rgb(color: str) -> np.ndarray:
 
 def _deep_points(pr, n_k=160, n_mu=120):
     """For each mode of a final map: the grid point farthest (in grid cells) from any other mode."""
-    from regimemap.view import auto_extent
+    from regimemap.maps.view import auto_extent
 
     k_max, mu_max = auto_extent(pr.params, k_max=pr.k_max, mu_max=pr.mu_max)
     k = (np.arange(n_k) + 0.5) / n_k * k_max
@@ -191,7 +191,7 @@ def test_design_points_extend_the_view():
 def _render_bytes(fmt, fid=None):
     fig = render_preset(fid, dpi=50) if fid else render_map(Parameters(3.0, 0.4), dpi=50)
     buf = io.BytesIO()
-    from regimemap.render import _metadata, style_context
+    from regimemap.drawing.mapplot import _metadata, style_context
 
     with style_context():
         fig.savefig(buf, format=fmt, dpi=50, metadata=_metadata(fmt))
@@ -306,7 +306,7 @@ def test_no_pyplot_and_no_global_rcparams():
         "keys = [k for k in rc if k != 'backend']  # reading 'backend' would import pyplot\n"
         "before = {k: rc[k] for k in keys}\n"
         "from regimemap import Parameters\n"
-        "from regimemap.render import render_map, save_figure\n"
+        "from regimemap.drawing.mapplot import render_map, save_figure\n"
         "import io\n"
         "fig = render_map(Parameters(3, 0.4), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"
@@ -340,7 +340,7 @@ def test_point_names_never_overlap(gamma):
 def test_point_offsets_for_crowded_axis_points():
     from types import SimpleNamespace as P
 
-    from regimemap.render import _ABOVE, _LEFT_OF, _RIGHT_OF, _POINT_OFFSET, _point_offsets
+    from regimemap.drawing.mapplot import _ABOVE, _LEFT_OF, _RIGHT_OF, _POINT_OFFSET, _point_offsets
 
     frame = P(k_max=1.0, w_pt=400.0)  # 1 unit of k = 400 points
     pts = {"O": P(k=0.0, mu=0.0), "F": P(k=0.50, mu=0.0), "E": P(k=0.51, mu=0.0),

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from regimemap import Mode
-from regimemap.solver import Hypothesis, admissible, admissible_hypotheses, solve
+from regimemap.mechanics.solver import Hypothesis, admissible, admissible_hypotheses, solve
 
 from ._sweep import sample_points, sweep
 

@@ -1,7 +1,7 @@
 """Library validation: every bad input is a ValueError naming the parameter, the value and the range.
 
-Covers :mod:`regimemap.validation`, :class:`regimemap.Parameters`,
-:func:`regimemap.classify` and :func:`regimemap.label_grid`.
+Covers :mod:`regimemap.mechanics.validation`, :class:`regimemap.Parameters`,
+:func:`regimemap.maps.classify` and :func:`regimemap.label_grid`.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 from regimemap import Parameters, classify, label_grid
-from regimemap.validation import (
+from regimemap.mechanics.validation import (
     GAMMA_MAX,
     GAMMA_MIN,
     MAX_GRID_POINTS,

@@ -1,4 +1,4 @@
-"""regimemap.view: extent, curves (boundary vs construction), named points, label anchors."""
+"""regimemap.maps.view: extent, curves (boundary vs construction), named points, label anchors."""
 
 from __future__ import annotations
 
@@ -12,8 +12,8 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from regimemap import Mode, Parameters, classify
-from regimemap.curves import named_points
-from regimemap.view import (
+from regimemap.mechanics.curves import named_points
+from regimemap.maps.view import (
     auto_extent,
     box_hits,
     compute_map,
@@ -289,7 +289,7 @@ def test_curve_label_anchor_keeps_clear_of_lines():
 
 
 def test_view_does_not_import_matplotlib():
-    code = ("import sys, regimemap.view, regimemap.figures; "
+    code = ("import sys, regimemap.maps.view, regimemap.drawing.presets; "
             "print(any(m.startswith('matplotlib') for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"

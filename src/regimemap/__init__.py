@@ -12,10 +12,10 @@ when they are used.
 from __future__ import annotations
 
 from ._version import __version__
-from .classify import PRIORITY, classify, label_grid
-from .modes import MAP_MODES, Mode
-from .params import Case, Parameters
-from .solver import Hypothesis, admissible
+from .maps.classify import PRIORITY, classify, label_grid
+from .mechanics.modes import MAP_MODES, Mode
+from .mechanics.block import Case, Parameters
+from .mechanics.solver import Hypothesis, admissible
 
 __all__ = [
     "Case",
@@ -39,7 +39,7 @@ _LAZY = {"PointResult", "margin", "query_point", "query_points"}
 
 def __getattr__(name: str):  # PEP 562: the point query is imported on first use
     if name in _LAZY:
-        from . import query
+        from .maps import query
 
         return getattr(query, name)
     raise AttributeError(f"module 'regimemap' has no attribute {name!r}")

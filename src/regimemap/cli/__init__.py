@@ -3,7 +3,7 @@
 A thin layer: each command parses and validates its options, calls the
 library, and writes files atomically.  matplotlib is imported only inside the
 commands that draw, so ``regimemap --help`` and the non-plotting commands start
-fast.  Commands live in their own modules and are registered below.
+fast.  Commands live in their own modules and are added to the group below.
 """
 
 from __future__ import annotations
@@ -43,13 +43,23 @@ def cli() -> None:
     """
 
 
-def _register() -> None:
-    # Each command module adds its commands to ``cli``; importing them is cheap
-    # (no matplotlib at import time).
-    from . import commands  # noqa: F401
+def _register(group: click.Group) -> None:
+    """Compose the group explicitly, one ``add_command`` per command (as pyhf does).
+
+    Importing a command module is cheap: matplotlib and the library's heavy
+    parts are imported inside the commands that use them.
+    """
+    from .atlas import animate_cmd, atlas_cmd
+    from .export import export_cmd
+    from .plot import figure_command, figures_command, plot_command
+    from .query import classify_cmd
+
+    for command in (plot_command, figure_command, figures_command, classify_cmd, export_cmd,
+                    atlas_cmd, animate_cmd):
+        group.add_command(command)
 
 
-_register()
+_register(cli)
 
 
 def main(argv: list[str] | None = None) -> NoReturn:

@@ -11,7 +11,7 @@ from typing import Any, Callable, Iterator
 
 import click
 
-from ..validation import (
+from ..mechanics.validation import (
     GAMMA_MAX,
     GAMMA_MIN,
     MAX_AXIS,
@@ -110,7 +110,7 @@ def kprime_option(**kwargs: Any) -> Callable:
 
 def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
     """Check that the folder of ``path`` exists and is writable; raise a usage error if not."""
-    from .._atomic import check_output_path
+    from ..io.atomic import check_output_path
 
     try:
         return check_output_path(path, param)

@@ -6,7 +6,7 @@ from typing import Any, Callable
 
 import click
 
-from . import cli
+
 from ._common import RunError, gamma_option, import_matplotlib, output_path, positive_float
 
 __all__ = ["atlas_cmd", "animate_cmd"]
@@ -29,7 +29,7 @@ class _Values(click.ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
         if isinstance(value, list):
             return value
-        from ..atlas import parse_values
+        from ..drawing.atlas import parse_values
 
         try:
             return parse_values(str(value), self._what, self._check, self._max)
@@ -38,19 +38,19 @@ class _Values(click.ParamType):
 
 
 def _gamma_check(v: float) -> float:
-    from ..validation import check_gamma
+    from ..mechanics.validation import check_gamma
 
     return check_gamma(v)
 
 
 def _kprime_check(v: float) -> float:
-    from ..validation import check_kprime
+    from ..mechanics.validation import check_kprime
 
     return check_kprime(v)
 
 
 def _figure_output(path: str) -> str:
-    from ..render import format_from_path
+    from ..drawing.mapplot import format_from_path
 
     try:
         fmt = format_from_path(path)
@@ -60,7 +60,7 @@ def _figure_output(path: str) -> str:
     return fmt
 
 
-@cli.command("atlas", short_help="Small multiples of the map: rows gamma, columns k'.")
+@click.command("atlas", short_help="Small multiples of the map: rows gamma, columns k'.")
 @click.option("--gamma", "gammas", required=True, metavar="LIST",
               type=_Values("gamma", _gamma_check, _MAX_PANELS),
               help="Aspect ratios H/B (> 0), one row each: 1,2,3 or start:stop:count.")
@@ -106,7 +106,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
             f"{_MAX_PANELS}; give fewer values to --gamma or --kprime")
     fmt = _figure_output(output)
     import_matplotlib()
-    from ..atlas import write_atlas
+    from ..drawing.atlas import write_atlas
 
     try:
         write_atlas(output, gammas, kprimes, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
@@ -115,8 +115,8 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     click.echo(f"wrote {output} ({len(gammas)} x {len(kprimes)} panels)", err=True)
     if share != "none":
-        from ..atlas import atlas_extents, points_outside
-        from ..params import Parameters
+        from ..drawing.atlas import atlas_extents, points_outside
+        from ..mechanics.block import Parameters
 
         ext = atlas_extents(gammas, kprimes, share, k_max, mu_max)
         lost = [f"gamma = {g:g}, k' = {kp:g}" for i, g in enumerate(gammas)
@@ -125,7 +125,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
         _note_outside(lost)
 
 
-@cli.command("animate", short_help="A GIF of the map as k' sweeps a range.")
+@click.command("animate", short_help="A GIF of the map as k' sweeps a range.")
 @gamma_option()
 @click.option("--kprime", "kprimes", required=True, metavar="RANGE",
               type=_Values("kprime", _kprime_check, _MAX_FRAMES),
@@ -162,7 +162,7 @@ def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max:
                                  param_hint="'-o' / '--output'")
     output_path(output, "--output")
     import_matplotlib()
-    from ..atlas import write_animation
+    from ..drawing.atlas import write_animation
 
     try:
         n, (w, h) = write_animation(output, gamma, kprimes, k_max=k_max, mu_max=mu_max, fps=fps,
@@ -170,8 +170,8 @@ def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max:
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     click.echo(f"wrote {output} ({n} frames, {w} x {h} pixels, {fps:g} frames/s)", err=True)
-    from ..atlas import points_outside, sweep_extent
-    from ..params import Parameters
+    from ..drawing.atlas import points_outside, sweep_extent
+    from ..mechanics.block import Parameters
 
     ek, em = sweep_extent(gamma, kprimes)
     view = (k_max if k_max is not None else ek, mu_max if mu_max is not None else em)

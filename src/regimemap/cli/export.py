@@ -4,13 +4,13 @@ from __future__ import annotations
 
 import click
 
-from . import cli
+
 from ._common import RunError, gamma_option, kprime_option, output_path, positive_float, resolution_type
 
 __all__ = ["export_cmd"]
 
 
-@cli.command("export", short_help="Write the map as a grid (.npz, .csv) or as vectors (.json).")
+@click.command("export", short_help="Write the map as a grid (.npz, .csv) or as vectors (.json).")
 @gamma_option()
 @kprime_option()
 @click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
@@ -46,8 +46,8 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
       regimemap export --gamma 3 --kprime -0.6 --resolution 201 -o map.csv
       regimemap export --gamma 3 --kprime -0.6 --k-max 4 --mu-max 3 -o map.json
     """
-    from ..export import export_map, format_of
-    from ..params import Parameters
+    from ..io.export import export_map, format_of
+    from ..mechanics.block import Parameters
 
     try:
         fmt = format_of(output, fmt)

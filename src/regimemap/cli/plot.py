@@ -12,7 +12,7 @@ from typing import Any, Sequence
 
 import click
 
-from . import cli
+
 from ._common import (
     RunError,
     gamma_option,
@@ -78,7 +78,7 @@ class _Modes(click.ParamType):
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
                 ) -> tuple[Any, ...]:
-        from ..modes import MAP_MODES, Mode
+        from ..mechanics.modes import MAP_MODES, Mode
 
         if isinstance(value, tuple):
             return value
@@ -104,7 +104,7 @@ class _PointSpec(click.ParamType):
     name = "K,MU[:NAME]"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..points import DesignPoint, parse_point_spec
+        from ..io.points import DesignPoint, parse_point_spec
 
         if isinstance(value, DesignPoint):
             return value
@@ -169,7 +169,7 @@ def _read_points(files: Sequence[str], specs: Sequence[Any], gamma: float, kprim
     """Design points from ``--points`` files and ``--point`` specs, for this map."""
     points = list(specs)
     if files:
-        from ..points import read_points_csv  # imports csv: only when needed
+        from ..io.points import read_points_csv  # imports csv: only when needed
     for f in files:
         try:
             points.extend(read_points_csv(f))
@@ -225,7 +225,7 @@ Examples:
 """
 
 
-@cli.command("plot", help=_PLOT_HELP, short_help="Draw the regime map of one gamma and kprime.")
+@click.command("plot", help=_PLOT_HELP, short_help="Draw the regime map of one gamma and kprime.")
 @gamma_option()
 @kprime_option()
 @click.option("-o", "--output", metavar="FILE",
@@ -266,28 +266,21 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
                  title: str | None, no_curves: bool, no_labels: bool, no_legend: bool,
                  modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
                  points_files: tuple[str, ...], show_ambiguity: bool) -> None:
-    from ..params import Parameters
+    from ..mechanics.block import Parameters
 
     path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime))
     params = Parameters(gamma, kprime)
     points = _read_points(points_files, point_specs, params.gamma, params.kprime)
-    draw_ambiguity = None
-    if show_ambiguity:
-        try:
-            from ..render_ambiguity import draw_ambiguity  # type: ignore[import-not-found]
-        except ModuleNotFoundError as exc:
-            if exc.name and exc.name.endswith("render_ambiguity"):
-                raise RunError("--show-ambiguity is not available") from None
-            raise
-
     import_matplotlib()
-    from ..render import fit_figure, map_figure, save_figure, style_context
+    from ..drawing.mapplot import fit_figure, map_figure, save_figure, style_context
 
     fig, ax, artists = map_figure(
         params, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
         curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title,
         samples=resolution)
-    if draw_ambiguity is not None:
+    if show_ambiguity:
+        from ..drawing.ambiguity import draw_ambiguity
+
         with style_context():
             artists.extra.extend(draw_ambiguity(ax, params, artists.data.k_max,
                                                 artists.data.mu_max) or [])
@@ -319,7 +312,7 @@ Examples:
 
 
 def _preset_or_usage_error(fid: str) -> Any:
-    from ..figures import FIGURE_IDS, get_preset, suggest_ids
+    from ..drawing.presets import FIGURE_IDS, get_preset, suggest_ids
 
     try:
         return get_preset(fid)
@@ -331,7 +324,7 @@ def _preset_or_usage_error(fid: str) -> Any:
             param_hint="'FIGURE_ID'") from None
 
 
-@cli.command("figure", help=_FIGURE_HELP, short_help="Draw one figure of the report.")
+@click.command("figure", help=_FIGURE_HELP, short_help="Draw one figure of the report.")
 @click.argument("figure_id", metavar="FIGURE_ID")
 @click.option("-o", "--output", metavar="FILE",
               help="Output file (.png, .svg, .pdf); default fig-<ID>.<format>.")
@@ -344,7 +337,7 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     path, fmt = _resolve_output(output, fmt, f"fig-{preset.id}")
 
     import_matplotlib()
-    from ..render import render_preset, save_figure
+    from ..drawing.mapplot import render_preset, save_figure
 
     fig = render_preset(preset, dpi=dpi)
     _save(save_figure, fig, path, fmt, dpi)
@@ -366,7 +359,7 @@ Examples:
 """
 
 
-@cli.command("figures", help=_FIGURES_HELP, short_help="Draw all 24 figures of the report.")
+@click.command("figures", help=_FIGURES_HELP, short_help="Draw all 24 figures of the report.")
 @click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
               help="Existing, writable folder for the files.")
 @click.option("--format", "formats", type=_FormatList(), default="png", show_default=True,
@@ -376,7 +369,7 @@ Examples:
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool) -> None:
-    from ..figures import PRESETS
+    from ..drawing.presets import PRESETS
 
     if list_only:
         for p in PRESETS.values():
@@ -388,7 +381,7 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
-    from ..render import render_preset, save_figure
+    from ..drawing.mapplot import render_preset, save_figure
 
     fig = None  # one Figure for all: its renderer keeps the text caches warm
     count = 0

@@ -9,7 +9,7 @@ from typing import Any
 
 import click
 
-from . import cli
+
 from ._common import RunError, gamma_option, kprime_option, output_path
 
 __all__ = ["classify_cmd"]
@@ -33,7 +33,7 @@ class _NonNegative(click.ParamType):
         return v
 
 
-@cli.command(
+@click.command(
     "classify",
     short_help="Mode, physics at initiation and margin at a design point (or a CSV of points).",
 )
@@ -77,8 +77,8 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
       regimemap classify --points caissons.csv --gamma 3 -o results.csv
       regimemap classify --points caissons.csv -o results.json
     """
-    from ..points import DesignPoint, read_points_csv
-    from ..query import CSV_COLUMNS, format_result, query_points, result_row
+    from ..io.points import DesignPoint, read_points_csv
+    from ..maps.query import CSV_COLUMNS, format_result, query_points, result_row
 
     if points_file is None:
         if output is not None:
@@ -138,7 +138,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     if output is None:
         click.echo(text, nl=False)
         return
-    from .._atomic import atomic_open
+    from ..io.atomic import atomic_open
 
     try:
         with atomic_open(output, "w", encoding="utf-8", newline="") as fh:

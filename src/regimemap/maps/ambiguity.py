@@ -31,8 +31,8 @@ import numpy as np
 
 from .classify import PRIORITY
 from .geometry import bisect_edge, breakpoints, raw_intervals
-from .modes import MAP_MODES, Mode
-from .params import Parameters
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Parameters
 
 __all__ = [
     "AmbiguousRegion",

@@ -23,9 +23,9 @@ from typing import TYPE_CHECKING, Any, Callable, Sequence
 
 import numpy as np
 
-from .modes import MAP_MODES, Mode
-from .params import Parameters
-from .validation import check_gamma, check_kprime
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Parameters
+from ..mechanics.validation import check_gamma, check_kprime
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -148,7 +148,7 @@ def parse_values(text: str, name: str, check: Callable[[float], float],
 
 
 def _extent_of(p: Parameters) -> tuple[float, float]:
-    from .view import auto_extent
+    from ..maps.view import auto_extent
 
     return auto_extent(p)
 
@@ -186,7 +186,7 @@ def shared_extent(extents: Sequence[tuple[float, float]]) -> tuple[float, float]
     nice number) keeps A in view for most maps; :func:`points_outside` tells
     which maps lose it.
     """
-    from .view import nice_ceil
+    from ..maps.view import nice_ceil
 
     ks = np.array([e[0] for e in extents], dtype=float)
     ms = np.array([e[1] for e in extents], dtype=float)
@@ -204,7 +204,7 @@ def points_outside(params: Sequence[Parameters], k_max: float, mu_max: float) ->
 
 def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
     """The map key's handles (:func:`regimemap._legend.key_handles`) for every mode."""
-    from ._legend import key_handles
+    from .key import key_handles
 
     return key_handles(modes, dotted_label=r"dotted line $\mu = k|k'|$ (4.22)" if dotted else None)
 
@@ -254,8 +254,8 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from ._legend import key_legend
-    from .render import draw_map, style_context
+    from .key import key_legend
+    from .mapplot import draw_map, style_context
 
     gammas = [check_gamma(g) for g in gammas]
     kprimes = [check_kprime(k) for k in kprimes]
@@ -333,7 +333,7 @@ def write_atlas(path: str | os.PathLike[str], gammas: Sequence[float], kprimes: 
 
     Returns the path written.
     """
-    from .render import format_from_path, save_figure
+    from .mapplot import format_from_path, save_figure
 
     fmt = format_from_path(path, fmt)
     fig = atlas_figure(gammas, kprimes, **kwargs)
@@ -401,9 +401,9 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     case and (gamma, k'); the legend lists all six modes in every frame, so
     it does not jump.
     """
-    from ._atomic import atomic_path
-    from ._legend import key_legend
-    from .render import FIGSIZE, draw_map, new_figure, style_context
+    from ..io.atomic import atomic_path
+    from .key import key_legend
+    from .mapplot import FIGSIZE, draw_map, new_figure, style_context
 
     g = check_gamma(gamma)
     kps = [check_kprime(k) for k in kprimes]

@@ -22,8 +22,8 @@ import math
 from dataclasses import dataclass
 from typing import Callable
 
-from .modes import MAP_MODES, Mode
-from .params import Case, Parameters
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Case, Parameters
 
 __all__ = ["FigurePreset", "PRESETS", "FIGURE_IDS", "get_preset", "suggest_ids"]
 

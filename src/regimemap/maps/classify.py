@@ -31,9 +31,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .modes import Mode
-from .params import Parameters
-from .validation import (
+from ..mechanics.modes import Mode
+from ..mechanics.block import Parameters
+from ..mechanics.validation import (
     MAX_GRID_POINTS,
     check_axis,
     check_gamma,

@@ -9,7 +9,7 @@ import re
 import stat
 from dataclasses import dataclass
 
-from .validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
+from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
 
 __all__ = ["DesignPoint", "parse_point_spec", "read_points_csv", "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
 

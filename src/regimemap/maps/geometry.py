@@ -17,9 +17,9 @@ from typing import Callable, Iterable
 import numpy as np
 
 from .classify import _thresholds
-from .curves import _crossing_mu_star_lower, mu_star_signed
-from .modes import MAP_MODES, Mode
-from .params import Parameters
+from ..mechanics.curves import _crossing_mu_star_lower, mu_star_signed
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Parameters
 
 __all__ = [
     "Interval",

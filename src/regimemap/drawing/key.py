@@ -24,8 +24,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 from matplotlib.text import Text
 
-from .modes import Mode
-from .render import _CONSTRUCTION, _DOTTED, _HATCH_LW, _LINE_LW, MODE_STYLE, _symbol
+from ..mechanics.modes import Mode
+from .mapplot import _CONSTRUCTION, _DOTTED, _HATCH_LW, _LINE_LW, MODE_STYLE, _symbol
 
 if TYPE_CHECKING:
     from matplotlib.legend import Legend

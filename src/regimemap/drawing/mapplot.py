@@ -26,9 +26,9 @@ from typing import TYPE_CHECKING, Any, Iterable, Iterator, Sequence
 
 import numpy as np
 
-from .modes import MAP_MODES, Mode
-from .params import Parameters
-from .view import (
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Parameters
+from ..maps.view import (
     MapData,
     compute_map,
     curve_label_anchor,
@@ -47,8 +47,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.patches import Patch
     from matplotlib.text import Text
 
-    from .figures import FigurePreset
-    from .points import DesignPoint
+    from .presets import FigurePreset
+    from ..io.points import DesignPoint
 
 __all__ = [
     "ModeStyle",
@@ -501,7 +501,7 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
                 out.region_labels.setdefault(mode, []).append(t)
 
     if legend:
-        from ._legend import key_handles, key_legend
+        from .key import key_handles, key_legend
 
         shown = [m for m in data.modes if any(len(p) >= 3 for p in data.polygons.get(m, []))]
         plain = [c for c in data.curves.values() if not c.dotted] if curves else []
@@ -759,7 +759,7 @@ def render_preset(preset: "FigurePreset | str", *, dpi: float = DEFAULT_DPI,
 
     Pass the previous figure as ``fig`` to reuse it (faster for many figures).
     """
-    from .figures import get_preset
+    from .presets import get_preset
 
     if isinstance(preset, str):
         preset = get_preset(preset)
@@ -796,7 +796,7 @@ def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> st
 
 
 def _metadata(fmt: str) -> dict[str, Any]:
-    from . import __version__
+    from .. import __version__
 
     creator = f"regimemap {__version__}"
     if fmt == "png":
@@ -833,7 +833,7 @@ def save_figure(fig: "Figure", path: str | os.PathLike[str], fmt: str | None = N
     OSError
         If the file cannot be written (nothing is left behind).
     """
-    from ._atomic import atomic_path
+    from ..io.atomic import atomic_path
 
     fmt = format_from_path(path, fmt)
     target = Path(path)

@@ -28,7 +28,7 @@ from typing import Callable, Iterable, Sequence
 import numpy as np
 
 from .classify import classify
-from .curves import (
+from ..mechanics.curves import (
     NamedPoint,
     dotted_line,
     line_OA,
@@ -38,9 +38,9 @@ from .curves import (
     upper_line,
 )
 from .geometry import breakpoints, region_polygons
-from .modes import MAP_MODES, Mode
-from .params import Parameters
-from .regions import raw_region
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Parameters
+from ..mechanics.regions import raw_region
 
 __all__ = [
     "CurveData",

@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike
 
 from .curves import lower_line, mu_star, mu_star_signed, mu_star_star, upper_line
 from .modes import Mode
-from .params import Parameters
+from .block import Parameters
 
 __all__ = [
     "rest_region",

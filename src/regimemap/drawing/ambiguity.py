@@ -21,8 +21,8 @@ from matplotlib.axes import Axes
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
-from .ambiguity import AmbiguousRegion, ambiguous_regions
-from .params import Parameters
+from ..maps.ambiguity import AmbiguousRegion, ambiguous_regions
+from ..mechanics.block import Parameters
 
 __all__ = ["draw_ambiguity", "AMBIGUITY_STYLE", "LEGEND_LABEL", "legend_handle"]
 
@@ -168,7 +168,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     ``placed`` holds the boxes (axes fractions x0, y0, x1, y1) of labels
     already written; an outside label avoids them.
     """
-    from .view import label_anchor
+    from ..maps.view import label_anchor
 
     st = AMBIGUITY_STYLE
     text = r.tex

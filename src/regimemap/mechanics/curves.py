@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .params import Parameters
+from .block import Parameters
 
 __all__ = [
     "mu_star",

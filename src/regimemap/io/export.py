@@ -38,14 +38,14 @@ from typing import Any, Callable
 
 import numpy as np
 
-from ._atomic import atomic_open
-from .ambiguity import ambiguous_regions
-from .classify import label_grid
-from .curves import mu_star, mu_star_star, named_points
-from .geometry import region_polygons
-from .modes import MAP_MODES, Mode
-from .params import Parameters
-from .validation import MAX_GRID_POINTS, check_positive, check_resolution
+from .atomic import atomic_open
+from ..maps.ambiguity import ambiguous_regions
+from ..maps.classify import label_grid
+from ..mechanics.curves import mu_star, mu_star_star, named_points
+from ..maps.geometry import region_polygons
+from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.block import Parameters
+from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
 
 __all__ = [
     "FORMATS",
@@ -88,7 +88,7 @@ def format_of(path: str | os.PathLike[str], fmt: str | None = None) -> str:
 
 def _extent(p: Parameters, k_max: float | None, mu_max: float | None) -> tuple[float, float]:
     if k_max is None or mu_max is None:
-        from .view import auto_extent
+        from ..maps.view import auto_extent
 
         k_max, mu_max = auto_extent(p, k_max=k_max, mu_max=mu_max)
     return check_positive("k_max", k_max), check_positive("mu_max", mu_max)

@@ -73,11 +73,11 @@ import numpy as np
 
 from .classify import PRIORITY, _thresholds, classify
 from .classify import _constants as _classify_constants
-from .modes import Mode
-from .params import Case, Parameters
-from .points import DesignPoint
-from .solver import Hypothesis, solve
-from .validation import check_gamma, check_kprime, check_nonnegative_array
+from ..mechanics.modes import Mode
+from ..mechanics.block import Case, Parameters
+from ..io.points import DesignPoint
+from ..mechanics.solver import Hypothesis, solve
+from ..mechanics.validation import check_gamma, check_kprime, check_nonnegative_array
 
 __all__ = [
     "Crossing",
