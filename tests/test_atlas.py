@@ -7,6 +7,7 @@ import pytest
 from PIL import Image
 
 from regimemap import Parameters
+from regimemap.io.figures import write_animation, write_atlas
 from regimemap.drawing.atlas import (
     MAX_FRAMES,
     MAX_PANELS,
@@ -16,8 +17,6 @@ from regimemap.drawing.atlas import (
     points_outside,
     shared_extent,
     sweep_extent,
-    write_animation,
-    write_atlas,
 )
 from regimemap.mechanics.validation import check_gamma, check_kprime
 from regimemap.maps.view import auto_extent

@@ -13,7 +13,8 @@ from click.testing import CliRunner
 
 from regimemap.cli import cli
 from regimemap.io.points import DesignPoint
-from regimemap.maps.query import CSV_COLUMNS, query_point, query_points
+from regimemap.io.tables import CSV_COLUMNS
+from regimemap.maps.query import query_point, query_points
 
 
 def run(*args: str):

@@ -62,7 +62,7 @@ def test_every_symbol_sits_between_its_swatch_and_the_descriptions():
     from matplotlib.text import Text
 
     from regimemap.drawing.key import ModeSwatch, key_handles, key_legend
-    from regimemap.drawing.mapplot import style_context
+    from regimemap.drawing.style import style_context
 
     for fontsize in (7.0, 8.5, 11.0):
         with style_context():

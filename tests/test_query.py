@@ -10,14 +10,13 @@ import pytest
 
 from regimemap import Mode, Parameters, classify
 from regimemap.io.points import DesignPoint
+from regimemap.io.tables import CSV_COLUMNS, format_result, result_row
 from regimemap.maps.query import (
-    CSV_COLUMNS,
     HYPOTHESES_OF_MODE,
     Crossing,
     margin,
     query_point,
     query_points,
-    result_row,
 )
 from regimemap.mechanics.solver import Hypothesis, admissible, solve
 
@@ -273,7 +272,7 @@ def test_unsolvable_system_reported_not_invented(monkeypatch):
     assert r.lift is None and r.admissible == () and r.chosen_by == "map only"
     d = json.loads(json.dumps(r.as_dict(), allow_nan=False))
     assert d["fx"] is None and d["solvable"] is False
-    text = q.format_result(r)
+    text = format_result(r)
     assert "singular" in text and "fx    =         n/a" in text
     # the margin does not depend on the solver
     assert r.margin_k.down.to is Mode.RE

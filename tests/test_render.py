@@ -14,18 +14,17 @@ import pytest
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
 from regimemap.drawing.presets import PRESETS
 from regimemap.io.points import DesignPoint
+from regimemap.drawing.save import FORMATS, format_from_path
+from regimemap.drawing.style import MODE_STYLE
+from regimemap.io.figures import save_figure
 from regimemap.drawing.mapplot import (
-    FORMATS,
-    MODE_STYLE,
     MapArtists,
     draw_design_points,
     draw_map,
-    format_from_path,
     map_figure,
     new_figure,
     render_map,
     render_preset,
-    save_figure,
 )
 
 ALL_MODE_IDS = ("3.9a", "3.9b", "3.10", "3.11", "4.7a", "4.7b")
@@ -191,7 +190,8 @@ def test_design_points_extend_the_view():
 def _render_bytes(fmt, fid=None):
     fig = render_preset(fid, dpi=50) if fid else render_map(Parameters(3.0, 0.4), dpi=50)
     buf = io.BytesIO()
-    from regimemap.drawing.mapplot import _metadata, style_context
+    from regimemap.drawing.save import metadata as _metadata
+    from regimemap.drawing.style import style_context
 
     with style_context():
         fig.savefig(buf, format=fmt, dpi=50, metadata=_metadata(fmt))
@@ -306,7 +306,7 @@ def test_no_pyplot_and_no_global_rcparams():
         "keys = [k for k in rc if k != 'backend']  # reading 'backend' would import pyplot\n"
         "before = {k: rc[k] for k in keys}\n"
         "from regimemap import Parameters\n"
-        "from regimemap.drawing.mapplot import render_map, save_figure\n"
+        "from regimemap.drawing.mapplot import render_map\nfrom regimemap.io.figures import save_figure\n"
         "import io\n"
         "fig = render_map(Parameters(3, 0.4), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"

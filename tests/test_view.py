@@ -13,17 +13,9 @@ from hypothesis import strategies as st
 
 from regimemap import Mode, Parameters, classify
 from regimemap.mechanics.curves import named_points
-from regimemap.maps.view import (
-    auto_extent,
-    box_hits,
-    compute_map,
-    curve_label_anchor,
-    interior_point,
-    label_anchor,
-    nice_ceil,
-    simplify,
-    view_points,
-)
+from regimemap.maps.view import auto_extent, nice_ceil, simplify
+from regimemap.drawing.placement import box_hits, curve_label_anchor, interior_point, label_anchor, view_points
+from regimemap.maps.mapdata import compute_map
 
 # -- helpers ---------------------------------------------------------------------------------
 

@@ -50,7 +50,7 @@ def _kprime_check(v: float) -> float:
 
 
 def _figure_output(path: str) -> str:
-    from ..drawing.mapplot import format_from_path
+    from ..drawing.save import format_from_path
 
     try:
         fmt = format_from_path(path)
@@ -106,7 +106,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
             f"{_MAX_PANELS}; give fewer values to --gamma or --kprime")
     fmt = _figure_output(output)
     import_matplotlib()
-    from ..drawing.atlas import write_atlas
+    from ..io.figures import write_atlas
 
     try:
         write_atlas(output, gammas, kprimes, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
@@ -162,7 +162,7 @@ def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max:
                                  param_hint="'-o' / '--output'")
     output_path(output, "--output")
     import_matplotlib()
-    from ..drawing.atlas import write_animation
+    from ..io.figures import write_animation
 
     try:
         n, (w, h) = write_animation(output, gamma, kprimes, k_max=k_max, mu_max=mu_max, fps=fps,

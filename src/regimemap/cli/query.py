@@ -78,7 +78,8 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
       regimemap classify --points caissons.csv -o results.json
     """
     from ..io.points import DesignPoint, read_points_csv
-    from ..maps.query import CSV_COLUMNS, format_result, query_points, result_row
+    from ..io.tables import CSV_COLUMNS, format_result, result_row
+    from ..maps.query import query_points
 
     if points_file is None:
         if output is not None:

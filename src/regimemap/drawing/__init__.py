@@ -1,1 +1,53 @@
-"""drawing"""
+"""The drawing layer: the only part of regimemap that imports matplotlib.
+
+Styles (:mod:`.style`), label placement (:mod:`.placement`), the key
+(:mod:`.key`), the map (:mod:`.mapplot`), the ambiguity overlay
+(:mod:`.ambiguity`), atlas and animation (:mod:`.atlas`), the report's figure
+presets (:mod:`.presets`) and figure bytes (:mod:`.save`).  Names are imported
+on first use, so ``import regimemap.drawing`` does not import matplotlib.
+"""
+
+from __future__ import annotations
+
+import importlib
+from typing import Any
+
+__all__ = [
+    "FIGSIZE",
+    "MODE_STYLE",
+    "MapArtists",
+    "atlas_figure",
+    "default_title",
+    "draw_ambiguity",
+    "draw_design_points",
+    "draw_map",
+    "fit_figure",
+    "map_figure",
+    "new_figure",
+    "render_map",
+    "render_preset",
+    "style_context",
+]
+
+_WHERE = {
+    "FIGSIZE": "mapplot",
+    "MapArtists": "mapplot",
+    "default_title": "mapplot",
+    "draw_design_points": "mapplot",
+    "draw_map": "mapplot",
+    "fit_figure": "mapplot",
+    "map_figure": "mapplot",
+    "new_figure": "mapplot",
+    "render_map": "mapplot",
+    "render_preset": "mapplot",
+    "MODE_STYLE": "style",
+    "style_context": "style",
+    "atlas_figure": "atlas",
+    "draw_ambiguity": "ambiguity",
+}
+
+
+def __getattr__(name: str) -> Any:  # PEP 562: matplotlib is imported on first use
+    if name in _WHERE:
+        return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

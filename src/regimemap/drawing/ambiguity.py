@@ -22,6 +22,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
 from ..maps.ambiguity import AmbiguousRegion, ambiguous_regions
+from ..maps.geometry import DEFAULT_SAMPLES
 from ..mechanics.block import Parameters
 
 __all__ = ["draw_ambiguity", "AMBIGUITY_STYLE", "LEGEND_LABEL", "legend_handle"]
@@ -95,7 +96,7 @@ def _add_to_legend(ax: Axes, handle: Artist) -> Artist | None:
 
 def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
                    annotate: bool = True, legend: bool = True,
-                   samples: int = 801) -> list[Artist]:
+                   samples: int = DEFAULT_SAMPLES) -> list[Artist]:
     """Outline and annotate the parts of the view where several modes are admissible.
 
     Parameters
@@ -168,7 +169,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     ``placed`` holds the boxes (axes fractions x0, y0, x1, y1) of labels
     already written; an outside label avoids them.
     """
-    from ..maps.view import label_anchor
+    from .placement import label_anchor
 
     st = AMBIGUITY_STYLE
     text = r.tex

@@ -3,7 +3,7 @@
 :func:`atlas_figure` draws the all-mode map (:func:`regimemap.render.draw_map`)
 for every pair of a list of gamma (rows) and a list of k' (columns), on
 shared axes, with one legend and each panel titled with its gamma and k'.
-:func:`write_animation` writes a GIF of the map as k' sweeps a range, on
+:func:`render_animation` draws a GIF of the map as k' sweeps a range, on
 fixed axes, with matplotlib's ``PillowWriter`` (no pyplot).
 
 The value lists use the syntax of the command line (:func:`parse_values`):
@@ -39,11 +39,11 @@ __all__ = [
     "parse_values",
     "atlas_extents",
     "atlas_figure",
-    "write_atlas",
+    "check_animation",
     "sweep_extent",
     "shared_extent",
     "points_outside",
-    "write_animation",
+    "render_animation",
 ]
 
 #: Largest number of panels of an atlas (rows x columns).
@@ -255,7 +255,8 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     from matplotlib.figure import Figure
 
     from .key import key_legend
-    from .mapplot import draw_map, style_context
+    from .mapplot import draw_map
+    from .style import style_context
 
     gammas = [check_gamma(g) for g in gammas]
     kprimes = [check_kprime(k) for k in kprimes]
@@ -327,19 +328,6 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     return fig
 
 
-def write_atlas(path: str | os.PathLike[str], gammas: Sequence[float], kprimes: Sequence[float],
-                *, fmt: str | None = None, dpi: float | None = None, **kwargs: Any) -> Path:
-    """Draw :func:`atlas_figure` and save it atomically (png, svg or pdf).
-
-    Returns the path written.
-    """
-    from .mapplot import format_from_path, save_figure
-
-    fmt = format_from_path(path, fmt)
-    fig = atlas_figure(gammas, kprimes, **kwargs)
-    return save_figure(fig, path, fmt=fmt, dpi=dpi)
-
-
 # --------------------------------------------------------------------------------------
 # animation
 # --------------------------------------------------------------------------------------
@@ -361,7 +349,32 @@ def _pillow_writer(fps: float) -> Any:
     return _GifWriter(fps=fps)
 
 
-def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
+def check_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float],
+                    fps: float) -> None:
+    """Refuse an animation that cannot be written (before any file is touched).
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter and its range, or a file that is not ``.gif``.
+    """
+    _check_frames(gamma, kprimes, fps)
+    if Path(path).suffix.lower() != ".gif":
+        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+
+
+def _check_frames(gamma: float, kprimes: Sequence[float], fps: float) -> None:
+    check_gamma(gamma)
+    kps = [check_kprime(k) for k in kprimes]
+    if not kps:
+        raise ValueError("an animation needs at least one kprime")
+    if len(kps) > MAX_FRAMES:
+        raise ValueError(f"{len(kps)} frames exceed the limit of {MAX_FRAMES}")
+    if not (0.5 <= fps <= 50.0):
+        raise ValueError(f"fps must be a number in [0.5, 50], got {fps!r}")
+
+
+def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
                     k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
                     dpi: float = 80.0, figsize: tuple[float, float] | None = None,
                     samples: int = SAMPLES,
@@ -401,20 +414,13 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     case and (gamma, k'); the legend lists all six modes in every frame, so
     it does not jump.
     """
-    from ..io.atomic import atomic_path
     from .key import key_legend
-    from .mapplot import FIGSIZE, draw_map, new_figure, style_context
+    from .mapplot import FIGSIZE, draw_map, new_figure
+    from .style import style_context
 
+    _check_frames(gamma, kprimes, fps)
     g = check_gamma(gamma)
     kps = [check_kprime(k) for k in kprimes]
-    if not kps:
-        raise ValueError("an animation needs at least one kprime")
-    if len(kps) > MAX_FRAMES:
-        raise ValueError(f"{len(kps)} frames exceed the limit of {MAX_FRAMES}")
-    if not (0.5 <= fps <= 50.0):
-        raise ValueError(f"fps must be a number in [0.5, 50], got {fps!r}")
-    if Path(path).suffix.lower() != ".gif":
-        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
     if k_max is None or mu_max is None:
         ek, em = sweep_extent(g, kps)
         k_max = ek if k_max is None else k_max
@@ -423,8 +429,8 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     fig, ax = new_figure(size, dpi)
     writer = _pillow_writer(fps)
     handles = None
-    with style_context(), atomic_path(path) as tmp:
-        writer.setup(fig, str(tmp), dpi=dpi)
+    with style_context():
+        writer.setup(fig, str(path), dpi=dpi)
         for i, kp in enumerate(kps):
             ax.cla()
             draw_map(ax, Parameters(g, kp), k_max=k_max, mu_max=mu_max, legend=False,

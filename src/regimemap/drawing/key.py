@@ -25,7 +25,7 @@ from matplotlib.patches import Rectangle
 from matplotlib.text import Text
 
 from ..mechanics.modes import Mode
-from .mapplot import _CONSTRUCTION, _DOTTED, _HATCH_LW, _LINE_LW, MODE_STYLE, _symbol
+from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol
 
 if TYPE_CHECKING:
     from matplotlib.legend import Legend
@@ -66,7 +66,7 @@ class _HandlerModeSwatch(HandlerBase):
         self.update_prop(swatch, orig_handle, legend)
         swatch.set_hatch_linewidth(orig_handle.get_hatch_linewidth())
         swatch.set_transform(trans)
-        text, style = _symbol(orig_handle.mode)
+        text, style = mode_symbol(orig_handle.mode)
         # y = 0 is the baseline of the entry's label (the legend aligns on baselines)
         symbol = Text(-xdescent + swatch_w + SYMBOL_GAP * fontsize, 0.0, text,
                       fontproperties=legend.prop, fontstyle=style, ha="left", va="baseline")
@@ -111,15 +111,15 @@ def key_handles(modes: Sequence[Mode], *, hatches: bool = True, boundary: bool =
         h = ModeSwatch(mode, facecolor=st.color, edgecolor="0.4", linewidth=0.4,
                        hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
                        label=mode.description)
-        h.set_hatch_linewidth(_HATCH_LW)
+        h.set_hatch_linewidth(HATCH_LW)
         handles.append(h)
     if boundary:
-        handles.append(Line2D([], [], color="black", linewidth=_LINE_LW,
+        handles.append(Line2D([], [], color="black", linewidth=LINE_LW,
                               label="boundary of a region"))
     if construction:
-        handles.append(Line2D([], [], label="construction line", **_CONSTRUCTION))
+        handles.append(Line2D([], [], label="construction line", **CONSTRUCTION))
     if dotted_label:
-        handles.append(Line2D([], [], label=dotted_label, **_DOTTED))
+        handles.append(Line2D([], [], label=dotted_label, **DOTTED))
     return handles
 
 

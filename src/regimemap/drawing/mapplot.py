@@ -1,12 +1,13 @@
 """Draw regime maps with matplotlib, without pyplot and its global state.
 
-The numbers come from :mod:`regimemap.view` (extent, curves, named points,
-label anchors) and :mod:`regimemap.geometry` (region polygons); this module
-only turns them into artists.  Every drawing function takes an
+The numbers come from :mod:`regimemap.maps.mapdata` (region polygons, curves,
+named points) and the labels are placed by :mod:`regimemap.drawing.placement`;
+this module only turns them into artists.  Every drawing function takes an
 :class:`~matplotlib.axes.Axes` and returns what it drew.
 
 >>> from regimemap import Parameters
->>> from regimemap.render import render_map, save_figure
+>>> from regimemap.drawing import render_map
+>>> from regimemap.io import save_figure
 >>> fig = render_map(Parameters(gamma=3, kprime=0.4))
 >>> save_figure(fig, "map.svg")  # doctest: +SKIP
 
@@ -18,25 +19,18 @@ vector paths in SVG and PDF.
 
 from __future__ import annotations
 
-import contextlib
-import os
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, Iterable, Iterator, Sequence
 
 import numpy as np
 
 from ..mechanics.modes import MAP_MODES, Mode
+from .save import DEFAULT_DPI
+from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol, style_context, text_size
 from ..mechanics.block import Parameters
-from ..maps.view import (
-    MapData,
-    compute_map,
-    curve_label_anchor,
-    interior_point,
-    label_anchor,
-    leader_label_anchor,
-    view_points,
-)
+from ..maps.geometry import DEFAULT_SAMPLES
+from ..maps.mapdata import MapData, compute_map
+from .placement import curve_label_anchor, interior_point, label_anchor, leader_label_anchor, view_points
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
@@ -48,12 +42,11 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.text import Text
 
     from .presets import FigurePreset
-    from ..io.points import DesignPoint
+    from ..maps.points import DesignPoint
 
 __all__ = [
     "ModeStyle",
     "MODE_STYLE",
-    "FORMATS",
     "DEFAULT_DPI",
     "FIGSIZE",
     "MapArtists",
@@ -64,96 +57,15 @@ __all__ = [
     "render_preset",
     "new_figure",
     "fit_figure",
-    "save_figure",
     "default_title",
-    "style_context",
-    "format_from_path",
 ]
 
-#: Output formats (file suffixes) that :func:`save_figure` writes.
-FORMATS: tuple[str, ...] = ("png", "svg", "pdf")
-#: Resolution of PNG output (dots per inch): 960 px across a map, sharp on
-#: screens and in the README; use 300 for print (SVG or PDF are better there).
-DEFAULT_DPI = 150
 #: Size of a map figure in inches (width, height): fits a page width at 100 %.
 FIGSIZE: tuple[float, float] = (6.4, 5.6)
 
 
-@dataclass(frozen=True)
-class ModeStyle:
-    """How a mode's region is filled.
-
-    Attributes
-    ----------
-    color : str
-        Fill colour (Paul Tol's *light* scheme, colour-blind safe and light
-        enough for black labels and lines on top).
-    hatch : str
-        matplotlib hatch pattern, distinct per mode so that maps stay
-        readable in greyscale print.
-    hatch_color : tuple
-        RGBA of the hatch lines.
-    """
-
-    color: str
-    hatch: str
-    hatch_color: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.35)
-
-
-#: Fill style of each mode.  Neighbouring regions (RE|SL along OA, SL|SRO- on
-#: CD, SRO-|RO on mu*, SL|SRO'- on DC ...) differ in hue, in lightness and in
-#: hatch direction.
-MODE_STYLE: dict[Mode, ModeStyle] = {
-    Mode.RE: ModeStyle("#DDDDDD", ".."),  # pale grey: nothing moves
-    Mode.SL: ModeStyle("#EEDD88", "//"),  # light yellow
-    Mode.RO: ModeStyle("#EE8866", "\\\\"),  # orange
-    Mode.SRO_MINUS: ModeStyle("#77AADD", "--"),  # light blue
-    Mode.SRO_PLUS: ModeStyle("#44BB99", "||"),  # mint
-    Mode.SRO_PRIME_MINUS: ModeStyle("#FFAABB", "xx"),  # pink
-    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # never on a map
-    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never on a map
-}
-
-_HATCH_LW = 0.45
-_LINE_LW = 1.15
-_CONSTRUCTION = {"color": "0.3", "linewidth": 0.7, "dashes": (4.0, 2.5)}
-_DOTTED = {"color": "0.1", "linewidth": 1.0, "dashes": (1.0, 2.0)}
-
 # zorders: fills < hatch < construction lines < boundaries < points < labels
 _Z_FILL, _Z_CONS, _Z_LINE, _Z_POINT, _Z_LABEL, _Z_DESIGN = 1.0, 2.0, 2.5, 3.0, 4.0, 5.0
-
-#: rcParams for every map (applied with :func:`style_context`, never globally).
-_RC: dict[str, Any] = {
-    "svg.hashsalt": "regimemap",
-    "svg.fonttype": "path",
-    "pdf.fonttype": 42,
-    "ps.fonttype": 42,
-    "pdf.compression": 6,
-    "hatch.linewidth": _HATCH_LW,
-    "mathtext.fontset": "dejavusans",
-    "font.family": "sans-serif",
-    "font.sans-serif": ["DejaVu Sans"],
-    "axes.unicode_minus": True,
-    "path.simplify": False,
-    "savefig.bbox": None,
-    "savefig.pad_inches": 0.1,
-    "savefig.facecolor": "white",
-    "savefig.edgecolor": "white",
-    "savefig.transparent": False,
-    "figure.facecolor": "white",
-    "axes.linewidth": 0.8,
-    "xtick.direction": "out",
-    "ytick.direction": "out",
-}
-
-
-@contextlib.contextmanager
-def style_context() -> Iterator[None]:
-    """matplotlib ``rc_context`` with regimemap's fixed style (no global change)."""
-    import matplotlib
-
-    with matplotlib.rc_context(_RC):
-        yield
 
 
 # -- the artists of one map ------------------------------------------------------------------
@@ -270,7 +182,7 @@ def _point_offsets(points: dict[str, Any], frame: "_Frame"
     out = {name: _POINT_OFFSET.get(name, (4.0, 4.0, "left", "bottom")) for name in points}
     on_axis = sorted((pt.k, name) for name, pt in points.items() if pt.mu == 0.0 and name != "O")
     x = [k / frame.k_max * frame.w_pt for k, _ in on_axis]
-    width = _text_size("M", _POINT_FS)[0] + 6.0  # a name and the gaps either side (points)
+    width = text_size("M", _POINT_FS)[0] + 6.0  # a name and the gaps either side (points)
     for i in range(len(on_axis) - 1):
         if x[i + 1] - x[i] >= width:
             continue
@@ -288,28 +200,6 @@ def _point_offsets(points: dict[str, Any], frame: "_Frame"
 _REGION_FS = 11.0
 _POINT_FS = 10.0
 _CURVE_FS = 10.0
-
-
-def _symbol(mode: Mode) -> tuple[str, str]:
-    """A mode's symbol for a region label: (text, fontstyle).
-
-    ``$RE$``, ``$SL$`` and ``$RO$`` are written as plain oblique text: the
-    face mathtext uses for them (same glyphs; the box behind them is a little
-    taller), without the cost of parsing mathtext.  Symbols with sub- or
-    superscripts stay mathtext (Unicode subscripts sit too high).
-    """
-    tex = mode.tex
-    inner = tex[1:-1]
-    if tex.startswith("$") and tex.endswith("$") and inner.isalpha():
-        return inner, "italic"
-    return tex, "normal"
-
-
-def _text_size(text: str, fontsize: float) -> tuple[float, float]:
-    """Rough size (points) of a short label with its white box, without drawing it."""
-    plain = text.replace("$", "").replace("_{-}", "-").replace("_{+}", "+").replace("\\", "")
-    plain = plain.replace("mu", "m").replace("{", "").replace("}", "").replace("^", "")
-    return (0.62 * fontsize * len(plain) + 5.0, 1.25 * fontsize + 4.0)
 
 
 class _Frame:
@@ -347,7 +237,7 @@ def _no_zero_formatter() -> Any:
 def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
              mu_max: float | None = None, modes: Iterable[Mode] | None = None,
              raw: bool = False, curves: bool = True, labels: bool = True,
-             legend: bool = True, title: str | None = None, samples: int = 801,
+             legend: bool = True, title: str | None = None, samples: int = DEFAULT_SAMPLES,
              hatches: bool = True, include: Iterable[tuple[float, float]] = (),
              data: MapData | None = None, legend_kw: dict[str, Any] | None = None) -> MapArtists:
     """Draw the regime map of ``params`` on ``ax``.
@@ -418,7 +308,7 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
                             hatchcolor=st.hatch_color, zorder=_Z_FILL,
                             alpha=0.75 if data.raw and len(data.modes) > 1 else None,
                             label=f"_{mode.label}")
-            patch.set_hatch_linewidth(_HATCH_LW)
+            patch.set_hatch_linewidth(HATCH_LW)
             ax.add_patch(patch)
             patches.append(patch)
         out.fills[mode] = patches
@@ -430,11 +320,11 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
             lines = []
             for pts, is_boundary in cd.runs():
                 if cd.dotted:
-                    kw: dict[str, Any] = dict(_DOTTED)
+                    kw: dict[str, Any] = dict(DOTTED)
                 elif is_boundary:
-                    kw = {"color": "black", "linewidth": _LINE_LW}
+                    kw = {"color": "black", "linewidth": LINE_LW}
                 else:
-                    kw = dict(_CONSTRUCTION)
+                    kw = dict(CONSTRUCTION)
                 line = Line2D(pts[:, 0], pts[:, 1], zorder=_Z_LINE if is_boundary else _Z_CONS,
                               solid_capstyle="round", solid_joinstyle="round",
                               label=f"_{name}", **kw)
@@ -453,7 +343,7 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
                 ha=ha, va=va, fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL,
                 annotation_clip=False,
                 bbox={"boxstyle": "square,pad=0.05", "fc": "white", "ec": "none", "alpha": 0.6})
-            obstacles.append(frame.box(pt.k, pt.mu, dx, dy, _text_size(text, _POINT_FS), ha, va))
+            obstacles.append(frame.box(pt.k, pt.mu, dx, dy, text_size(text, _POINT_FS), ha, va))
             obstacles.append(frame.box(pt.k, pt.mu, 0.0, 0.0, (6.0, 6.0), "center", "center"))
         for name, (k, mu) in data.line_ends.items():
             if name in out.point_labels:
@@ -466,7 +356,7 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
             out.point_labels[name] = ax.annotate(
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
                 fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
-            obstacles.append(frame.box(k, mu, dx, dy, _text_size(text, _POINT_FS), ha, va))
+            obstacles.append(frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va))
     lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
     if curves:
         for name, cd in data.curves.items():
@@ -480,14 +370,14 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
         small: list[tuple[Mode, np.ndarray]] = []
         for mode in data.modes:
             texts = []
-            size = _text_size(mode.tex, _REGION_FS)
+            size = text_size(mode.tex, _REGION_FS)
             box = (size[0] / frame.w_pt, size[1] / frame.h_pt)
             for poly in data.polygons.get(mode, []):
                 anchor = label_anchor(poly, k_max, mu_max, box, obstacles=obstacles, lines=lines)
                 if anchor is None:
                     small.append((mode, poly))
                     continue
-                text, style = _symbol(mode)
+                text, style = mode_symbol(mode)
                 texts.append(ax.text(
                     anchor[0], anchor[1], text, ha="center", va="center",
                     fontsize=_REGION_FS, fontstyle=style, zorder=_Z_LABEL,
@@ -533,7 +423,7 @@ def _curve_label(ax: "Axes", frame: _Frame, cd: Any,
                  lines: Sequence[np.ndarray]) -> "Text | None":
     """Write a curve's label beside it, clear of the lines and of the other labels."""
     k_max, mu_max = frame.k_max, frame.mu_max
-    size = _text_size(cd.label, _CURVE_FS)
+    size = text_size(cd.label, _CURVE_FS)
     box = (size[0] / frame.w_pt, size[1] / frame.h_pt)
     at = curve_label_anchor(cd.points, k_max, mu_max, box, lines, obstacles)
     if at is not None:
@@ -578,13 +468,13 @@ def _leader_label(ax: "Axes", frame: _Frame, mode: Mode, poly: np.ndarray,
     target = interior_point(poly, frame.k_max, frame.mu_max)
     if target is None:
         return None
-    size = _text_size(mode.tex, _REGION_FS)
+    size = text_size(mode.tex, _REGION_FS)
     box = (size[0] / frame.w_pt, size[1] / frame.h_pt)
     at = leader_label_anchor(target, frame.k_max, frame.mu_max, box, lines, obstacles)
     if at is None:
         return None
     obstacles.append(frame.box(at[0], at[1], 0.0, 0.0, size, "center", "center"))
-    text, style = _symbol(mode)
+    text, style = mode_symbol(mode)
     return ax.annotate(
         text, target, xytext=at, textcoords="data", ha="center", va="center",
         fontsize=_REGION_FS, fontstyle=style, zorder=_Z_LABEL,
@@ -753,7 +643,7 @@ def render_map(params: Parameters, **kwargs: Any) -> "Figure":
 
 
 def render_preset(preset: "FigurePreset | str", *, dpi: float = DEFAULT_DPI,
-                  samples: int = 801, hatches: bool = True, fig: "Figure | None" = None
+                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: "Figure | None" = None
                   ) -> "Figure":
     """A Figure of one of the report's figures (:mod:`regimemap.figures`).
 
@@ -766,101 +656,3 @@ def render_preset(preset: "FigurePreset | str", *, dpi: float = DEFAULT_DPI,
     return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
                       mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
                       title=preset.title, samples=samples, hatches=hatches)[0]
-
-
-# -- saving ----------------------------------------------------------------------------------
-
-
-def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> str:
-    """The output format: ``fmt`` if given, else the file suffix (png, svg or pdf).
-
-    Raises
-    ------
-    ValueError
-        For an unknown format or suffix, or a suffix that contradicts ``fmt``;
-        the message lists png, svg, pdf.
-    """
-    suffix = Path(path).suffix.lower().lstrip(".")
-    if fmt is not None:
-        fmt = fmt.lower().lstrip(".")
-        if fmt not in FORMATS:
-            raise ValueError(f"unknown format {fmt!r}; use one of {', '.join(FORMATS)}")
-        if suffix and suffix in FORMATS and suffix != fmt:
-            raise ValueError(f"file suffix .{suffix} does not match format {fmt!r}")
-        return fmt
-    if not suffix:
-        raise ValueError(f"no file suffix in {str(path)!r}; use one of {', '.join(FORMATS)}")
-    if suffix not in FORMATS:
-        raise ValueError(f"unknown file suffix .{suffix}; use one of {', '.join(FORMATS)}")
-    return suffix
-
-
-def _metadata(fmt: str) -> dict[str, Any]:
-    from .. import __version__
-
-    creator = f"regimemap {__version__}"
-    if fmt == "png":
-        return {"Software": creator}
-    if fmt == "svg":
-        return {"Date": None, "Creator": creator}
-    if fmt == "pdf":
-        return {"CreationDate": None, "Creator": creator, "Producer": creator}
-    return {}
-
-
-def save_figure(fig: "Figure", path: str | os.PathLike[str], fmt: str | None = None,
-                dpi: float | None = None) -> Path:
-    """Write ``fig`` to ``path`` atomically (temporary file in the same folder, then rename).
-
-    Parameters
-    ----------
-    fig : Figure
-    path : path-like
-    fmt : {"png", "svg", "pdf"}, optional
-        Default: from the file suffix.
-    dpi : float, optional
-        Resolution of PNG output (default: the figure's, :data:`DEFAULT_DPI`).
-
-    Returns
-    -------
-    Path
-        ``path``.
-
-    Raises
-    ------
-    ValueError
-        For an unknown format (message lists png, svg, pdf).
-    OSError
-        If the file cannot be written (nothing is left behind).
-    """
-    from ..io.atomic import atomic_path
-
-    fmt = format_from_path(path, fmt)
-    target = Path(path)
-    extra: dict[str, Any] = {}
-    if fmt == "png":
-        # zlib level 1: ~20 % faster to write than the default 6, ~15 % larger files
-        extra["pil_kwargs"] = {"compress_level": 1}
-    with style_context(), _quiet_font_subsetting(), atomic_path(target) as tmp:
-        fig.savefig(tmp, format=fmt, dpi=dpi if dpi is not None else fig.dpi,
-                    metadata=_metadata(fmt), **extra)
-    return target
-
-
-@contextlib.contextmanager
-def _quiet_font_subsetting() -> Iterator[None]:
-    """Silence fontTools' "'created' timestamp seems very low" while fonts are embedded.
-
-    Embedding TrueType fonts (PDF, ``pdf.fonttype: 42``) reads the bundled
-    fonts' ``head`` tables, whose old dates make fontTools log two harmless
-    warnings; the logger's level is restored afterwards.
-    """
-    import logging
-
-    logger = logging.getLogger("fontTools.ttLib.tables._h_e_a_d")
-    level = logger.level
-    logger.setLevel(logging.ERROR)
-    try:
-        yield
-    finally:
-        logger.setLevel(level)

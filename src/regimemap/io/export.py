@@ -41,8 +41,8 @@ import numpy as np
 from .atomic import atomic_open
 from ..maps.ambiguity import ambiguous_regions
 from ..maps.classify import label_grid
-from ..mechanics.curves import mu_star, mu_star_star, named_points
-from ..maps.geometry import region_polygons
+from ..mechanics.curves import map_curves, named_points
+from ..maps.geometry import DEFAULT_SAMPLES, region_polygons
 from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.block import Parameters
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
@@ -267,24 +267,9 @@ def _line_in_view(c0: float, c1: float, k0: float, k1: float, mu_max: float) -> 
     return [np.column_stack([kk, np.clip(c0 + c1 * kk, 0.0, mu_max)])]
 
 
-def _line(c0: float, c1: float) -> dict[str, Any]:
-    return {"type": "line", "c0": c0, "c1": c1, "text": "mu = c0 + c1*k"}
-
-
-def _curve(name: str, equation: str, report: str, spec: dict[str, Any],
-           polylines: list[np.ndarray], role: str) -> dict[str, Any]:
-    return {
-        "name": name,
-        "equation": equation,
-        "report": report,
-        "role": role,
-        "spec": spec,
-        "polylines": [pl.tolist() for pl in polylines],
-    }
-
-
 def boundary_curves(p: Parameters, k_max: float, mu_max: float) -> dict[str, dict[str, Any]]:
-    """The map's curves as polylines inside the view, with their equations.
+    """The map's curves (the catalogue :func:`~regimemap.mechanics.curves.map_curves`) as
+    polylines inside the view, with their equations.
 
     Names as in the report: above C ``OA``, ``AB`` (vertical k = k_A), ``CD``
     (upper line), ``mu_star`` and, in cases 2/3, ``dotted`` (3.44); below C
@@ -292,63 +277,42 @@ def boundary_curves(p: Parameters, k_max: float, mu_max: float) -> dict[str, dic
     line), ``dotted`` (4.22), ``mu_star`` and ``mu_star_star`` (the finite
     part, from F up to where it leaves the view before its pole d/c).
     """
-    g, kp = p.gamma, p.kprime
-    kA = p.k_A
     out: dict[str, dict[str, Any]] = {}
-    # OA: mu = k from O to A (the limit of rest by friction)
-    k_oa = min(kA, k_max) if math.isfinite(kA) else k_max
-    out["OA"] = _curve("OA", "mu = k", "(3.4), (4.7)", _line(0.0, 1.0),
-                       _line_in_view(0.0, 1.0, 0.0, k_oa, mu_max),
-                       "rest | slide (up to A)")
-    if math.isfinite(kA) and kA <= k_max:
-        bottom = kA if p.above else 0.0
-        name = "AB" if p.above else "AE"
-        eq = "(3.5), (3.17)" if p.above else "(4.10), (4.37)"
-        if bottom <= mu_max:
-            out[name] = _curve(name, "k = k_A = 1/(gamma (1 + k'))", eq,
-                               {"type": "vertical", "k": kA},
-                               [np.array([[kA, bottom], [kA, mu_max]])],
-                               "rest | rock (vertical)")
-    up_name = "CD" if p.above else "AB"
-    out[up_name] = _curve(
-        up_name, "mu = 1/gamma - k k'" + ("" if p.above else " = 1/gamma + k|k'|"),
-        "Section III.2" if p.above else "(4.21)", _line(1.0 / g, -kp),
-        _line_in_view(1.0 / g, -kp, 0.0, k_max, mu_max),
-        "xi = -B: the reaction of sliding reaches O")
-    if not p.above:
-        out["DC"] = _curve("DC", "mu = -1/gamma + k|k'|", "(4.20)", _line(-1.0 / g, -kp),
-                           _line_in_view(-1.0 / g, -kp, 0.0, k_max, mu_max),
-                           "xi = +B: the reaction of sliding reaches O'")
-        out["dotted"] = _curve("dotted", "mu = k|k'|", "(4.22)", _line(0.0, abs(kp)),
-                               _line_in_view(0.0, abs(kp), 0.0, k_max, mu_max),
-                               "xi = 0 in sliding (construction line)")
-    elif p.a < 0.0:
-        out["dotted"] = _curve("dotted", "mu = k k' - 1/gamma", "(3.44)", _line(-1.0 / g, kp),
-                               _line_in_view(-1.0 / g, kp, 0.0, k_max, mu_max),
-                               "theta'' = 0 in slide-rock about O (SRO+)")
-    if math.isfinite(kA) and kA < k_max:
-        out["mu_star"] = _curve(
-            "mu_star", "mu* = |a k + b|/(c k + d)", "(3.24), (4.40)",
-            {"type": "rational", "abs": True, "p": p.a, "q": p.b, "r": p.c, "t": p.d,
-             "text": "mu = |p*k + q|/(r*k + t)"},
-            _graph_in_view(lambda k: mu_star(p, k), kA, k_max, mu_max),
-            "rock about O needs mu >= mu* (from A on)")
-    if not p.above:
-        k1 = min(p.k_pole, k_max)
-        k0 = max(0.0, p.k_F)
-        if k1 > k0:
-            out["mu_star_star"] = _curve(
-                "mu_star_star", "mu** = (a k - b)/(d - c k)", "(4.96)-(4.97)",
-                {"type": "rational", "abs": False, "p": p.a, "q": -p.b, "r": -p.c, "t": p.d,
-                 "text": "mu = (p*k + q)/(r*k + t)"},
-                _graph_in_view(lambda k: mu_star_star(p, k), k0, k1, mu_max,
-                               dense_end=k1 == p.k_pole),
-                "slide-rock about O' needs mu <= mu** (left of the pole d/c)")
+    for name, c in map_curves(p).items():
+        if c.vertical_k is not None:
+            kA = c.vertical_k
+            bottom = kA if p.above else 0.0
+            if not (kA <= k_max and bottom <= mu_max):
+                continue
+            polylines = [np.array([[kA, bottom], [kA, mu_max]])]
+        elif c.spec["type"] == "line":
+            # every line is cut by the view; OA alone ends inside it, at A
+            k1 = min(c.k_to, k_max) if name == "OA" else k_max
+            polylines = _line_in_view(c.spec["c0"], c.spec["c1"], 0.0, k1, mu_max)
+        elif name == "mu_star":
+            if not c.k_from < k_max:
+                continue
+            polylines = _graph_in_view(c.func, c.k_from, k_max, mu_max)  # type: ignore[arg-type]
+        else:  # mu**: from F (or 0) to its pole or the edge of the view
+            k1 = min(c.k_to, k_max)
+            k0 = max(0.0, c.k_from)
+            if not k1 > k0:
+                continue
+            polylines = _graph_in_view(c.func, k0, k1, mu_max,  # type: ignore[arg-type]
+                                       dense_end=k1 == c.k_to)
+        out[name] = {
+            "name": name,
+            "equation": c.equation,
+            "report": c.report,
+            "role": c.role,
+            "spec": c.spec,
+            "polylines": [pl.tolist() for pl in polylines],
+        }
     return out
 
 
 def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None = None,
-                 samples: int = 801) -> dict[str, Any]:
+                 samples: int = DEFAULT_SAMPLES) -> dict[str, Any]:
     """The map as vectors (the content of the ``.json`` export), JSON-ready.
 
     Parameters

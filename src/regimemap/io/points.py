@@ -7,8 +7,8 @@ import math
 import os
 import re
 import stat
-from dataclasses import dataclass
 
+from ..maps.points import DesignPoint
 from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
 
 __all__ = ["DesignPoint", "parse_point_spec", "read_points_csv", "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
@@ -27,17 +27,6 @@ _MAX_LINE = 65536
 # float() alone would also take "1_000" and non-ASCII digits.
 _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infinity|nan)",
                      re.ASCII | re.IGNORECASE)
-
-
-@dataclass(frozen=True)
-class DesignPoint:
-    """A named point of the k-mu plane, optionally with its own gamma and kprime."""
-
-    k: float
-    mu: float
-    name: str = ""
-    gamma: float | None = None
-    kprime: float | None = None
 
 
 def _number(text: str, what: str, where: str) -> float:

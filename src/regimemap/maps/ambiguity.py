@@ -29,9 +29,8 @@ from typing import Any
 
 import numpy as np
 
-from .classify import PRIORITY
-from .geometry import bisect_edge, breakpoints, raw_intervals
-from ..mechanics.modes import MAP_MODES, Mode
+from .geometry import DEFAULT_SAMPLES, bisect_edge, raw_intervals, sample_k
+from ..mechanics.modes import MAP_MODES, PRIORITY, Mode
 from ..mechanics.block import Parameters
 
 __all__ = [
@@ -185,14 +184,6 @@ def admissible_set(p: Parameters, k: float, mu: float) -> tuple[Mode, ...]:
     return tuple(m for m, (lo, hi) in ivs.items() if hi[0] > lo[0] and lo[0] <= mu <= hi[0])
 
 
-def _sample_k(p: Parameters, k_max: float, samples: int) -> np.ndarray:
-    k = np.linspace(0.0, k_max, samples)
-    extra = [x for x in breakpoints(p) + _extra_breaks(p) if 0.0 <= x <= k_max]
-    eps = k_max * 1e-9
-    extra += [x - eps for x in extra if x - eps > 0] + [x + eps for x in extra if x + eps < k_max]
-    return np.unique(np.concatenate([k, extra]))
-
-
 def _extra_breaks(p: Parameters) -> list[float]:
     """Abscissae where an edge of an ambiguous part may have a corner (besides breakpoints)."""
     mb = p.mu_Bprime
@@ -222,7 +213,7 @@ def _refine(p: Parameters, mask: int, track: int, k_in: float, k_out: float, mu_
 
 
 def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
-                      samples: int = 801) -> list[AmbiguousRegion]:
+                      samples: int = DEFAULT_SAMPLES) -> list[AmbiguousRegion]:
     """The parts of [0, k_max] x [0, mu_max] where several modes are admissible.
 
     Parameters
@@ -252,7 +243,7 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
     """
     if not (np.isfinite(k_max) and np.isfinite(mu_max)) or k_max <= 0 or mu_max <= 0:
         raise ValueError(f"k_max and mu_max must be finite numbers > 0, got {k_max!r}, {mu_max!r}")
-    k = _sample_k(p, float(k_max), int(samples))
+    k = sample_k(p, float(k_max), int(samples), _extra_breaks(p))
     cols = column_pieces(p, k, float(mu_max))
     # tracks: (mask, t) -> per-column (lo, hi) or NaN
     tracks: dict[tuple[int, int], tuple[np.ndarray, np.ndarray]] = {}

@@ -31,8 +31,8 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..mechanics.modes import Mode
-from ..mechanics.block import Parameters
+from ..mechanics.constants import thresholds
+from ..mechanics.modes import PRIORITY, Mode
 from ..mechanics.validation import (
     MAX_GRID_POINTS,
     check_axis,
@@ -41,60 +41,10 @@ from ..mechanics.validation import (
     check_nonnegative_array,
 )
 
-__all__ = ["classify", "label_grid", "PRIORITY", "column_segments", "choose"]
-
-#: Section 4.7's order: where several modes are admissible the first one holds.
-PRIORITY: tuple[Mode, ...] = (
-    Mode.RE,
-    Mode.SL,
-    Mode.SRO_PRIME_MINUS,
-    Mode.RO,
-    Mode.SRO_MINUS,
-    Mode.SRO_PLUS,
-    Mode.RO_PRIME,
-    Mode.SRO_PRIME_PLUS,
-)
+__all__ = ["classify", "label_grid", "PRIORITY", "column_segments"]
 
 _RE, _SL, _RO, _SM, _SP, _SPM = (np.uint8(m) for m in (
     Mode.RE, Mode.SL, Mode.RO, Mode.SRO_MINUS, Mode.SRO_PLUS, Mode.SRO_PRIME_MINUS))
-
-
-def choose(admissible: dict[Mode, np.ndarray]) -> np.ndarray:
-    """The first admissible mode of :data:`PRIORITY` at each point (uint8 codes).
-
-    Points where nothing is admissible get 255 (never seen for valid input).
-    """
-    shape = np.broadcast(*admissible.values()).shape
-    out = np.full(shape, 255, dtype=np.uint8)
-    free = np.ones(shape, dtype=bool)
-    for mode in PRIORITY:
-        if mode in admissible:
-            hit = free & admissible[mode]
-            out[hit] = mode
-            free &= ~hit
-    return out
-
-
-def _constants(gamma: Any, kprime: Any) -> tuple[Any, ...]:
-    """a, b, c, d (3.18)-(3.21) and gamma*(1+k'), 1/gamma, exactly as Parameters computes them."""
-    g2 = gamma * gamma
-    a = 4.0 + g2 - 3.0 * g2 * kprime
-    b = 3.0 * gamma
-    c = 3.0 * gamma * (1.0 + kprime)
-    d = 1.0 + 4.0 * g2
-    return a, b, c, d, gamma * (1.0 + kprime), 1.0 / gamma
-
-
-def _thresholds(k: np.ndarray, gamma: Any, kprime: Any) -> tuple[np.ndarray, ...]:
-    """Per-k quantities of the rule: (rest possible, lower, upper, mu*, ak+b >= 0)."""
-    a, b, c, d, gk, inv_g = _constants(gamma, kprime)
-    rest_ok = k * gk <= 1.0
-    kk = k * kprime
-    upper = inv_g - kk
-    lower = -inv_g - kk
-    f = a * k + b
-    mu_s = np.abs(f) / (c * k + d)
-    return rest_ok, lower, upper, mu_s, f >= 0.0
 
 
 def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
@@ -175,7 +125,7 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
         k, mu, g, kp = _broadcast(k, mu, g, kp)
     else:
         k, mu = _broadcast(k, mu)
-    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, g, kp)
+    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, g, kp)
     out = np.where(f_pos, _SM, _SP)
     np.copyto(out, _RO, where=mu >= mu_s)
     np.copyto(out, _SL, where=mu <= upper)
@@ -199,7 +149,7 @@ def column_segments(k: np.ndarray, mu_sorted: np.ndarray, gamma: float, kprime: 
         Mode codes and run lengths (sum of each row = len(mu_sorted)).
     """
     n = mu_sorted.size
-    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, gamma, kprime)
+    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, gamma, kprime)
     n_k = np.where(rest_ok, np.searchsorted(mu_sorted, k, side="left"), n)
     c1 = np.minimum(np.searchsorted(mu_sorted, lower, side="left"), n_k)
     c2 = np.minimum(np.searchsorted(mu_sorted, upper, side="right"), n_k)

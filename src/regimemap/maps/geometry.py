@@ -16,19 +16,23 @@ from typing import Callable, Iterable
 
 import numpy as np
 
-from .classify import _thresholds
-from ..mechanics.curves import _crossing_mu_star_lower, mu_star_signed
+from ..mechanics.constants import mu_star_signed, mu_star_star, thresholds
 from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.block import Parameters
 
 __all__ = [
+    "DEFAULT_SAMPLES",
     "Interval",
+    "sample_k",
     "final_intervals",
     "raw_intervals",
     "breakpoints",
     "bisect_edge",
     "region_polygons",
 ]
+
+#: Samples of k across the view for polygons and curves (breakpoints are added).
+DEFAULT_SAMPLES = 801
 
 #: (lo, hi) arrays of mu per k; the interval is empty where lo >= hi (NaN-free).
 Interval = tuple[np.ndarray, np.ndarray]
@@ -40,7 +44,7 @@ def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, I
     Intervals are clipped to [0, mu_cap]; a mode absent from a column has lo == hi.
     """
     k = np.asarray(k, dtype=np.float64)
-    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, p.gamma, p.kprime)
+    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, p.gamma, p.kprime)
     e4 = np.where(rest_ok, k, np.inf)
     e1 = np.minimum(np.maximum(lower, 0.0), e4)
     e2 = np.minimum(np.maximum(upper, e1), e4)
@@ -62,7 +66,7 @@ def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, I
 def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> Interval:
     """The interval of mu of the report's raw region of ``mode`` (:mod:`regimemap.regions`)."""
     k = np.asarray(k, dtype=np.float64)
-    rest_ok, lower, upper, mu_s, f_pos = _thresholds(k, p.gamma, p.kprime)
+    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, p.gamma, p.kprime)
     zero = np.zeros_like(k)
     top = np.full_like(k, mu_cap)
     mode = Mode(mode)
@@ -74,7 +78,7 @@ def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> In
         rock_ok = k * (p.gamma * (1.0 + p.kprime)) >= 1.0
         lo, hi = np.where(rock_ok, mu_s, top), top
     elif mode is Mode.SRO_MINUS:
-        ms = mu_star_signed(p, k)
+        ms = mu_star_signed(k, p.a, p.b, p.c, p.d)
         mb = p.mu_Bprime
         lo1, hi1 = np.maximum(upper, 0.0), np.minimum(ms, mb)
         lo2, hi2 = np.maximum(np.maximum(ms, mb), 0.0), upper
@@ -84,8 +88,7 @@ def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> In
         lo = zero
         hi = np.where(~f_pos, np.minimum(mu_s, k * p.kprime - 1.0 / p.gamma), zero)
     elif mode is Mode.SRO_PRIME_MINUS:
-        with np.errstate(divide="ignore", invalid="ignore"):
-            mss = (p.a * k - p.b) / (p.d - p.c * k)
+        mss = mu_star_star(k, p.a, p.b, p.c, p.d)
         bound = np.where(p.c * k >= p.d, lower, np.minimum(lower, mss))
         lo, hi = zero, bound
     else:
@@ -98,7 +101,7 @@ def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> In
 def breakpoints(p: Parameters) -> list[float]:
     """Abscissae where a region may start or end or a boundary has a corner."""
     pts = [0.0, p.k_A, p.k_Bprime, p.b_over_abs_a, p.k_D, p.k_pole, p.k_F, p.mu_A]
-    kc = _crossing_mu_star_lower(p) if p.kprime < 0 else None
+    kc = p.k_Cprime if p.kprime < 0 else None
     if kc is not None:
         pts.append(kc)
     # where the upper line crosses mu = 0 (above C) and mu_B' (below C)
@@ -107,9 +110,13 @@ def breakpoints(p: Parameters) -> list[float]:
     return sorted({float(x) for x in pts if math.isfinite(x) and x >= 0.0})
 
 
-def _sample_k(p: Parameters, k_max: float, samples: int) -> np.ndarray:
+def sample_k(p: Parameters, k_max: float, samples: int, more: Iterable[float] = ()) -> np.ndarray:
+    """``samples`` values of k over [0, k_max] with every breakpoint (and ``more``) among them.
+
+    Each breakpoint goes in with its two neighbours 1e-9 k_max away, so corners are exact.
+    """
     k = np.linspace(0.0, k_max, samples)
-    extra = [x for x in breakpoints(p) if 0.0 <= x <= k_max]
+    extra = [x for x in breakpoints(p) + list(more) if 0.0 <= x <= k_max]
     # put each breakpoint in with its two neighbours, so corners are exact
     eps = k_max * 1e-9
     extra += [x - eps for x in extra if x - eps > 0] + [x + eps for x in extra if x + eps < k_max]
@@ -137,7 +144,7 @@ def bisect_edge(present: Callable[[float], bool], k_in: float, k_out: float,
 
 def region_polygons(p: Parameters, k_max: float, mu_max: float,
                     modes: Iterable[Mode] | None = None, raw: bool = False,
-                    samples: int = 801, overshoot: float = 1.5) -> dict[Mode, list[np.ndarray]]:
+                    samples: int = DEFAULT_SAMPLES, overshoot: float = 1.5) -> dict[Mode, list[np.ndarray]]:
     """Polygons (arrays of (k, mu) vertices) of each mode's region within the view.
 
     Parameters
@@ -161,7 +168,7 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
     """
     modes = tuple(MAP_MODES if modes is None else modes)
     mu_cap = mu_max * overshoot
-    k = _sample_k(p, k_max, samples)
+    k = sample_k(p, k_max, samples)
 
     def intervals(kk: np.ndarray) -> dict[Mode, Interval]:
         if raw:

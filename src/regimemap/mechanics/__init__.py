@@ -1,1 +1,37 @@
-"""mechanics"""
+"""The mechanics core (numpy only): modes, the block and its loading, the closed forms,
+the curves, the raw regions and the independent equations-of-motion solver.
+
+Nothing here draws, reads or writes files, or imports another part of regimemap:
+every other layer builds on this one.  The report's closed forms are written
+once, in :mod:`regimemap.mechanics.constants`.
+"""
+
+from __future__ import annotations
+
+from .block import Case, Parameters, case_of
+from .curves import Curve, NamedPoint, map_curves, named_points
+from .modes import MAP_MODES, PRIORITY, Mode
+from .regions import RAW_REGIONS, raw_region
+from .solver import TOLERANCE, Hypothesis, Response, admissible, admissible_hypotheses, choose, solve
+
+__all__ = [
+    "Case",
+    "Curve",
+    "Hypothesis",
+    "MAP_MODES",
+    "Mode",
+    "NamedPoint",
+    "PRIORITY",
+    "Parameters",
+    "RAW_REGIONS",
+    "Response",
+    "TOLERANCE",
+    "admissible",
+    "admissible_hypotheses",
+    "case_of",
+    "choose",
+    "map_curves",
+    "named_points",
+    "raw_region",
+    "solve",
+]

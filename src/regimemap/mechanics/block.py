@@ -13,10 +13,10 @@ below it (Chapter IV, -1 <= k' <= 0, where the report writes ``|k'|``).  With
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from enum import Enum
 
+from . import constants as C
 from .validation import check_gamma, check_kprime
 
 __all__ = ["Case", "Parameters", "case_of"]
@@ -85,28 +85,31 @@ _CASE_TEXT = {
 
 def case_of(gamma: float, kprime: float) -> Case:
     """Return the :class:`Case` of ``(gamma, kprime)``; see :class:`Case` for ties."""
-    g2 = gamma * gamma
     if kprime >= 0.0:
-        if kprime <= (1.0 + g2) / (3.0 * g2):
+        if kprime <= C.kprime_1(gamma):
             return Case.ABOVE_1A
         # a >= 0 (3.18); the second test keeps the tie k' = (4+g^2)/(3g^2) in
         # case 1 when rounding makes a a hair negative there
-        if 4.0 + g2 - 3.0 * g2 * kprime >= 0.0 or kprime <= (4.0 + g2) / (3.0 * g2):
+        if C.coefficients(gamma, kprime)[0] >= 0.0 or kprime <= C.kprime_2(gamma):
             return Case.ABOVE_1B
         return Case.ABOVE_2_3
-    if -kprime <= (1.0 + g2) / (4.0 + g2):
+    if -kprime <= C.kprime_delta(gamma):
         return Case.BELOW_DELTA_POS
     return Case.BELOW_DELTA_NEG
 
 
 @dataclass(frozen=True)
 class Parameters:
-    """Validated map parameters and the report's derived quantities.
+    """The block and its loading: validated map parameters and the report's derived quantities.
+
+    This is the one parameter object that every layer passes around (maps,
+    drawing, export, the command line).  Its derived quantities are computed
+    by :mod:`regimemap.mechanics.constants`, the single home of the closed forms.
 
     Parameters
     ----------
     gamma : float
-        Aspect (slenderness) ratio ``gamma = H/B > 0``.
+        Aspect (slenderness) ratio ``gamma = H/B > 0`` (B, H: half width and half height).
     kprime : float
         Height of the force above the centre of mass as a fraction of H,
         ``h = kprime*H``, in [-1, 1]; negative below C (Chapter IV).
@@ -135,11 +138,11 @@ class Parameters:
         kp = check_kprime(self.kprime)
         object.__setattr__(self, "gamma", g)
         object.__setattr__(self, "kprime", kp)
-        g2 = g * g
-        object.__setattr__(self, "a", 4.0 + g2 - 3.0 * g2 * kp)  # (3.18), (4.42)
-        object.__setattr__(self, "b", 3.0 * g)  # (3.19), (4.43)
-        object.__setattr__(self, "c", 3.0 * g * (1.0 + kp))  # (3.20), (4.44)
-        object.__setattr__(self, "d", 1.0 + 4.0 * g2)  # (3.21), (4.45)
+        a, b, c, d = C.coefficients(g, kp)  # (3.18)-(3.21), (4.42)-(4.45)
+        object.__setattr__(self, "a", a)
+        object.__setattr__(self, "b", b)
+        object.__setattr__(self, "c", c)
+        object.__setattr__(self, "d", d)
 
     # -- the chapter and the case -------------------------------------------------
     @property
@@ -161,24 +164,23 @@ class Parameters:
     @property
     def kprime_1(self) -> float:
         """(1+g^2)/(3g^2): the slope of mu* at A changes sign (Chapter III, case 1)."""
-        return (1.0 + self.gamma**2) / (3.0 * self.gamma**2)
+        return C.kprime_1(self.gamma)
 
     @property
     def kprime_2(self) -> float:
         """(4+g^2)/(3g^2): a = 0 (3.18); above it cases 2/3 (only for gamma > sqrt 2)."""
-        return (4.0 + self.gamma**2) / (3.0 * self.gamma**2)
+        return C.kprime_2(self.gamma)
 
     @property
     def kprime_delta(self) -> float:
         """(1+g^2)/(4+g^2): Delta = 0 (Chapter IV, Section IV.3)."""
-        return (1.0 + self.gamma**2) / (4.0 + self.gamma**2)
+        return C.kprime_delta(self.gamma)
 
     # -- points and constants -----------------------------------------------------
     @property
     def k_A(self) -> float:
         """k_A = 1/(gamma(1+k')) = 3/c, (3.5), (3.17), (4.10), (4.37); inf at k' = -1."""
-        den = self.gamma * (1.0 + self.kprime)
-        return math.inf if den == 0.0 else 1.0 / den
+        return C.k_A(self.gamma, self.kprime)
 
     @property
     def mu_A(self) -> float:
@@ -188,58 +190,50 @@ class Parameters:
     @property
     def k_Bprime(self) -> float:
         """k_B' = (1+g^2)/(3 gamma |k'|), (4.48); inf for k' >= 0 (no B' above C)."""
-        if self.kprime >= 0.0:
-            return math.inf
-        return (1.0 + self.gamma**2) / (3.0 * self.gamma * self.abs_kprime)
+        return C.k_Bprime(self.gamma, self.kprime)
 
     @property
     def mu_Bprime(self) -> float:
         """mu_B' = (4+g^2)/(3 gamma), (4.49): where 4 + g^2 - 3 mu gamma = 0 in (3.30), (4.64)."""
-        return (4.0 + self.gamma**2) / (3.0 * self.gamma)
+        return C.mu_Bprime(self.gamma)
 
     @property
     def b_over_abs_a(self) -> float:
         """b/|a|: where f_x of rocking changes sign when a < 0 (cases 2/3); inf if a >= 0."""
-        if self.a >= 0.0:
-            return math.inf
-        return self.b / abs(self.a)
+        return C.b_over_abs_a(self.a, self.b)
 
     @property
     def slope_at_A(self) -> float:
         """d mu*/dk at A = (1+g^2-3g^2 k')/(4(1+g^2)) (Section III.3, case 1)."""
-        g2 = self.gamma**2
-        return (1.0 + g2 - 3.0 * g2 * self.kprime) / (4.0 * (1.0 + g2))
+        return C.slope_at_A(self.gamma, self.kprime)
 
     @property
     def delta(self) -> float:
         """Delta = ((1+g^2) - (4+g^2)|k'|)/(4(1+g^2)) (Section IV.3): slope of mu* at A minus |k'|."""
-        g2 = self.gamma**2
-        return ((1.0 + g2) - (4.0 + g2) * self.abs_kprime) / (4.0 * (1.0 + g2))
-
-    @property
-    def k_C_axis(self) -> float:
-        """mu-intercept of the line CD (above C) or AB (below C): 1/gamma."""
-        return 1.0 / self.gamma
+        return C.delta(self.gamma, self.kprime)
 
     @property
     def k_D(self) -> float:
         """k where CD (above C, mu = 1/g - k k') or DC (below C, mu = -1/g + k|k'|) meets mu = 0."""
-        if self.kprime == 0.0:
-            return math.inf
-        return 1.0 / (self.gamma * self.abs_kprime)
+        return C.k_D(self.gamma, self.kprime)
 
     @property
     def k_F(self) -> float:
         """k_F = b/a where mu** = 0 (Section IV.6); defined below C (inf when a <= 0)."""
-        return math.inf if self.a <= 0.0 else self.b / self.a
+        return C.k_F(self.a, self.b)
 
     @property
     def k_pole(self) -> float:
         """d/c, the pole of mu**(k) (4.97); inf at k' = -1."""
-        return math.inf if self.c == 0.0 else self.d / self.c
+        return C.k_pole(self.c, self.d)
+
+    @property
+    def k_Cprime(self) -> float | None:
+        """C': where mu* meets the lower line DC below C (None when they do not meet)."""
+        return C.crossing_mu_star_lower(self.gamma, self.kprime)
 
     def as_dict(self) -> dict[str, float | str]:
-        """All parameters and derived quantities as plain numbers (inf as None-free floats)."""
+        """All parameters and derived quantities as plain numbers."""
         return {
             "gamma": self.gamma,
             "kprime": self.kprime,

@@ -1,6 +1,11 @@
-"""Boundary curves and named points of the k-mu plane (vectorised in k).
+"""The catalogue of curves and named points of the k-mu plane (vectorised in k).
 
-All functions take a :class:`~regimemap.params.Parameters` and an array of k.
+Each curve of the map is described once here, with its equation, where it
+comes from in the report, its kind (boundary, construction or dotted) and the
+function that evaluates it; drawing (:mod:`regimemap.maps.view`) and export
+(:mod:`regimemap.io.export`) sample the same entries.  The formulas themselves
+are written once, in :mod:`regimemap.mechanics.constants`.
+
 Lines are named as in the report: above C (Chapter III) OA is mu = k, AB the
 vertical k = k_A and CD the line mu = 1/gamma - k k'; below C (Chapter IV) AB
 is mu = 1/gamma + k|k'| (4.21), DC is mu = -1/gamma + k|k'| (4.20), AE the
@@ -12,90 +17,206 @@ line* ``1/gamma - k k'``; DC is the *lower line* ``-1/gamma - k k'``.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Any, Callable, Literal
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
+from . import constants as C
 from .block import Parameters
 
 __all__ = [
+    "Curve",
+    "CurveKind",
+    "NamedPoint",
+    "dotted_line",
+    "line_OA",
+    "lower_line",
+    "map_curves",
     "mu_star",
     "mu_star_signed",
     "mu_star_star",
-    "line_OA",
-    "upper_line",
-    "lower_line",
-    "dotted_line",
-    "line_CD",
-    "line_AB",
-    "line_DC",
-    "NamedPoint",
     "named_points",
+    "upper_line",
 ]
 
+FloatArray = NDArray[np.float64]
 
-def _k(k: ArrayLike) -> np.ndarray:
+
+def _k(k: ArrayLike) -> FloatArray:
     return np.asarray(k, dtype=np.float64)
 
 
-def mu_star_signed(p: Parameters, k: ArrayLike) -> np.ndarray:
+def mu_star_signed(p: Parameters, k: ArrayLike) -> FloatArray:
     """(ak+b)/(ck+d): f_x/f_y of rocking about O, (3.22)-(3.23), (4.38)-(4.39).
 
     Its sign is that of f_x; it is mu* where f_x >= 0.
     """
-    k = _k(k)
-    return (p.a * k + p.b) / (p.c * k + p.d)
+    return C.mu_star_signed(_k(k), p.a, p.b, p.c, p.d)
 
 
-def mu_star(p: Parameters, k: ArrayLike) -> np.ndarray:
+def mu_star(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu*(k) = |ak+b|/(ck+d), (3.24) and (4.40)-(4.41).
 
     Rocking about O needs mu >= mu*(k): the friction needed to stop the
     pivot O slipping.  In case 3 (a < 0, k > b/|a|) it is -(ak+b)/(ck+d).
     """
-    k = _k(k)
-    return np.abs(p.a * k + p.b) / (p.c * k + p.d)
+    return C.mu_star(_k(k), p.a, p.b, p.c, p.d)
 
 
-def mu_star_star(p: Parameters, k: ArrayLike) -> np.ndarray:
+def mu_star_star(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu**(k) = (ak-b)/(d-ck), (4.96)-(4.97) with a from (4.42) (see docs/errata.md).
 
     Infinite at the pole k = d/c (returned as +-inf); negative beyond it.
     """
-    k = _k(k)
-    den = p.d - p.c * k
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return (p.a * k - p.b) / den
+    return C.mu_star_star(_k(k), p.a, p.b, p.c, p.d)
 
 
-def line_OA(p: Parameters, k: ArrayLike) -> np.ndarray:
+def line_OA(p: Parameters, k: ArrayLike) -> FloatArray:
     """OA: mu = k, the limit of rest by friction, (3.4) and (4.7)."""
     return _k(k).copy()
 
 
-def upper_line(p: Parameters, k: ArrayLike) -> np.ndarray:
+def upper_line(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu = 1/gamma - k k': CD of Section III.2 (k' >= 0), AB (4.21) of Section IV.2 (k' <= 0).
 
     On it the normal reaction of sliding acts at O (xi = -B).
     """
-    return 1.0 / p.gamma - _k(k) * p.kprime
+    return C.upper_line(_k(k), p.gamma, p.kprime)
 
 
-def lower_line(p: Parameters, k: ArrayLike) -> np.ndarray:
+def lower_line(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu = -1/gamma - k k' = -1/gamma + k|k'|: DC (4.20); on it xi = +B (at O')."""
-    return -1.0 / p.gamma - _k(k) * p.kprime
+    return C.lower_line(_k(k), p.gamma, p.kprime)
 
 
-def dotted_line(p: Parameters, k: ArrayLike) -> np.ndarray:
+def dotted_line(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu = k|k'|, (4.22): the slide region has xi <= 0 above it and xi >= 0 below it."""
-    return _k(k) * p.abs_kprime
+    return C.dotted_line(_k(k), p.kprime)
 
 
-line_CD = upper_line
-line_AB = upper_line
-line_DC = lower_line
+def dotted_line_344(p: Parameters, k: ArrayLike) -> FloatArray:
+    """mu = k k' - 1/gamma, (3.44): theta'' = 0 in slide-rock about O slipping right (case 3)."""
+    return C.dotted_line_344(_k(k), p.gamma, p.kprime)
 
+
+# -- the catalogue --------------------------------------------------------------------------
+
+#: What a curve is on a map: it may bound regions, or only help to construct them
+#: (the report draws those dashed), or be one of the report's dotted lines.
+CurveKind = Literal["boundary", "construction", "dotted"]
+
+
+@dataclass(frozen=True)
+class Curve:
+    """One curve of the map of given parameters, as the report defines it.
+
+    Attributes
+    ----------
+    name : str
+        ``OA``, ``AB``, ``CD``, ``DC``, ``AE``, ``dotted``, ``mu_star`` or ``mu_star_star``.
+    equation : str
+        The equation in plain text.
+    report : str
+        Where the report writes it.
+    role : str
+        What it separates, in words.
+    kind : CurveKind
+        ``boundary`` (can bound regions), ``dotted`` (the report's dotted lines).
+    tex : str
+        The mathtext label drawn next to it ("" for lines named by their end points).
+    spec : dict
+        The curve as numbers (JSON export): a line ``mu = c0 + c1 k``, a vertical
+        ``k = k``, or a rational ``mu = (p k + q)/(r k + t)`` (``abs`` for mu*).
+    k_from, k_to : float
+        Where the curve belongs to the map (``inf`` for no end).
+    func : callable or None
+        ``mu = func(k)`` (vectorised); None for a vertical line.
+    vertical_k : float or None
+        The abscissa of a vertical line.
+    """
+
+    name: str
+    equation: str
+    report: str
+    role: str
+    kind: CurveKind
+    tex: str
+    spec: dict[str, Any]
+    k_from: float
+    k_to: float
+    func: Callable[[FloatArray], FloatArray] | None = field(default=None, compare=False)
+    vertical_k: float | None = None
+
+    @property
+    def vertical(self) -> bool:
+        """True for the vertical line k = k_A."""
+        return self.vertical_k is not None
+
+    @property
+    def dotted(self) -> bool:
+        """True for the report's dotted lines (3.44) and (4.22)."""
+        return self.kind == "dotted"
+
+
+def _line(c0: float, c1: float) -> dict[str, Any]:
+    return {"type": "line", "c0": c0, "c1": c1, "text": "mu = c0 + c1*k"}
+
+
+def map_curves(p: Parameters) -> dict[str, Curve]:
+    """The curves of the map of ``p``, in drawing order, keyed by name.
+
+    Above C: ``OA``, ``AB`` (vertical k = k_A), ``CD`` (upper line), ``mu_star``
+    and, in cases 2/3 (a < 0), ``dotted`` (3.44).  Below C: ``OA``, ``AE``
+    (vertical k = k_A), ``AB`` (upper line), ``DC`` (lower line), ``dotted``
+    (4.22), ``mu_star`` and ``mu_star_star`` (from F to its pole d/c).
+    Curves that do not exist for ``p`` (k_A infinite at k' = -1, ...) are left out.
+    """
+    g, kp = p.gamma, p.kprime
+    kA = p.k_A
+    finite_A = math.isfinite(kA)
+    out: dict[str, Curve] = {}
+    out["OA"] = Curve("OA", "mu = k", "(3.4), (4.7)", "rest | slide (up to A)", "boundary", "",
+                      _line(0.0, 1.0), 0.0, kA, lambda k: line_OA(p, k))
+    vertical = "AB" if p.above else "AE"
+    if finite_A:
+        out[vertical] = Curve(
+            vertical, "k = k_A = 1/(gamma (1 + k'))",
+            "(3.5), (3.17)" if p.above else "(4.10), (4.37)", "rest | rock (vertical)", "boundary", "",
+            {"type": "vertical", "k": kA}, kA, kA, None, vertical_k=kA)
+    upper = "CD" if p.above else "AB"
+    out[upper] = Curve(
+        upper, "mu = 1/gamma - k k'" + ("" if p.above else " = 1/gamma + k|k'|"),
+        "Section III.2" if p.above else "(4.21)", "xi = -B: the reaction of sliding reaches O",
+        "boundary", "", _line(1.0 / g, -kp), 0.0, p.k_D if p.above else math.inf,
+        lambda k: upper_line(p, k))
+    if not p.above:
+        out["DC"] = Curve("DC", "mu = -1/gamma + k|k'|", "(4.20)",
+                          "xi = +B: the reaction of sliding reaches O'", "boundary", "",
+                          _line(-1.0 / g, -kp), p.k_D, math.inf, lambda k: lower_line(p, k))
+        out["dotted"] = Curve("dotted", "mu = k|k'|", "(4.22)", "xi = 0 in sliding (construction line)",
+                              "dotted", r"$\mu = k|k'|$", _line(0.0, abs(kp)), 0.0, math.inf,
+                              lambda k: dotted_line(p, k))
+    if finite_A:
+        out["mu_star"] = Curve(
+            "mu_star", "mu* = |a k + b|/(c k + d)", "(3.24), (4.40)",
+            "rock about O needs mu >= mu* (from A on)", "boundary", r"$\mu^*(k)$",
+            {"type": "rational", "abs": True, "p": p.a, "q": p.b, "r": p.c, "t": p.d,
+             "text": "mu = |p*k + q|/(r*k + t)"}, kA, math.inf, lambda k: mu_star(p, k))
+    if p.above and p.a < 0.0:
+        out["dotted"] = Curve("dotted", "mu = k k' - 1/gamma", "(3.44)",
+                              "theta'' = 0 in slide-rock about O (SRO+)", "dotted",
+                              r"$\mu = kk' - 1/\gamma$", _line(-1.0 / g, kp), p.k_D, math.inf,
+                              lambda k: dotted_line_344(p, k))
+    if not p.above:
+        out["mu_star_star"] = Curve(
+            "mu_star_star", "mu** = (a k - b)/(d - c k)", "(4.96)-(4.97)",
+            "slide-rock about O' needs mu <= mu** (left of the pole d/c)", "boundary",
+            r"$\mu^{**}(k)$",
+            {"type": "rational", "abs": False, "p": p.a, "q": -p.b, "r": -p.c, "t": p.d,
+             "text": "mu = (p*k + q)/(r*k + t)"}, p.k_F, p.k_pole, lambda k: mu_star_star(p, k))
+    return out
 
 @dataclass(frozen=True)
 class NamedPoint:
@@ -143,23 +264,7 @@ def named_points(p: Parameters) -> dict[str, NamedPoint]:
         if _finite(p.k_D):
             pts["D"] = NamedPoint("D", p.k_D, 0.0, "line DC meets the k axis")
             pts["F"] = NamedPoint("F", p.k_F, 0.0, "mu** = 0 (k = b/a)")
-            kc = _crossing_mu_star_lower(p)
+            kc = p.k_Cprime
             if kc is not None:
                 pts["C'"] = NamedPoint("C'", kc, float(lower_line(p, kc)), "mu* meets DC")
     return pts
-
-
-def _crossing_mu_star_lower(p: Parameters) -> float | None:
-    """k > k_D where mu*(k) = -1/gamma + k|k'| (the root of a quadratic), or None."""
-    # (ak+b) = (q k - 1/g)(ck+d) with q = |k'|  ->  c q k^2 + (d q - c/g - a) k - (d/g + b) = 0
-    q = p.abs_kprime
-    if q == 0.0 or p.c == 0.0:
-        return None
-    A2 = p.c * q
-    A1 = p.d * q - p.c / p.gamma - p.a
-    A0 = -(p.d / p.gamma + p.b)
-    disc = A1 * A1 - 4.0 * A2 * A0
-    if disc < 0:
-        return None
-    root = (-A1 + math.sqrt(disc)) / (2.0 * A2)
-    return root if root > 0 else None

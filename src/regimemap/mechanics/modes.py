@@ -16,11 +16,7 @@ from __future__ import annotations
 
 from enum import IntEnum
 
-__all__ = ["Mode", "MAP_MODES", "UNDEFINED"]
-
-#: Code stored by :func:`regimemap.classify` for points that have no mode
-#: (never produced for valid input; reserved).
-UNDEFINED = 255
+__all__ = ["Mode", "MAP_MODES", "PRIORITY"]
 
 
 class Mode(IntEnum):
@@ -97,4 +93,17 @@ MAP_MODES: tuple[Mode, ...] = (
     Mode.SRO_MINUS,
     Mode.SRO_PLUS,
     Mode.SRO_PRIME_MINUS,
+)
+
+#: Section 4.7's order: where several modes are admissible the first one holds
+#: (slide inside the slide region, slide-rock about O' below DC, then rock).
+PRIORITY: tuple[Mode, ...] = (
+    Mode.RE,
+    Mode.SL,
+    Mode.SRO_PRIME_MINUS,
+    Mode.RO,
+    Mode.SRO_MINUS,
+    Mode.SRO_PLUS,
+    Mode.RO_PRIME,
+    Mode.SRO_PRIME_PLUS,
 )

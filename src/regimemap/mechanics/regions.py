@@ -17,7 +17,8 @@ from typing import Callable
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .curves import lower_line, mu_star, mu_star_signed, mu_star_star, upper_line
+from . import constants as C
+from .curves import dotted_line_344, lower_line, mu_star, mu_star_signed, mu_star_star, upper_line
 from .modes import Mode
 from .block import Parameters
 
@@ -41,7 +42,7 @@ def _km(k: ArrayLike, mu: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
 def rest_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.ndarray:
     """RE: mu >= k (3.4), (4.7) and k <= 1/(gamma(1+k')) (3.5), (4.10)."""
     k, mu = _km(k, mu)
-    return (mu >= k) & (k * (p.gamma * (1.0 + p.kprime)) <= 1.0)
+    return (mu >= k) & C.rest_possible(k, p.gamma, p.kprime)
 
 
 def slide_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.ndarray:
@@ -57,7 +58,7 @@ def slide_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.ndarray:
 def rock_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.ndarray:
     """RO (about O): theta'' >= 0, k >= k_A (3.17), (4.37), and mu >= mu*(k) (3.24), (4.40)."""
     k, mu = _km(k, mu)
-    return (k * (p.gamma * (1.0 + p.kprime)) >= 1.0) & (mu >= mu_star(p, k))
+    return C.rock_possible(k, p.gamma, p.kprime) & (mu >= mu_star(p, k))
 
 
 def slide_rock_minus_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.ndarray:
@@ -90,7 +91,7 @@ def slide_rock_plus_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.nda
     """
     k, mu = _km(k, mu)
     f = p.a * k + p.b
-    return (f <= 0.0) & (mu <= mu_star(p, k)) & (mu <= k * p.kprime - 1.0 / p.gamma)
+    return (f <= 0.0) & (mu <= mu_star(p, k)) & (mu <= dotted_line_344(p, k))
 
 
 def slide_rock_prime_minus_region(p: Parameters, k: ArrayLike, mu: ArrayLike) -> np.ndarray:
@@ -101,9 +102,8 @@ def slide_rock_prime_minus_region(p: Parameters, k: ArrayLike, mu: ArrayLike) ->
     when k >= d/c (the report omits this; see docs/errata.md).  Empty above C.
     """
     k, mu = _km(k, mu)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        beyond_pole = p.c * k >= p.d
-        below_mss = mu <= mu_star_star(p, k)
+    beyond_pole = p.c * k >= p.d
+    below_mss = mu <= mu_star_star(p, k)
     return (mu <= lower_line(p, k)) & (beyond_pole | below_mss)
 
 

@@ -49,9 +49,17 @@ from enum import Enum
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .modes import Mode
+from .modes import PRIORITY, Mode
 
-__all__ = ["Hypothesis", "Response", "solve", "admissible", "admissible_hypotheses", "TOLERANCE"]
+__all__ = [
+    "Hypothesis",
+    "Response",
+    "TOLERANCE",
+    "admissible",
+    "admissible_hypotheses",
+    "choose",
+    "solve",
+]
 
 #: Tolerance of the admissibility conditions (dimensionless reactions/accelerations).
 TOLERANCE = 1e-9
@@ -270,4 +278,29 @@ def admissible(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike,
     out: dict[Mode, np.ndarray] = {}
     for h, ok in hyp.items():
         out[h.mode] = out[h.mode] | ok if h.mode in out else ok
+    return out
+
+
+def choose(admissible: dict[Mode, np.ndarray]) -> np.ndarray:
+    """The solver's choice: the first admissible mode of Section 4.7's order at each point.
+
+    Parameters
+    ----------
+    admissible : dict[Mode, ndarray of bool]
+        As returned by :func:`admissible`.
+
+    Returns
+    -------
+    ndarray of uint8
+        Mode codes (:data:`~regimemap.mechanics.modes.PRIORITY` decides where several
+        modes are admissible); 255 where none is (never seen for valid input).
+    """
+    shape = np.broadcast(*admissible.values()).shape
+    out = np.full(shape, 255, dtype=np.uint8)
+    free = np.ones(shape, dtype=bool)
+    for mode in PRIORITY:
+        if mode in admissible:
+            hit = free & admissible[mode]
+            out[hit] = mode
+            free &= ~hit
     return out

@@ -1,0 +1,126 @@
+"""The style of every drawing: one registry per kind of category, rcParams, text sizes.
+
+:data:`MODE_STYLE` maps each mode to its fill colour and hatch (Paul Tol's
+colour-blind-safe *light* scheme plus a distinct hatch, readable in greyscale);
+later kinds of map (outcomes after initiation) add registries of their own
+beside it.  :func:`style_context` applies regimemap's rcParams (byte-stable SVG
+and PDF, TrueType fonts in PDF) without touching matplotlib's globals.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from dataclasses import dataclass
+from typing import Any, Iterator
+
+from ..mechanics.modes import Mode
+
+__all__ = [
+    "CONSTRUCTION",
+    "DOTTED",
+    "HATCH_LW",
+    "LINE_LW",
+    "MODE_STYLE",
+    "ModeStyle",
+    "mode_symbol",
+    "style_context",
+    "text_size",
+]
+
+
+@dataclass(frozen=True)
+class ModeStyle:
+    """How a mode's region is filled.
+
+    Attributes
+    ----------
+    color : str
+        Fill colour (Paul Tol's *light* scheme, colour-blind safe and light
+        enough for black labels and lines on top).
+    hatch : str
+        matplotlib hatch pattern, distinct per mode so that maps stay
+        readable in greyscale print.
+    hatch_color : tuple
+        RGBA of the hatch lines.
+    """
+
+    color: str
+    hatch: str
+    hatch_color: tuple[float, float, float, float] = (0.0, 0.0, 0.0, 0.35)
+
+
+#: Fill style of each mode.  Neighbouring regions (RE|SL along OA, SL|SRO- on
+#: CD, SRO-|RO on mu*, SL|SRO'- on DC ...) differ in hue, in lightness and in
+#: hatch direction.
+MODE_STYLE: dict[Mode, ModeStyle] = {
+    Mode.RE: ModeStyle("#DDDDDD", ".."),  # pale grey: nothing moves
+    Mode.SL: ModeStyle("#EEDD88", "//"),  # light yellow
+    Mode.RO: ModeStyle("#EE8866", "\\\\"),  # orange
+    Mode.SRO_MINUS: ModeStyle("#77AADD", "--"),  # light blue
+    Mode.SRO_PLUS: ModeStyle("#44BB99", "||"),  # mint
+    Mode.SRO_PRIME_MINUS: ModeStyle("#FFAABB", "xx"),  # pink
+    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # never on a map
+    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never on a map
+}
+
+#: Line widths (points) of hatches and of boundary curves.
+HATCH_LW = 0.45
+LINE_LW = 1.15
+#: Dashed construction lines and the report's dotted lines.
+CONSTRUCTION = {"color": "0.3", "linewidth": 0.7, "dashes": (4.0, 2.5)}
+DOTTED = {"color": "0.1", "linewidth": 1.0, "dashes": (1.0, 2.0)}
+
+#: rcParams for every map (applied with :func:`style_context`, never globally).
+_RC: dict[str, Any] = {
+    "svg.hashsalt": "regimemap",
+    "svg.fonttype": "path",
+    "pdf.fonttype": 42,
+    "ps.fonttype": 42,
+    "pdf.compression": 6,
+    "hatch.linewidth": HATCH_LW,
+    "mathtext.fontset": "dejavusans",
+    "font.family": "sans-serif",
+    "font.sans-serif": ["DejaVu Sans"],
+    "axes.unicode_minus": True,
+    "path.simplify": False,
+    "savefig.bbox": None,
+    "savefig.pad_inches": 0.1,
+    "savefig.facecolor": "white",
+    "savefig.edgecolor": "white",
+    "savefig.transparent": False,
+    "figure.facecolor": "white",
+    "axes.linewidth": 0.8,
+    "xtick.direction": "out",
+    "ytick.direction": "out",
+}
+
+
+@contextlib.contextmanager
+def style_context() -> Iterator[None]:
+    """matplotlib ``rc_context`` with regimemap's fixed style (no global change)."""
+    import matplotlib
+
+    with matplotlib.rc_context(_RC):
+        yield
+
+
+def mode_symbol(mode: Mode) -> tuple[str, str]:
+    """A mode's symbol for a region label: (text, fontstyle).
+
+    ``$RE$``, ``$SL$`` and ``$RO$`` are written as plain oblique text: the
+    face mathtext uses for them (same glyphs; the box behind them is a little
+    taller), without the cost of parsing mathtext.  Symbols with sub- or
+    superscripts stay mathtext (Unicode subscripts sit too high).
+    """
+    tex = mode.tex
+    inner = tex[1:-1]
+    if tex.startswith("$") and tex.endswith("$") and inner.isalpha():
+        return inner, "italic"
+    return tex, "normal"
+
+
+def text_size(text: str, fontsize: float) -> tuple[float, float]:
+    """Rough size (points) of a short label with its white box, without drawing it."""
+    plain = text.replace("$", "").replace("_{-}", "-").replace("_{+}", "+").replace("\\", "")
+    plain = plain.replace("mu", "m").replace("{", "").replace("}", "").replace("^", "")
+    return (0.62 * fontsize * len(plain) + 5.0, 1.25 * fontsize + 4.0)

@@ -1,0 +1,131 @@
+"""Point-query results for people and spreadsheets: flat CSV rows and a text report."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+from ..maps.margins import Crossing
+from ..maps.query import PointResult
+
+__all__ = ["CSV_COLUMNS", "format_result", "result_row"]
+
+CSV_COLUMNS: tuple[str, ...] = (
+    "name", "k", "mu", "gamma", "kprime", "case", "mode", "hypothesis",
+    "fx", "fy", "xi", "xdd", "ydd", "thdd", "slip", "lift", "admissible",
+    "margin_k", "margin_k_direction", "margin_k_at", "margin_k_to",
+    "margin_mu", "margin_mu_direction", "margin_mu_at", "margin_mu_to",
+)
+
+def _fmt(v: float | None) -> str:
+    if v is None or not math.isfinite(v):
+        return ""
+    return repr(float(v))
+
+
+def result_row(r: PointResult) -> dict[str, str]:
+    """One flat CSV row (:data:`CSV_COLUMNS`) of a result; empty cells for None."""
+    row = {
+        "name": r.name, "k": _fmt(r.k), "mu": _fmt(r.mu), "gamma": _fmt(r.gamma),
+        "kprime": _fmt(r.kprime), "case": r.case.value, "mode": r.mode.label,
+        "hypothesis": r.hypothesis.name,
+        "fx": _fmt(r.fx), "fy": _fmt(r.fy), "xi": _fmt(r.xi), "xdd": _fmt(r.xdd),
+        "ydd": _fmt(r.ydd), "thdd": _fmt(r.thdd), "slip": _fmt(r.slip), "lift": _fmt(r.lift),
+        "admissible": " ".join(m.label for m in r.admissible),
+    }
+    for m in (r.margin_k, r.margin_mu):
+        n = m.nearest
+        pre = f"margin_{m.variable}"
+        row[pre] = "" if n is None else _fmt(n.relative)
+        row[f"{pre}_direction"] = "" if n is None else n.direction
+        row[f"{pre}_at"] = "" if n is None else _fmt(n.at)
+        row[f"{pre}_to"] = "" if n is None else n.to.label
+    return row
+
+
+def _pct(c: Crossing) -> str:
+    if c.on_boundary:
+        return "0 (on the boundary)"
+    if c.relative is None:
+        return f"{c.delta:.4g} (absolute; the value is 0)"
+    return f"{100.0 * c.relative:.3g}%"
+
+
+def format_result(r: PointResult) -> str:
+    """A plain-text report of one result, for people."""
+    p_side = "above" if r.kprime > 0 else ("below" if r.kprime < 0 else "at")
+    lines = []
+    title = f"point {r.name!r}: " if r.name else ""
+    lines.append(f"{title}k = {r.k:g}, mu = {r.mu:g}   (gamma = {r.gamma:g}, k' = {r.kprime:g}: "
+                 f"force {p_side} the centre of mass)")
+    lines.append(f"case      {r.case.value}: {r.case.description}")
+    lines.append(f"mode      {r.mode.label}  ({r.mode.description})")
+    lines.append(f"at initiation (solver, hypothesis {r.hypothesis.name}"
+                 + ("" if r.hypothesis_admissible or not r.solvable else ", NOT admissible")
+                 + "):")
+    rows = [
+        ("fx", r.fx, "horizontal reaction / mg (positive to the right)"),
+        ("fy", r.fy, "normal reaction / mg"),
+        ("xi", r.xi, "where f_y acts, from C / B (-1 = O, +1 = O')"),
+        ("xdd", r.xdd, "horizontal acceleration of C / g (negative = to the left)"),
+        ("ydd", r.ydd, "vertical acceleration of C / g"),
+        ("thdd", r.thdd, "angular acceleration * B/g (positive = counter-clockwise)"),
+    ]
+    for key, v, what in rows:
+        lines.append(f"  {key:<5} = {_val(v):>11}   {what}")
+    if r.slip is None and not r.solvable and r.hypothesis.sigma != 0:
+        lines.append(f"  {'slip':<5} = {'n/a':>11}")
+    elif r.slip is None:
+        lines.append(f"  {'slip':<5} = {'none':>11}   the contact sticks")
+    else:
+        where = "base" if r.hypothesis.contact == "full" else f"corner {r.hypothesis.contact}"
+        lines.append(f"  {'slip':<5} = {_val(r.slip):>11}   horizontal acceleration of the "
+                     f"slipping {where} / g")
+    if r.lift is not None:
+        lines.append(f"  {'lift':<5} = {_val(r.lift):>11}   upward acceleration of the "
+                     f"lifting corner / g")
+    lines.append("margin    (smallest change that changes the mode, the other variable fixed)")
+    for m in (r.margin_k, r.margin_mu):
+        parts = []
+        for direction, c in (("down", m.down), ("up", m.up)):
+            if c is None:
+                if direction == "down" and m.value == 0.0:
+                    parts.append("down: -- (already 0)")
+                else:
+                    parts.append(f"{direction}: no change")
+                continue
+            if c.on_boundary:
+                parts.append(f"{c.direction}: 0 (on the boundary) -> {c.to.label}")
+                continue
+            sign = "-" if c.direction == "down" else "+"
+            parts.append(f"{c.direction}: {sign}{_pct(c)} to {m.variable} = {c.at:.6g} -> "
+                         f"{c.to.label}")
+        lines.append(f"  {m.variable:<3} {';  '.join(parts)}")
+    adm = ", ".join(m.label for m in r.admissible) or "(none)"
+    lines.append(f"admissible (solver): {adm}")
+    note = ""
+    if not r.solvable:
+        note = ("the equations-of-motion solver reports this system as singular (at mu = mu_B', "
+                "or a known limitation of its singularity test at large gamma or mu), so the "
+                "physics and the admissible set are not available; the mode and the margin come "
+                "from the closed-form map and stand")
+        lines += textwrap.wrap(note, width=88, initial_indent="  ", subsequent_indent="  ")
+        note = ""
+    if r.chosen_by == "Section 4.7":
+        note = (f"several modes satisfy the equations of motion here (non-uniqueness of rigid "
+                f"contact with friction, below C and mu > mu_B' = {r.thresholds['mu_Bprime']:.4g}); "
+                f"Section 4.7 of the report keeps {r.mode.label}")
+    elif r.chosen_by == "boundary":
+        note = (f"the point is on a boundary, where the modes of both sides are admissible; "
+                f"the map gives it {r.mode.label}")
+    if note:
+        lines += textwrap.wrap(note, width=88, initial_indent="  ", subsequent_indent="  ")
+    return "\n".join(lines)
+
+
+def _val(v: float) -> str:
+    if v is None or not math.isfinite(v):
+        return "n/a"
+    if v == 0.0 or abs(v) < 1e-13:
+        return "0"
+    return f"{v:.6g}"
