@@ -263,8 +263,11 @@ def parse_design(text: str, source: str = "<design>") -> Design:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         msg = str(exc)
-        m = re.search(r"at line (\d+), column (\d+)", msg)
-        where = f" at line {m.group(1)}, column {m.group(2)}" if m else ""
+        m = re.search(r"\s*\(at line (\d+), column (\d+)\)", msg)
+        where = ""
+        if m:
+            where = f" at line {m.group(1)}, column {m.group(2)}"
+            msg = msg[:m.start()] + msg[m.end():]
         raise r.fail(f"TOML syntax error{where}: {msg}") from None
     r.check_names(data)
 
@@ -315,13 +318,13 @@ def parse_design(text: str, source: str = "<design>") -> Design:
                           impulsive=r.boolean(data, c, "impulsive", True))
 
     if caisson.base_depth > site.depth:
-        raise r.key_error(c, "base_depth", caisson.base_depth,
-                          f"the base is deeper than the water, [site] depth = {site.depth!r}; "
-                          f"it must be <= [site] depth")
+        raise r.fail(f"[caisson] base_depth = {caisson.base_depth!r}: the base of the caisson would be "
+                     f"deeper than the water ([site] depth = {site.depth!r}); accepted: "
+                     f"0 < base_depth <= [site] depth = {site.depth!r} (metres)")
     if site.armour_depth > caisson.base_depth:
-        raise r.key_error("site", "armour_depth", site.armour_depth,
-                          f"the armour layer lies below the base of the caisson, [caisson] base_depth "
-                          f"= {caisson.base_depth!r}; it must be <= [caisson] base_depth")
+        raise r.fail(f"[site] armour_depth = {site.armour_depth!r}: the top of the armour layer would be "
+                     f"below the base of the caisson ([caisson] base_depth = {caisson.base_depth!r}); "
+                     f"accepted: 0 < armour_depth <= [caisson] base_depth = {caisson.base_depth!r} (metres)")
     return Design(site=site, wave=wave, caisson=caisson, source=source)
 
 
