@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 
 from regimemap.waves import (
+    GodaPressures,
     caisson_loads,
     design_heights,
     goda_pressures,
@@ -22,7 +23,7 @@ from regimemap.waves import (
 
 
 @pytest.fixture(scope="module")
-def pressures():  # type: ignore[no-untyped-def]
+def pressures() -> GodaPressures:
     return goda_pressures(Hmax=8.050, period=11.4, depth=10.1, hb=10.1 + 5 * 5.796 * 0.01, armour_depth=5.6,
                           base_depth=7.1, crest=3.4, berm_width=8.0, angle_deg=15.0)
 
@@ -37,7 +38,7 @@ def test_heights_goda_page_140() -> None:
     assert float(dh.Hmax) == pytest.approx(8.050, abs=5e-4)
 
 
-def test_pressures_goda_page_140(pressures) -> None:  # type: ignore[no-untyped-def]
+def test_pressures_goda_page_140(pressures: GodaPressures) -> None:
     assert float(pressures.alpha_I) == pytest.approx(0.3223, abs=5e-5)
     assert float(pressures.p1) == pytest.approx(97644.84, abs=0.01)
     assert float(pressures.p3) == pytest.approx(87211.93, abs=0.01)
@@ -45,7 +46,7 @@ def test_pressures_goda_page_140(pressures) -> None:  # type: ignore[no-untyped-
     assert float(pressures.pu) == pytest.approx(65739.31, abs=0.01)
 
 
-def test_centroid_and_required_mass(pressures) -> None:  # type: ignore[no-untyped-def]
+def test_centroid_and_required_mass(pressures: GodaPressures) -> None:
     ld = caisson_loads(pressures, 7.1, 15.0)
     # height of the resultant of P above the base
     assert float(ld.Mp / ld.P) == pytest.approx(5.155, abs=5e-4)
@@ -55,7 +56,7 @@ def test_centroid_and_required_mass(pressures) -> None:  # type: ignore[no-untyp
     assert mass / 1e3 == pytest.approx(345.4477, abs=5e-5)
 
 
-def test_mass_and_bearing_pressure(pressures) -> None:  # type: ignore[no-untyped-def]
+def test_mass_and_bearing_pressure(pressures: GodaPressures) -> None:
     # their caisson: concrete fraction Pc of the whole section, one fill density above and below water
     sec = section_from_densities(15.0, 7.1, 3.4, concrete_fraction=0.8, concrete_density=2400.0,
                                  fill_density=1600.0)
