@@ -5,8 +5,7 @@ The relation of Airy (linear) wave theory,
 .. math:: \\omega^2 = g k \\tanh(k h),
 
 (e.g. Dean & Dalrymple 1991, *Water Wave Mechanics for Engineers and
-Scientists*, eq. 4.19; Goda 2000, *Random Seas and Design of Maritime
-Structures*, 2nd ed., Sect. 1.3) is solved for ``k`` by Newton's method in the
+Scientists*, Ch. 4) is solved for ``k`` by Newton's method in the
 dimensionless unknown ``y = k h`` started from Guo's (2002) explicit
 approximation, so that a handful of iterations reach machine precision.
 """
@@ -42,7 +41,7 @@ def deep_water_wavelength(period: npt.ArrayLike, g: float = G) -> FloatArray:
     Notes
     -----
     Deep-water limit ``tanh(k h) -> 1`` of the linear dispersion relation
-    (Dean & Dalrymple 1991, eq. 4.24; Goda 2000, Sect. 1.3).
+    (Dean & Dalrymple 1991, Ch. 4).
     """
     t = as_float(period)
     return np.asarray(g * t * t / (2.0 * np.pi), dtype=np.float64)
@@ -52,7 +51,7 @@ def wavenumber(period: npt.ArrayLike, depth: npt.ArrayLike, g: float = G) -> Flo
     """Wave number ``k`` of the linear dispersion relation, to machine precision.
 
     Solves ``omega^2 = g k tanh(k h)`` with ``omega = 2 pi / T``
-    (Dean & Dalrymple 1991, eq. 4.19), vectorised over broadcast ``period``
+    (Dean & Dalrymple 1991, Ch. 4), vectorised over broadcast ``period``
     and ``depth``.
 
     Parameters
@@ -76,7 +75,8 @@ def wavenumber(period: npt.ArrayLike, depth: npt.ArrayLike, g: float = G) -> Flo
     approximation ``y = x0 (1 - exp(-x^beta))^(-1/beta)``,
     ``x = omega sqrt(h/g)``, ``beta = 2.4908`` (Guo, J. 2002, "Simple and
     explicit solution of wave dispersion equation", *Coastal Engineering* 45,
-    71-74, eq. 13), accurate to 0.1 %; Newton's method
+    71-74), within 0.76 % of the root (measured over ``h/L0`` from 1e-6
+    to 60); Newton's method
     ``y <- y - f/f'``, ``f' = tanh y + y / cosh^2 y``, then converges
     quadratically (``f`` is increasing and convex in ``y > 0``), and a fixed
     number of iterations reaches a relative residual of a few ulp.
@@ -116,6 +116,6 @@ def wavelength(period: npt.ArrayLike, depth: npt.ArrayLike, g: float = G) -> Flo
     -------
     ndarray
         ``L`` [m]; see :func:`wavenumber` for the method
-        (Dean & Dalrymple 1991, eq. 4.19).
+        (Dean & Dalrymple 1991, Ch. 4).
     """
     return np.asarray(2.0 * np.pi / wavenumber(period, depth, g), dtype=np.float64)

@@ -14,7 +14,8 @@ Sources
   ASCE, 261-274 -- the explicit approximation of Shuto's (1974) nonlinear
   shoaling coefficient used here.
 * The linear shoaling coefficient is Green's law generalised by energy-flux
-  conservation (Dean & Dalrymple 1991, eq. 4.62 with 4.42).
+  conservation (e.g. Dean & Dalrymple 1991, *Water Wave Mechanics for Engineers
+  and Scientists*, Ch. 4).
 """
 
 from __future__ import annotations
@@ -51,7 +52,7 @@ def linear_shoaling_coefficient(period: npt.ArrayLike, depth: npt.ArrayLike,
     -------
     ndarray
         ``Ksi = sqrt(Cg0 / Cg)`` with ``n = (1 + 2kh/sinh 2kh) / 2``
-        (energy-flux conservation, Dean & Dalrymple 1991, eqs. 4.42, 4.62).
+        (energy-flux conservation, Dean & Dalrymple 1991, Ch. 4).
     """
     t, h = np.broadcast_arrays(as_float(period), as_float(depth))
     kh = wavenumber(t, h, g) * h

@@ -218,11 +218,12 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
     * ``alpha2 = min((h_b - d)/(3 h_b) (Hmax/d)^2, 2d/Hmax)``;
     * ``alpha3 = 1 - (h'/h) [1 - 1/cosh(2 pi h/L)]``.
     """
-    H, t, h, hb_, d, hp, hc, bm, ang = np.broadcast_arrays(
+    H, t, h, hb_, d, hp, hc, bm, ang, rot = np.broadcast_arrays(
         as_float(Hmax), as_float(period), as_float(depth), as_float(hb), as_float(armour_depth),
-        as_float(base_depth), as_float(crest), as_float(berm_width), as_float(angle_deg))
+        as_float(base_depth), as_float(crest), as_float(berm_width), as_float(angle_deg),
+        as_float(rotation_deg))
     lam1, lam2, lam3 = lambdas
-    beta = np.broadcast_to(effective_angle(ang, rotation_deg), H.shape)
+    beta = effective_angle(ang, rot)
     cb = np.cos(np.radians(beta))
     w0 = rho_w * g
     L = wavelength(t, h, g)
