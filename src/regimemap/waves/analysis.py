@@ -1,0 +1,141 @@
+"""From site, design wave and caisson section to loads, safety factors and the loaded block."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from ._types import RHO_SEAWATER, G, as_float
+from .block import EquivalentBlock, equivalent_block
+from .caisson import (
+    CaissonLoads,
+    CaissonSection,
+    Stability,
+    caisson_loads,
+    section_from_densities,
+    section_from_weight,
+    stability,
+)
+from .heights import HMAX_FACTOR, DesignHeights, design_heights, given_heights
+from .pressure import GodaPressures, goda_pressures
+
+__all__ = ["CaissonAnalysis", "Densities", "analyse_caisson"]
+
+
+@dataclass(frozen=True)
+class Densities:
+    """Densities of a filled caisson, see :func:`section_from_densities`.
+
+    Attributes
+    ----------
+    concrete_fraction : float
+        Area fraction of concrete in the section, 0..1.
+    concrete : float
+        Concrete density [kg/m^3].
+    fill : float
+        Fill density below still water (saturated) [kg/m^3].
+    fill_above : float or None
+        Fill density above still water [kg/m^3]; None: same as ``fill``.
+    """
+
+    concrete_fraction: float
+    concrete: float
+    fill: float
+    fill_above: float | None = None
+
+
+@dataclass(frozen=True)
+class CaissonAnalysis:
+    """Everything computed by :func:`analyse_caisson`."""
+
+    heights: DesignHeights
+    pressures: GodaPressures
+    loads: CaissonLoads
+    section: CaissonSection
+    stability: Stability
+    block: EquivalentBlock
+
+
+def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope: npt.ArrayLike,
+                    period: npt.ArrayLike, width: npt.ArrayLike, base_depth: npt.ArrayLike,
+                    crest: npt.ArrayLike, friction: npt.ArrayLike,
+                    H0: npt.ArrayLike | None = None, H13: npt.ArrayLike | None = None,
+                    Hmax: npt.ArrayLike | None = None, angle_deg: npt.ArrayLike = 0.0,
+                    rotation_deg: npt.ArrayLike = 0.0, berm_width: npt.ArrayLike = 0.0,
+                    buoyant_weight: npt.ArrayLike | None = None,
+                    densities: Densities | None = None, impulsive: bool = True,
+                    lambdas: tuple[float, float, float] = (1.0, 1.0, 1.0),
+                    hmax_factor: float = HMAX_FACTOR, rho_w: float = RHO_SEAWATER,
+                    g: float = G) -> CaissonAnalysis:
+    """Goda's design procedure for an upright caisson, vectorised.
+
+    Parameters
+    ----------
+    depth, armour_depth, slope : array_like
+        ``h`` [m], ``d`` [m], ``tan theta`` of the sea bed.
+    period : array_like
+        ``T1/3`` [s].
+    width, base_depth, crest, berm_width : array_like
+        Full width ``2B``, ``h'``, ``hc``, ``BM`` [m].
+    friction : array_like
+        ``mu``.
+    H0 : array_like, optional
+        Equivalent deep-water significant height ``H0'`` [m]: heights by
+        :func:`design_heights` (Goda 2000, Sect. 3.6 and 4.2).
+    H13, Hmax : array_like, optional
+        Heights at the wall given directly (instead of ``H0``).
+    angle_deg, rotation_deg : array_like, optional
+        Wave angle from the normal and its rotation toward the normal
+        (Goda 2000, Sect. 4.2: up to 15 degrees) [degrees].
+    buoyant_weight : array_like, optional
+        ``W'`` [N/m] -- or ``densities``; exactly one of them.
+    densities : Densities, optional
+        Concrete fraction and densities of the caisson.
+    impulsive : bool, optional
+        Takahashi's impulsive coefficient on (default) or off.
+    lambdas : tuple of float, optional
+        ``(lambda1, lambda2, lambda3)`` (Takahashi 2002).
+    hmax_factor : float, optional
+        ``Hmax / (Ks H0')`` outside the surf zone (1.8).
+    rho_w, g : float, optional
+        Sea-water density [kg/m^3], gravity [m/s^2].
+
+    Returns
+    -------
+    CaissonAnalysis
+    """
+    if H0 is not None:
+        if H13 is not None or Hmax is not None:
+            raise ValueError("give either H0 or (H13 and Hmax), not both")
+        heights = design_heights(H0, period, depth, slope, g=g, hmax_factor=hmax_factor)
+    elif H13 is not None and Hmax is not None:
+        heights = given_heights(H13, Hmax, depth, slope)
+    else:
+        raise ValueError("give either H0 or both H13 and Hmax")
+    if (buoyant_weight is None) == (densities is None):
+        raise ValueError("give exactly one of buoyant_weight and densities")
+    pressures = goda_pressures(Hmax=heights.Hmax, period=period, depth=depth, hb=heights.hb,
+                               armour_depth=armour_depth, base_depth=base_depth, crest=crest,
+                               berm_width=berm_width, angle_deg=angle_deg,
+                               rotation_deg=rotation_deg, impulsive=impulsive, lambdas=lambdas,
+                               rho_w=rho_w, g=g)
+    loads = caisson_loads(pressures, base_depth, width)
+    if densities is not None:
+        section = section_from_densities(
+            width, base_depth, crest, concrete_fraction=densities.concrete_fraction,
+            concrete_density=densities.concrete, fill_density=densities.fill,
+            fill_density_above=densities.fill_above, rho_w=rho_w, g=g)
+    else:
+        assert buoyant_weight is not None
+        section = section_from_weight(as_float(buoyant_weight), width, base_depth, crest,
+                                      rho_w=rho_w, g=g)
+    shape = np.broadcast_shapes(loads.P.shape, section.mass.shape, np.shape(friction))
+    section = CaissonSection(*(np.broadcast_to(a, shape) for a in (
+        section.width, section.base_depth, section.crest, section.mass, section.buoyancy,
+        section.buoyant_weight, section.height_cg, section.inertia, section.t)))
+    loads = CaissonLoads(*(np.broadcast_to(a, shape) for a in (loads.P, loads.Mp, loads.U, loads.Mu)))
+    return CaissonAnalysis(heights=heights, pressures=pressures, loads=loads, section=section,
+                           stability=stability(section, loads, friction),
+                           block=equivalent_block(section, loads, friction, g=g))

@@ -1,0 +1,203 @@
+"""The equivalent loaded block of the regime map, and its closed-form rest check.
+
+The regime map (Shenton-type rigid block, half width ``B``, centre of mass
+``C`` at height ``H`` above the base) is driven by a horizontal force
+``F = m g k`` acting at ``k' H`` above ``C`` with Coulomb friction ``mu``.
+A caisson under Goda's wave load maps onto it as follows (this module's own
+derivation; the wave loads are Goda's, Sect. 4.2 of Goda 2000):
+
+* ``m g`` is the DRY weight, ``W' + rho_w g V_submerged`` (``W'`` is Goda's
+  buoyant weight, Sect. 4.3);
+* ``H = H_C`` (height of the centre of mass above the base), ``gamma = H_C/B``;
+* ``k = P / (m g)``; ``k' = (Mp/P - H_C) / H_C`` (``Mp/P`` is the height of
+  the resultant of ``P`` above the base);
+* buoyancy ``beta_b m g = rho_w g V_submerged`` upward through ``C``;
+* uplift ``U = u m g + nu F`` upward at ``x = e_u B`` from ``C`` toward the
+  seaward corner ``O'``: here ``u = 0``, ``nu = U/P`` and, from the uplift
+  moment about the leeward heel, ``e_u = (Mu/U - B)/B`` (1/3 for Goda's
+  triangle);
+* ``F`` pushes toward the leeward corner ``O``; radius of gyration ``i`` with
+  ``I = m B^2 i^2``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from ._types import FloatArray, as_float
+from .caisson import CaissonLoads, CaissonSection
+
+__all__ = ["EquivalentBlock", "RestCheck", "equivalent_block", "static_rest_check"]
+
+
+@dataclass(frozen=True)
+class RestCheck:
+    """Closed-form static check of the loaded block (all arrays).
+
+    Attributes
+    ----------
+    sliding_margin : ndarray
+        ``mu (1 - beta_b - u - nu k) - k``; ``>= 0``: no sliding.
+    overturning_margin : ndarray
+        ``(1 - beta_b) - k (1 + k') gamma - (u + nu k)(1 + e_u)``, restoring
+        minus overturning moment about ``O`` divided by ``m g B``; ``>= 0``:
+        no overturning.
+    no_sliding, no_overturning, at_rest : ndarray of bool
+    """
+
+    sliding_margin: FloatArray
+    overturning_margin: FloatArray
+    no_sliding: npt.NDArray[np.bool_]
+    no_overturning: npt.NDArray[np.bool_]
+    at_rest: npt.NDArray[np.bool_]
+
+
+def static_rest_check(*, k: npt.ArrayLike, mu: npt.ArrayLike, gamma: npt.ArrayLike,
+                      kprime: npt.ArrayLike, beta_b: npt.ArrayLike = 0.0, nu: npt.ArrayLike = 0.0,
+                      e_u: npt.ArrayLike = 0.0, u: npt.ArrayLike = 0.0) -> RestCheck:
+    """Does the loaded block stay at rest? Closed form, vectorised.
+
+    Parameters
+    ----------
+    k : array_like
+        ``F / (m g)``, ``F`` pushing toward the leeward corner ``O``.
+    mu : array_like
+        Friction coefficient.
+    gamma : array_like
+        ``H / B``.
+    kprime : array_like
+        Height of ``F`` above ``C`` in units of ``H``.
+    beta_b : array_like, optional
+        Buoyancy as a fraction of ``m g``, upward through ``C``.
+    nu : array_like, optional
+        Uplift proportional to ``F``: ``nu F``.
+    e_u : array_like, optional
+        Arm of the uplift from ``C`` toward ``O'``, in units of ``B``.
+    u : array_like, optional
+        Uplift independent of ``F``, fraction of ``m g`` (0 for a caisson).
+
+    Returns
+    -------
+    RestCheck
+
+    Notes
+    -----
+    Statics of the rigid block on its base (derived here). The normal force
+    is ``N = m g (1 - beta_b - u - nu k)``, so friction holds while
+    ``mu (1 - beta_b - u - nu k) >= k``. About the leeward corner
+    ``O = (B, -H)``: the net weight ``(1 - beta_b) m g`` restores with arm
+    ``B``; ``F`` overturns with arm ``(1 + k') H``; the uplift overturns with
+    arm ``(1 + e_u) B``. Dividing by ``m g B``: no overturning while
+    ``1 - beta_b >= k (1 + k') gamma + (u + nu k)(1 + e_u)``. For a caisson
+    (``u = 0``) these are exactly Goda's ``SF_s >= 1`` and ``SF_o >= 1``
+    (``t = B``): ``SF_s = mu (1 - beta_b - nu k)/k`` and
+    ``SF_o = ((1 - beta_b) - nu k (1 + e_u)) / (k (1 + k') gamma)``.
+    """
+    k_, mu_, g_, kp, bb, nu_, eu, u_ = np.broadcast_arrays(
+        as_float(k), as_float(mu), as_float(gamma), as_float(kprime), as_float(beta_b),
+        as_float(nu), as_float(e_u), as_float(u))
+    slide = mu_ * (1.0 - bb - u_ - nu_ * k_) - k_
+    over = (1.0 - bb) - k_ * (1.0 + kp) * g_ - (u_ + nu_ * k_) * (1.0 + eu)
+    ns = slide >= 0.0
+    no = over >= 0.0
+    return RestCheck(sliding_margin=np.asarray(slide, dtype=np.float64),
+                     overturning_margin=np.asarray(over, dtype=np.float64),
+                     no_sliding=np.asarray(ns, dtype=np.bool_),
+                     no_overturning=np.asarray(no, dtype=np.bool_),
+                     at_rest=np.asarray(ns & no, dtype=np.bool_))
+
+
+@dataclass(frozen=True)
+class EquivalentBlock:
+    """The caisson as the loaded block of the regime map (arrays).
+
+    Attributes
+    ----------
+    B : ndarray
+        Half width [m].
+    H : ndarray
+        ``H_C``, height of the centre of mass above the base [m].
+    gamma : ndarray
+        ``H_C / B``.
+    k : ndarray
+        ``P / (m g)``, ``m g`` the dry weight.
+    kprime : ndarray
+        ``(Mp/P - H_C)/H_C``.
+    beta_b : ndarray
+        Buoyancy fraction ``rho_w g V_submerged / (m g)``.
+    nu : ndarray
+        ``U / P``.
+    e_u : ndarray
+        ``(Mu/U - B)/B``, arm of the uplift from ``C`` toward ``O'`` in units
+        of ``B``.
+    u : ndarray
+        Uplift independent of ``F`` (0).
+    i : ndarray
+        Radius of gyration in units of ``B``: ``I = m B^2 i^2``
+        (``i^2 = (1 + gamma^2)/3`` for a uniform block).
+    mu : ndarray
+        Friction coefficient.
+    mass : ndarray
+        Dry mass per metre [kg/m].
+    """
+
+    B: FloatArray
+    H: FloatArray
+    gamma: FloatArray
+    k: FloatArray
+    kprime: FloatArray
+    beta_b: FloatArray
+    nu: FloatArray
+    e_u: FloatArray
+    u: FloatArray
+    i: FloatArray
+    mu: FloatArray
+    mass: FloatArray
+
+    def rest_check(self) -> RestCheck:
+        """:func:`static_rest_check` of this block."""
+        return static_rest_check(k=self.k, mu=self.mu, gamma=self.gamma, kprime=self.kprime,
+                                 beta_b=self.beta_b, nu=self.nu, e_u=self.e_u, u=self.u)
+
+
+def equivalent_block(section: CaissonSection, loads: CaissonLoads, friction: npt.ArrayLike,
+                     g: float = 9.81) -> EquivalentBlock:
+    """Map a caisson under Goda's wave loads onto the loaded block.
+
+    Parameters
+    ----------
+    section : CaissonSection
+        Mass properties (its ``buoyancy`` is ``rho_w g V_submerged``).
+    loads : CaissonLoads
+        ``P``, ``Mp``, ``U``, ``Mu`` per metre.
+    friction : array_like
+        ``mu``.
+    g : float, optional
+        Gravitational acceleration [m/s^2]; must be the one used for
+        ``section``.
+
+    Returns
+    -------
+    EquivalentBlock
+        See the module docstring for the definitions.
+    """
+    B = 0.5 * section.width
+    hc_ = section.height_cg
+    mg = section.mass * g
+    with np.errstate(divide="ignore", invalid="ignore"):
+        k = loads.P / mg
+        kprime = (loads.Mp / loads.P - hc_) / hc_
+        nu = loads.U / loads.P
+        e_u = np.where(loads.U > 0.0, (loads.Mu / loads.U - B) / B, 1.0 / 3.0)
+    i = np.sqrt(section.inertia / (section.mass * B * B))
+    mu = np.broadcast_to(as_float(friction), k.shape)
+
+    def f(a: npt.NDArray[np.float64]) -> FloatArray:
+        return np.asarray(a, dtype=np.float64)
+
+    return EquivalentBlock(B=f(B), H=f(hc_), gamma=f(hc_ / B), k=f(k), kprime=f(kprime),
+                           beta_b=f(section.buoyancy / mg), nu=f(nu), e_u=f(e_u),
+                           u=np.zeros(k.shape), i=f(i), mu=f(mu), mass=f(section.mass))
