@@ -1,11 +1,12 @@
-# regimemap: `make figures` regenerates figures/, `make test` runs the tests.
+# regimemap: `make figures` regenerates figures/, `make test` runs the tests,
+# `make lint` runs ruff and mypy, `make bench` the benchmarks.
 # Both create the virtual environment .venv when it is missing.
 PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: all venv figures test bench clean distclean
+.PHONY: all venv figures test lint bench clean distclean
 
 all: figures
 
@@ -23,11 +24,15 @@ figures: $(STAMP)
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
 
+lint: $(STAMP)
+	$(BIN)/ruff check src tests bench
+	$(BIN)/mypy
+
 bench: $(STAMP)
 	$(BIN)/python bench/bench.py
 
 clean:
-	rm -rf .pytest_cache .hypothesis build src/*.egg-info
+	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache build src/*.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +
 
 distclean: clean

@@ -7,7 +7,6 @@ import pytest
 from PIL import Image
 
 from regimemap import Parameters
-from regimemap.io.figures import write_animation, write_atlas
 from regimemap.drawing.atlas import (
     MAX_FRAMES,
     MAX_PANELS,
@@ -18,8 +17,9 @@ from regimemap.drawing.atlas import (
     shared_extent,
     sweep_extent,
 )
-from regimemap.mechanics.validation import check_gamma, check_kprime
+from regimemap.io.figures import write_animation, write_atlas
 from regimemap.maps.view import auto_extent
+from regimemap.mechanics.validation import check_gamma, check_kprime
 
 
 def _panels(fig):

@@ -6,9 +6,9 @@ import pytest
 from click.testing import CliRunner
 from PIL import Image
 
-from regimemap.drawing import atlas as atlas_mod
 from regimemap.cli import atlas as cli_atlas
 from regimemap.cli import cli
+from regimemap.drawing import atlas as atlas_mod
 
 
 def run(*args: str):

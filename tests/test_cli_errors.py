@@ -32,7 +32,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from regimemap.cli import cli, main
-from regimemap.cli._common import run_main
 
 from .conftest import invoke_cli
 
@@ -432,7 +431,7 @@ class WriteFailure:
         self.fired = False
         self._real_open = builtins.open
 
-    def install(self, monkeypatch) -> "WriteFailure":
+    def install(self, monkeypatch) -> WriteFailure:
         monkeypatch.setattr(builtins, "open", self.open)
         monkeypatch.setattr(io, "open", self.open)
         return self

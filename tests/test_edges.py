@@ -10,12 +10,12 @@ its documented tie rule (the lower case at a threshold).
 from __future__ import annotations
 
 import math
-import warnings
 
 import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Case, Mode, Parameters, classify, label_grid
+from regimemap.maps.geometry import breakpoints, region_polygons
 from regimemap.mechanics.curves import (
     dotted_line,
     lower_line,
@@ -25,7 +25,6 @@ from regimemap.mechanics.curves import (
     named_points,
     upper_line,
 )
-from regimemap.maps.geometry import breakpoints, region_polygons
 from regimemap.mechanics.solver import admissible
 from regimemap.mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
 

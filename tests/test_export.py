@@ -9,7 +9,6 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify
-from regimemap.mechanics.curves import named_points
 from regimemap.io.export import (
     DEFAULT_RESOLUTION,
     boundary_curves,
@@ -19,8 +18,9 @@ from regimemap.io.export import (
     map_geometry,
     map_grid,
 )
-from regimemap.mechanics.validation import MAX_RESOLUTION
 from regimemap.maps.view import auto_extent
+from regimemap.mechanics.curves import named_points
+from regimemap.mechanics.validation import MAX_RESOLUTION
 
 CASES = [(3.0, 0.4), (3.0, 0.9), (1.0, 0.0), (3.0, -0.2), (3.0, -0.6), (2.0, -1.0), (0.5, 1.0)]
 

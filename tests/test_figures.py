@@ -8,9 +8,9 @@ import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters
 from regimemap.drawing.presets import FIGURE_IDS, PRESETS, get_preset, suggest_ids
-from regimemap.mechanics.block import Case
-from regimemap.maps.view import auto_extent
 from regimemap.maps.mapdata import compute_map
+from regimemap.maps.view import auto_extent
+from regimemap.mechanics.block import Case
 
 EXPECTED_IDS = ("3.1", "3.2", "3.3a", "3.3b", "3.4", "3.5", "3.6a", "3.6b", "3.7", "3.8",
                 "3.9a", "3.9b", "3.10", "3.11", "4.2", "4.3", "4.4a", "4.4b", "4.5a", "4.5b",

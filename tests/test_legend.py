@@ -140,8 +140,8 @@ def test_ambiguity_overlay_keeps_the_key():
     """draw_ambiguity rebuilds the legend with one more entry; swatches and symbols stay."""
     from matplotlib.text import Text
 
-    from regimemap.drawing.key import ModeSwatch
     from regimemap.drawing.ambiguity import LEGEND_LABEL, draw_ambiguity
+    from regimemap.drawing.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, -0.6), k_max=4.0, mu_max=3.0)
     before = [(type(c[0]), [x.get_text() for x in c if isinstance(x, Text)])
@@ -154,8 +154,8 @@ def test_ambiguity_overlay_keeps_the_key():
 
 
 def test_atlas_key_has_every_mode():
-    from regimemap.drawing.key import ModeSwatch
     from regimemap.drawing.atlas import atlas_figure
+    from regimemap.drawing.key import ModeSwatch
 
     fig = atlas_figure([3.0], [-0.3, 0.4], samples=101)
     (leg,) = fig.legends

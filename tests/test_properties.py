@@ -16,7 +16,7 @@ from hypothesis import assume, given, note
 from hypothesis import strategies as st
 
 from regimemap import MAP_MODES, Mode, Parameters, classify, label_grid
-from regimemap.mechanics.solver import TOLERANCE, Hypothesis, admissible, solve
+from regimemap.mechanics.solver import Hypothesis, admissible, solve
 
 MAP_CODES = {int(m) for m in MAP_MODES}
 

@@ -12,11 +12,6 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
-from regimemap.drawing.presets import PRESETS
-from regimemap.io.points import DesignPoint
-from regimemap.drawing.save import FORMATS, format_from_path
-from regimemap.drawing.style import MODE_STYLE
-from regimemap.io.figures import save_figure
 from regimemap.drawing.mapplot import (
     MapArtists,
     draw_design_points,
@@ -26,6 +21,11 @@ from regimemap.drawing.mapplot import (
     render_map,
     render_preset,
 )
+from regimemap.drawing.presets import PRESETS
+from regimemap.drawing.save import FORMATS, format_from_path
+from regimemap.drawing.style import MODE_STYLE
+from regimemap.io.figures import save_figure
+from regimemap.io.points import DesignPoint
 
 ALL_MODE_IDS = ("3.9a", "3.9b", "3.10", "3.11", "4.7a", "4.7b")
 
@@ -340,7 +340,7 @@ def test_point_names_never_overlap(gamma):
 def test_point_offsets_for_crowded_axis_points():
     from types import SimpleNamespace as P
 
-    from regimemap.drawing.mapplot import _ABOVE, _LEFT_OF, _RIGHT_OF, _POINT_OFFSET, _point_offsets
+    from regimemap.drawing.mapplot import _ABOVE, _LEFT_OF, _POINT_OFFSET, _RIGHT_OF, _point_offsets
 
     frame = P(k_max=1.0, w_pt=400.0)  # 1 unit of k = 400 points
     pts = {"O": P(k=0.0, mu=0.0), "F": P(k=0.50, mu=0.0), "E": P(k=0.51, mu=0.0),

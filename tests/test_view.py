@@ -12,10 +12,16 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from regimemap import Mode, Parameters, classify
-from regimemap.mechanics.curves import named_points
-from regimemap.maps.view import auto_extent, nice_ceil, simplify
-from regimemap.drawing.placement import box_hits, curve_label_anchor, interior_point, label_anchor, view_points
+from regimemap.drawing.placement import (
+    box_hits,
+    curve_label_anchor,
+    interior_point,
+    label_anchor,
+    view_points,
+)
 from regimemap.maps.mapdata import compute_map
+from regimemap.maps.view import auto_extent, nice_ceil, simplify
+from regimemap.mechanics.curves import named_points
 
 # -- helpers ---------------------------------------------------------------------------------
 

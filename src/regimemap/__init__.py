@@ -13,8 +13,8 @@ from __future__ import annotations
 
 from ._version import __version__
 from .maps.classify import PRIORITY, classify, label_grid
-from .mechanics.modes import MAP_MODES, Mode
 from .mechanics.block import Case, Parameters
+from .mechanics.modes import MAP_MODES, Mode
 from .mechanics.solver import Hypothesis, admissible
 
 __all__ = [

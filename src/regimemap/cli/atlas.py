@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 import click
-
 
 from ._common import RunError, gamma_option, import_matplotlib, output_path, positive_float
 

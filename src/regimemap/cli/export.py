@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import click
 
-
 from ._common import RunError, gamma_option, kprime_option, output_path, positive_float, resolution_type
 
 __all__ = ["export_cmd"]

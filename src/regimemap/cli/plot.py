@@ -7,11 +7,11 @@ fast); the commands import :mod:`regimemap.render` when they run.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
 import click
-
 
 from ._common import (
     RunError,

@@ -9,7 +9,6 @@ from typing import Any
 
 import click
 
-
 from ._common import RunError, gamma_option, kprime_option, output_path
 
 __all__ = ["classify_cmd"]

@@ -18,13 +18,14 @@ from __future__ import annotations
 
 import math
 import os
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Callable, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.block import Parameters
+from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.validation import check_gamma, check_kprime
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -99,7 +100,7 @@ def parse_values(text: str, name: str, check: Callable[[float], float],
     >>> parse_values("1, 2,3", "gamma", check_gamma)
     [1.0, 2.0, 3.0]
     """
-    syntax = f"a list like 1,2,3 or a range start:stop:count like -1:1:41"
+    syntax = "a list like 1,2,3 or a range start:stop:count like -1:1:41"
     s = text.strip()
     if not s:
         raise ValueError(f"{name}: empty; give {syntax}")
@@ -216,7 +217,7 @@ def _panel_title(g: float, kp: float) -> str:
 def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
                  k_max: float | None = None, mu_max: float | None = None,
                  panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
-                 dpi: float = 150, curves: bool = True, labels: bool = True) -> "Figure":
+                 dpi: float = 150, curves: bool = True, labels: bool = True) -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k'.
 
     Parameters
@@ -279,8 +280,8 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     with style_context():
         fig = Figure(figsize=(fw, fh), dpi=dpi)
         FigureCanvasAgg(fig)
-        shared: "Axes | None" = None
-        row_first: "Axes | None" = None
+        shared: Axes | None = None
+        row_first: Axes | None = None
         for i, g in enumerate(gammas):
             for j, kp in enumerate(kprimes):
                 x0 = (left + j * (pw + wspace)) / fw

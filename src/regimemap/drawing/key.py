@@ -17,7 +17,8 @@ This module imports matplotlib; :mod:`regimemap.render` and
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Sequence
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
 
 from matplotlib.legend_handler import HandlerBase, HandlerLine2D
 from matplotlib.lines import Line2D
@@ -58,9 +59,9 @@ class ModeSwatch(Rectangle):
 class _HandlerModeSwatch(HandlerBase):
     """Draws a :class:`ModeSwatch`: the swatch, then the symbol on the label's baseline."""
 
-    def create_artists(self, legend: "Legend", orig_handle: Any, xdescent: float,
+    def create_artists(self, legend: Legend, orig_handle: Any, xdescent: float,
                        ydescent: float, width: float, height: float, fontsize: float,
-                       trans: "Transform") -> list[Any]:
+                       trans: Transform) -> list[Any]:
         swatch_w = min(width, SWATCH * fontsize)
         swatch = ModeSwatch(orig_handle.mode, (-xdescent, -ydescent), swatch_w, height)
         self.update_prop(swatch, orig_handle, legend)
@@ -77,7 +78,7 @@ class _HandlerModeSwatch(HandlerBase):
 class _HandlerKeyLine(HandlerLine2D):
     """A line sample as long as the swatches (the symbol column stays empty)."""
 
-    def get_xdata(self, legend: "Legend", xdescent: float, ydescent: float, width: float,
+    def get_xdata(self, legend: Legend, xdescent: float, ydescent: float, width: float,
                   height: float, fontsize: float) -> tuple[Any, Any]:
         return super().get_xdata(legend, xdescent, ydescent, min(width, SWATCH * fontsize),
                                  height, fontsize)
@@ -123,7 +124,7 @@ def key_handles(modes: Sequence[Mode], *, hatches: bool = True, boundary: bool =
     return handles
 
 
-def key_legend(target: Any, handles: Sequence[Any], **kwargs: Any) -> "Legend":
+def key_legend(target: Any, handles: Sequence[Any], **kwargs: Any) -> Legend:
     """Add the key to ``target`` (an Axes or a Figure): ``target.legend`` with the handlers."""
     kw: dict[str, Any] = {"handlelength": HANDLELENGTH, "handler_map": HANDLER_MAP}
     kw.update(kwargs)

@@ -19,18 +19,19 @@ vector paths in SVG and PDF.
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any, Iterable, Iterator, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..mechanics.modes import MAP_MODES, Mode
-from .save import DEFAULT_DPI
-from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol, style_context, text_size
-from ..mechanics.block import Parameters
 from ..maps.geometry import DEFAULT_SAMPLES
 from ..maps.mapdata import MapData, compute_map
+from ..mechanics.block import Parameters
+from ..mechanics.modes import MAP_MODES, Mode
 from .placement import curve_label_anchor, interior_point, label_anchor, leader_label_anchor, view_points
+from .save import DEFAULT_DPI
+from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol, style_context, text_size
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
@@ -41,8 +42,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.patches import Patch
     from matplotlib.text import Text
 
-    from .presets import FigurePreset
     from ..maps.points import DesignPoint
+    from .presets import FigurePreset
 
 __all__ = [
     "ModeStyle",
@@ -99,15 +100,15 @@ class MapArtists:
     """
 
     data: MapData
-    fills: dict[Mode, list["Patch"]] = field(default_factory=dict)
-    curves: dict[str, list["Line2D"]] = field(default_factory=dict)
-    curve_labels: dict[str, "Text"] = field(default_factory=dict)
-    region_labels: dict[Mode, list["Text"]] = field(default_factory=dict)
-    point_markers: dict[str, "Line2D"] = field(default_factory=dict)
-    point_labels: dict[str, "Text"] = field(default_factory=dict)
-    legend: "Legend | None" = None
-    title: "Text | None" = None
-    extra: list["Artist"] = field(default_factory=list)
+    fills: dict[Mode, list[Patch]] = field(default_factory=dict)
+    curves: dict[str, list[Line2D]] = field(default_factory=dict)
+    curve_labels: dict[str, Text] = field(default_factory=dict)
+    region_labels: dict[Mode, list[Text]] = field(default_factory=dict)
+    point_markers: dict[str, Line2D] = field(default_factory=dict)
+    point_labels: dict[str, Text] = field(default_factory=dict)
+    legend: Legend | None = None
+    title: Text | None = None
+    extra: list[Artist] = field(default_factory=list)
 
     @property
     def extent(self) -> tuple[float, float]:
@@ -170,7 +171,7 @@ _RIGHT_OF = (3.0, 3.0, "left", "bottom")
 _ABOVE = (0.0, 7.0, "center", "bottom")
 
 
-def _point_offsets(points: dict[str, Any], frame: "_Frame"
+def _point_offsets(points: dict[str, Any], frame: _Frame
                    ) -> dict[str, tuple[float, float, str, str]]:
     """Offsets of the point names; names of points close together on the k axis kept apart.
 
@@ -205,7 +206,7 @@ _CURVE_FS = 10.0
 class _Frame:
     """Conversions between data, view fractions and points for one Axes (no drawing)."""
 
-    def __init__(self, ax: "Axes", k_max: float, mu_max: float):
+    def __init__(self, ax: Axes, k_max: float, mu_max: float):
         w_in, h_in = ax.figure.get_size_inches()
         pos = ax.get_position()
         self.w_pt = 72.0 * w_in * pos.width
@@ -234,7 +235,7 @@ def _no_zero_formatter() -> Any:
     return NoZeroFormatter()
 
 
-def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
+def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
              mu_max: float | None = None, modes: Iterable[Mode] | None = None,
              raw: bool = False, curves: bool = True, labels: bool = True,
              legend: bool = True, title: str | None = None, samples: int = DEFAULT_SAMPLES,
@@ -418,9 +419,9 @@ def draw_map(ax: "Axes", params: Parameters, *, k_max: float | None = None,
     return out
 
 
-def _curve_label(ax: "Axes", frame: _Frame, cd: Any,
+def _curve_label(ax: Axes, frame: _Frame, cd: Any,
                  obstacles: list[tuple[float, float, float, float]],
-                 lines: Sequence[np.ndarray]) -> "Text | None":
+                 lines: Sequence[np.ndarray]) -> Text | None:
     """Write a curve's label beside it, clear of the lines and of the other labels."""
     k_max, mu_max = frame.k_max, frame.mu_max
     size = text_size(cd.label, _CURVE_FS)
@@ -461,9 +462,9 @@ def _point_along(pts: np.ndarray, k_max: float, mu_max: float, frac: float
     return float(q[i, 0] * k_max), float(q[i, 1] * mu_max)
 
 
-def _leader_label(ax: "Axes", frame: _Frame, mode: Mode, poly: np.ndarray,
+def _leader_label(ax: Axes, frame: _Frame, mode: Mode, poly: np.ndarray,
                   obstacles: list[tuple[float, float, float, float]],
-                  lines: Sequence[np.ndarray]) -> "Text | None":
+                  lines: Sequence[np.ndarray]) -> Text | None:
     """Label a region too thin to hold its symbol, with an arrow pointing into it."""
     target = interior_point(poly, frame.k_max, frame.mu_max)
     if target is None:
@@ -487,8 +488,8 @@ def _leader_label(ax: "Axes", frame: _Frame, mode: Mode, poly: np.ndarray,
 # -- design points ---------------------------------------------------------------------------
 
 
-def draw_design_points(ax: "Axes", points: Sequence["DesignPoint"], *, fontsize: float = 8.5
-                       ) -> list["Artist"]:
+def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: float = 8.5
+                       ) -> list[Artist]:
     """Mark design points on a map: a black dot with a white rim and the point's name.
 
     Black with a white rim and a white-backed name reads on every fill colour,
@@ -541,7 +542,7 @@ def _size_for(rows: int, left: float = _LEFT
     return w, h, (left / w, bottom / h, _AX_W / w, _AX_H / h)
 
 
-def _left_margin(ax: "Axes") -> float:
+def _left_margin(ax: Axes) -> float:
     """Left margin (inches) that fits the mu tick labels and the axis label, without drawing."""
     lo, hi = ax.get_ylim()
     locs = [v for v in ax.yaxis.get_major_locator().tick_values(lo, hi) if lo <= v <= hi]
@@ -556,7 +557,7 @@ def _left_margin(ax: "Axes") -> float:
 
 
 def new_figure(figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
-               fig: "Figure | None" = None) -> tuple["Figure", "Axes"]:
+               fig: Figure | None = None) -> tuple[Figure, Axes]:
     """A Figure (Agg canvas, no pyplot) with one map Axes.
 
     Parameters
@@ -597,7 +598,7 @@ def new_figure(figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_
     return fig, ax
 
 
-def fit_figure(fig: "Figure", ax: "Axes") -> None:
+def fit_figure(fig: Figure, ax: Axes) -> None:
     """Resize a map figure so the legend below the axes fits; the axes keep their size.
 
     Call it again after adding legend entries (e.g. after
@@ -616,9 +617,9 @@ def fit_figure(fig: "Figure", ax: "Axes") -> None:
 
 
 def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None,
-               dpi: float = DEFAULT_DPI, points: Sequence["DesignPoint"] = (),
-               fig: "Figure | None" = None, **kwargs: Any
-               ) -> tuple["Figure", "Axes", MapArtists]:
+               dpi: float = DEFAULT_DPI, points: Sequence[DesignPoint] = (),
+               fig: Figure | None = None, **kwargs: Any
+               ) -> tuple[Figure, Axes, MapArtists]:
     """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
 
     ``kwargs`` go to :func:`draw_map`; design ``points`` are marked with
@@ -637,14 +638,14 @@ def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None
     return fig, ax, artists
 
 
-def render_map(params: Parameters, **kwargs: Any) -> "Figure":
+def render_map(params: Parameters, **kwargs: Any) -> Figure:
     """A Figure with the map of ``params`` (see :func:`map_figure` and :func:`draw_map`)."""
     return map_figure(params, **kwargs)[0]
 
 
-def render_preset(preset: "FigurePreset | str", *, dpi: float = DEFAULT_DPI,
-                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: "Figure | None" = None
-                  ) -> "Figure":
+def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
+                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+                  ) -> Figure:
     """A Figure of one of the report's figures (:mod:`regimemap.figures`).
 
     Pass the previous figure as ``fig`` to reuse it (faster for many figures).

@@ -19,11 +19,11 @@ from __future__ import annotations
 
 import difflib
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
-from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.block import Case, Parameters
+from ..mechanics.modes import MAP_MODES, Mode
 
 __all__ = ["FigurePreset", "PRESETS", "FIGURE_IDS", "get_preset", "suggest_ids"]
 

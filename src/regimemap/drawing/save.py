@@ -9,8 +9,9 @@ from __future__ import annotations
 
 import contextlib
 import os
+from collections.abc import Iterator
 from pathlib import Path
-from typing import IO, TYPE_CHECKING, Any, Iterator
+from typing import IO, TYPE_CHECKING, Any
 
 from .style import style_context
 
@@ -62,7 +63,7 @@ def metadata(fmt: str) -> dict[str, Any]:
     return {}
 
 
-def print_figure(fig: "Figure", target: str | os.PathLike[str] | IO[bytes], fmt: str,
+def print_figure(fig: Figure, target: str | os.PathLike[str] | IO[bytes], fmt: str,
                  dpi: float | None = None) -> None:
     """Write ``fig`` in format ``fmt`` to ``target`` (a path or a binary file), byte-stable.
 

@@ -10,8 +10,9 @@ and PDF, TrueType fonts in PDF) without touching matplotlib's globals.
 from __future__ import annotations
 
 import contextlib
+from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any, Iterator
+from typing import Any
 
 from ..mechanics.modes import Mode
 

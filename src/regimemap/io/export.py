@@ -33,19 +33,20 @@ from __future__ import annotations
 import json
 import math
 import os
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
-from .atomic import atomic_open
 from ..maps.ambiguity import ambiguous_regions
 from ..maps.classify import label_grid
-from ..mechanics.curves import map_curves, named_points
 from ..maps.geometry import DEFAULT_SAMPLES, region_polygons
-from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.block import Parameters
+from ..mechanics.curves import map_curves, named_points
+from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
+from .atomic import atomic_open
 
 __all__ = [
     "FORMATS",

@@ -8,8 +8,9 @@ write that fails half-way leaves nothing behind and never a half-written file.
 from __future__ import annotations
 
 import os
+from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Sequence
+from typing import TYPE_CHECKING, Any
 
 from .atomic import atomic_path
 
@@ -19,7 +20,7 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["save_figure", "write_animation", "write_atlas"]
 
 
-def save_figure(fig: "Figure", path: str | os.PathLike[str], fmt: str | None = None,
+def save_figure(fig: Figure, path: str | os.PathLike[str], fmt: str | None = None,
                 dpi: float | None = None) -> Path:
     """Write ``fig`` to ``path`` atomically (temporary file in the same folder, then rename).
 

@@ -29,9 +29,9 @@ from typing import Any
 
 import numpy as np
 
-from .geometry import DEFAULT_SAMPLES, bisect_edge, raw_intervals, sample_k
-from ..mechanics.modes import MAP_MODES, PRIORITY, Mode
 from ..mechanics.block import Parameters
+from ..mechanics.modes import MAP_MODES, PRIORITY, Mode
+from .geometry import DEFAULT_SAMPLES, bisect_edge, raw_intervals, sample_k
 
 __all__ = [
     "AmbiguousRegion",

@@ -12,13 +12,13 @@ a staircase.  Nothing here imports matplotlib.
 from __future__ import annotations
 
 import math
-from typing import Callable, Iterable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 
+from ..mechanics.block import Parameters
 from ..mechanics.constants import mu_star_signed, mu_star_star, thresholds
 from ..mechanics.modes import MAP_MODES, Mode
-from ..mechanics.block import Parameters
 
 __all__ = [
     "DEFAULT_SAMPLES",

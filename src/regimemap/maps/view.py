@@ -8,7 +8,7 @@ nice number and :func:`simplify` thins polylines to what a figure can show.
 from __future__ import annotations
 
 import math
-from typing import Iterable
+from collections.abc import Iterable
 
 import numpy as np
 

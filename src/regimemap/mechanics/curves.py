@@ -17,8 +17,9 @@ line* ``1/gamma - k k'``; DC is the *lower line* ``-1/gamma - k k'``.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Callable, Literal
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray

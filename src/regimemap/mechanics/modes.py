@@ -55,7 +55,7 @@ class Mode(IntEnum):
         return _LABELS[self][2]
 
     @classmethod
-    def from_label(cls, label: str) -> "Mode":
+    def from_label(cls, label: str) -> Mode:
         """Return the mode whose :attr:`label` is ``label`` (case-insensitive).
 
         Raises

@@ -12,15 +12,15 @@ Every predicate is cross-checked against the independent solver
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike
 
 from . import constants as C
+from .block import Parameters
 from .curves import dotted_line_344, lower_line, mu_star, mu_star_signed, mu_star_star, upper_line
 from .modes import Mode
-from .block import Parameters
 
 __all__ = [
     "rest_region",
