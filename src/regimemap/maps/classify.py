@@ -49,7 +49,7 @@ _RE, _SL, _RO, _SM, _SP, _SPM = (np.uint8(m) for m in (
 
 def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
     """gamma and kprime as floats (scalars) or float arrays, each value checked."""
-    out = []
+    out: list[Any] = []
     for name, value, check in (("gamma", gamma, check_gamma), ("kprime", kprime, check_kprime)):
         if np.ndim(value) == 0:
             out.append(check(value.item() if isinstance(value, np.ndarray) else value))
@@ -71,7 +71,7 @@ def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
 
 def _broadcast(*arrays: Any) -> list[np.ndarray]:
     try:
-        return np.broadcast_arrays(*arrays)
+        return list(np.broadcast_arrays(*arrays))
     except ValueError:
         shapes = ", ".join(f"{n} {np.shape(a)}" for n, a in zip(("k", "mu", "gamma", "kprime"), arrays))
         raise ValueError(f"k, mu, gamma and kprime must broadcast to one shape, got {shapes}") from None
@@ -131,7 +131,7 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
     np.copyto(out, _SL, where=mu <= upper)
     np.copyto(out, _SPM, where=mu < lower)
     np.copyto(out, _RE, where=(mu >= k) & rest_ok)
-    return out
+    return np.asarray(out)
 
 
 def column_segments(k: np.ndarray, mu_sorted: np.ndarray, gamma: float, kprime: float
@@ -207,6 +207,7 @@ def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: floa
     if mu_axis.size == 0 or k_axis.size == 0:
         return np.empty((mu_axis.size, k_axis.size), dtype=np.uint8)
     diffs = np.diff(mu_axis)
+    order: str | np.ndarray | None
     if np.all(diffs >= 0):
         order = None
         mu_sorted = mu_axis

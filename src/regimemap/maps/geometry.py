@@ -49,15 +49,13 @@ def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, I
     e1 = np.minimum(np.maximum(lower, 0.0), e4)
     e2 = np.minimum(np.maximum(upper, e1), e4)
     e3 = np.minimum(np.maximum(mu_s, e2), e4)
-    cap = lambda v: np.clip(v, 0.0, mu_cap)  # noqa: E731
-    e1, e2, e3, e4c = cap(e1), cap(e2), cap(e3), cap(e4)
-    sro = (e2, e3)
-    empty = (e3, e3)
+    e1, e2, e3, e4c = (np.clip(v, 0.0, mu_cap) for v in (e1, e2, e3, e4))
     return {
         Mode.SRO_PRIME_MINUS: (np.zeros_like(k), e1),
         Mode.SL: (e1, e2),
-        Mode.SRO_MINUS: tuple(np.where(f_pos, s, e) for s, e in zip(sro, empty)),  # type: ignore[dict-item]
-        Mode.SRO_PLUS: tuple(np.where(f_pos, e, s) for s, e in zip(sro, empty)),  # type: ignore[dict-item]
+        # the slide-rock run (e2, e3) is SRO- where f_x >= 0 and SRO+ elsewhere
+        Mode.SRO_MINUS: (np.where(f_pos, e2, e3), e3),
+        Mode.SRO_PLUS: (np.where(f_pos, e3, e2), e3),
         Mode.RO: (e3, e4c),
         Mode.RE: (e4c, np.full_like(k, mu_cap)),
     }
@@ -179,15 +177,15 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
     out: dict[Mode, list[np.ndarray]] = {}
     for mode in modes:
         lo, hi = cols[mode]
-        present = (hi - lo) > 0.0
+        columns = (hi - lo) > 0.0
         polys: list[np.ndarray] = []
-        if present.any():
-            idx = np.flatnonzero(present)
+        if columns.any():
+            idx = np.flatnonzero(columns)
             runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
 
             def present(kk: float, mode: Mode = mode) -> bool:
-                l, h = intervals(np.array([kk]))[mode]
-                return bool(h[0] - l[0] > 0.0)
+                lo1, hi1 = intervals(np.array([kk]))[mode]
+                return bool(hi1[0] - lo1[0] > 0.0)
 
             for run in runs:
                 ks = list(k[run])
@@ -197,8 +195,8 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
                 if i1 < k.size - 1:
                     ks.append(bisect_edge(present, k[i1], k[i1 + 1]))
                 kk = np.asarray(ks)
-                l, h = intervals(kk)[mode]
-                poly = np.concatenate([np.column_stack([kk, l]), np.column_stack([kk[::-1], h[::-1]])])
+                lo_k, hi_k = intervals(kk)[mode]
+                poly = np.concatenate([np.column_stack([kk, lo_k]), np.column_stack([kk[::-1], hi_k[::-1]])])
                 polys.append(poly)
         out[mode] = polys
     return out

@@ -110,11 +110,11 @@ def _boundary_flags(p: Parameters, pts: np.ndarray, vertical: bool, raw: bool,
         d = 1e-6 * k_max
         a = _side_key(p, mid[:, 0] - d, mid[:, 1], raw, modes)
         b = _side_key(p, mid[:, 0] + d, mid[:, 1], raw, modes)
-        return a != b
+        return np.asarray(a != b)
     d = 1e-6 * mu_max
     up = _side_key(p, mid[:, 0], mid[:, 1] + d, raw, modes)
     down = _side_key(p, mid[:, 0], mid[:, 1] - d, raw, modes)
-    flags = up != down
+    flags = np.asarray(up != down)
     # On the k axis itself there is nothing below: not a boundary of the map.
     flags &= mid[:, 1] > 2.0 * d
     return flags
@@ -283,6 +283,10 @@ class MapData:
         return (0.0, self.k_max, 0.0, self.mu_max)
 
 
+def _point(xy: np.ndarray) -> tuple[float, float]:
+    return (float(xy[0]), float(xy[1]))
+
+
 def _on_polyline(pt: tuple[float, float], pts: np.ndarray, scale: tuple[float, float],
                  tol: float = 2e-3) -> bool:
     q = np.asarray(pt) / scale
@@ -360,7 +364,8 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
             # simplify each boundary / construction run on its own, so runs keep their ends
             cut = np.flatnonzero(np.diff(flags.astype(np.int8))) + 1
             bounds = np.concatenate([[0], cut, [len(pts) - 1]])
-            pieces, piece_flags = [], []
+            pieces: list[np.ndarray] = []
+            piece_flags: list[np.ndarray] = []
             for i, j in zip(bounds[:-1], bounds[1:]):
                 if j > i:
                     sub = simplify(pts[i:j + 1], tolerance, scale)
@@ -390,13 +395,13 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
         # names at the far ends of lines (as in the report's sketches)
         if p.above:
             if "AB" in curve_data:
-                ends["B"] = tuple(curve_data["AB"].points[-1])  # type: ignore[assignment]
+                ends["B"] = _point(curve_data["AB"].points[-1])
         else:
             if "AB" in curve_data and len(curve_data["AB"].points):
-                ends["B"] = tuple(curve_data["AB"].points[-1])  # type: ignore[assignment]
+                ends["B"] = _point(curve_data["AB"].points[-1])
             if "DC" in curve_data and len(curve_data["DC"].points):
-                ends["C"] = tuple(curve_data["DC"].points[-1])  # type: ignore[assignment]
+                ends["C"] = _point(curve_data["DC"].points[-1])
             if "C'" in points and "mu_star" in curve_data:
-                ends["C''"] = tuple(curve_data["mu_star"].points[-1])  # type: ignore[assignment]
+                ends["C''"] = _point(curve_data["mu_star"].points[-1])
     return MapData(p, float(k_max), float(mu_max), modes_t, bool(raw), polys, curve_data,
                    points, ends)

@@ -259,9 +259,9 @@ def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndar
         if not active.any():
             break
         idx = np.flatnonzero(active)
-        l, h = lo[idx], hi[idx]
-        mid = l + 0.5 * (h - l)
-        stuck = (mid == l) | (mid == h)
+        lo_i, hi_i = lo[idx], hi[idx]
+        mid = lo_i + 0.5 * (hi_i - lo_i)
+        stuck = (mid == lo_i) | (mid == hi_i)
         go = ~stuck
         if go.any():
             ii = idx[go]

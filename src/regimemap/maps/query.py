@@ -227,10 +227,9 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
         hyp = next((h for h in hyps if responses[h].ok[i]), hyps[0])
         r = responses[hyp]
         solvable = bool(r.solvable[i])
-        nan = math.nan
 
-        def val(arr: np.ndarray) -> float:
-            return float(arr[i]) if solvable else nan
+        def val(arr: np.ndarray, i: int = i, solvable: bool = solvable) -> float:
+            return float(arr[i]) if solvable else math.nan
 
         slip = None if hyp.sigma == 0 or not solvable else float(r.slip[i])
         lift = None if hyp.contact == "full" or not solvable else float(r.lift[i])
@@ -338,7 +337,7 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
     for i, pt in enumerate(points, start=1):
         if not isinstance(pt, DesignPoint):
             try:
-                kk, mm = pt  # type: ignore[misc]
+                kk, mm = pt
             except (TypeError, ValueError):
                 raise ValueError(f"point {i}: expected a DesignPoint or a (k, mu) pair, "
                                  f"got {pt!r}") from None

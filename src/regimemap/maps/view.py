@@ -74,7 +74,7 @@ def simplify(points: np.ndarray, tol: float, scale: tuple[float, float] = (1.0, 
     pts = np.asarray(points, dtype=np.float64)
     n = len(pts)
     if n <= 2:
-        return pts.copy()
+        return np.array(pts)
     q = pts / np.asarray(scale, dtype=np.float64)
     keep = np.zeros(n, dtype=bool)
     keep[0] = keep[-1] = True

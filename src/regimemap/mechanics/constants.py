@@ -30,7 +30,7 @@ and the lines of the k-mu plane are::
 from __future__ import annotations
 
 import math
-from typing import NamedTuple, TypeVar
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -64,8 +64,9 @@ __all__ = [
     "upper_line",
 ]
 
-#: A float or an array of floats: the closed forms accept and return either.
-Num = TypeVar("Num", float, NDArray[np.float64])
+#: A float or an array of floats: the closed forms are written once for both
+#: (numpy broadcasting), so their arguments and results are typed loosely.
+Num = Any
 
 FloatArray = NDArray[np.float64]
 
@@ -93,7 +94,7 @@ def coefficients(gamma: Num, kprime: Num) -> tuple[Num, Num, Num, Num]:
     b = 3.0 * gamma
     c = 3.0 * gamma * (1.0 + kprime)
     d = 1.0 + 4.0 * g2
-    return a, b, c, d  # type: ignore[return-value]
+    return a, b, c, d
 
 
 # -- points and thresholds of k' (scalars) --------------------------------------------------
@@ -203,17 +204,17 @@ def rock_possible(k: Num, gamma: Num, kprime: Num) -> NDArray[np.bool_]:
 
 def upper_line(k: Num, gamma: Num, kprime: Num) -> Num:
     """mu = 1/gamma - k k': CD above C (Section III.2), AB below C (4.21); xi = -B on it."""
-    return 1.0 / gamma - k * kprime  # type: ignore[return-value]
+    return 1.0 / gamma - k * kprime
 
 
 def lower_line(k: Num, gamma: Num, kprime: Num) -> Num:
     """mu = -1/gamma - k k' = -1/gamma + k|k'|: DC (4.20); xi = +B (at O') on it."""
-    return -1.0 / gamma - k * kprime  # type: ignore[return-value]
+    return -1.0 / gamma - k * kprime
 
 
 def dotted_line(k: Num, kprime: float) -> Num:
     """mu = k|k'| (4.22): in sliding xi <= 0 above it and xi >= 0 below it."""
-    return k * abs(kprime)  # type: ignore[return-value]
+    return k * abs(kprime)
 
 
 def dotted_line_344(k: Num, gamma: float, kprime: float) -> Num:
@@ -223,12 +224,12 @@ def dotted_line_344(k: Num, gamma: float, kprime: float) -> Num:
 
 def mu_star_signed(k: Num, a: Num, b: Num, c: Num, d: Num) -> Num:
     """(ak+b)/(ck+d) = f_x/f_y of rocking about O, (3.22)-(3.23), (4.38)-(4.39); mu* where >= 0."""
-    return (a * k + b) / (c * k + d)  # type: ignore[return-value]
+    return (a * k + b) / (c * k + d)
 
 
 def mu_star(k: Num, a: Num, b: Num, c: Num, d: Num) -> Num:
     """mu*(k) = |ak+b|/(ck+d), (3.24) and (4.40)-(4.41): the friction rocking about O needs."""
-    return np.abs(a * k + b) / (c * k + d)  # type: ignore[no-any-return]
+    return np.abs(a * k + b) / (c * k + d)
 
 
 def mu_star_star(k: Num, a: Num, b: Num, c: Num, d: Num) -> Num:
@@ -237,7 +238,7 @@ def mu_star_star(k: Num, a: Num, b: Num, c: Num, d: Num) -> Num:
     Infinite at the pole k = d/c (+-inf) and negative beyond it; no warnings.
     """
     with np.errstate(divide="ignore", invalid="ignore"):
-        return (a * k - b) / (d - c * k)  # type: ignore[return-value]
+        return (a * k - b) / (d - c * k)
 
 
 class Thresholds(NamedTuple):
@@ -265,8 +266,8 @@ def thresholds(k: FloatArray, gamma: ArrayLike, kprime: ArrayLike) -> Thresholds
     gamma, kprime : float or ndarray
         Broadcast with k.
     """
-    g = np.asarray(gamma, dtype=np.float64) if np.ndim(gamma) else float(gamma)  # type: ignore[arg-type]
-    kp = np.asarray(kprime, dtype=np.float64) if np.ndim(kprime) else float(kprime)  # type: ignore[arg-type]
+    g: Num = np.asarray(gamma, dtype=np.float64) if np.ndim(gamma) else float(gamma)  # type: ignore[arg-type]
+    kp: Num = np.asarray(kprime, dtype=np.float64) if np.ndim(kprime) else float(kprime)  # type: ignore[arg-type]
     a, b, c, d = coefficients(g, kp)
     f = a * k + b
     return Thresholds(

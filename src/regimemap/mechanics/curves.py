@@ -54,7 +54,7 @@ def mu_star_signed(p: Parameters, k: ArrayLike) -> FloatArray:
 
     Its sign is that of f_x; it is mu* where f_x >= 0.
     """
-    return C.mu_star_signed(_k(k), p.a, p.b, p.c, p.d)
+    return np.asarray(C.mu_star_signed(_k(k), p.a, p.b, p.c, p.d))
 
 
 def mu_star(p: Parameters, k: ArrayLike) -> FloatArray:
@@ -63,7 +63,7 @@ def mu_star(p: Parameters, k: ArrayLike) -> FloatArray:
     Rocking about O needs mu >= mu*(k): the friction needed to stop the
     pivot O slipping.  In case 3 (a < 0, k > b/|a|) it is -(ak+b)/(ck+d).
     """
-    return C.mu_star(_k(k), p.a, p.b, p.c, p.d)
+    return np.asarray(C.mu_star(_k(k), p.a, p.b, p.c, p.d))
 
 
 def mu_star_star(p: Parameters, k: ArrayLike) -> FloatArray:
@@ -71,12 +71,12 @@ def mu_star_star(p: Parameters, k: ArrayLike) -> FloatArray:
 
     Infinite at the pole k = d/c (returned as +-inf); negative beyond it.
     """
-    return C.mu_star_star(_k(k), p.a, p.b, p.c, p.d)
+    return np.asarray(C.mu_star_star(_k(k), p.a, p.b, p.c, p.d))
 
 
 def line_OA(p: Parameters, k: ArrayLike) -> FloatArray:
     """OA: mu = k, the limit of rest by friction, (3.4) and (4.7)."""
-    return _k(k).copy()
+    return np.array(_k(k))
 
 
 def upper_line(p: Parameters, k: ArrayLike) -> FloatArray:
@@ -84,22 +84,22 @@ def upper_line(p: Parameters, k: ArrayLike) -> FloatArray:
 
     On it the normal reaction of sliding acts at O (xi = -B).
     """
-    return C.upper_line(_k(k), p.gamma, p.kprime)
+    return np.asarray(C.upper_line(_k(k), p.gamma, p.kprime))
 
 
 def lower_line(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu = -1/gamma - k k' = -1/gamma + k|k'|: DC (4.20); on it xi = +B (at O')."""
-    return C.lower_line(_k(k), p.gamma, p.kprime)
+    return np.asarray(C.lower_line(_k(k), p.gamma, p.kprime))
 
 
 def dotted_line(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu = k|k'|, (4.22): the slide region has xi <= 0 above it and xi >= 0 below it."""
-    return C.dotted_line(_k(k), p.kprime)
+    return np.asarray(C.dotted_line(_k(k), p.kprime))
 
 
 def dotted_line_344(p: Parameters, k: ArrayLike) -> FloatArray:
     """mu = k k' - 1/gamma, (3.44): theta'' = 0 in slide-rock about O slipping right (case 3)."""
-    return C.dotted_line_344(_k(k), p.gamma, p.kprime)
+    return np.asarray(C.dotted_line_344(_k(k), p.gamma, p.kprime))
 
 
 # -- the catalogue --------------------------------------------------------------------------

@@ -136,11 +136,8 @@ class Response:
     solvable: np.ndarray
 
 
-def _broadcast(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike):
-    k, mu, gamma, kprime = np.broadcast_arrays(
-        *(np.asarray(v, dtype=np.float64) for v in (k, mu, gamma, kprime))
-    )
-    return k, mu, gamma, kprime
+def _broadcast(*values: ArrayLike) -> tuple[np.ndarray, ...]:
+    return tuple(np.broadcast_arrays(*(np.asarray(v, dtype=np.float64) for v in values)))
 
 
 def solve(hypothesis: Hypothesis, k: ArrayLike, mu: ArrayLike, gamma: ArrayLike,
@@ -162,9 +159,9 @@ def solve(hypothesis: Hypothesis, k: ArrayLike, mu: ArrayLike, gamma: ArrayLike,
     Response
         Reactions, accelerations and whether the hypothesis is admissible.
     """
-    k, mu, gamma, kprime = _broadcast(k, mu, gamma, kprime)
-    shape = k.shape
-    kf, muf, gf, kpf = (v.ravel() for v in (k, mu, gamma, kprime))
+    k_b, mu_b, gamma_b, kprime_b = _broadcast(k, mu, gamma, kprime)
+    shape = k_b.shape
+    kf, muf, gf, kpf = (v.ravel() for v in (k_b, mu_b, gamma_b, kprime_b))
     n = kf.size
     # unknowns u = [X, Y, T, fx, fy, M]
     A = np.zeros((n, 6, 6))

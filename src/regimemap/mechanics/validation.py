@@ -143,7 +143,8 @@ def _as_float_array(name: str, value: Any) -> np.ndarray:
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):  # ragged nested sequences
-        raise ValueError(f"{name} must be {allowed}, got {_describe(value)} (not an array of numbers)") from None
+        raise ValueError(
+            f"{name} must be {allowed}, got {_describe(value)} (not an array of numbers)") from None
     kind = raw.dtype.kind
     if kind == "O":
         for item in raw.flat:
@@ -238,9 +239,10 @@ def check_resolution(name: str, value: Any) -> int:
         elif isinstance(value, (numbers.Integral, np.integer)):
             n = int(value)
         elif isinstance(value, (numbers.Real, np.floating)):
-            if not math.isfinite(float(value)) or float(value) != int(value):
+            real = float(value)
+            if not math.isfinite(real) or real != int(real):
                 raise ValueError
-            n = int(value)
+            n = int(real)
         else:
             raise TypeError
     except (TypeError, ValueError, OverflowError):
