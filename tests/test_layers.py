@@ -1,0 +1,167 @@
+"""The layers and their import rules, read from the source (AST), so a breach fails a test.
+
+mechanics (numpy only) -> waves -> maps -> drawing -> io -> cli: a package imports
+only from its own layer or the layers before it; matplotlib only under
+``drawing/``, click only under ``cli/``; no module imports another module's
+private (underscore) name; no import cycle between modules.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
+
+#: Layer of each package: a module may import from layers <= its own.
+LAYER = {"mechanics": 0, "waves": 1, "dynamics": 1, "maps": 2, "drawing": 3, "io": 4, "cli": 5}
+#: The top-level modules (the package's front door and its version) sit above the
+#: evaluation layer: regimemap/__init__.py re-exports maps and mechanics.
+TOP = 2.5
+
+
+def _modules() -> dict[str, Path]:
+    out = {}
+    for path in sorted(SRC.rglob("*.py")):
+        rel = path.relative_to(SRC.parent).with_suffix("")
+        parts = list(rel.parts)
+        if parts[-1] == "__init__":
+            parts = parts[:-1]
+        out[".".join(parts)] = path
+    return out
+
+
+MODULES = _modules()
+
+
+def _imports(name: str, path: Path) -> list[tuple[str, list[str], int, bool]]:
+    """(module imported, names, line, at module level) for every import in a file."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    is_pkg = path.name == "__init__.py"
+    package = name if is_pkg else name.rpartition(".")[0]
+    top_level = {id(n) for n in tree.body}
+    # imports under ``if TYPE_CHECKING:`` are for the type checker only: never executed
+    typing_only = {id(n) for node in ast.walk(tree) if isinstance(node, ast.If)
+                   and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING"
+                   for n in ast.walk(node)}
+    found = []
+    for node in ast.walk(tree):
+        if id(node) in typing_only:
+            continue
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                found.append((alias.name, [], node.lineno, id(node) in top_level))
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.split(".")
+                base = base[: len(base) - (node.level - 1)]
+                mod = ".".join(base + ([node.module] if node.module else []))
+            else:
+                mod = node.module or ""
+            found.append((mod, [a.name for a in node.names], node.lineno, id(node) in top_level))
+    return found
+
+
+def _layer(module: str) -> float:
+    if module == "regimemap.__main__":  # ``python -m regimemap``: the command line
+        return LAYER["cli"]
+    parts = module.split(".")
+    if len(parts) >= 2 and parts[1] in LAYER:
+        return LAYER[parts[1]]
+    return TOP
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_imports_point_down_the_layers(module):
+    here = _layer(module)
+    for imported, _names, line, _top in _imports(module, MODULES[module]):
+        if not imported.startswith("regimemap"):
+            continue
+        there = _layer(imported)
+        if imported in ("regimemap", "regimemap._version") and here > 0:
+            continue  # the version string
+        assert there <= here, f"{module}:{line} imports {imported} (a higher layer)"
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_third_party_imports_stay_in_their_layer(module):
+    for imported, _names, line, _top in _imports(module, MODULES[module]):
+        root = imported.split(".")[0]
+        if root == "matplotlib":
+            assert ".drawing" in module, f"{module}:{line} imports matplotlib"
+        if root == "click":
+            assert ".cli" in module, f"{module}:{line} imports click"
+        if module.startswith(("regimemap.mechanics", "regimemap.maps", "regimemap.waves",
+                              "regimemap.dynamics")):
+            assert root not in ("matplotlib", "click", "scipy"), f"{module}:{line} imports {root}"
+
+
+def test_mechanics_imports_nothing_else_of_regimemap():
+    for module in MODULES:
+        if not module.startswith("regimemap.mechanics"):
+            continue
+        for imported, _names, line, _top in _imports(module, MODULES[module]):
+            if imported.startswith("regimemap"):
+                assert imported.startswith("regimemap.mechanics"), f"{module}:{line} imports {imported}"
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_no_private_names_across_modules(module):
+    for imported, names, line, _top in _imports(module, MODULES[module]):
+        if not imported.startswith("regimemap") or imported == module:
+            continue
+        private = [n for n in names if n.startswith("_") and n != "__version__"]
+        assert not private, f"{module}:{line} imports private {private} from {imported}"
+        # a package's private module serves that package only
+        own_package = imported.rpartition(".")[0] in (module, module.rpartition(".")[0])
+        assert (own_package or not imported.rpartition(".")[2].startswith("_")
+                or imported.endswith("_version")), f"{module}:{line} imports the private module {imported}"
+
+
+def test_no_import_cycles_at_module_level():
+    graph: dict[str, set[str]] = {m: set() for m in MODULES}
+    for module, path in MODULES.items():
+        for imported, names, _line, top in _imports(module, path):
+            if not top or not imported.startswith("regimemap"):
+                continue
+            targets = [imported] + [f"{imported}.{n}" for n in names]
+            for t in targets:
+                if t in MODULES and t != module:
+                    graph[module].add(t)
+    # a package importing its own submodules is its front door, not a cycle
+    for module in graph:
+        graph[module] = {t for t in graph[module] if not t.startswith(module + ".")}
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(m: str) -> None:
+        state[m] = 1
+        stack.append(m)
+        for t in sorted(graph[m]):
+            if state.get(t) == 1:
+                cycle = stack[stack.index(t):] + [t]
+                raise AssertionError("import cycle: " + " -> ".join(cycle))
+            if t not in state:
+                visit(t)
+        stack.pop()
+        state[m] = 2
+
+    for m in sorted(graph):
+        if m not in state:
+            visit(m)
+
+
+def test_the_rules_can_fail(tmp_path):
+    """The AST reader sees relative, absolute and function-level imports, not typing-only ones."""
+    f = tmp_path / "x.py"
+    f.write_text("from ..drawing.style import MODE_STYLE\nimport click\n"
+                 "def g():\n    from matplotlib.figure import Figure\n"
+                 "if TYPE_CHECKING:\n    import matplotlib.axes\n")
+    found = _imports("regimemap.maps.x", f)
+    assert not any(m == "matplotlib.axes" for m, *_ in found)
+    assert ("regimemap.drawing.style", ["MODE_STYLE"], 1, True) in found
+    assert ("click", [], 2, True) in found
+    assert ("matplotlib.figure", ["Figure"], 4, False) in found
+    assert _layer("regimemap.drawing.style") > _layer("regimemap.maps.x")
