@@ -5,13 +5,13 @@ for mu > mu_B' = (4+g^2)/(3g), (4.49), the slide-rock about O equations have a
 second branch ((4.69)-(4.70), (4.80)-(4.81)) and the rigid-body equations with
 Coulomb friction admit more than one motion at the same (k, mu) - the
 non-uniqueness known as Painleve's paradox.  Section 4.7 keeps one mode (see
-:data:`regimemap.classify.PRIORITY`): slide inside the slide region, slide-rock
-about O' below the line DC.  The independent solver (:mod:`regimemap.solver`)
+:data:`regimemap.mechanics.modes.PRIORITY`): slide inside the slide region, slide-rock
+about O' below the line DC.  The independent solver (:mod:`regimemap.mechanics.solver`)
 confirms the overlaps: with parameters tried so far the admissible sets are
 {SL, RO, SRO-} (chosen: SL) and {RO, SRO-, SRO'-} (chosen: SRO'-).
 
 This module finds those parts of the map exactly, from the per-column
-intervals of the raw regions (:func:`regimemap.geometry.raw_intervals`, whose
+intervals of the raw regions (:func:`regimemap.maps.geometry.raw_intervals`, whose
 predicates equal the solver's admissibility away from boundaries): along each
 vertical line k = const every raw region is one interval of mu, so the column
 is cut at every interval end and each piece is covered by a known set of
@@ -235,7 +235,7 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
 
     Examples
     --------
-    >>> from regimemap.params import Parameters
+    >>> from regimemap.mechanics.block import Parameters
     >>> [r.label for r in ambiguous_regions(Parameters(3.0, -0.6), 4.0, 3.0)]
     ['{SL, RO, SRO-} -> SL (Section 4.7)']
     >>> ambiguous_regions(Parameters(3.0, 0.4), 4.0, 3.0)

@@ -95,7 +95,7 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
     Returns
     -------
     numpy.ndarray of uint8
-        :class:`~regimemap.modes.Mode` codes, of the broadcast shape (0-d for
+        :class:`~regimemap.mechanics.modes.Mode` codes, of the broadcast shape (0-d for
         scalars).  ``Mode(out[i])`` gives the mode.
 
     Raises
@@ -187,7 +187,7 @@ def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: floa
     ------
     ValueError
         For invalid parameters, axes that are not 1-D finite numbers >= 0, or
-        a grid of more than :data:`~regimemap.validation.MAX_GRID_POINTS` points.
+        a grid of more than :data:`~regimemap.mechanics.validation.MAX_GRID_POINTS` points.
 
     Notes
     -----

@@ -62,7 +62,7 @@ def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, I
 
 
 def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> Interval:
-    """The interval of mu of the report's raw region of ``mode`` (:mod:`regimemap.regions`)."""
+    """The interval of mu of the report's raw region of ``mode`` (:mod:`regimemap.mechanics.regions`)."""
     k = np.asarray(k, dtype=np.float64)
     rest_ok, lower, upper, mu_s, f_pos = thresholds(k, p.gamma, p.kprime)
     zero = np.zeros_like(k)

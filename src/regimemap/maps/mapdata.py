@@ -256,7 +256,7 @@ class MapData:
         True for the report's raw regions (single-mode figures), False for
         the final map (one mode per point, Section 4.7).
     polygons : dict[Mode, list[ndarray]]
-        Region polygons from :func:`regimemap.geometry.region_polygons`,
+        Region polygons from :func:`regimemap.maps.geometry.region_polygons`,
         simplified; they extend above the view and are clipped when drawn.
     curves : dict[str, CurveData]
         The boundary curves drawn (see the module docstring for the names).

@@ -8,7 +8,7 @@ the dimensionless groups that decided it), the answer is a
 
 * the mode of the final map (:func:`regimemap.classify`, Section 4.7 below C);
 * the reactions and accelerations at initiation of that mode, from the
-  independent equations-of-motion solver (:func:`regimemap.solver.solve`) for
+  independent equations-of-motion solver (:func:`regimemap.mechanics.solver.solve`) for
   the mode's contact hypothesis: ``fx``, ``fy`` (divided by m g), ``xi`` (the
   point of action of f_y from C, divided by B; -1 is the corner O, +1 is O'),
   ``xdd``, ``ydd`` (accelerations of C divided by g), ``thdd`` (theta'' B/g,
@@ -101,7 +101,7 @@ class PointResult:
         The report's case of (gamma, kprime).
     admissible : tuple of Mode
         Every mode the equations of motion admit at the point (in
-        :data:`~regimemap.classify.PRIORITY` order).  Section 4.7 picks the
+        :data:`~regimemap.mechanics.modes.PRIORITY` order).  Section 4.7 picks the
         first, which is :attr:`mode`.
     hypothesis_admissible : bool
         Whether the solver finds the chosen hypothesis admissible (True for
@@ -312,7 +312,7 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
     ----------
     points : iterable of DesignPoint or (k, mu) pairs
         A point's own ``gamma``/``kprime`` (see
-        :class:`~regimemap.points.DesignPoint`) take precedence over the
+        :class:`~regimemap.maps.points.DesignPoint`) take precedence over the
         defaults below.
     gamma, kprime : float, optional
         Defaults for points that do not carry their own.

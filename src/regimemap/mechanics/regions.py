@@ -1,13 +1,13 @@
 """The report's region of every mode, as it derives them (before Section 4.7).
 
-Each predicate takes :class:`~regimemap.params.Parameters` and arrays of k and
+Each predicate takes :class:`~regimemap.mechanics.block.Parameters` and arrays of k and
 mu (broadcast together) and returns a boolean array; boundaries are included,
 as the report writes them (<=, >=).  These are the *raw* regions shown by the
 single-mode figures (3.1-3.8 and 4.2-4.6).  Below C they overlap; Section 4.7
 of the report (and :func:`regimemap.classify`) gives each point one mode.
 
 Every predicate is cross-checked against the independent solver
-(:mod:`regimemap.solver`) in ``tests/test_regions.py``.
+(:mod:`regimemap.mechanics.solver`) in ``tests/test_regions.py``.
 """
 
 from __future__ import annotations

@@ -1,7 +1,7 @@
 """An independent equations-of-motion solver for the onset of motion.
 
 Written from the mechanics of a plane rigid body, not from the report's
-inequalities, so that the closed-form regions of :mod:`regimemap.regions` can be
+inequalities, so that the closed-form regions of :mod:`regimemap.mechanics.regions` can be
 checked against it.
 
 Model (Chapter II of the report)
@@ -269,7 +269,7 @@ def admissible(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike,
         More than one mode can be admissible at a point: on boundaries, and
         below C for mu > (4+g^2)/(3g) (Painleve-type non-uniqueness of rigid
         contact with friction); Section 4.7 of the report decides there
-        (see :data:`regimemap.classify.PRIORITY`).
+        (see :data:`regimemap.mechanics.modes.PRIORITY`).
     """
     hyp = admissible_hypotheses(k, mu, gamma, kprime, tol)
     out: dict[Mode, np.ndarray] = {}
