@@ -1,0 +1,392 @@
+"""Closed forms of the loaded block (issue 10): constants, raw regions, the column rule.
+
+The block of the report (Chapters III-IV) with, besides gravity and the push
+F = m g k (to the left, at height ``kprime*H_C`` above the centre of mass C):
+
+* buoyancy ``beta m g`` upward through C's vertical;
+* uplift ``U = (u + nu k) m g`` upward at ``e_u B`` from C towards O' (the
+  seaward corner; ``e_u = 1/3`` is Goda's triangle, zero under O);
+* any inertia ``I = m B^2 i^2`` (``gyration = i``; None is the uniform block,
+  ``i^2 = (1 + gamma^2)/3``), ``gamma = H_C/B`` the height of C over the half width.
+
+Per unit m g and B, the net downward load is ``W = 1 - beta - u - nu k`` and the
+applied moment about C (counter-clockwise, i.e. lifting O') is
+``S = gamma k k' + e_u U``.  The derivation of every formula below is in
+``docs/derivation.md``; at zero loads and uniform inertia each one is the
+report's expression evaluated with the same floating-point operations as
+:mod:`regimemap.classify` / :class:`regimemap.params.Parameters`, so
+:func:`classify_loaded` is bit-for-bit :func:`regimemap.classify.classify` there.
+
+Generalised constants (``extra = 3 i^2 - (1 + gamma^2)``, 0.0 for the uniform
+block; ``A0 = 4 + gamma^2 + extra = 3(i^2 + 1)``; ``d0 = d + extra = 3(i^2 + gamma^2)``)::
+
+    P  = gamma(1+k') + nu(1+e_u)       Q  = 1 - beta - u(1+e_u)     (rest about O: k P <= Q)
+    P' = gamma(1+k') - nu(1-e_u)       Q' = 1 - beta - u(1-e_u)     (rest about O': Q' + k P' >= 0)
+    a_O = a + (extra - 3 gamma nu (1+e_u))   b_O = b Q               (3 D f_x of rocking about O)
+    c_O = c - nu (d0 - 3 e_u)                d_O = d0 (1-beta-u) + 3 e_u u   (3 D f_y)
+    a_O' = a + (extra + 3 gamma nu (1-e_u))  b_O' = b Q'             (3 D f_x of rocking about O')
+    c_O' = c + nu (d0 + 3 e_u)               d_O' = d0 (1-beta-u) - 3 e_u u  (3 D f_y = d_O' - c_O' k)
+
+with ``D = i^2 + 1 + gamma^2``.  Lines: ``upper = 1/gamma - (k k' + e_u U/gamma)/W`` (xi = -B,
+CD/AB), ``lower = -1/gamma - (k k' + e_u U/gamma)/W`` (xi = +B, DC); ``mu* = |a_O k + b_O|/(c_O k + d_O)``,
+``mu** = (a_O' k - b_O')/(d_O' - c_O' k)``, ``mu_B' = A0/(3 gamma)``.
+
+Mode codes are :class:`~regimemap.modes.Mode` values, and :data:`LO` (8) for lift-off.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Callable, NamedTuple
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from regimemap.modes import Mode
+
+__all__ = [
+    "LO",
+    "LoadedConstants",
+    "Thresholds",
+    "loaded_constants",
+    "thresholds",
+    "classify_loaded",
+    "column_segments_loaded",
+    "label_grid_loaded",
+    "RAW_REGIONS_LOADED",
+    "raw_region_loaded",
+    "named_points_loaded",
+]
+
+#: Mode code of lift-off (no contact force): the codes 0..7 are :class:`Mode`.
+LO: int = 8
+
+Float = NDArray[np.float64]
+Bool = NDArray[np.bool_]
+U8 = NDArray[np.uint8]
+
+_RE, _SL, _RO, _SM, _SP, _SPM, _ROP, _SPP = (np.uint8(m) for m in (
+    Mode.RE, Mode.SL, Mode.RO, Mode.SRO_MINUS, Mode.SRO_PLUS, Mode.SRO_PRIME_MINUS,
+    Mode.RO_PRIME, Mode.SRO_PRIME_PLUS))
+_LO = np.uint8(LO)
+
+
+@dataclass(frozen=True)
+class LoadedConstants:
+    """Validated parameters of a loaded map and their derived constants (floats).
+
+    Parameters are those of :func:`classify_loaded`; the derived constants are
+    listed in the module docstring.  Build with :func:`loaded_constants`.
+    """
+
+    gamma: float
+    kprime: float
+    buoyancy: float
+    uplift: float
+    uplift_ratio: float
+    uplift_arm: float
+    gyration: float | None
+    crest: float
+    i2: float
+    extra: float
+    a: float
+    b: float
+    c: float
+    d: float
+    A0: float
+    d0: float
+    P: float
+    Q: float
+    Pp: float
+    Qp: float
+    aO: float
+    bO: float
+    cO: float
+    dO: float
+    aP: float
+    bP: float
+    cP: float
+    dP: float
+
+    @property
+    def mu_Bprime(self) -> float:
+        """A0/(3 gamma) = (i^2 + 1)/gamma: slide-rock about O slipping left is singular there (4.49)."""
+        return self.A0 / (3.0 * self.gamma)
+
+    @property
+    def k_A(self) -> float:
+        """Q/P: rest about O ends (the vertical through A), (3.5)/(4.10) generalised; inf if P = 0."""
+        if self.P == 0.0:
+            return math.inf if self.Q >= 0.0 else -math.inf
+        return self.Q / self.P
+
+    @property
+    def k_LO(self) -> float:
+        """k where W = 0 (the net vertical load vanishes); inf without nu or when W never vanishes."""
+        w0 = 1.0 - self.buoyancy - self.uplift
+        if self.uplift_ratio == 0.0:
+            return math.inf if w0 > 0.0 else 0.0
+        return max(w0 / self.uplift_ratio, 0.0)
+
+
+def _check(name: str, value: Any, lo: float, hi: float, lo_open: bool = False, hi_open: bool = False
+           ) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a number, got {value!r}") from None
+    bad = (not math.isfinite(v)) or v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi)
+    if bad:
+        left = "(" if lo_open else "["
+        right = ")" if hi_open else "]"
+        raise ValueError(f"{name} must be in {left}{lo}, {hi}{right}, got {value!r}")
+    return v
+
+
+def loaded_constants(gamma: float, kprime: float, *, buoyancy: float = 0.0, uplift: float = 0.0,
+                     uplift_ratio: float = 0.0, uplift_arm: float = 1.0 / 3.0,
+                     gyration: float | None = None, crest: float = 1.0) -> LoadedConstants:
+    """Validate the parameters and compute the generalised constants.
+
+    Raises
+    ------
+    ValueError
+        gamma not > 0, crest not > 0, kprime not in [-1, crest], buoyancy not in
+        [0, 1), uplift or uplift_ratio < 0, uplift_arm not in [-1, 1], gyration not > 0.
+    """
+    g = _check("gamma", gamma, 0.0, math.inf, lo_open=True)
+    cr = _check("crest", crest, 0.0, math.inf, lo_open=True)
+    kp = _check("kprime", kprime, -1.0, cr) + 0.0  # fold -0.0
+    beta = _check("buoyancy", buoyancy, 0.0, 1.0, hi_open=True)
+    u = _check("uplift", uplift, 0.0, math.inf)
+    nu = _check("uplift_ratio", uplift_ratio, 0.0, math.inf)
+    eu = _check("uplift_arm", uplift_arm, -1.0, 1.0)
+    g2 = g * g
+    if gyration is None:
+        gy: float | None = None
+        i2 = (1.0 + g2) / 3.0
+        extra = 0.0
+    else:
+        gy = _check("gyration", gyration, 0.0, math.inf, lo_open=True)
+        i2 = gy * gy
+        extra = 3.0 * i2 - (1.0 + g2)
+    # the report's constants exactly as regimemap.classify._constants computes them
+    a = 4.0 + g2 - 3.0 * g2 * kp
+    b = 3.0 * g
+    c = 3.0 * g * (1.0 + kp)
+    d = 1.0 + 4.0 * g2
+    A0 = (4.0 + g2) + extra
+    d0 = d + extra
+    w0 = 1.0 - beta - u
+    return LoadedConstants(
+        gamma=g, kprime=kp, buoyancy=beta, uplift=u, uplift_ratio=nu, uplift_arm=eu, gyration=gy,
+        crest=cr, i2=i2, extra=extra, a=a, b=b, c=c, d=d, A0=A0, d0=d0,
+        P=g * (1.0 + kp) + nu * (1.0 + eu), Q=1.0 - beta - u * (1.0 + eu),
+        Pp=g * (1.0 + kp) - nu * (1.0 - eu), Qp=1.0 - beta - u * (1.0 - eu),
+        aO=a + (extra - 3.0 * g * nu * (1.0 + eu)), bO=b * (1.0 - beta - u * (1.0 + eu)),
+        cO=c - nu * (d0 - 3.0 * eu), dO=d0 * w0 + 3.0 * eu * u,
+        aP=a + (extra + 3.0 * g * nu * (1.0 - eu)), bP=b * (1.0 - beta - u * (1.0 - eu)),
+        cP=c + nu * (d0 + 3.0 * eu), dP=d0 * w0 - 3.0 * eu * u,
+    )
+
+
+class Thresholds(NamedTuple):
+    """Per-k quantities of the column rule (arrays of k's shape)."""
+
+    #: net downward load W = 1 - beta - u - nu k
+    W: Float
+    #: applied moment about C over gamma, S/gamma = k k' + e_u U/gamma
+    s: Float
+    #: lift-off: no contact force can be consistent (W i^2 + |S| <= 0)
+    lift_off: Bool
+    #: rest possible at some mu (k P <= Q, Q' + k P' >= 0, W > 0)
+    rest_ok: Bool
+    #: mu above which rest holds: k/W
+    mu_rest: Float
+    #: upper line (xi = -B): 1/gamma - s/W
+    upper: Float
+    #: lower line (xi = +B): -1/gamma - s/W
+    lower: Float
+    #: mu* = |a_O k + b_O|/(c_O k + d_O)
+    mu_star: Float
+    #: a_O k + b_O >= 0 (f_x of rocking about O to the right)
+    f_pos: Bool
+    #: regular column: W > 0, rocking about O has f_y > 0 and rest never fails about O'
+    regular: Bool
+
+
+def thresholds(k: ArrayLike, cst: LoadedConstants) -> Thresholds:
+    """The per-k thresholds of the column rule (see :func:`classify_loaded`)."""
+    k = np.asarray(k, dtype=np.float64)
+    g, kp, eu = cst.gamma, cst.kprime, cst.uplift_arm
+    inv_g = 1.0 / g
+    W = (1.0 - cst.buoyancy - cst.uplift) - cst.uplift_ratio * k
+    up = cst.uplift + cst.uplift_ratio * k
+    s = k * kp + eu * up * inv_g
+    with np.errstate(divide="ignore", invalid="ignore"):
+        sw = s / W
+        upper = inv_g - sw
+        lower = -inv_g - sw
+        mu_rest = k / W
+        f = cst.aO * k + cst.bO
+        den = cst.cO * k + cst.dO
+        mu_s = np.abs(f) / den
+    S = g * s
+    lift_off = W * cst.i2 + np.abs(S) <= 0.0
+    rest_o = k * cst.P <= cst.Q
+    rest_op = cst.Qp + k * cst.Pp >= 0.0
+    rest_ok = rest_o & rest_op & (W > 0.0)
+    regular = (W > 0.0) & (den > 0.0) & rest_op
+    return Thresholds(W, s, lift_off, rest_ok, mu_rest, upper, lower, mu_s, f >= 0.0, regular)
+
+
+def _validate_km(k: ArrayLike, mu: ArrayLike) -> tuple[Float, Float]:
+    k_arr = np.asarray(k, dtype=np.float64)
+    mu_arr = np.asarray(mu, dtype=np.float64)
+    for name, v in (("k", k_arr), ("mu", mu_arr)):
+        if v.size and not (np.isfinite(v).all() and (v >= 0.0).all()):
+            raise ValueError(f"{name} must be finite and >= 0")
+    kb, mb = np.broadcast_arrays(k_arr, mu_arr)
+    return kb, mb
+
+
+# -- raw regions (each hypothesis's admissible set, closed form) ----------------------------------------
+
+def _pivot_terms(k: Float, cst: LoadedConstants) -> dict[str, Float]:
+    """Numerators of the pivot hypotheses (signs only matter; see docs/derivation.md)."""
+    g = cst.gamma
+    W = (1.0 - cst.buoyancy - cst.uplift) - cst.uplift_ratio * k
+    S = g * k * cst.kprime + cst.uplift_arm * (cst.uplift + cst.uplift_ratio * k)
+    return {
+        "W": W, "S": S,
+        "fxO": cst.aO * k + cst.bO, "fyO": cst.cO * k + cst.dO,  # 3 D f_x, 3 D f_y of RO
+        "fxP": cst.aP * k - cst.bP, "fyP": cst.dP - cst.cP * k,  # of RO'
+        "TO": g * k + S - W,  # D theta'' of RO
+        "TP": g * k + S + W,  # D theta'' of RO'
+    }
+
+
+def _rest(k: Float, mu: Float, cst: LoadedConstants) -> Bool:
+    t = _pivot_terms(k, cst)
+    W = t["W"]
+    return (mu * W >= k) & (k * cst.P <= cst.Q) & (cst.Qp + k * cst.Pp >= 0.0)
+
+
+def _slide(k: Float, mu: Float, cst: LoadedConstants) -> Bool:
+    """Slide in either direction (fx = +-mu W, fy = W, |xi| <= 1, slip against friction)."""
+    t = _pivot_terms(k, cst)
+    W, S, g = t["W"], t["S"], cst.gamma
+    out = np.zeros(k.shape, dtype=bool)
+    for sigma in (1.0, -1.0):
+        m = g * sigma * mu * W + S  # -M, the moment of the reaction's point about C
+        out |= (W >= 0.0) & (sigma * (sigma * mu * W - k) <= 0.0) & (m <= W) & (m >= -W)
+    return out
+
+
+def _rock(k: Float, mu: Float, cst: LoadedConstants, corner: str) -> Bool:
+    t = _pivot_terms(k, cst)
+    if corner == "O":
+        return (t["TO"] >= 0.0) & (t["fyO"] >= 0.0) & (np.abs(t["fxO"]) <= mu * t["fyO"])
+    return (t["TP"] <= 0.0) & (t["fyP"] >= 0.0) & (np.abs(t["fxP"]) <= mu * t["fyP"])
+
+
+def _slide_rock(k: Float, mu: Float, cst: LoadedConstants, corner: str, sigma: float) -> Bool:
+    """Slide-rock about a corner slipping left (sigma = +1) or right (sigma = -1)."""
+    t = _pivot_terms(k, cst)
+    W, S, g, i2 = t["W"], t["S"], cst.gamma, cst.i2
+    if corner == "O":
+        den = cst.A0 - 3.0 * sigma * mu * g  # 3 (i^2 + 1 - sigma mu gamma)
+        T = W * (sigma * mu * g - 1.0) + S  # theta'' >= 0
+        fy = W * i2 + S
+        xo = sigma * mu * t["fyO"] - t["fxO"]  # 3 den x_O''
+        sd = np.sign(den)
+        return (den != 0.0) & (T * sd >= 0.0) & (fy * sd >= 0.0) & (sigma * xo * sd <= 0.0)
+    den = cst.A0 + 3.0 * sigma * mu * g  # 3 (i^2 + 1 + sigma mu gamma)
+    T = W * (sigma * mu * g + 1.0) + S  # theta'' <= 0
+    fy = W * i2 - S
+    xo = sigma * mu * t["fyP"] - t["fxP"]
+    sd = np.sign(den)
+    return (den != 0.0) & (T * sd <= 0.0) & (fy * sd >= 0.0) & (sigma * xo * sd <= 0.0)
+
+
+def _lift_off(k: Float, mu: Float, cst: LoadedConstants) -> Bool:
+    t = _pivot_terms(k, cst)
+    return (t["W"] * cst.i2 + np.abs(t["S"]) <= 0.0) & (mu >= 0.0)
+
+
+def _region(fn: Callable[..., Bool], *args: Any) -> Callable[[LoadedConstants, ArrayLike, ArrayLike], Bool]:
+    def region(cst: LoadedConstants, k: ArrayLike, mu: ArrayLike) -> Bool:
+        kb, mb = np.broadcast_arrays(np.asarray(k, dtype=np.float64), np.asarray(mu, dtype=np.float64))
+        return fn(kb, mb, cst, *args)
+    region.__doc__ = fn.__doc__
+    return region
+
+
+#: The raw region (admissible set of the hypotheses of that mode) of every mode code,
+#: as predicates ``region(cst, k, mu) -> bool array``; boundaries included.
+RAW_REGIONS_LOADED: dict[int, Callable[[LoadedConstants, ArrayLike, ArrayLike], Bool]] = {
+    int(Mode.RE): _region(_rest),
+    int(Mode.SL): _region(_slide),
+    int(Mode.RO): _region(_rock, "O"),
+    int(Mode.SRO_MINUS): _region(_slide_rock, "O", 1.0),
+    int(Mode.SRO_PLUS): _region(_slide_rock, "O", -1.0),
+    int(Mode.SRO_PRIME_MINUS): _region(_slide_rock, "O'", 1.0),
+    int(Mode.RO_PRIME): _region(_rock, "O'"),
+    int(Mode.SRO_PRIME_PLUS): _region(_slide_rock, "O'", -1.0),
+    LO: _region(_lift_off),
+}
+
+
+def raw_region_loaded(code: int, cst: LoadedConstants, k: ArrayLike, mu: ArrayLike) -> Bool:
+    """The raw region of mode ``code`` (a :class:`Mode` value or :data:`LO`)."""
+    return RAW_REGIONS_LOADED[int(code)](cst, k, mu)
+
+
+# -- the final rule -------------------------------------------------------------------------------------
+
+def classify_loaded(k: ArrayLike, mu: ArrayLike, gamma: float, kprime: float, *, buoyancy: float = 0.0,
+                    uplift: float = 0.0, uplift_ratio: float = 0.0, uplift_arm: float = 1.0 / 3.0,
+                    gyration: float | None = None, crest: float = 1.0) -> U8:
+    """Mode code (uint8) at each point (k, mu) of the loaded block.
+
+    Parameters
+    ----------
+    k, mu : array_like
+        Force F/(mg) >= 0 and friction coefficient >= 0 (broadcast together).
+    gamma : float
+        H_C/B > 0 (height of C over the half width).
+    kprime : float
+        Height of the push above C over H_C, in [-1, crest].
+    buoyancy : float
+        beta in [0, 1), upward through C.
+    uplift, uplift_ratio : float
+        Uplift U = (uplift + uplift_ratio k) m g >= 0.
+    uplift_arm : float
+        e_u in [-1, 1]: the uplift acts at e_u B from C towards O'.
+    gyration : float or None
+        Radius of gyration about C over B (None: uniform block).
+    crest : float
+        Height of the crest above C over H_C (upper end of kprime).
+
+    Returns
+    -------
+    ndarray of uint8
+        :class:`Mode` codes, :data:`LO` for lift-off.  At zero loads and uniform
+        inertia this is :func:`regimemap.classify.classify` bit for bit.
+    """
+    cst = loaded_constants(gamma, kprime, buoyancy=buoyancy, uplift=uplift, uplift_ratio=uplift_ratio,
+                           uplift_arm=uplift_arm, gyration=gyration, crest=crest)
+    kb, mb = _validate_km(k, mu)
+    return _classify(kb, mb, cst)
+
+
+def _classify(k: Float, mu: Float, cst: LoadedConstants) -> U8:
+    t = thresholds(k, cst)
+    out = np.where(t.f_pos, _SM, _SP)
+    np.copyto(out, _RO, where=mu >= t.mu_star)
+    np.copyto(out, _SL, where=mu <= t.upper)
+    np.copyto(out, _SPM, where=mu < t.lower)
+    np.copyto(out, _RE, where=(mu >= t.mu_rest) & t.rest_ok)
+    np.copyto(out, _LO, where=t.lift_off)
+    return np.asarray(out, dtype=np.uint8)
