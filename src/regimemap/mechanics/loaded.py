@@ -381,12 +381,200 @@ def classify_loaded(k: ArrayLike, mu: ArrayLike, gamma: float, kprime: float, *,
     return _classify(kb, mb, cst)
 
 
-def _classify(k: Float, mu: Float, cst: LoadedConstants) -> U8:
-    t = thresholds(k, cst)
+def _structured(k: Float, mu: Float, t: Thresholds) -> U8:
+    """The rule of :func:`regimemap.classify.classify` with the generalised thresholds (regular columns)."""
     out = np.where(t.f_pos, _SM, _SP)
     np.copyto(out, _RO, where=mu >= t.mu_star)
     np.copyto(out, _SL, where=mu <= t.upper)
     np.copyto(out, _SPM, where=mu < t.lower)
     np.copyto(out, _RE, where=(mu >= t.mu_rest) & t.rest_ok)
-    np.copyto(out, _LO, where=t.lift_off)
     return np.asarray(out, dtype=np.uint8)
+
+
+def _halfline(alpha: Float, beta: Float) -> tuple[Float, Float]:
+    """{mu : alpha + beta mu >= 0} as a closed interval [lo, hi] (empty: lo = inf, hi = -inf)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = -alpha / beta
+    never = (beta == 0.0) & (alpha < 0.0)
+    lo = np.where(beta > 0.0, t, np.where(never, np.inf, -np.inf))
+    hi = np.where(beta < 0.0, t, np.where(never, -np.inf, np.inf))
+    return lo, hi
+
+
+class _Box:
+    """An interval [lo, hi] of mu per k, built by intersecting half-lines and k-only conditions."""
+
+    def __init__(self, shape: tuple[int, ...]) -> None:
+        self.lo = np.full(shape, -np.inf)
+        self.hi = np.full(shape, np.inf)
+
+    def linear(self, alpha: Any, beta: Any) -> _Box:
+        """Keep mu with alpha + beta mu >= 0."""
+        lo, hi = _halfline(np.broadcast_to(np.asarray(alpha, dtype=np.float64), self.lo.shape),
+                           np.broadcast_to(np.asarray(beta, dtype=np.float64), self.lo.shape))
+        self.lo = np.maximum(self.lo, lo)
+        self.hi = np.minimum(self.hi, hi)
+        return self
+
+    def when(self, cond: Any) -> _Box:
+        """Keep the interval only where the k-only condition holds."""
+        cond = np.broadcast_to(np.asarray(cond, dtype=bool), self.lo.shape)
+        self.lo = np.where(cond, self.lo, np.inf)
+        self.hi = np.where(cond, self.hi, -np.inf)
+        return self
+
+    def below(self, t: float) -> _Box:
+        """Keep mu < t (mu <= the float just below t)."""
+        self.hi = np.minimum(self.hi, np.nextafter(t, -np.inf))
+        return self
+
+    def above(self, t: float) -> _Box:
+        """Keep mu > t."""
+        self.lo = np.maximum(self.lo, np.nextafter(t, np.inf))
+        return self
+
+
+def _intervals(k: Float, cst: LoadedConstants) -> list[tuple[np.uint8, Float, Float]]:
+    """Every hypothesis's admissible set at fixed k as closed mu-intervals, in selection order.
+
+    The selection order (lift-off, RE, SL, SRO'-, RO, SRO-, SRO+, RO', SRO'+) is
+    the order of least constraint wherever several modes are admissible (see
+    docs/derivation.md and the tests); the first interval holding mu wins.
+    """
+    t = _pivot_terms(k, cst)
+    W, S, g, i2 = t["W"], t["S"], cst.gamma, cst.i2
+    shape = k.shape
+    mb = cst.mu_Bprime
+    out: list[tuple[np.uint8, Float, Float]] = []
+
+    def add(code: np.uint8, box: _Box) -> None:
+        out.append((code, box.lo, box.hi))
+
+    add(_LO, _Box(shape).when(W * i2 + np.abs(S) <= 0.0))
+    add(_RE, _Box(shape).linear(-k, W).when((k * cst.P <= cst.Q) & (cst.Qp + k * cst.Pp >= 0.0)))
+    for sigma in (1.0, -1.0):  # slide left, right: slip against friction, xi in [-1, 1]
+        add(_SL, _Box(shape).linear(sigma * k, -W).linear(W - S, -sigma * g * W)
+            .linear(W + S, sigma * g * W).when(W >= 0.0))
+    # slide-rock about O' slipping left: den = A0 + 3 mu gamma > 0
+    add(_SPM, _Box(shape).linear(-(W + S), -g * W).when(W * i2 - S >= 0.0).linear(t["fxP"], -t["fyP"]))
+    add(_RO, _Box(shape).linear(-np.abs(t["fxO"]), t["fyO"]).when((t["TO"] >= 0.0) & (t["fyO"] >= 0.0)))
+    # slide-rock about O slipping left: den = A0 - 3 mu gamma, two branches about mu_B'
+    add(_SM, _Box(shape).below(mb).linear(S - W, g * W).when(W * i2 + S >= 0.0).linear(t["fxO"], -t["fyO"]))
+    add(_SM, _Box(shape).above(mb).linear(W - S, -g * W).when(W * i2 + S <= 0.0)
+        .linear(-t["fxO"], t["fyO"]))
+    # slide-rock about O slipping right: den = A0 + 3 mu gamma > 0
+    add(_SP, _Box(shape).linear(S - W, -g * W).when(W * i2 + S >= 0.0).linear(-t["fxO"], -t["fyO"]))
+    add(_ROP, _Box(shape).linear(-np.abs(t["fxP"]), t["fyP"]).when((t["TP"] <= 0.0) & (t["fyP"] >= 0.0)))
+    # slide-rock about O' slipping right: den = A0 - 3 mu gamma, two branches
+    add(_SPP, _Box(shape).below(mb).linear(-(W + S), g * W).when(W * i2 - S >= 0.0)
+        .linear(-t["fxP"], -t["fyP"]))
+    add(_SPP, _Box(shape).above(mb).linear(W + S, -g * W).when(W * i2 - S <= 0.0)
+        .linear(t["fxP"], t["fyP"]))
+    return out
+
+
+def _generic(k: Float, mu: Float, cst: LoadedConstants) -> U8:
+    """First interval of :func:`_intervals` holding mu (255 if none)."""
+    out = np.full(np.broadcast(k, mu).shape, 255, dtype=np.uint8)
+    for code, lo, hi in reversed(_intervals(k, cst)):
+        np.copyto(out, code, where=(mu >= lo) & (mu <= hi))
+    return out
+
+
+def _classify(k: Float, mu: Float, cst: LoadedConstants) -> U8:
+    t = thresholds(k, cst)
+    out = _structured(k, mu, t)
+    odd = ~t.regular
+    if odd.any():
+        np.copyto(out, _generic(k, mu, cst), where=odd)
+    return out
+
+
+# -- grids ----------------------------------------------------------------------------------------------
+
+def column_segments_loaded(k: Float, mu_sorted: Float, cst: LoadedConstants) -> tuple[U8, NDArray[np.intp]]:
+    """Labels and run lengths along each column of a grid whose mu axis is sorted increasingly.
+
+    Regular columns (``Thresholds.regular``): at most five runs from mu = 0 up,
+    SRO'-, SL, SRO-/SRO+, RO, RE, cut by ``searchsorted`` at lower, upper, mu*
+    and k/W exactly as :func:`classify_loaded` compares.  Other columns (W <= 0,
+    lift-off, f_y of rocking about O <= 0, rest failing about O'): the
+    breakpoints of every interval of :func:`_intervals` cut the column and each
+    piece takes the first interval (selection order) that holds it.
+
+    Returns
+    -------
+    labels, counts : ndarray, shape (len(k), m)
+        Mode codes and run lengths (each row of counts sums to len(mu_sorted)).
+    """
+    n = mu_sorted.size
+    t = thresholds(k, cst)
+    n_k = np.where(t.rest_ok, np.searchsorted(mu_sorted, t.mu_rest, side="left"), n)
+    c1 = np.minimum(np.searchsorted(mu_sorted, t.lower, side="left"), n_k)
+    c2 = np.minimum(np.searchsorted(mu_sorted, t.upper, side="right"), n_k)
+    c3 = np.minimum(np.maximum(np.searchsorted(mu_sorted, t.mu_star, side="left"), c2), n_k)
+    counts5 = np.stack([c1, c2 - c1, c3 - c2, n_k - c3, n - n_k], axis=1)
+    labels5 = np.empty((k.size, 5), dtype=np.uint8)
+    labels5[:, 0] = _SPM
+    labels5[:, 1] = _SL
+    labels5[:, 2] = np.where(t.f_pos, _SM, _SP)
+    labels5[:, 3] = _RO
+    labels5[:, 4] = _RE
+    odd = np.flatnonzero(~t.regular)
+    if odd.size == 0:
+        return labels5, counts5
+    ivs = _intervals(k[odd], cst)
+    starts = np.stack([np.searchsorted(mu_sorted, lo, side="left") for _, lo, _ in ivs], axis=1)
+    ends = np.stack([np.searchsorted(mu_sorted, hi, side="right") for _, _, hi in ivs], axis=1)
+    ends = np.maximum(ends, starts)
+    codes = np.array([c for c, _, _ in ivs], dtype=np.uint8)
+    cuts = np.sort(np.concatenate([starts, ends, np.zeros((odd.size, 1), np.intp),
+                                   np.full((odd.size, 1), n, np.intp)], axis=1), axis=1)
+    left = cuts[:, :-1]
+    cnt = np.diff(cuts, axis=1)
+    # piece [left, left + cnt) lies in interval j iff starts_j <= left < ends_j (cuts include all ends)
+    inside = (starts[:, None, :] <= left[:, :, None]) & (left[:, :, None] < ends[:, None, :])
+    first = np.argmax(inside, axis=2)
+    lab = np.where(inside.any(axis=2), codes[first], np.uint8(255)).astype(np.uint8)
+    m = max(5, cnt.shape[1])
+    labels = np.zeros((k.size, m), dtype=np.uint8)
+    counts = np.zeros((k.size, m), dtype=np.intp)
+    labels[:, :5] = labels5
+    counts[:, :5] = counts5
+    labels[odd] = 0
+    counts[odd] = 0
+    labels[odd, : cnt.shape[1]] = lab
+    counts[odd, : cnt.shape[1]] = cnt
+    return labels, counts
+
+
+def label_grid_loaded(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: float, *,
+                      buoyancy: float = 0.0, uplift: float = 0.0, uplift_ratio: float = 0.0,
+                      uplift_arm: float = 1.0 / 3.0, gyration: float | None = None, crest: float = 1.0
+                      ) -> U8:
+    """Mode codes on the grid ``k_axis x mu_axis``, shape (len(mu_axis), len(k_axis)).
+
+    ``out[i, j] == classify_loaded(k_axis[j], mu_axis[i], ...)`` exactly; each
+    column is cut into runs by :func:`column_segments_loaded` and filled with
+    ``numpy.repeat``.  Axes: 1-D, finite, >= 0, any order.
+    """
+    cst = loaded_constants(gamma, kprime, buoyancy=buoyancy, uplift=uplift, uplift_ratio=uplift_ratio,
+                           uplift_arm=uplift_arm, gyration=gyration, crest=crest)
+    k_ax = np.asarray(k_axis, dtype=np.float64)
+    mu_ax = np.asarray(mu_axis, dtype=np.float64)
+    if k_ax.ndim != 1 or mu_ax.ndim != 1:
+        raise ValueError("k_axis and mu_axis must be 1-D")
+    _validate_km(k_ax, np.zeros(1))
+    _validate_km(np.zeros(1), mu_ax)
+    if mu_ax.size == 0 or k_ax.size == 0:
+        return np.empty((mu_ax.size, k_ax.size), dtype=np.uint8)
+    order = np.argsort(mu_ax, kind="stable")
+    mu_sorted = mu_ax[order]
+    labels, counts = column_segments_loaded(k_ax, mu_sorted, cst)
+    cols = np.repeat(labels.ravel(), counts.ravel()).reshape(k_ax.size, mu_sorted.size)
+    grid = cols.T
+    if np.all(order == np.arange(order.size)):
+        return np.ascontiguousarray(grid)
+    out = np.empty((mu_ax.size, k_ax.size), dtype=np.uint8)
+    out[order] = grid
+    return out
