@@ -57,6 +57,7 @@ __all__ = [
     "RAW_REGIONS_LOADED",
     "raw_region_loaded",
     "named_points_loaded",
+    "LoadedPoint",
 ]
 
 #: Mode code of lift-off (no contact force): the codes 0..7 are :class:`Mode`.
@@ -578,3 +579,107 @@ def label_grid_loaded(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprim
     out = np.empty((mu_ax.size, k_ax.size), dtype=np.uint8)
     out[order] = grid
     return out
+
+
+# -- named points ---------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class LoadedPoint:
+    """A named point of the loaded map: coordinates and meaning."""
+
+    name: str
+    k: float
+    mu: float
+    meaning: str
+
+
+def _w(cst: LoadedConstants, k: float) -> float:
+    return (1.0 - cst.buoyancy - cst.uplift) - cst.uplift_ratio * k
+
+
+def _lower_at(cst: LoadedConstants, k: float) -> float:
+    s = k * cst.kprime + cst.uplift_arm * (cst.uplift + cst.uplift_ratio * k) / cst.gamma
+    return -1.0 / cst.gamma - s / _w(cst, k)
+
+
+def _lift_off_range(cst: LoadedConstants) -> tuple[float, float] | None:
+    """[k1, k2] (k >= 0) where W i^2 + |S| <= 0, or None."""
+    g, eu, u, nu, i2 = cst.gamma, cst.uplift_arm, cst.uplift, cst.uplift_ratio, cst.i2
+    w0 = 1.0 - cst.buoyancy - u
+    lo, hi = 0.0, math.inf
+    for sgn in (1.0, -1.0):  # W i2 + sgn S <= 0: h0 + h1 k <= 0
+        h0 = w0 * i2 + sgn * eu * u
+        h1 = -nu * i2 + sgn * (g * cst.kprime + eu * nu)
+        if h1 == 0.0:
+            if h0 > 0.0:
+                return None
+        elif h1 > 0.0:
+            hi = min(hi, -h0 / h1)
+        else:
+            lo = max(lo, -h0 / h1)
+    return (lo, hi) if lo <= hi else None
+
+
+def named_points_loaded(cst: LoadedConstants) -> dict[str, LoadedPoint]:
+    """The report's named points, generalised, where they exist (finite, k >= 0, W > 0).
+
+    A (k_A = Q/P, on mu = k/W), C (0, upper(0)), D (upper line on mu = 0 above C,
+    lower line below C), E (k_A, 0), B' (f_y of slide-rock about O vanishes on
+    the upper line, at mu_B'), F (mu** = 0: b_O'/a_O'), G (mu* = 0: b_O/|a_O|),
+    C' (mu* meets the lower line beyond D), and L (k where lift-off starts).
+    At zero loads they are the points of :func:`regimemap.curves.named_points`
+    (to rounding).
+    """
+    g, kp, eu, u, nu, i2 = cst.gamma, cst.kprime, cst.uplift_arm, cst.uplift, cst.uplift_ratio, cst.i2
+    w0 = 1.0 - cst.buoyancy - u
+    pts: dict[str, LoadedPoint] = {"O": LoadedPoint("O", 0.0, 0.0, "origin")}
+
+    def ok(k: float) -> bool:
+        return math.isfinite(k) and k >= 0.0 and _w(cst, k) > 0.0
+
+    kA = cst.k_A
+    if ok(kA):
+        pts["A"] = LoadedPoint("A", kA, kA / _w(cst, kA), "rest about O ends: k_A = Q/P; mu = k/W")
+        if kp < 0.0:
+            pts["E"] = LoadedPoint("E", kA, 0.0, "foot of the vertical through A")
+    if w0 > 0.0:
+        c_mu = 1.0 / g - eu * u / (g * w0)
+        if kp >= 0.0 and c_mu >= 0.0:
+            pts["C"] = LoadedPoint("C", 0.0, c_mu, "upper line (xi = -B) meets the mu axis")
+    den_up = g * kp + nu * (1.0 + eu)
+    den_lo = nu * (1.0 - eu) - g * kp
+    if kp > 0.0 and den_up > 0.0 and ok(cst.Q / den_up):
+        pts["D"] = LoadedPoint("D", cst.Q / den_up, 0.0, "upper line meets the k axis")
+    if kp < 0.0 and den_lo > 0.0 and ok(cst.Qp / den_lo):
+        pts["D"] = LoadedPoint("D", cst.Qp / den_lo, 0.0, "lower line (xi = +B) meets the k axis")
+    den_b = nu * i2 - g * kp - eu * nu
+    if den_b > 0.0:
+        kb = (w0 * i2 + eu * u) / den_b
+        if ok(kb):
+            pts["B'"] = LoadedPoint("B'", kb, cst.mu_Bprime, "f_y of slide-rock about O vanishes on the upper line")
+    if cst.aP > 0.0 and ok(cst.bP / cst.aP) and kp < 0.0:
+        pts["F"] = LoadedPoint("F", cst.bP / cst.aP, 0.0, "mu** = 0")
+    if cst.aO < 0.0 and ok(cst.bO / abs(cst.aO)):
+        pts["G"] = LoadedPoint("G", cst.bO / abs(cst.aO), 0.0, "mu* = 0 (f_x of rocking about O = 0)")
+    if kp < 0.0:
+        w1 = -nu
+        p0, p1 = w0 + eu * u, -nu + g * kp + eu * nu
+        A2 = g * cst.aO * w1 + cst.cO * p1
+        A1 = g * (cst.aO * w0 + cst.bO * w1) + cst.cO * p0 + cst.dO * p1
+        A0 = g * cst.bO * w0 + cst.dO * p0
+        roots: list[float] = []
+        if A2 != 0.0:
+            disc = A1 * A1 - 4.0 * A2 * A0
+            if disc >= 0.0:
+                r = math.sqrt(disc)
+                roots = [(-A1 + r) / (2.0 * A2), (-A1 - r) / (2.0 * A2)]
+        elif A1 != 0.0:
+            roots = [-A0 / A1]
+        good = [x for x in roots if ok(x) and _lower_at(cst, x) >= 0.0]
+        if good:
+            kc = max(good)
+            pts["C'"] = LoadedPoint("C'", kc, _lower_at(cst, kc), "mu* meets the lower line")
+    lo_range = _lift_off_range(cst)
+    if lo_range is not None and math.isfinite(lo_range[0]):
+        pts["L"] = LoadedPoint("L", lo_range[0], 0.0, "lift-off starts (W i^2 + |S| = 0)")
+    return pts
