@@ -569,14 +569,15 @@ def label_grid_loaded(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprim
     _validate_km(np.zeros(1), mu_ax)
     if mu_ax.size == 0 or k_ax.size == 0:
         return np.empty((mu_ax.size, k_ax.size), dtype=np.uint8)
-    order = np.argsort(mu_ax, kind="stable")
-    mu_sorted = mu_ax[order]
+    increasing = bool(np.all(np.diff(mu_ax) >= 0.0))
+    order = None if increasing else np.argsort(mu_ax, kind="stable")
+    mu_sorted = mu_ax if order is None else mu_ax[order]
     labels, counts = column_segments_loaded(k_ax, mu_sorted, cst)
     cols = np.repeat(labels.ravel(), counts.ravel()).reshape(k_ax.size, mu_sorted.size)
-    grid = cols.T
-    if np.all(order == np.arange(order.size)):
-        return np.ascontiguousarray(grid)
-    out = np.empty((mu_ax.size, k_ax.size), dtype=np.uint8)
+    grid = np.ascontiguousarray(cols.T)
+    if order is None:
+        return grid
+    out = np.empty_like(grid)
     out[order] = grid
     return out
 
