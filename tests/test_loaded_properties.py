@@ -83,8 +83,9 @@ def test_continuity_at_zero_loads(sc, eps):
                                 g, kp) != base
     assume((~near).any())
     i = math.sqrt((1 + g * g) / 3) * (1 + eps)
-    for loads in (dict(buoyancy=eps), dict(uplift=eps), dict(uplift_ratio=eps), dict(uplift=eps, uplift_arm=-1.0),
-                  dict(gyration=i), dict(buoyancy=eps, uplift=eps, uplift_ratio=eps, uplift_arm=0.7)):
+    for loads in (dict(buoyancy=eps), dict(uplift=eps), dict(uplift_ratio=eps),
+                  dict(uplift=eps, uplift_arm=-1.0), dict(gyration=i),
+                  dict(buoyancy=eps, uplift=eps, uplift_ratio=eps, uplift_arm=0.7)):
         lab = classify_loaded(k, mu, g, kp, **loads)
         assert np.array_equal(lab[~near], base[~near]), loads
 

@@ -24,15 +24,17 @@ def _random(n, seed):
     return dict(
         k=rng.uniform(0, 3, n), mu=rng.uniform(0, 3, n), gamma=rng.uniform(0.2, 6, n),
         kprime=rng.uniform(-1, 1.5, n), buoyancy=rng.uniform(0, 0.99, n), uplift=rng.exponential(0.4, n),
-        uplift_ratio=rng.exponential(0.4, n), uplift_arm=rng.uniform(-1, 1, n), gyration=rng.uniform(0.2, 3, n),
+        uplift_ratio=rng.exponential(0.4, n), uplift_arm=rng.uniform(-1, 1, n),
+        gyration=rng.uniform(0.2, 3, n),
     )
 
 
 @pytest.mark.parametrize("hyp", list(LoadedHypothesis))
 def test_solutions_satisfy_the_equations_of_motion(hyp):
     p = _random(600, 1)
-    r = solve_loaded(hyp, p["k"], p["mu"], p["gamma"], p["kprime"], buoyancy=p["buoyancy"], uplift=p["uplift"],
-                     uplift_ratio=p["uplift_ratio"], uplift_arm=p["uplift_arm"], gyration=p["gyration"])
+    r = solve_loaded(hyp, p["k"], p["mu"], p["gamma"], p["kprime"], buoyancy=p["buoyancy"],
+                     uplift=p["uplift"], uplift_ratio=p["uplift_ratio"], uplift_arm=p["uplift_arm"],
+                     gyration=p["gyration"])
     g, k, i2 = p["gamma"], p["k"], p["gyration"] ** 2
     W = 1 - p["buoyancy"] - p["uplift"] - p["uplift_ratio"] * k
     S = g * k * p["kprime"] + p["uplift_arm"] * (p["uplift"] + p["uplift_ratio"] * k)

@@ -92,7 +92,8 @@ def test_label_grid_loaded_equals_label_grid(gamma, kprime):
     k = np.linspace(0, 6, 211)
     mu = np.linspace(0, 4, 173)
     assert np.array_equal(label_grid_loaded(k, mu, gamma, kprime), label_grid(k, mu, gamma, kprime))
-    assert np.array_equal(label_grid_loaded(k, mu[::-1], gamma, kprime), label_grid(k, mu[::-1], gamma, kprime))
+    rev = mu[::-1]
+    assert np.array_equal(label_grid_loaded(k, rev, gamma, kprime), label_grid(k, rev, gamma, kprime))
 
 
 def test_least_constraint_is_section_4_7_wherever_several_modes_are_admissible():

@@ -37,8 +37,9 @@ Mode codes are :class:`~regimemap.modes.Mode` values, and :data:`LO` (8) for lif
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable, NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -302,13 +303,15 @@ def _slide_rock(k: Float, mu: Float, cst: LoadedConstants, corner: str, sigma: f
         fy = W * i2 + S
         xo = sigma * mu * t["fyO"] - t["fxO"]  # 3 den x_O''
         sd = np.sign(den)
-        return (den != 0.0) & (T * sd >= 0.0) & (fy * sd >= 0.0) & (sigma * xo * sd <= 0.0)
+        out: Bool = (den != 0.0) & (T * sd >= 0.0) & (fy * sd >= 0.0) & (sigma * xo * sd <= 0.0)
+        return out
     den = cst.A0 + 3.0 * sigma * mu * g  # 3 (i^2 + 1 + sigma mu gamma)
     T = W * (sigma * mu * g + 1.0) + S  # theta'' <= 0
     fy = W * i2 - S
     xo = sigma * mu * t["fyP"] - t["fxP"]
     sd = np.sign(den)
-    return (den != 0.0) & (T * sd <= 0.0) & (fy * sd >= 0.0) & (sigma * xo * sd <= 0.0)
+    res: Bool = (den != 0.0) & (T * sd <= 0.0) & (fy * sd >= 0.0) & (sigma * xo * sd <= 0.0)
+    return res
 
 
 def _lift_off(k: Float, mu: Float, cst: LoadedConstants) -> Bool:
@@ -657,7 +660,8 @@ def named_points_loaded(cst: LoadedConstants) -> dict[str, LoadedPoint]:
     if den_b > 0.0:
         kb = (w0 * i2 + eu * u) / den_b
         if ok(kb):
-            pts["B'"] = LoadedPoint("B'", kb, cst.mu_Bprime, "f_y of slide-rock about O vanishes on the upper line")
+            pts["B'"] = LoadedPoint("B'", kb, cst.mu_Bprime,
+                                    "f_y of slide-rock about O vanishes on the upper line")
     if cst.aP > 0.0 and ok(cst.bP / cst.aP) and kp < 0.0:
         pts["F"] = LoadedPoint("F", cst.bP / cst.aP, 0.0, "mu** = 0")
     if cst.aO < 0.0 and ok(cst.bO / abs(cst.aO)):

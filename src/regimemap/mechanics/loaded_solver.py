@@ -264,7 +264,7 @@ def solve_loaded(hypothesis: LoadedHypothesis, k: ArrayLike, mu: ArrayLike, gamm
     A[~solvable] = np.eye(6)
     rhs[~solvable] = 0.0
     sol = np.linalg.solve(A, rhs[..., None])[..., 0]
-    X, Y, T, fx, fy, M = (sol[:, j] for j in range(6))
+    X, Y, T, fx, fy, M = (np.asarray(sol[:, j], dtype=np.float64) for j in range(6))
 
     with np.errstate(divide="ignore", invalid="ignore"):
         xi = np.where(fy != 0.0, M / fy, np.nan)
