@@ -121,3 +121,15 @@ def test_named_points_reduce_to_the_report():
         for n in a:
             assert math.isclose(a[n].k, b[n].k, rel_tol=1e-12), (g, kp, n)
             assert math.isclose(a[n].mu, b[n].mu, rel_tol=1e-12, abs_tol=1e-15), (g, kp, n)
+
+
+def test_curves_reduce_to_the_report_bit_for_bit():
+    from regimemap.curves import mu_star_signed, mu_star_star
+    from regimemap.mechanics.loaded import mu_star_signed_loaded, mu_star_star_loaded
+
+    for g, kp in sweep(11):
+        k, _ = sample_points(g, kp, 2000, seed=8)
+        p, c = Parameters(g, kp), loaded_constants(g, kp)
+        assert np.array_equal(mu_star_signed_loaded(k, c), mu_star_signed(p, k))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            assert np.array_equal(mu_star_star_loaded(k, c), mu_star_star(p, k), equal_nan=True)

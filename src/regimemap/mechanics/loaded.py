@@ -58,6 +58,8 @@ __all__ = [
     "RAW_REGIONS_LOADED",
     "raw_region_loaded",
     "named_points_loaded",
+    "mu_star_signed_loaded",
+    "mu_star_star_loaded",
     "LoadedPoint",
 ]
 
@@ -243,6 +245,22 @@ def thresholds(k: ArrayLike, cst: LoadedConstants) -> Thresholds:
     return Thresholds(W, s, lift_off, rest_ok, mu_rest, upper, lower, mu_s, f >= 0.0, regular)
 
 
+def mu_star_signed_loaded(k: ArrayLike, cst: LoadedConstants) -> Float:
+    """(a_O k + b_O)/(c_O k + d_O): f_x/f_y of rocking about O ((3.22)-(3.23) generalised)."""
+    k = np.asarray(k, dtype=np.float64)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out: Float = (cst.aO * k + cst.bO) / (cst.cO * k + cst.dO)
+    return out
+
+
+def mu_star_star_loaded(k: ArrayLike, cst: LoadedConstants) -> Float:
+    """mu**(k) = (a_O' k - b_O')/(d_O' - c_O' k), where the slip of O' in SRO'- vanishes ((4.96)-(4.97))."""
+    k = np.asarray(k, dtype=np.float64)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out: Float = (cst.aP * k - cst.bP) / (cst.dP - cst.cP * k)
+    return out
+
+
 def _validate_km(k: ArrayLike, mu: ArrayLike) -> tuple[Float, Float]:
     k_arr = np.asarray(k, dtype=np.float64)
     mu_arr = np.asarray(mu, dtype=np.float64)
@@ -378,6 +396,27 @@ def classify_loaded(k: ArrayLike, mu: ArrayLike, gamma: float, kprime: float, *,
     ndarray of uint8
         :class:`Mode` codes, :data:`LO` for lift-off.  At zero loads and uniform
         inertia this is :func:`regimemap.classify.classify` bit for bit.
+
+    Raises
+    ------
+    ValueError
+        For parameters out of range (see :func:`loaded_constants`) or k, mu
+        negative or not finite.
+
+    Notes
+    -----
+    The label is the first admissible mode in the selection order LO, RE, SL,
+    SRO'-, RO, SRO-, SRO+, RO', SRO'+ (Gauss's least constraint, measured).
+    In a *regular* column (``Thresholds.regular``: W > 0, f_y of rocking about
+    O > 0, rest not failing about O') this is the report's rule with the
+    generalised thresholds, from mu = 0 up::
+
+        SRO'-  mu < lower;  SL  lower <= mu <= upper;  SRO-/SRO+ (sign of a_O k + b_O);
+        RO  mu >= mu*;  RE  mu >= k/W where k P <= Q (overrides)
+
+    Lift-off (W i^2 + |S| <= 0) is a whole column.  Other columns take the
+    first of the per-k mu-intervals of every hypothesis.  Derivation:
+    ``docs/derivation.md``.
     """
     cst = loaded_constants(gamma, kprime, buoyancy=buoyancy, uplift=uplift, uplift_ratio=uplift_ratio,
                            uplift_arm=uplift_arm, gyration=gyration, crest=crest)
