@@ -62,6 +62,7 @@ __all__ = [
     "LoadedHypothesis",
     "LoadedResponse",
     "applied_loads",
+    "default_i2",
     "dynamic_rows",
     "contact_rows",
     "solve_loaded",
