@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify, label_grid
-from regimemap.classify import PRIORITY, _thresholds, choose
-from regimemap.curves import mu_star, named_points, upper_line
+from regimemap.mechanics.constants import thresholds as _thresholds
+from regimemap.mechanics.curves import mu_star, named_points, upper_line
 from regimemap.mechanics.loaded import (
     LO,
     classify_loaded,
@@ -19,7 +19,8 @@ from regimemap.mechanics.loaded import (
     thresholds,
 )
 from regimemap.mechanics.loaded_solver import LIFT_OFF, SELECTION_ORDER, least_constraint
-from regimemap.solver import admissible
+from regimemap.mechanics.modes import PRIORITY
+from regimemap.mechanics.solver import admissible, choose
 
 from ._sweep import sample_points, sweep
 
@@ -124,7 +125,7 @@ def test_named_points_reduce_to_the_report():
 
 
 def test_curves_reduce_to_the_report_bit_for_bit():
-    from regimemap.curves import mu_star_signed, mu_star_star
+    from regimemap.mechanics.curves import mu_star_signed, mu_star_star
     from regimemap.mechanics.loaded import mu_star_signed_loaded, mu_star_star_loaded
 
     for g, kp in sweep(11):

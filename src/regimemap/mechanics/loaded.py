@@ -44,7 +44,7 @@ from typing import Any, NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from regimemap.modes import Mode
+from .modes import Mode
 
 __all__ = [
     "LO",

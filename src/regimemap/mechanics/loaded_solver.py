@@ -54,7 +54,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from regimemap.modes import Mode
+from .modes import Mode
 
 __all__ = [
     "LIFT_OFF",
