@@ -36,14 +36,14 @@ def engine() -> list[tuple[str, float, str, str]]:
     k = np.linspace(0, 3, 2000)
     mu = np.linspace(0, 3, 2000)
     for gamma, kprime in ((3.0, 0.4), (1.0, -0.3)):
-        t = best_of(lambda: label_grid(k, mu, gamma, kprime))
+        t = best_of(lambda gamma=gamma, kprime=kprime: label_grid(k, mu, gamma, kprime))
         rows.append((f"label_grid 2000x2000 (gamma={gamma}, k'={kprime})", 4e6 / t, "points/s",
                      ">= 100e6"))
     rng = np.random.default_rng(0)
     ks = rng.uniform(0, 3, 4_000_000)
     ms = rng.uniform(0, 3, 4_000_000)
     for gamma, kprime in ((3.0, 0.4), (1.0, -0.3)):
-        t = best_of(lambda: classify(ks, ms, gamma, kprime), repeat=5)
+        t = best_of(lambda gamma=gamma, kprime=kprime: classify(ks, ms, gamma, kprime), repeat=5)
         rows.append((f"classify 4e6 scattered (gamma={gamma}, k'={kprime})", 4e6 / t, "points/s",
                      ">= 20e6"))
     n = 200_000

@@ -138,7 +138,7 @@ def test_json_regions_are_the_map(tmp_path):
     p = Parameters(3.0, 0.9)
     d = map_geometry(p)
     rng = np.random.default_rng(2)
-    k_max, mu_max = d["extent"]["k_max"], d["extent"]["mu_max"]
+    k_max = d["extent"]["k_max"]
     for label, polys in d["regions"].items():
         for poly in polys:
             poly = np.asarray(poly)

@@ -103,7 +103,7 @@ def test_line_samples_are_as_long_as_the_swatches():
     fig.canvas.draw()
     r = fig.canvas.get_renderer()
     widths = {}
-    for children, label in _key_parts(art.legend):
+    for children, _label in _key_parts(art.legend):
         for c in children:
             if isinstance(c, (ModeSwatch, Line2D)):
                 widths.setdefault(type(c).__name__, set()).add(round(_extent(c, r).width, 0))

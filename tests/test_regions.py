@@ -36,7 +36,7 @@ def test_raw_regions_equal_solver(gamma, kprime):
     perturbed = [admissible(np.maximum(k + dk, 0), np.maximum(mu + dm, 0), gamma, kprime)
                  for dk, dm in ((H, 0), (-H, 0), (0, H), (0, -H))]
     for mode in Mode:
-        pred, ok1 = _stable(lambda a, b: raw_region(mode, p, a, b), k, mu)
+        pred, ok1 = _stable(lambda a, b, mode=mode: raw_region(mode, p, a, b), k, mu)
         adm = base[mode]
         ok2 = np.logical_and.reduce([q[mode] == adm for q in perturbed])
         keep = ok1 & ok2

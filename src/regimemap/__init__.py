@@ -11,6 +11,8 @@ when they are used.
 
 from __future__ import annotations
 
+from typing import Any
+
 from ._version import __version__
 from .maps.classify import PRIORITY, classify, label_grid
 from .mechanics.block import Case, Parameters
@@ -37,7 +39,7 @@ __all__ = [
 _LAZY = {"PointResult", "margin", "query_point", "query_points"}
 
 
-def __getattr__(name: str):  # PEP 562: the point query is imported on first use
+def __getattr__(name: str) -> Any:  # PEP 562: the point query is imported on first use
     if name in _LAZY:
         from .maps import query
 

@@ -8,7 +8,7 @@ import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -22,6 +22,15 @@ from ..mechanics.validation import (
     check_resolution,
 )
 
+if TYPE_CHECKING:  # pragma: no cover
+    from click.decorators import FC
+
+    #: Base of the option types.  Recent click makes ParamType generic in the
+    #: converted value; click 8.1 cannot subscript it at run time.
+    ParamType = click.ParamType[Any]
+else:
+    ParamType = click.ParamType
+
 __all__ = [
     "CONTEXT_SETTINGS",
     "gamma_option",
@@ -34,6 +43,7 @@ __all__ = [
     "RunError",
     "gc_paused_at_start",
     "import_matplotlib",
+    "ParamType",
 ]
 
 CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
@@ -45,7 +55,7 @@ class RunError(click.ClickException):
     exit_code = 1
 
 
-class _Checked(click.ParamType):
+class _Checked(ParamType):
     """A click type that validates with one of regimemap.validation's checks."""
 
     def __init__(self, name: str, check: Callable[[Any], Any], allowed: str = "a number"):
@@ -75,12 +85,12 @@ GAMMA = _Checked("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAM
 KPRIME = _Checked("kprime", check_kprime, "a number in [-1, 1]")
 
 
-def positive_float(name: str, hi: float = MAX_AXIS) -> click.ParamType:
+def positive_float(name: str, hi: float = MAX_AXIS) -> ParamType:
     """A click type for a finite float in (0, hi] (default: MAX_AXIS, for axis limits)."""
     return _Checked(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
 
 
-class _Resolution(click.ParamType):
+class _Resolution(ParamType):
     name = "integer"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> int:
@@ -93,7 +103,7 @@ class _Resolution(click.ParamType):
 resolution_type = _Resolution()
 
 
-def gamma_option(**kwargs: Any) -> Callable:
+def gamma_option(**kwargs: Any) -> Callable[[FC], FC]:
     """``--gamma`` (aspect ratio H/B > 0)."""
     kwargs.setdefault("required", True)
     return click.option("--gamma", type=GAMMA,
@@ -101,7 +111,7 @@ def gamma_option(**kwargs: Any) -> Callable:
                         **kwargs)
 
 
-def kprime_option(**kwargs: Any) -> Callable:
+def kprime_option(**kwargs: Any) -> Callable[[FC], FC]:
     """``--kprime`` (force height h/H in [-1, 1])."""
     kwargs.setdefault("required", True)
     return click.option("--kprime", type=KPRIME,
@@ -116,7 +126,7 @@ def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
     try:
         return check_output_path(path, param)
     except ValueError as exc:
-        raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'")
+        raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'") from None
 
 
 def _one_line(text: str) -> str:

@@ -7,7 +7,7 @@ from typing import Any
 
 import click
 
-from ._common import RunError, gamma_option, import_matplotlib, output_path, positive_float
+from ._common import ParamType, RunError, gamma_option, import_matplotlib, output_path, positive_float
 
 __all__ = ["atlas_cmd", "animate_cmd"]
 
@@ -17,7 +17,7 @@ _MAX_PANELS = 48
 _MAX_FRAMES = 400
 
 
-class _Values(click.ParamType):
+class _Values(ParamType):
     """A list ``a,b,c`` or a range ``start:stop:count`` of checked numbers."""
 
     def __init__(self, name: str, check: Callable[[float], float], max_count: int):

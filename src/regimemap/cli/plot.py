@@ -9,11 +9,12 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
 from ._common import (
+    ParamType,
     RunError,
     gamma_option,
     import_matplotlib,
@@ -23,6 +24,9 @@ from ._common import (
     positive_float,
     resolution_type,
 )
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..io.points import DesignPoint
 
 #: Output formats, as in :data:`regimemap.render.FORMATS` (repeated so that
 #: this module need not import the renderer).
@@ -35,7 +39,7 @@ DEFAULT_SAMPLES = 801
 # -- option types --------------------------------------------------------------------------
 
 
-class _Dpi(click.ParamType):
+class _Dpi(ParamType):
     name = "dpi"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
@@ -48,7 +52,7 @@ class _Dpi(click.ParamType):
         return v
 
 
-class _Format(click.ParamType):
+class _Format(ParamType):
     name = "png|svg|pdf"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
@@ -58,7 +62,7 @@ class _Format(click.ParamType):
         return v
 
 
-class _FormatList(click.ParamType):
+class _FormatList(ParamType):
     name = "FORMATS"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
@@ -73,7 +77,7 @@ class _FormatList(click.ParamType):
         return tuple(dict.fromkeys(items))
 
 
-class _Modes(click.ParamType):
+class _Modes(ParamType):
     name = "MODES"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
@@ -100,7 +104,7 @@ class _Modes(click.ParamType):
         return tuple(dict.fromkeys(out))
 
 
-class _PointSpec(click.ParamType):
+class _PointSpec(ParamType):
     name = "K,MU[:NAME]"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
@@ -164,8 +168,8 @@ def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
         raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _read_points(files: Sequence[str], specs: Sequence[Any], gamma: float, kprime: float
-                 ) -> list[Any]:
+def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float
+                 ) -> list[DesignPoint]:
     """Design points from ``--points`` files and ``--point`` specs, for this map."""
     points = list(specs)
     if files:
@@ -175,7 +179,8 @@ def _read_points(files: Sequence[str], specs: Sequence[Any], gamma: float, kprim
             points.extend(read_points_csv(f))
         except ValueError as exc:
             raise click.BadParameter(str(exc), param_hint="'--points'") from None
-    keep, other = [], []
+    keep: list[DesignPoint] = []
+    other: list[DesignPoint] = []
     for pt in points:
         same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
             pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))

@@ -9,12 +9,12 @@ from typing import Any
 
 import click
 
-from ._common import RunError, gamma_option, kprime_option, output_path
+from ._common import ParamType, RunError, gamma_option, kprime_option, output_path
 
 __all__ = ["classify_cmd"]
 
 
-class _NonNegative(click.ParamType):
+class _NonNegative(ParamType):
     """A finite float >= 0 (k, mu)."""
 
     name = "number"

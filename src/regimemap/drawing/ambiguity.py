@@ -13,17 +13,22 @@ matplotlib is imported by this module; import it only when drawing.
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from matplotlib.artist import Artist
 from matplotlib.axes import Axes
+from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
 from ..maps.ambiguity import AmbiguousRegion, ambiguous_regions
 from ..maps.geometry import DEFAULT_SAMPLES
 from ..mechanics.block import Parameters
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.backend_bases import RendererBase
 
 __all__ = ["draw_ambiguity", "AMBIGUITY_STYLE", "LEGEND_LABEL", "legend_handle"]
 
@@ -176,6 +181,8 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     fs = st["text_size"]
     # size of the label as a fraction of the axes (approximate text metrics)
     fig = ax.figure
+    if not isinstance(fig, Figure):  # a SubFigure has no size of its own
+        raise TypeError("regimemap draws maps on the axes of a Figure, not of a SubFigure")
     pos = ax.get_position()
     w_in = max(pos.width * fig.get_figwidth(), 1e-6)
     h_in = max(pos.height * fig.get_figheight(), 1e-6)
@@ -241,7 +248,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     else:
         _, cx, cy, b = choice
     placed.append(b)
-    placed.append((cx, cy, tx0, ty0, "arrow"))  # type: ignore[arg-type]
+    placed.append((cx, cy, tx0, ty0, "arrow"))
     t = ax.annotate(text, xy=target, xytext=(cx * k_max, cy * mu_max), fontsize=fs,
                     ha="center", va="center", multialignment="center", bbox=bbox, zorder=6,
                     arrowprops=dict(arrowstyle="-|>", color="0.15", linewidth=0.8,
@@ -262,10 +269,14 @@ def _legend_box(ax: Axes) -> list[tuple[float, float, float, float]]:
             renderer = canvas.get_renderer()
             bb = leg.get_window_extent(renderer)
         else:  # a bare Figure: measure with a temporary Agg canvas, then put the old one back
+            if not isinstance(fig, Figure):  # a SubFigure cannot take a canvas of its own
+                return []
             from matplotlib.backends.backend_agg import FigureCanvasAgg
 
             try:
-                bb = leg.get_window_extent(FigureCanvasAgg(fig).get_renderer())
+                # (backend_agg is not annotated: its get_renderer returns a RendererAgg)
+                get_renderer: Callable[[], RendererBase] = FigureCanvasAgg(fig).get_renderer
+                bb = leg.get_window_extent(get_renderer())
             finally:
                 fig.set_canvas(canvas)
     except Exception:  # pragma: no cover - cannot measure: place labels anyway

@@ -29,8 +29,10 @@ from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.validation import check_gamma, check_kprime
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.animation import PillowWriter
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
+    from PIL.Image import Image
 
 __all__ = [
     "MAX_PANELS",
@@ -337,17 +339,20 @@ def sweep_extent(gamma: float, kprimes: Sequence[float]) -> tuple[float, float]:
     return shared_extent([_extent_of(Parameters(gamma, kp)) for kp in kprimes])
 
 
-def _pillow_writer(fps: float) -> Any:
+def _pillow_writer(fps: float) -> PillowWriter:
     """matplotlib's PillowWriter, saving GIF whatever the (temporary) file name."""
     from matplotlib.animation import PillowWriter
 
     class _GifWriter(PillowWriter):
+        _frames: list[Image]  # the frames grabbed so far (set by PillowWriter.setup)
+
         def finish(self) -> None:  # as PillowWriter.finish, with the format given
             self._frames[0].save(
                 self.outfile, format="GIF", save_all=True, append_images=self._frames[1:],
                 duration=int(1000 / self.fps), loop=0)
 
-    return _GifWriter(fps=fps)
+    # matplotlib's stubs say int; the writer takes any rate (the GIF stores 1000 / fps ms a frame)
+    return _GifWriter(fps=fps)  # type: ignore[arg-type]
 
 
 def check_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float],

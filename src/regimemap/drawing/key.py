@@ -29,6 +29,8 @@ from ..mechanics.modes import Mode
 from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol
 
 if TYPE_CHECKING:
+    from matplotlib.axes import Axes
+    from matplotlib.figure import FigureBase
     from matplotlib.legend import Legend
     from matplotlib.transforms import Transform
 
@@ -124,7 +126,7 @@ def key_handles(modes: Sequence[Mode], *, hatches: bool = True, boundary: bool =
     return handles
 
 
-def key_legend(target: Any, handles: Sequence[Any], **kwargs: Any) -> Legend:
+def key_legend(target: Axes | FigureBase, handles: Sequence[Any], **kwargs: Any) -> Legend:
     """Add the key to ``target`` (an Axes or a Figure): ``target.legend`` with the handlers."""
     kw: dict[str, Any] = {"handlelength": HANDLELENGTH, "handler_map": HANDLER_MAP}
     kw.update(kwargs)

@@ -46,7 +46,6 @@ if TYPE_CHECKING:  # pragma: no cover
     from .presets import FigurePreset
 
 __all__ = [
-    "ModeStyle",
     "MODE_STYLE",
     "DEFAULT_DPI",
     "FIGSIZE",
@@ -207,7 +206,12 @@ class _Frame:
     """Conversions between data, view fractions and points for one Axes (no drawing)."""
 
     def __init__(self, ax: Axes, k_max: float, mu_max: float):
-        w_in, h_in = ax.figure.get_size_inches()
+        from matplotlib.figure import Figure
+
+        fig = ax.figure
+        if not isinstance(fig, Figure):  # a SubFigure has no size of its own
+            raise TypeError("regimemap draws maps on the axes of a Figure, not of a SubFigure")
+        w_in, h_in = fig.get_size_inches()
         pos = ax.get_position()
         self.w_pt = 72.0 * w_in * pos.width
         self.h_pt = 72.0 * h_in * pos.height
@@ -300,7 +304,7 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
     # fills
     for mode in data.modes:
         st = MODE_STYLE[mode]
-        patches = []
+        patches: list[Patch] = []
         for poly in data.polygons.get(mode, []):
             if len(poly) < 3:
                 continue
@@ -318,7 +322,7 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
     # curves, their labels and the named points
     if curves:
         for name, cd in data.curves.items():
-            lines = []
+            pieces: list[Line2D] = []
             for pts, is_boundary in cd.runs():
                 if cd.dotted:
                     kw: dict[str, Any] = dict(DOTTED)
@@ -330,8 +334,8 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
                               solid_capstyle="round", solid_joinstyle="round",
                               label=f"_{name}", **kw)
                 ax.add_line(line)
-                lines.append(line)
-            out.curves[name] = lines
+                pieces.append(line)
+            out.curves[name] = pieces
         offsets = _point_offsets(data.points, frame)
         for name, pt in data.points.items():
             (marker,) = ax.plot([pt.k], [pt.mu], linestyle="none", marker="o", markersize=3.2,

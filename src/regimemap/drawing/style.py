@@ -12,9 +12,12 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..mechanics.modes import Mode
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.typing import RcKeyType
 
 __all__ = [
     "CONSTRUCTION",
@@ -68,11 +71,12 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
 HATCH_LW = 0.45
 LINE_LW = 1.15
 #: Dashed construction lines and the report's dotted lines.
-CONSTRUCTION = {"color": "0.3", "linewidth": 0.7, "dashes": (4.0, 2.5)}
-DOTTED = {"color": "0.1", "linewidth": 1.0, "dashes": (1.0, 2.0)}
+#: (keyword arguments of :class:`~matplotlib.lines.Line2D`)
+CONSTRUCTION: dict[str, Any] = {"color": "0.3", "linewidth": 0.7, "dashes": (4.0, 2.5)}
+DOTTED: dict[str, Any] = {"color": "0.1", "linewidth": 1.0, "dashes": (1.0, 2.0)}
 
 #: rcParams for every map (applied with :func:`style_context`, never globally).
-_RC: dict[str, Any] = {
+_RC: dict[RcKeyType, Any] = {
     "svg.hashsalt": "regimemap",
     "svg.fonttype": "path",
     "pdf.fonttype": 42,

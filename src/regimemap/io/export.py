@@ -356,7 +356,8 @@ def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None
                          "the mode Section 4.7 of the report keeps ('chosen')",
         },
     }
-    return _json_safe(geom)
+    safe: dict[str, Any] = _json_safe(geom)  # a dict stays a dict (with str keys)
+    return safe
 
 
 def write_json(path: str | os.PathLike[str], geometry: dict[str, Any]) -> None:

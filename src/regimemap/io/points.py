@@ -7,6 +7,8 @@ import math
 import os
 import re
 import stat
+from collections.abc import Iterator
+from typing import TextIO
 
 from ..maps.points import DesignPoint
 from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
@@ -64,7 +66,7 @@ def parse_point_spec(spec: str) -> DesignPoint:
     return DesignPoint(k, mu, name.strip())
 
 
-def _open_points_file(path: str):
+def _open_points_file(path: str) -> TextIO:
     try:
         st = os.stat(path)
     except OSError as exc:
@@ -82,7 +84,7 @@ def _open_points_file(path: str):
         raise ValueError(f"cannot read points file {path!r}: {exc.strerror}") from None
 
 
-def _lines(fh, path: str):
+def _lines(fh: TextIO, path: str) -> Iterator[str]:
     """The lines of ``fh``, refusing endless lines and files beyond the size limit."""
     total = 0
     number = 0
@@ -151,7 +153,7 @@ def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
                     row = row + [""] * (len(cols) - len(row))
                 where = f"{path}, line {line}"
 
-                def cell(c: str) -> str:
+                def cell(c: str, row: list[str] = row) -> str:
                     return row[idx[c]].strip()
 
                 k = _number(cell("k"), "k", f"{where}, column k")
