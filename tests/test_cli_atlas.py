@@ -27,8 +27,8 @@ def test_help(cmd, example, flag):
 
 
 def test_limits_match_library():
-    assert cli_atlas._MAX_PANELS == atlas_mod.MAX_PANELS
-    assert cli_atlas._MAX_FRAMES == atlas_mod.MAX_FRAMES
+    assert cli_atlas.MAX_PANELS == atlas_mod.MAX_PANELS
+    assert cli_atlas.MAX_FRAMES == atlas_mod.MAX_FRAMES
 
 
 def test_atlas_svg_has_every_panel(tmp_path):

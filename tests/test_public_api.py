@@ -28,7 +28,7 @@ PUBLIC_API = {
     ],
     "regimemap.drawing": [
         "FIGSIZE", "MODE_STYLE", "MapArtists", "atlas_figure", "default_title", "draw_ambiguity",
-        "draw_design_points", "draw_map", "fit_figure", "map_figure", "new_figure", "render_map",
+        "draw_design_points", "draw_map", "fit_figure", "load_matplotlib", "map_figure", "new_figure", "render_map",
         "render_preset", "style_context",
     ],
     "regimemap.io": [

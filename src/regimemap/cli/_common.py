@@ -155,7 +155,7 @@ def output_dir(path: str | os.PathLike[str], param: str = "--out") -> Path:
     empty hidden file, since permission bits do not tell (root, read-only or
     virtual file systems such as /proc).
     """
-    import tempfile
+    from ..io.atomic import folder_problem
 
     p = Path(path)
     if not str(path).strip():
@@ -164,18 +164,9 @@ def output_dir(path: str | os.PathLike[str], param: str = "--out") -> Path:
         raise click.BadParameter(f"{str(path)!r} is a file, not a folder", param_hint=f"'{param}'")
     if not p.is_dir():
         raise click.BadParameter(f"folder {str(path)!r} does not exist", param_hint=f"'{param}'")
-    if not os.access(p, os.W_OK | os.X_OK):
-        raise click.BadParameter(f"folder {str(path)!r} is not writable", param_hint=f"'{param}'")
-    try:
-        fd, probe = tempfile.mkstemp(prefix=".regimemap-probe.", dir=p)
-    except OSError as exc:
-        raise click.BadParameter(f"folder {str(path)!r} is not writable ({exc.strerror})",
-                                 param_hint=f"'{param}'") from None
-    os.close(fd)
-    try:
-        os.unlink(probe)
-    except OSError:  # pragma: no cover
-        pass
+    problem = folder_problem(p)
+    if problem:
+        raise click.BadParameter(f"folder {str(path)!r} {problem}", param_hint=f"'{param}'")
     return p
 
 
@@ -218,8 +209,9 @@ def import_matplotlib() -> None:
     The renderer imports matplotlib lazily; a drawing command calls this first
     so that the import happens while the collector is paused (see above).
     """
-    import matplotlib.backends.backend_agg  # noqa: F401
-    import matplotlib.figure  # noqa: F401
+    from ..drawing import load_matplotlib
+
+    load_matplotlib()
 
     if _gc_state["paused"]:
         _gc_state["paused"] = False

@@ -11,10 +11,15 @@ from ._common import ParamType, RunError, gamma_option, import_matplotlib, outpu
 
 __all__ = ["atlas_cmd", "animate_cmd"]
 
-# kept equal to regimemap.atlas.MAX_PANELS / MAX_FRAMES (checked by the tests); not imported
-# here so that loading the command line stays light
-_MAX_PANELS = 48
-_MAX_FRAMES = 400
+from ..drawing.atlas import (
+    ANIMATION_DPI,
+    ANIMATION_DPI_RANGE,
+    ATLAS_DPI,
+    ATLAS_DPI_RANGE,
+    FPS_RANGE,
+    MAX_FRAMES,
+    MAX_PANELS,
+)
 
 
 class _Values(ParamType):
@@ -62,10 +67,10 @@ def _figure_output(path: str) -> str:
 
 @click.command("atlas", short_help="Small multiples of the map: rows gamma, columns k'.")
 @click.option("--gamma", "gammas", required=True, metavar="LIST",
-              type=_Values("gamma", _gamma_check, _MAX_PANELS),
+              type=_Values("gamma", _gamma_check, MAX_PANELS),
               help="Aspect ratios H/B (> 0), one row each: 1,2,3 or start:stop:count.")
 @click.option("--kprime", "kprimes", required=True, metavar="LIST",
-              type=_Values("kprime", _kprime_check, _MAX_PANELS),
+              type=_Values("kprime", _kprime_check, MAX_PANELS),
               help="Force heights h/H in [-1, 1], one column each: -0.6,0,0.4 or -1:1:5.")
 @click.option("--share", type=click.Choice(["all", "row", "none"]), default="all",
               show_default=True,
@@ -74,7 +79,7 @@ def _figure_output(path: str) -> str:
               help="Right end of the k axis of every panel (default: automatic).")
 @click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
               help="Top of the mu axis of every panel (default: automatic).")
-@click.option("--dpi", type=click.IntRange(30, 600), default=150, show_default=True,
+@click.option("--dpi", type=click.IntRange(*ATLAS_DPI_RANGE), default=ATLAS_DPI, show_default=True,
               help="Resolution of PNG output.")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
               help="Output file: .png, .svg or .pdf (written atomically).")
@@ -100,10 +105,10 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
       regimemap atlas --gamma 0.5:3:6 --kprime -0.4 --mu-max 3 -o slender.pdf
     """
     n = len(gammas) * len(kprimes)
-    if n > _MAX_PANELS:
+    if n > MAX_PANELS:
         raise click.UsageError(
             f"{len(gammas)} gamma x {len(kprimes)} kprime = {n} panels exceed the limit of "
-            f"{_MAX_PANELS}; give fewer values to --gamma or --kprime")
+            f"{MAX_PANELS}; give fewer values to --gamma or --kprime")
     fmt = _figure_output(output)
     import_matplotlib()
     from ..io.figures import write_atlas
@@ -128,11 +133,11 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
 @click.command("animate", short_help="A GIF of the map as k' sweeps a range.")
 @gamma_option()
 @click.option("--kprime", "kprimes", required=True, metavar="RANGE",
-              type=_Values("kprime", _kprime_check, _MAX_FRAMES),
+              type=_Values("kprime", _kprime_check, MAX_FRAMES),
               help="k' of the frames: start:stop:count (e.g. -1:1:41) or a list -1,-0.5,0.")
-@click.option("--fps", type=click.FloatRange(0.5, 50.0), default=8.0, show_default=True,
+@click.option("--fps", type=click.FloatRange(*FPS_RANGE), default=8.0, show_default=True,
               help="Frames per second.")
-@click.option("--dpi", type=click.IntRange(30, 300), default=80, show_default=True,
+@click.option("--dpi", type=click.IntRange(*ANIMATION_DPI_RANGE), default=ANIMATION_DPI, show_default=True,
               help="Pixels per inch (the frame is 6.4 x 5.6 inches: 512 x 448 at 80).")
 @click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
               help="Right end of the k axis (default: upper quartile of the frames' automatic views).")

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ..drawing.save import DEFAULT_DPI, DPI_RANGE
 from ._common import (
     ParamType,
     RunError,
@@ -25,14 +26,14 @@ from ._common import (
     resolution_type,
 )
 
+_LO, _HI = DPI_RANGE
+
 if TYPE_CHECKING:  # pragma: no cover
     from ..io.points import DesignPoint
 
 #: Output formats, as in :data:`regimemap.render.FORMATS` (repeated so that
 #: this module need not import the renderer).
 FORMATS = ("png", "svg", "pdf")
-#: PNG resolution of every command (dots per inch), as :data:`regimemap.render.DEFAULT_DPI`.
-DEFAULT_DPI = 150
 DEFAULT_SAMPLES = 801
 
 
@@ -46,9 +47,9 @@ class _Dpi(ParamType):
         try:
             v = float(value)
         except (TypeError, ValueError):
-            self.fail(f"{value!r} is not a number; use a resolution in [20, 1200]", param, ctx)
-        if not (math.isfinite(v) and 20.0 <= v <= 1200.0):
-            self.fail(f"dpi must be a number in [20, 1200], got {value!r}", param, ctx)
+            self.fail(f"{value!r} is not a number; use a resolution in [{_LO:g}, {_HI:g}]", param, ctx)
+        if not (math.isfinite(v) and _LO <= v <= _HI):
+            self.fail(f"dpi must be a number in [{_LO:g}, {_HI:g}], got {value!r}", param, ctx)
         return v
 
 
@@ -245,7 +246,7 @@ Examples:
 @click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
               help="Samples of k for the region polygons and curves (2-5000).")
 @click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
-              help="Resolution of PNG output (20-1200 dots per inch).")
+              help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--title", default=None,
               help="Title above the map (mathtext allowed); '' for none. "
                    "Default: what is shown, the report's case, gamma and kprime.")
@@ -338,7 +339,7 @@ def _preset_or_usage_error(fid: str) -> Any:
 @click.option("--format", "fmt", type=_Format(), default=None,
               help="png, svg or pdf (default: from the suffix of -o, else png).")
 @click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
-              help="Resolution of PNG output (20-1200 dots per inch).")
+              help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: float) -> None:
     preset = _preset_or_usage_error(figure_id)
     path, fmt = _resolve_output(output, fmt, f"fig-{preset.id}")
@@ -373,7 +374,7 @@ Examples:
 @click.option("--format", "formats", type=_FormatList(), default="png", show_default=True,
               help="Comma-separated formats: png, svg, pdf.")
 @click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
-              help="Resolution of PNG output (20-1200 dots per inch).")
+              help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool) -> None:

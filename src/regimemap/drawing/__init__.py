@@ -22,6 +22,7 @@ __all__ = [
     "draw_design_points",
     "draw_map",
     "fit_figure",
+    "load_matplotlib",
     "map_figure",
     "new_figure",
     "render_map",
@@ -45,6 +46,16 @@ _WHERE = {
     "atlas_figure": "atlas",
     "draw_ambiguity": "ambiguity",
 }
+
+
+def load_matplotlib() -> None:
+    """Import matplotlib's Figure and Agg canvas now (the drawing modules import them on first use).
+
+    The command line calls this at a moment of its choosing (with the garbage
+    collector paused, see :mod:`regimemap.cli`).
+    """
+    import matplotlib.backends.backend_agg  # noqa: F401
+    import matplotlib.figure  # noqa: F401
 
 
 def __getattr__(name: str) -> Any:  # PEP 562: matplotlib is imported on first use

@@ -62,6 +62,14 @@ SHARE: tuple[str, ...] = ("all", "row", "none")
 PANEL_SIZE: tuple[float, float] = (2.7, 2.35)
 #: Samples of k per panel / frame (fewer than a single map: the panels are small).
 SAMPLES = 401
+#: Resolution (dots per inch) of an atlas by default, and the range allowed.
+ATLAS_DPI = 150
+ATLAS_DPI_RANGE: tuple[int, int] = (30, 600)
+#: Resolution of the frames of an animation by default, and the range allowed.
+ANIMATION_DPI = 80
+ANIMATION_DPI_RANGE: tuple[int, int] = (30, 300)
+#: Frames per second of an animation: the range allowed.
+FPS_RANGE: tuple[float, float] = (0.5, 50.0)
 
 
 def _fmt(x: float) -> str:
@@ -219,7 +227,7 @@ def _panel_title(g: float, kp: float) -> str:
 def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
                  k_max: float | None = None, mu_max: float | None = None,
                  panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
-                 dpi: float = 150, curves: bool = True, labels: bool = True) -> Figure:
+                 dpi: float = ATLAS_DPI, curves: bool = True, labels: bool = True) -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k'.
 
     Parameters
@@ -376,13 +384,14 @@ def _check_frames(gamma: float, kprimes: Sequence[float], fps: float) -> None:
         raise ValueError("an animation needs at least one kprime")
     if len(kps) > MAX_FRAMES:
         raise ValueError(f"{len(kps)} frames exceed the limit of {MAX_FRAMES}")
-    if not (0.5 <= fps <= 50.0):
-        raise ValueError(f"fps must be a number in [0.5, 50], got {fps!r}")
+    lo, hi = FPS_RANGE
+    if not (lo <= fps <= hi):
+        raise ValueError(f"fps must be a number in [{lo:g}, {hi:g}], got {fps!r}")
 
 
 def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
                     k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
-                    dpi: float = 80.0, figsize: tuple[float, float] | None = None,
+                    dpi: float = ANIMATION_DPI, figsize: tuple[float, float] | None = None,
                     samples: int = SAMPLES,
                     progress: Callable[[int, int], None] | None = None) -> tuple[int, tuple[int, int]]:
     """Write a GIF of the map of ``gamma`` as k' runs through ``kprimes``.

@@ -18,13 +18,15 @@ from .style import style_context
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-__all__ = ["DEFAULT_DPI", "FORMATS", "format_from_path", "metadata", "print_figure"]
+__all__ = ["DEFAULT_DPI", "DPI_RANGE", "FORMATS", "format_from_path", "metadata", "print_figure"]
 
 #: Output formats (file suffixes) that :func:`print_figure` writes.
 FORMATS: tuple[str, ...] = ("png", "svg", "pdf")
 #: Resolution of PNG output (dots per inch): 960 px across a map, sharp on
 #: screens and in the README; use 300 for print (SVG or PDF are better there).
 DEFAULT_DPI = 150
+#: The resolutions (dots per inch) a map or a figure of the report may be drawn at.
+DPI_RANGE: tuple[float, float] = (20.0, 1200.0)
 
 def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     """The output format: ``fmt`` if given, else the file suffix (png, svg or pdf).

@@ -16,7 +16,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, Any
 
-__all__ = ["atomic_path", "atomic_open", "check_output_path"]
+__all__ = ["atomic_path", "atomic_open", "check_output_path", "folder_problem"]
 
 #: Longest part of the target's name kept in the temporary file's name (the
 #: temporary name adds about 15 characters; most file systems allow 255).
@@ -57,16 +57,28 @@ def check_output_path(path: str | os.PathLike[str], param: str = "output") -> Pa
             raise ValueError(f"{param} folder {str(folder)!r} does not exist")
     except OSError as exc:  # e.g. a path too long, or a loop of links
         raise ValueError(f"{param} {text!r} cannot be used: {exc.strerror}") from None
+    problem = folder_problem(folder)
+    if problem:
+        raise ValueError(f"{param} folder {str(folder)!r} {problem}")
+    return p
+
+
+def folder_problem(folder: Path) -> str:
+    """Why no file can be created in the existing folder ``folder`` ("" when one can).
+
+    Creates and removes an empty hidden file: permission bits alone do not tell
+    (root, read-only or virtual file systems such as /proc).
+    """
     if not os.access(folder, os.W_OK | os.X_OK):
-        raise ValueError(f"{param} folder {str(folder)!r} is not writable")
+        return "is not writable"
     try:
         fd, probe = tempfile.mkstemp(prefix=".regimemap-probe.", dir=folder)
     except OSError as exc:
-        raise ValueError(f"{param} folder {str(folder)!r} is not writable ({exc.strerror})") from None
+        return f"is not writable ({exc.strerror})"
     os.close(fd)
     with contextlib.suppress(OSError):
         os.unlink(probe)
-    return p
+    return ""
 
 
 @contextlib.contextmanager
