@@ -111,19 +111,17 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
             f"{MAX_PANELS}; give fewer values to --gamma or --kprime")
     fmt = _figure_output(output)
     import_matplotlib()
+    from ..drawing.atlas import atlas_extents, points_outside
     from ..io.figures import write_atlas
+    from ..mechanics.block import Parameters
 
+    ext = atlas_extents(gammas, kprimes, share, k_max, mu_max)
     try:
-        write_atlas(output, gammas, kprimes, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
-                    dpi=dpi)
+        write_atlas(output, gammas, kprimes, fmt=fmt, share=share, extents=ext, dpi=dpi)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     click.echo(f"wrote {output} ({len(gammas)} x {len(kprimes)} panels)", err=True)
     if share != "none":
-        from ..drawing.atlas import atlas_extents, points_outside
-        from ..mechanics.block import Parameters
-
-        ext = atlas_extents(gammas, kprimes, share, k_max, mu_max)
         lost = [f"gamma = {g:g}, k' = {kp:g}" for i, g in enumerate(gammas)
                 for j, kp in enumerate(kprimes)
                 if points_outside([Parameters(g, kp)], *ext[i][j])]
@@ -167,19 +165,21 @@ def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max:
                                  param_hint="'-o' / '--output'")
     output_path(output, "--output")
     import_matplotlib()
+    from ..drawing.atlas import points_outside, sweep_extent
     from ..io.figures import write_animation
+    from ..mechanics.block import Parameters
 
+    if k_max is None or mu_max is None:
+        ek, em = sweep_extent(gamma, kprimes)
+        k_max = ek if k_max is None else k_max
+        mu_max = em if mu_max is None else mu_max
+    view = (k_max, mu_max)
     try:
         n, (w, h) = write_animation(output, gamma, kprimes, k_max=k_max, mu_max=mu_max, fps=fps,
                                     dpi=dpi)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     click.echo(f"wrote {output} ({n} frames, {w} x {h} pixels, {fps:g} frames/s)", err=True)
-    from ..drawing.atlas import points_outside, sweep_extent
-    from ..mechanics.block import Parameters
-
-    ek, em = sweep_extent(gamma, kprimes)
-    view = (k_max if k_max is not None else ek, mu_max if mu_max is not None else em)
     lost = [f"k' = {p.kprime:g}" for p in points_outside([Parameters(gamma, kp) for kp in kprimes],
                                                          *view)]
     _note_outside(lost)

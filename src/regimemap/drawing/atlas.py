@@ -227,7 +227,8 @@ def _panel_title(g: float, kp: float) -> str:
 def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
                  k_max: float | None = None, mu_max: float | None = None,
                  panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
-                 dpi: float = ATLAS_DPI, curves: bool = True, labels: bool = True) -> Figure:
+                 dpi: float = ATLAS_DPI, curves: bool = True, labels: bool = True,
+                 extents: Sequence[Sequence[tuple[float, float]]] | None = None) -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k'.
 
     Parameters
@@ -243,6 +244,9 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         Fix the view instead of the automatic one.
     panel_size : (float, float)
         Size of one panel in inches.
+    extents : rows of (k_max, mu_max), optional
+        The view of every panel, as :func:`atlas_extents` returns it (computed
+        from ``share``, ``k_max`` and ``mu_max`` when omitted).
     samples : int
         Samples of k per panel.
     dpi : float
@@ -276,7 +280,8 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         raise ValueError("an atlas needs at least one gamma and one kprime")
     if nr * nc > MAX_PANELS:
         raise ValueError(f"{nr} x {nc} = {nr * nc} panels exceed the limit of {MAX_PANELS}")
-    extents = atlas_extents(gammas, kprimes, share, k_max, mu_max)
+    if extents is None:
+        extents = atlas_extents(gammas, kprimes, share, k_max, mu_max)
     pw, ph = panel_size
     handles = _legend_handles(MAP_MODES, dotted=curves and min(kprimes) < 0.0)
     key_cols = min(4, max(2, nc))
