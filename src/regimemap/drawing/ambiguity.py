@@ -175,6 +175,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     already written; an outside label avoids them.
     """
     from .placement import label_anchor
+    from .style import text_size
 
     st = AMBIGUITY_STYLE
     text = r.tex
@@ -186,8 +187,9 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     pos = ax.get_position()
     w_in = max(pos.width * fig.get_figwidth(), 1e-6)
     h_in = max(pos.height * fig.get_figheight(), 1e-6)
-    n_chars = max(len(line) for line in r.label.replace(" (Section 4.7)", " (§4.7)").split(" -> "))
-    box = (n_chars * 0.58 * fs / 72.0 / w_in + 0.02, 2.0 * 1.35 * fs / 72.0 / h_in + 0.02)
+    longest = max(r.label.replace(" (Section 4.7)", " (§4.7)").split(" -> "), key=len)
+    w_pt, h_pt = text_size(longest, fs, lines=2)
+    box = (w_pt / 72.0 / w_in + 0.02, h_pt / 72.0 / h_in + 0.02)
     poly = _clip_poly(r.polygon, k_max, mu_max)
     inside = label_anchor(poly, k_max, mu_max, box)
     bbox = dict(boxstyle="round,pad=0.25", facecolor="white", edgecolor="0.3",

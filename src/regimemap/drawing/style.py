@@ -124,8 +124,13 @@ def mode_symbol(mode: Mode) -> tuple[str, str]:
     return tex, "normal"
 
 
-def text_size(text: str, fontsize: float) -> tuple[float, float]:
-    """Rough size (points) of a short label with its white box, without drawing it."""
+def text_size(text: str, fontsize: float, lines: int = 1) -> tuple[float, float]:
+    """Rough size (points) of a short label with its white box, without drawing it.
+
+    The one text-size model of the drawings (region, point, curve and overlay
+    labels): ``text`` is the longest line (mathtext markup is not counted),
+    ``lines`` the number of lines.
+    """
     plain = text.replace("$", "").replace("_{-}", "-").replace("_{+}", "+").replace("\\", "")
     plain = plain.replace("mu", "m").replace("{", "").replace("}", "").replace("^", "")
-    return (0.62 * fontsize * len(plain) + 5.0, 1.25 * fontsize + 4.0)
+    return (0.62 * fontsize * len(plain) + 5.0, 1.25 * fontsize * lines + 4.0)
