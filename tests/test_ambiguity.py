@@ -201,7 +201,7 @@ def test_bad_view_rejected():
 
 
 def _map_axes(gamma, kprime, **kw):
-    from regimemap.drawing.mapplot import map_figure
+    from regimemap.drawing.figure import map_figure
 
     fig, ax, art = map_figure(Parameters(gamma, kprime), samples=201, **kw)
     return fig, ax, art

@@ -149,7 +149,7 @@ def test_show_ambiguity_when_available(runner, tmp_path):
 
 def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkeypatch):
     """The overlay rebuilds the legend; the map's MapArtists then holds the new one."""
-    import regimemap.drawing.mapplot as render
+    import regimemap.drawing.figure as render
 
     seen = []
     original = render.map_figure

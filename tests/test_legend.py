@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters
-from regimemap.drawing.mapplot import MODE_STYLE, map_figure
+from regimemap.drawing.figure import map_figure
+from regimemap.drawing.mapplot import MODE_STYLE
 
 
 def _key_parts(legend):

@@ -12,15 +12,8 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
-from regimemap.drawing.mapplot import (
-    MapArtists,
-    draw_design_points,
-    draw_map,
-    map_figure,
-    new_figure,
-    render_map,
-    render_preset,
-)
+from regimemap.drawing.figure import map_figure, new_figure, render_map, render_preset
+from regimemap.drawing.mapplot import MapArtists, draw_design_points, draw_map
 from regimemap.drawing.presets import PRESETS
 from regimemap.drawing.save import FORMATS, format_from_path
 from regimemap.drawing.style import MODE_STYLE
@@ -306,7 +299,7 @@ def test_no_pyplot_and_no_global_rcparams():
         "keys = [k for k in rc if k != 'backend']  # reading 'backend' would import pyplot\n"
         "before = {k: rc[k] for k in keys}\n"
         "from regimemap import Parameters\n"
-        "from regimemap.drawing.mapplot import render_map\nfrom regimemap.io.figures import save_figure\n"
+        "from regimemap.drawing.figure import render_map\nfrom regimemap.io.figures import save_figure\n"
         "import io\n"
         "fig = render_map(Parameters(3, 0.4), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"

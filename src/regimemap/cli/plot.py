@@ -278,7 +278,7 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     params = Parameters(gamma, kprime)
     points = _read_points(points_files, point_specs, params.gamma, params.kprime)
     import_matplotlib()
-    from ..drawing.mapplot import fit_figure, map_figure
+    from ..drawing.figure import fit_figure, map_figure
     from ..drawing.style import style_context
     from ..io.figures import save_figure
 
@@ -345,7 +345,7 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     path, fmt = _resolve_output(output, fmt, f"fig-{preset.id}")
 
     import_matplotlib()
-    from ..drawing.mapplot import render_preset
+    from ..drawing.figure import render_preset
     from ..io.figures import save_figure
 
     fig = render_preset(preset, dpi=dpi)
@@ -390,7 +390,7 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
-    from ..drawing.mapplot import render_preset
+    from ..drawing.figure import render_preset
     from ..io.figures import save_figure
 
     fig = None  # one Figure for all: its renderer keeps the text caches warm

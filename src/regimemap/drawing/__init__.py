@@ -31,16 +31,16 @@ __all__ = [
 ]
 
 _WHERE = {
-    "FIGSIZE": "mapplot",
+    "FIGSIZE": "figure",
     "MapArtists": "mapplot",
     "default_title": "mapplot",
     "draw_design_points": "mapplot",
     "draw_map": "mapplot",
-    "fit_figure": "mapplot",
-    "map_figure": "mapplot",
-    "new_figure": "mapplot",
-    "render_map": "mapplot",
-    "render_preset": "mapplot",
+    "fit_figure": "figure",
+    "map_figure": "figure",
+    "new_figure": "figure",
+    "render_map": "figure",
+    "render_preset": "figure",
     "MODE_STYLE": "style",
     "style_context": "style",
     "atlas_figure": "atlas",

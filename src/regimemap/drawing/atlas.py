@@ -417,7 +417,7 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     dpi : float
         Pixels per inch of the frames.
     figsize : (float, float), optional
-        Inches (default that of :func:`regimemap.render.new_figure`).
+        Inches (default that of :func:`regimemap.drawing.figure.new_figure`).
     samples : int
         Samples of k per frame.
     progress : callable, optional
@@ -434,8 +434,9 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     case and (gamma, k'); the legend lists all six modes in every frame, so
     it does not jump.
     """
+    from .figure import FIGSIZE, new_figure
     from .key import key_legend
-    from .mapplot import FIGSIZE, draw_map, new_figure
+    from .mapplot import draw_map
     from .style import style_context
 
     _check_frames(gamma, kprimes, fps)

@@ -1,0 +1,164 @@
+"""A map on a figure of its own: size, layout around the key, and the report's figures.
+
+:func:`map_figure` makes a Figure (Agg canvas, no pyplot) with one map drawn by
+:func:`regimemap.drawing.mapplot.draw_map` and sized to its key;
+:func:`render_preset` draws one of the report's figures.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..maps.geometry import DEFAULT_SAMPLES
+from ..mechanics.block import Parameters
+from .mapplot import MapArtists, draw_design_points, draw_map
+from .save import DEFAULT_DPI
+from .style import style_context
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from ..maps.points import DesignPoint
+    from .presets import FigurePreset
+
+__all__ = ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "render_map", "render_preset"]
+
+#: Size of a map figure in inches (width, height): fits a page width at 100 %.
+FIGSIZE: tuple[float, float] = (6.4, 5.6)
+
+
+# -- figures -------------------------------------------------------------------------------
+
+#: Layout of a map figure, in inches: width, axes size, margins, legend rows.
+_W, _AX_W, _AX_H = 6.4, 5.5, 3.6
+_LEFT, _TOP, _BOTTOM0, _ROW = 0.62, 0.62, 0.5, 0.2
+
+
+def _size_for(rows: int, left: float = _LEFT
+              ) -> tuple[float, float, tuple[float, float, float, float]]:
+    """Figure (width, height) and axes rectangle (figure fractions) for ``rows`` legend rows."""
+    bottom = _BOTTOM0 + rows * _ROW + (0.12 if rows else 0.0)
+    h = _TOP + _AX_H + bottom
+    w = _W + (left - _LEFT)
+    return w, h, (left / w, bottom / h, _AX_W / w, _AX_H / h)
+
+
+def _left_margin(ax: Axes) -> float:
+    """Left margin (inches) that fits the mu tick labels and the axis label, without drawing."""
+    lo, hi = ax.get_ylim()
+    locs = [v for v in ax.yaxis.get_major_locator().tick_values(lo, hi) if lo <= v <= hi]
+    fmt = ax.yaxis.get_major_formatter()
+    try:
+        fmt.set_locs(locs)
+        labels = fmt.format_ticks(locs)
+    except Exception:  # pragma: no cover - an exotic formatter
+        labels = [f"{v:g}" for v in locs]
+    n = max((len(t) for t in labels), default=3)
+    return max(_LEFT, 0.26 + 0.075 * n)
+
+
+def new_figure(figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
+               fig: Figure | None = None) -> tuple[Figure, Axes]:
+    """A Figure (Agg canvas, no pyplot) with one map Axes.
+
+    Parameters
+    ----------
+    figsize : (float, float), optional
+        Size in inches; default: :data:`FIGSIZE`, re-fitted to the legend by
+        :func:`map_figure`.
+    dpi : float
+    fig : Figure, optional
+        A figure to clear and reuse (keeps its canvas, renderer and their
+        text caches: much faster when drawing many maps).
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    with style_context():
+        reuse = None
+        if fig is None:
+            fig = Figure(figsize=figsize or FIGSIZE, dpi=dpi)
+            FigureCanvasAgg(fig)
+        else:
+            if len(fig.axes) == 1 and not fig.texts and not fig.legends:
+                reuse = fig.axes[0]  # clearing an Axes is cheaper than making one
+            else:
+                fig.clear()
+            if fig.dpi != dpi:
+                fig.set_dpi(dpi)
+            if figsize is not None:
+                fig.set_size_inches(figsize)
+        w, h = fig.get_size_inches()
+        rect = (_LEFT / w, 1.0 - (_TOP + _AX_H) / h, _AX_W / w, _AX_H / h)
+        if reuse is not None:
+            reuse.clear()
+            reuse.set_position(rect)
+            ax = reuse
+        else:
+            ax = fig.add_axes(rect)
+    return fig, ax
+
+
+def fit_figure(fig: Figure, ax: Axes) -> None:
+    """Resize a map figure so the legend below the axes fits; the axes keep their size.
+
+    Call it again after adding legend entries (e.g. after
+    ``regimemap.render_ambiguity.draw_ambiguity``).
+    """
+    rows = 0
+    legend = ax.get_legend()
+    if legend is not None:
+        n = len(legend.legend_handles)
+        ncol = getattr(legend, "_ncols", 2)
+        rows = -(-n // max(ncol, 1))
+    w, h, rect = _size_for(rows, _left_margin(ax))
+    if tuple(np.round(fig.get_size_inches(), 6)) != (round(w, 6), round(h, 6)):
+        fig.set_size_inches(w, h)
+    ax.set_position(rect)
+
+
+def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None,
+               dpi: float = DEFAULT_DPI, points: Sequence[DesignPoint] = (),
+               fig: Figure | None = None, **kwargs: Any
+               ) -> tuple[Figure, Axes, MapArtists]:
+    """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
+
+    ``kwargs`` go to :func:`draw_map`; design ``points`` are marked with
+    :func:`draw_design_points` and kept in the automatic view.  Unless
+    ``figsize`` is given, the figure height is fitted to the legend and the
+    axes are 5.5 x 3.6 inches.
+    """
+    fig, ax = new_figure(figsize, dpi, fig)
+    include = list(kwargs.pop("include", ())) + [(pt.k, pt.mu) for pt in points]
+    with style_context():
+        artists = draw_map(ax, params, include=include, **kwargs)
+        if points:
+            artists.extra.extend(draw_design_points(ax, points))
+        if figsize is None:
+            fit_figure(fig, ax)
+    return fig, ax, artists
+
+
+def render_map(params: Parameters, **kwargs: Any) -> Figure:
+    """A Figure with the map of ``params`` (see :func:`map_figure` and :func:`draw_map`)."""
+    return map_figure(params, **kwargs)[0]
+
+
+def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
+                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+                  ) -> Figure:
+    """A Figure of one of the report's figures (:mod:`regimemap.drawing.presets`).
+
+    Pass the previous figure as ``fig`` to reuse it (faster for many figures).
+    """
+    from .presets import get_preset
+
+    if isinstance(preset, str):
+        preset = get_preset(preset)
+    return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
+                      mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
+                      title=preset.title, samples=samples, hatches=hatches)[0]
