@@ -1,0 +1,49 @@
+"""Dynamics of a rigid block under force pulses: rest, slide, rock, slide-rock, flight, impacts, overturning.
+
+numpy only.  :func:`simulate` steps a batch of runs with a Moreau-Jean scheme
+(:mod:`regimemap.dynamics.stepper`); :class:`Pulse` gives the force histories;
+:func:`outcome_map` sweeps two inputs.  See docs/dynamics.md.
+"""
+
+from __future__ import annotations
+
+from .block import G, Block, frequency_parameter, size_R, slenderness
+from .pulses import SHAPES, Pulse
+from .stepper import (
+    CATEGORY_LABELS,
+    FREE_STEP,
+    OVERTURN,
+    PULSE_STEPS,
+    REST,
+    ROCK,
+    SLIDE,
+    SLIDE_ROCK,
+    History,
+    Phase,
+    Simulation,
+    default_steps,
+    simulate,
+)
+
+__all__ = [
+    "Block",
+    "CATEGORY_LABELS",
+    "FREE_STEP",
+    "G",
+    "History",
+    "OVERTURN",
+    "PULSE_STEPS",
+    "Phase",
+    "Pulse",
+    "REST",
+    "ROCK",
+    "SHAPES",
+    "SLIDE",
+    "SLIDE_ROCK",
+    "Simulation",
+    "default_steps",
+    "frequency_parameter",
+    "simulate",
+    "size_R",
+    "slenderness",
+]
