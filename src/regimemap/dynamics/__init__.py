@@ -8,6 +8,7 @@ numpy only.  :func:`simulate` steps a batch of runs with a Moreau-Jean scheme
 from __future__ import annotations
 
 from .block import G, Block, frequency_parameter, size_R, slenderness
+from .outcome import SWEEPABLE, OutcomeMap, from_dimensionless, outcome_map, to_dimensionless
 from .pulses import SHAPES, Pulse
 from .stepper import (
     CATEGORY_LABELS,
@@ -33,6 +34,7 @@ __all__ = [
     "History",
     "OVERTURN",
     "PULSE_STEPS",
+    "OutcomeMap",
     "Phase",
     "Pulse",
     "REST",
@@ -40,10 +42,14 @@ __all__ = [
     "SHAPES",
     "SLIDE",
     "SLIDE_ROCK",
+    "SWEEPABLE",
     "Simulation",
     "default_steps",
+    "from_dimensionless",
     "frequency_parameter",
+    "outcome_map",
     "simulate",
     "size_R",
     "slenderness",
+    "to_dimensionless",
 ]

@@ -261,64 +261,69 @@ def _contact(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
              tol: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, NDArray[np.int8], BoolArray]:
     """Solve the two-corner contact problem of one step, for every run.
 
-    Returns the new velocities, the :class:`Phase` code of the chosen state and
-    a mask of the runs where no state was admissible (a fallback was used).
+    States that no run can be in (no run with that corner active) are skipped.  Returns the new
+    velocities, the :class:`Phase` code of the chosen state and a mask of the
+    runs where no state was admissible (a fallback was used).
     """
+    return _contact_states(vxf, vyf, omf, rxO, ryO, rxP, ryP, actO, actP, mu, J, tol)
+
+
+def _contact_states(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
+                    rxO: FloatArray, ryO: FloatArray, rxP: FloatArray, ryP: FloatArray,
+                    actO: BoolArray, actP: BoolArray, mu: FloatArray, J: FloatArray,
+                    tol: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, NDArray[np.int8], BoolArray]:
+    """Enumerate the contact states of the runs given (see :func:`_contact`)."""
     uNO = vyf + rxO * omf
-    uTO = vxf - ryO * omf
     uNP = vyf + rxP * omf
-    uTP = vxf - ryP * omf
     both = actO & actP
-    zeros = np.zeros_like(vxf)
-    conds: list[BoolArray] = []
-    vxs: list[FloatArray] = []
-    vys: list[FloatArray] = []
-    oms: list[FloatArray] = []
-    codes: list[int] = []
+    any_both = bool(both.any())
+    any_O = bool(actO.any())
+    any_P = bool(actP.any())
+    # candidate states in priority order: (code, admissible, vx, vy, om)
+    cands: list[tuple[int, BoolArray, FloatArray | float, FloatArray | float, FloatArray | float]] = []
 
-    # RE: both corners stick, v = 0.  Impulse (Rx, Ry, Rm) = -M vf shared by the corners:
-    # T_O = t, T_P = Rx - t, N_O = a + b t, N_P = Ry - N_O; feasible t by interval intersection.
-    Rx = -vxf
-    Ry = -vyf
-    Rm = -J * omf
-    d = rxO - rxP
-    a = (Rm - rxP * Ry + ryP * Rx) / d
-    b = (ryO - ryP) / d
-    lo = np.full_like(vxf, -np.inf)
-    hi = np.full_like(vxf, np.inf)
-    ok = both.copy()
-    mub = mu * b
-    for ci, di in ((-b, a), (b, Ry - a), (1.0 - mub, mu * a), (-1.0 - mub, mu * a),
-                   (-1.0 + mub, mu * (Ry - a) - Rx), (1.0 + mub, mu * (Ry - a) + Rx)):
-        di = di + tol
-        pos = ci > 1e-14
-        neg = ci < -1e-14
-        r = di / np.where(pos | neg, ci, 1.0)
-        hi = np.where(pos, np.minimum(hi, r), hi)
-        lo = np.where(neg, np.maximum(lo, r), lo)
-        ok &= pos | neg | (di >= 0.0)
-    ok &= lo <= hi
-    conds.append(ok)
-    vxs.append(zeros)
-    vys.append(zeros)
-    oms.append(zeros)
-    codes.append(Phase.RE)
+    if any_both:
+        # RE: both corners stick, v = 0.  Impulse (Rx, Ry, Rm) = -M vf shared by the corners:
+        # T_O = t, T_P = Rx - t, N_O = a + b t, N_P = Ry - N_O; feasible t by interval intersection.
+        Rx = -vxf
+        Ry = -vyf
+        d = rxO - rxP
+        a = (-J * omf - rxP * Ry + ryP * Rx) / d
+        b = (ryO - ryP) / d
+        mub = mu * b
+        ok = both.copy()
+        # N_O >= 0 and N_P >= 0: -b t <= a, b t <= Ry - a
+        bz = np.abs(b) <= 1e-14
+        bs = np.where(bz, 1.0, b)
+        r1 = -(a + tol) / bs
+        r2 = (Ry - a + tol) / bs
+        ok &= ~bz | ((a >= -tol) & (Ry - a >= -tol))
+        bpos = b > 1e-14
+        bneg = b < -1e-14
+        inf = np.inf
+        hi = np.where(bpos, r2, np.where(bneg, r1, inf))
+        lo = np.where(bpos, r1, np.where(bneg, r2, -inf))
+        # Coulomb at both corners: c t <= d with c = +-1 -+ mu b (never 0 for |mu b| < 1)
+        for ci, di in ((1.0 - mub, mu * a), (-1.0 - mub, mu * a),
+                       (-1.0 + mub, mu * (Ry - a) - Rx), (1.0 + mub, mu * (Ry - a) + Rx)):
+            r = (di + tol) / np.where(np.abs(ci) > 1e-14, ci, 1e-14)
+            pos = ci > 0.0
+            hi = np.where(pos, np.minimum(hi, r), hi)
+            lo = np.where(pos, lo, np.maximum(lo, r))
+        ok &= lo <= hi
+        cands.append((Phase.RE, ok, 0.0, 0.0, 0.0))
+        # SL: both corners slip with sign s of x_dot; y_dot = theta_dot = 0.
+        for sgn in (-1.0, 1.0):
+            cO = rxO + sgn * mu * ryO
+            cP = rxP + sgn * mu * ryP
+            NO = (-J * omf + cP * vyf) / (cO - cP)
+            NP = -vyf - NO
+            vx = vxf + sgn * mu * vyf
+            cands.append((Phase.SL, both & (NO >= -tol) & (NP >= -tol) & (sgn * vx >= -tol), vx, 0.0, 0.0))
 
-    # SL: both corners slip with sign s of x_dot; y_dot = theta_dot = 0.
-    for s in (-1.0, 1.0):
-        cO = rxO + s * mu * ryO
-        cP = rxP + s * mu * ryP
-        NO = (-J * omf + cP * vyf) / (cO - cP)
-        NP = -vyf - NO
-        vx = vxf + s * mu * vyf
-        conds.append(both & (NO >= -tol) & (NP >= -tol) & (s * vx >= -tol))
-        vxs.append(vx)
-        vys.append(zeros)
-        oms.append(zeros)
-        codes.append(Phase.SL)
-
-    def stick(rx: FloatArray, ry: FloatArray, uN: FloatArray, uT: FloatArray, act: BoolArray,
+    def stick(rx: FloatArray, ry: FloatArray, uN: FloatArray, act: BoolArray,
               rxo: FloatArray, acto: BoolArray) -> tuple[BoolArray, FloatArray, FloatArray, FloatArray]:
+        uT = vxf - ry * omf
         ax = rx / J
         ay = ry / J
         det = 1.0 + rx * ax + ry * ay
@@ -330,55 +335,60 @@ def _contact(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
         okk = act & (N >= -tol) & (np.abs(T) <= mu * N + tol) & (~acto | (vy + rxo * om >= -tol))
         return okk, vx, vy, om
 
-    def slip(s: float, rx: FloatArray, ry: FloatArray, uN: FloatArray, act: BoolArray,
+    def slip(sgn: float, rx: FloatArray, ry: FloatArray, uN: FloatArray, act: BoolArray,
              rxo: FloatArray, acto: BoolArray) -> tuple[BoolArray, FloatArray, FloatArray, FloatArray]:
-        c = (rx + s * mu * ry) / J
+        c = (rx + sgn * mu * ry) / J
         den = 1.0 + rx * c
         N = -uN / np.where(den > 0.0, den, 1.0)
-        vx = vxf - s * mu * N
+        vx = vxf - sgn * mu * N
         vy = vyf + N
         om = omf + c * N
-        okk = (act & (den > 0.0) & (N >= -tol) & (s * (vx - ry * om) >= -tol)
+        okk = (act & (den > 0.0) & (N >= -tol) & (sgn * (vx - ry * om) >= -tol)
                & (~acto | (vy + rxo * om >= -tol)))
         return okk, vx, vy, om
 
-    states = (
-        (Phase.SRO_PRIME_MINUS, slip(-1.0, rxP, ryP, uNP, actP, rxO, actO)),
-        (Phase.RO, stick(rxO, ryO, uNO, uTO, actO, rxP, actP)),
-        (Phase.SRO_MINUS, slip(-1.0, rxO, ryO, uNO, actO, rxP, actP)),
-        (Phase.SRO_PLUS, slip(1.0, rxO, ryO, uNO, actO, rxP, actP)),
-        (Phase.RO_PRIME, stick(rxP, ryP, uNP, uTP, actP, rxO, actO)),
-        (Phase.SRO_PRIME_PLUS, slip(1.0, rxP, ryP, uNP, actP, rxO, actO)),
-    )
-    for code, (okk, vx, vy, om) in states:
-        conds.append(okk)
-        vxs.append(vx)
-        vys.append(vy)
-        oms.append(om)
-        codes.append(code)
+    stickO = stickP = None
+    if any_P:
+        cands.append((Phase.SRO_PRIME_MINUS, *slip(-1.0, rxP, ryP, uNP, actP, rxO, actO)))
+    if any_O:
+        stickO = stick(rxO, ryO, uNO, actO, rxP, actP)
+        cands.append((Phase.RO, *stickO))
+        cands.append((Phase.SRO_MINUS, *slip(-1.0, rxO, ryO, uNO, actO, rxP, actP)))
+        cands.append((Phase.SRO_PLUS, *slip(1.0, rxO, ryO, uNO, actO, rxP, actP)))
+    if any_P:
+        stickP = stick(rxP, ryP, uNP, actP, rxO, actO)
+        cands.append((Phase.RO_PRIME, *stickP))
+        cands.append((Phase.SRO_PRIME_PLUS, *slip(1.0, rxP, ryP, uNP, actP, rxO, actO)))
+
+    # flight, then overwrite by the states from the lowest to the highest priority
     flight = (~actO | (uNO >= -tol)) & (~actP | (uNP >= -tol))
-    conds.append(flight)
-    vxs.append(vxf)
-    vys.append(vyf)
-    oms.append(omf)
-    codes.append(Phase.FLIGHT)
-
-    # Fallback where nothing is admissible (never met in our runs): stop, or stick on the active corner.
-    none = ~np.logical_or.reduce(conds)
-    _, fvx, fvy, fom = states[1][1]
-    _, pvx, pvy, pom = states[4][1]
-    fb_vx = np.where(both, 0.0, np.where(actO, fvx, pvx))
-    fb_vy = np.where(both, 0.0, np.where(actO, fvy, pvy))
-    fb_om = np.where(both, 0.0, np.where(actO, fom, pom))
-    fb_code = np.where(both, Phase.RE, np.where(actO, Phase.RO, Phase.RO_PRIME)).astype(np.int8)
-    conds.append(none)
-    vxs.append(fb_vx)
-    vys.append(fb_vy)
-    oms.append(fb_om)
-
-    code = np.select(conds[:-1], [np.int8(c) for c in codes], default=np.int8(-1)).astype(np.int8)
-    code = np.where(none, fb_code, code).astype(np.int8)
-    return (np.select(conds, vxs), np.select(conds, vys), np.select(conds, oms), code, none)
+    vx1 = vxf
+    vy1 = vyf
+    om1 = omf
+    code = np.full(vxf.shape, Phase.FLIGHT, dtype=np.int8)
+    found = flight
+    for c_, okk, vx, vy, om in reversed(cands):
+        vx1 = np.where(okk, vx, vx1)
+        vy1 = np.where(okk, vy, vy1)
+        om1 = np.where(okk, om, om1)
+        code[okk] = c_
+        found = found | okk
+    none = ~found
+    if none.any():
+        # nothing admissible (never met in our runs): stop, or stick on the active corner
+        for act, st_, c_ in ((actP, stickP, Phase.RO_PRIME), (actO, stickO, Phase.RO)):
+            if st_ is not None:
+                m = none & act
+                vx1 = np.where(m, st_[1], vx1)
+                vy1 = np.where(m, st_[2], vy1)
+                om1 = np.where(m, st_[3], om1)
+                code[m] = c_
+        m = none & both
+        vx1 = np.where(m, 0.0, vx1)
+        vy1 = np.where(m, 0.0, vy1)
+        om1 = np.where(m, 0.0, om1)
+        code[m] = Phase.RE
+    return vx1, vy1, om1, code, none
 
 
 # -- the batch time stepper --------------------------------------------------------------------------
