@@ -109,7 +109,9 @@ def rocking(p: float, alpha: float, kfun: Callable[[float], float], t_pulse: flo
             return abs(z[0]) - np.pi / 2
         ev_over.terminal = True  # type: ignore[attr-defined]
         ev_over.direction = 1  # type: ignore[attr-defined]
-        events = [ev_zero, ev_over]
+        def ev_peak(t_: float, z: np.ndarray) -> float:
+            return z[1]
+        events = [ev_zero, ev_over, ev_peak]
         if t >= t_pulse:
             def ev_away(t_: float, z: np.ndarray) -> float:
                 return s_now * z[0] - alpha if s_now * z[1] > 0 else -1.0
@@ -122,6 +124,8 @@ def rocking(p: float, alpha: float, kfun: Callable[[float], float], t_pulse: flo
         sol = solve_ivp(rhs(s), (t, seg_end), [th, om], method="DOP853", rtol=rtol, atol=atol,
                         events=events, dense_output=False, max_step=max(seg_end - t, 1e-9) / 40)
         peak = max(peak, float(np.max(np.abs(sol.y[0]))))
+        if sol.y_events[2].size:  # turning points: the exact peaks
+            peak = max(peak, float(np.max(np.abs(sol.y_events[2][:, 0]))))
         res.max_rotation = max(res.max_rotation, peak)
         if keep:
             res.t.append(sol.t)
@@ -130,7 +134,7 @@ def rocking(p: float, alpha: float, kfun: Callable[[float], float], t_pulse: flo
             if sol.t_events[1].size:
                 res.overturned = True
                 return res
-            if len(events) > 2 and sol.t_events[2].size:
+            if len(events) > 3 and sol.t_events[3].size:
                 res.overturned = True
                 return res
             # impact at theta = 0
