@@ -113,7 +113,7 @@ def rocking(p: float, alpha: float, kfun: Callable[[float], float], t_pulse: flo
             return z[1]
         events = [ev_zero, ev_over, ev_peak]
         if t >= t_pulse:
-            def ev_away(t_: float, z: np.ndarray) -> float:
+            def ev_away(t_: float, z: np.ndarray, s_now: float = s_now) -> float:
                 return s_now * z[0] - alpha if s_now * z[1] > 0 else -1.0
             ev_away.terminal = True  # type: ignore[attr-defined]
             ev_away.direction = 1  # type: ignore[attr-defined]

@@ -7,8 +7,14 @@ numpy only.  :func:`simulate` steps a batch of runs with a Moreau-Jean scheme
 
 from __future__ import annotations
 
-from .block import G, Block, frequency_parameter, size_R, slenderness
-from .outcome import SWEEPABLE, OutcomeMap, from_dimensionless, outcome_map, to_dimensionless
+from .block import Block, G, frequency_parameter, size_R, slenderness
+from .outcome import (
+    SWEEPABLE,
+    OutcomeMap,
+    from_dimensionless,
+    outcome_map,
+    to_dimensionless,
+)
 from .pulses import SHAPES, Pulse
 from .stepper import (
     CATEGORY_LABELS,

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .block import G, Block, frequency_parameter, slenderness
+from .block import Block, G, frequency_parameter, slenderness
 from .pulses import Pulse
 from .stepper import CATEGORY_LABELS, simulate
 

@@ -104,9 +104,15 @@ class Pulse:
     # -- constructors ---------------------------------------------------------------------------
     @classmethod
     def make(cls, shape: str, k_peak: ArrayLike, duration: ArrayLike, **params: float) -> Pulse:
-        """A pulse of a named shape (see :data:`SHAPES`)."""
+        """A pulse of a named shape (see :data:`SHAPES`); ``params``: peak_at, peak_ratio,
+        impulsive_fraction."""
+        unknown = set(params) - {"peak_at", "peak_ratio", "impulsive_fraction"}
+        if unknown:
+            raise ValueError(f"unknown pulse parameters: {', '.join(sorted(unknown))}")
         return cls(shape=shape, k_peak=np.asarray(k_peak, dtype=np.float64),
-                   duration=np.asarray(duration, dtype=np.float64), **params)
+                   duration=np.asarray(duration, dtype=np.float64),
+                   peak_at=float(params.get("peak_at", 0.5)), peak_ratio=float(params.get("peak_ratio", 0.4)),
+                   impulsive_fraction=float(params.get("impulsive_fraction", 0.1)))
 
     @classmethod
     def rectangular(cls, k_peak: ArrayLike, duration: ArrayLike) -> Pulse:
@@ -188,7 +194,8 @@ class Pulse:
         return self.kprime_samples is not None
 
     # -- evaluation -----------------------------------------------------------------------------
-    def k(self, t: ArrayLike, k_peak: ArrayLike | None = None, duration: ArrayLike | None = None) -> FloatArray:
+    def k(self, t: ArrayLike, k_peak: ArrayLike | None = None,
+          duration: ArrayLike | None = None) -> FloatArray:
         """k at times ``t`` (broadcast with the per-run ``k_peak`` and ``duration``).
 
         ``k_peak`` and ``duration`` default to the pulse's own; the time stepper

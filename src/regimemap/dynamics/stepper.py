@@ -252,13 +252,15 @@ def default_steps(block: Block, pulse: Pulse, n: int | None = None,
     return T / n_pulse, h_free
 
 
+_Solved = tuple[FloatArray, FloatArray, FloatArray, NDArray[np.int8], BoolArray]
+
 # -- the per-step contact problem -------------------------------------------------------------------
 
 
 def _contact(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
              rxO: FloatArray, ryO: FloatArray, rxP: FloatArray, ryP: FloatArray,
              actO: BoolArray, actP: BoolArray, mu: FloatArray, J: FloatArray,
-             tol: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, NDArray[np.int8], BoolArray]:
+             tol: FloatArray) -> _Solved:
     """Solve the two-corner contact problem of one step, for every run.
 
     States that no run can be in (no run with that corner active) are skipped.  Returns the new
@@ -271,7 +273,7 @@ def _contact(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
 def _contact_states(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
                     rxO: FloatArray, ryO: FloatArray, rxP: FloatArray, ryP: FloatArray,
                     actO: BoolArray, actP: BoolArray, mu: FloatArray, J: FloatArray,
-                    tol: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray, NDArray[np.int8], BoolArray]:
+                    tol: FloatArray) -> _Solved:
     """Enumerate the contact states of the runs given (see :func:`_contact`)."""
     uNO = vyf + rxO * omf
     uNP = vyf + rxP * omf
@@ -367,10 +369,10 @@ def _contact_states(vxf: FloatArray, vyf: FloatArray, omf: FloatArray,
     om1 = omf
     code = np.full(vxf.shape, Phase.FLIGHT, dtype=np.int8)
     found = flight
-    for c_, okk, vx, vy, om in reversed(cands):
-        vx1 = np.where(okk, vx, vx1)
-        vy1 = np.where(okk, vy, vy1)
-        om1 = np.where(okk, om, om1)
+    for c_, okk, cvx, cvy, com in reversed(cands):
+        vx1 = np.where(okk, cvx, vx1)
+        vy1 = np.where(okk, cvy, vy1)
+        om1 = np.where(okk, com, om1)
         code[okk] = c_
         found = found | okk
     none = ~found
@@ -566,9 +568,11 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
             om[sel] = fac * pom
         imp += hit
         # forces per unit mass at (t_m, q_m)
-        kpr = A["kpr"] if not pulse_kprime else pulse.kprime(tm)
+        kpr_t = pulse.kprime(tm) if pulse_kprime else None
+        kpr = A["kpr"] if kpr_t is None else kpr_t
         fx = -g * k
         tau = (g / Jv) * k * kpr * Hc
+        fy: FloatArray | float
         if loaded:
             lift = A["u"] + A["nu"] * k
             fy = g * (A["beta"] + lift - 1.0)
@@ -659,7 +663,8 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
             x, y, th, vx, vy, om, t = x[keep], y[keep], th[keep], vx[keep], vy[keep], om[keep], t[keep]
             nleft = nleft[keep]
             prevO, prevP, prev_code = prevO[keep], prevP[keep], prev_code[keep]
-            maxrot, imp, slid, rocked, nsteps = maxrot[keep], imp[keep], slid[keep], rocked[keep], nsteps[keep]
+            maxrot, imp, nsteps = maxrot[keep], imp[keep], nsteps[keep]
+            slid, rocked = slid[keep], rocked[keep]
             A = {key: val[keep] for key, val in A.items()}
 
     phases: list[list[tuple[str, float]]] | None = None
@@ -669,7 +674,7 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
             runs = np.concatenate(ph_run)
             pcs = np.concatenate(ph_code)
             pts = np.concatenate(ph_t)
-            for r_, c_, t_ in zip(runs.tolist(), pcs.tolist(), pts.tolist()):
+            for r_, c_, t_ in zip(runs.tolist(), pcs.tolist(), pts.tolist(), strict=True):
                 phases[r_].append((_PHASE_LABELS[Phase(c_)], t_))
     hist_out = None
     if hist is not None:
