@@ -21,8 +21,9 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from regimemap.dynamics import Block, Pulse, from_dimensionless, outcome_map, simulate  # noqa: E402
 from tests.dynamics import _dyn_reference as ref  # noqa: E402
+
+from regimemap.dynamics import Block, Pulse, from_dimensionless, outcome_map, simulate  # noqa: E402
 
 
 def main(n: int = 200) -> None:
