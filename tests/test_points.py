@@ -61,7 +61,8 @@ BAD_FILES = [
     ("\n\n  \n", r": empty file"),
     ("k,nu\n0.1,0.2\n", r", line 1: missing column\(s\) mu; the header must name k and mu"),
     ("x,y\n0.1,0.2\n", r", line 1: missing column\(s\) k, mu"),
-    ("k;mu\n0.1;0.2\n", r", line 1: missing column\(s\) k, mu.*'k;mu'"),
+    ("k|mu\n0.1|0.2\n", r", line 1: missing column\(s\) k, mu.*'k\|mu'"),
+    ("k;mu\n0,5;abc\n", r", line 2, column mu: mu must be .*got 'abc' \(not a number\)"),
     ("\n\nK,Q\n1,2\n", r", line 3: missing column\(s\) mu"),
     ("k,k,mu\n1,2,3\n", r", line 1: column\(s\) k appear more than once"),
     ("k,mu\n0.1,abc\n", r", line 2, column mu: mu must be a finite number >= 0 \(at most 1e\+100\), got 'abc' \(not a number\)"),
@@ -178,3 +179,14 @@ def test_point_spec_bad(spec, match):
     with pytest.raises(ValueError, match=match) as e:
         parse_point_spec(spec)
     assert repr(spec) in str(e.value)
+
+
+def test_semicolons_and_decimal_commas_are_read(tmp_path):
+    from regimemap.io.points import read_points_table
+
+    f = tmp_path / "european.csv"
+    f.write_text("name;k;mu\ncaisson-A;0,5;0,3\nquay;1,25;0,1\n", encoding="utf-8")
+    table = read_points_table(f)
+    assert [(p.name, p.k, p.mu) for p in table.points] == [("caisson-A", 0.5, 0.3), ("quay", 1.25, 0.1)]
+    assert table.lines == [2, 3] and "semicolon" in table.note and "decimal commas" in table.note
+    assert read_points_table(tmp_path / "european.csv").points == read_points_csv(f)

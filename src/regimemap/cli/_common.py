@@ -44,6 +44,7 @@ __all__ = [
     "gc_paused_at_start",
     "import_matplotlib",
     "ParamType",
+    "report_written",
 ]
 
 CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
@@ -129,6 +130,17 @@ def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
         raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'") from None
 
 
+def report_written(path: str | os.PathLike[str], note: str | None = None) -> None:
+    """Report a written file the one way every command does: its path on standard output.
+
+    A ``note`` about it (frames, points ...) goes to standard error, so that
+    ``$(regimemap ...)`` captures the path alone.
+    """
+    click.echo(os.fspath(path))
+    if note:
+        click.echo(f"regimemap: {note}", err=True)
+
+
 def _one_line(text: str) -> str:
     """``text`` on one line (newlines and runs of blanks become one space)."""
     return " ".join(str(text).split())
@@ -148,8 +160,11 @@ def _error_message(exc: BaseException) -> str:
     return str(exc) or type(exc).__name__
 
 
-def output_dir(path: str | os.PathLike[str], param: str = "--out") -> Path:
+def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False) -> Path:
     """Check that ``path`` is an existing folder where files can be created; usage error if not.
+
+    With ``create``, a missing folder whose parent exists (and accepts new
+    files) is created first; a missing parent is still a usage error.
 
     Like :func:`output_path` for a folder: the check creates and removes an
     empty hidden file, since permission bits do not tell (root, read-only or
@@ -162,8 +177,20 @@ def output_dir(path: str | os.PathLike[str], param: str = "--out") -> Path:
         raise click.BadParameter(f"must be a folder, got {str(path)!r}", param_hint=f"'{param}'")
     if p.exists() and not p.is_dir():
         raise click.BadParameter(f"{str(path)!r} is a file, not a folder", param_hint=f"'{param}'")
+    if not p.is_dir() and create:
+        parent = p.parent if str(p.parent) else Path(".")
+        if parent.is_dir() and not folder_problem(parent):
+            try:
+                p.mkdir()
+            except FileExistsError:
+                pass
+            except OSError as exc:
+                raise click.BadParameter(f"cannot create folder {str(path)!r}: {exc.strerror}",
+                                         param_hint=f"'{param}'") from None
     if not p.is_dir():
-        raise click.BadParameter(f"folder {str(path)!r} does not exist", param_hint=f"'{param}'")
+        hint = " (its parent folder must exist)" if create else ""
+        raise click.BadParameter(f"folder {str(path)!r} does not exist{hint}",
+                                 param_hint=f"'{param}'")
     problem = folder_problem(p)
     if problem:
         raise click.BadParameter(f"folder {str(path)!r} {problem}", param_hint=f"'{param}'")

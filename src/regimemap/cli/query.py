@@ -9,7 +9,7 @@ from typing import Any
 
 import click
 
-from ._common import ParamType, RunError, gamma_option, kprime_option, output_path
+from ._common import ParamType, RunError, gamma_option, kprime_option, output_path, report_written
 
 __all__ = ["classify_cmd"]
 
@@ -76,8 +76,8 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
       regimemap classify --points caissons.csv --gamma 3 -o results.csv
       regimemap classify --points caissons.csv -o results.json
     """
-    from ..io.points import DesignPoint, read_points_csv
-    from ..io.tables import CSV_COLUMNS, format_result, result_row
+    from ..io.points import DesignPoint, read_points_table
+    from ..io.tables import CSV_COLUMNS, format_result, result_json, result_row
     from ..maps.query import query_points
 
     if points_file is None:
@@ -96,7 +96,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
         except ValueError as exc:  # pragma: no cover - inputs are validated above
             raise RunError(str(exc)) from None
         if as_json:
-            click.echo(json.dumps(res.as_dict(), indent=2, allow_nan=False))
+            click.echo(json.dumps(result_json(res), indent=2, allow_nan=False))
         else:
             click.echo(format_result(res))
         return
@@ -105,16 +105,19 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     if k is not None or mu is not None:
         raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
     try:
-        pts = read_points_csv(points_file)
+        table = read_points_table(points_file)
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="'--points'") from None
-    for i, pt in enumerate(pts, start=1):
+    if table.note:
+        click.echo(f"regimemap: note: {points_file} is {table.note}; read as such", err=True)
+    pts = table.points
+    for line, pt in zip(table.lines, pts):
         for opt, own, default in (("--gamma", pt.gamma, gamma), ("--kprime", pt.kprime, kprime)):
             if own is None and default is None:
-                who = f"row {i}" + (f" ({pt.name!r})" if pt.name else "")
+                who = f"{points_file}, line {line}" + (f" ({pt.name!r})" if pt.name else "")
                 col = opt.lstrip("-")
                 raise click.UsageError(
-                    f"{opt} is required: {who} of {points_file} has no {col} column value "
+                    f"{opt} is required: {who} has no {col} value "
                     f"(give {opt} or add a {col} column)")
     to_json = as_json or (output is not None and output.lower().endswith(".json"))
     if output is not None:
@@ -124,7 +127,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     except ValueError as exc:
         raise RunError(str(exc)) from None
     if to_json:
-        text = json.dumps({"count": len(results), "points": [r.as_dict() for r in results]},
+        text = json.dumps({"count": len(results), "points": [result_json(r) for r in results]},
                           indent=1, allow_nan=False) + "\n"
     else:
         buf = io.StringIO()
@@ -145,4 +148,4 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
             fh.write(text)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    click.echo(f"wrote {len(results)} point(s) to {output}", err=True)
+    report_written(output, f"{len(results)} point(s) classified")

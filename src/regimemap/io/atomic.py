@@ -9,6 +9,7 @@ is removed on any exception, including KeyboardInterrupt.
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import stat
 import tempfile
@@ -74,11 +75,47 @@ def folder_problem(folder: Path) -> str:
     try:
         fd, probe = tempfile.mkstemp(prefix=".regimemap-probe.", dir=folder)
     except OSError as exc:
-        return f"is not writable ({exc.strerror})"
+        return f"is not writable ({_probe_cause(folder, exc)})"
     os.close(fd)
     with contextlib.suppress(OSError):
         os.unlink(probe)
     return ""
+
+
+#: File systems that hold no files of their own (the kernel's views).
+_VIRTUAL_FS = ("proc", "sysfs", "devpts", "cgroup", "cgroup2", "debugfs", "securityfs",
+               "tracefs", "configfs", "pstore", "bpf", "efivarfs", "fusectl")
+
+
+def _fs_type(folder: Path) -> str | None:
+    """The type of the file system that holds ``folder`` (from /proc/self/mounts), if known."""
+    try:
+        real = os.path.realpath(folder)
+        with open("/proc/self/mounts", encoding="utf-8", errors="replace") as fh:
+            mounts = [line.split()[1:3] for line in fh if len(line.split()) >= 3]
+    except OSError:
+        return None
+    best, kind = "", None
+    for point, fstype in mounts:
+        point = point.replace("\\040", " ")
+        inside = real == point or real.startswith(point.rstrip("/") + "/")
+        if inside and len(point) >= len(best):
+            best, kind = point, fstype
+    return kind
+
+
+def _probe_cause(folder: Path, exc: OSError) -> str:
+    """The real reason why no file could be created in the existing folder ``folder``."""
+    kind = _fs_type(folder)
+    if kind in _VIRTUAL_FS:
+        return f"it is on the kernel's virtual {kind} file system, which holds no files"
+    if exc.errno == errno.EROFS:
+        return "it is on a read-only file system"
+    if exc.errno in (errno.EACCES, errno.EPERM):
+        return "permission denied"
+    if exc.errno == errno.ENOENT:  # the folder exists: the file system refuses new files
+        return "its file system does not accept new files"
+    return exc.strerror or str(exc)
 
 
 @contextlib.contextmanager

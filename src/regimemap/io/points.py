@@ -8,12 +8,14 @@ import os
 import re
 import stat
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TextIO
 
 from ..maps.points import DesignPoint
 from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
 
-__all__ = ["DesignPoint", "parse_point_spec", "read_points_csv", "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
+__all__ = ["DesignPoint", "PointsTable", "parse_point_spec", "read_points_csv", "read_points_table",
+           "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
 
 #: Largest number of rows accepted from a points file.
 MAX_POINTS = 1_000_000
@@ -103,13 +105,64 @@ def _lines(fh: TextIO, path: str) -> Iterator[str]:
         yield line
 
 
+@dataclass(frozen=True)
+class PointsTable:
+    """The design points of a file, the line each came from, and how the file was read.
+
+    Attributes
+    ----------
+    points : list of DesignPoint
+    lines : list of int
+        The line of the file of each point (1 = the first line).
+    note : str
+        How the file was read when it is not plain CSV (``""`` otherwise), e.g.
+        ``semicolon-separated with decimal commas``: say so to the user.
+    """
+
+    points: list[DesignPoint]
+    lines: list[int]
+    note: str = ""
+
+
+def _sniff(path: str) -> tuple[str, bool]:
+    """The separator of the file (``,``, ``;`` or a tab) and whether numbers use decimal commas.
+
+    A file is read as comma-separated unless its header names k and mu only
+    when split at semicolons (what a spreadsheet writes where the comma is
+    the decimal mark: ``k;mu`` and ``0,5;0,3``) or at tabs.
+    """
+    fh = _open_points_file(path)
+    with fh:
+        try:
+            for line in _lines(fh, path):
+                if line.strip():
+                    break
+            else:
+                return ",", False
+        except UnicodeDecodeError:
+            return ",", False
+    def names(sep: str) -> list[str]:
+        return [c.strip().strip('"').lower() for c in line.rstrip("\r\n").split(sep)]
+    if {"k", "mu"} <= set(names(",")):
+        return ",", False
+    for sep in (";", "\t"):
+        if {"k", "mu"} <= set(names(sep)):
+            return sep, sep == ";"
+    return ",", False
+
+
+_DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?", re.ASCII)
+
+
 def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
     """Read design points from a CSV file with a header row.
 
     Required columns ``k`` and ``mu``; optional ``gamma``, ``kprime`` and
     ``name`` (other columns are ignored; names are case-insensitive).  Blank
     lines are skipped, also before the header.  At most :data:`MAX_POINTS`
-    points and :data:`MAX_POINTS_FILE_BYTES` bytes.
+    points and :data:`MAX_POINTS_FILE_BYTES` bytes.  A file saved by a
+    spreadsheet where the comma is the decimal mark (``k;mu`` and
+    ``0,5;0,3``) is read too; :func:`read_points_table` says so.
 
     Raises
     ------
@@ -117,10 +170,21 @@ def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
         Naming the file, the line and the column of the first bad value, or a
         missing or repeated column.
     """
+    return read_points_table(path).points
+
+
+def read_points_table(path: str | os.PathLike[str]) -> PointsTable:
+    """:func:`read_points_csv`, with the line of every point and how the file was read."""
     path = os.fspath(path)
+    sep, decimal_comma = _sniff(path)
+    note = ""
+    if sep == ";":
+        note = "semicolon-separated with decimal commas (as a spreadsheet writes it)"
+    elif sep == "\t":
+        note = "tab-separated"
     fh = _open_points_file(path)
     with fh:
-        reader = csv.reader(_lines(fh, path))
+        reader = csv.reader(_lines(fh, path), delimiter=sep)
         try:
             header: list[str] | None = None
             for row in reader:
@@ -145,6 +209,7 @@ def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
                 raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
             idx = {c: cols.index(c) for c in known if c in cols}
             points: list[DesignPoint] = []
+            lines: list[int] = []
             for row in reader:
                 line = reader.line_num
                 if not row or all(not c.strip() for c in row):
@@ -154,7 +219,10 @@ def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
                 where = f"{path}, line {line}"
 
                 def cell(c: str, row: list[str] = row) -> str:
-                    return row[idx[c]].strip()
+                    v = row[idx[c]].strip()
+                    if decimal_comma and c != "name" and _DECIMAL_COMMA.fullmatch(v):
+                        v = v.replace(",", ".")
+                    return v
 
                 k = _number(cell("k"), "k", f"{where}, column k")
                 mu = _number(cell("mu"), "mu", f"{where}, column mu")
@@ -167,6 +235,7 @@ def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
                 if len(points) >= MAX_POINTS:
                     raise ValueError(f"{where}: more than {MAX_POINTS} points (the limit)")
                 points.append(DesignPoint(k, mu, name, gamma, kprime))
+                lines.append(line)
         except (csv.Error, UnicodeDecodeError) as exc:
             raise ValueError(f"{path}, line {reader.line_num + 1}: not CSV text ({exc})") from None
-    return points
+    return PointsTable(points, lines, note)

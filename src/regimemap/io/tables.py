@@ -7,8 +7,9 @@ import textwrap
 
 from ..maps.margins import Crossing
 from ..maps.query import PointResult
+from ._numbers import rounded, text
 
-__all__ = ["CSV_COLUMNS", "format_result", "result_row"]
+__all__ = ["CSV_COLUMNS", "format_result", "result_json", "result_row"]
 
 CSV_COLUMNS: tuple[str, ...] = (
     "name", "k", "mu", "gamma", "kprime", "case", "mode", "hypothesis",
@@ -20,7 +21,7 @@ CSV_COLUMNS: tuple[str, ...] = (
 def _fmt(v: float | None) -> str:
     if v is None or not math.isfinite(v):
         return ""
-    return repr(float(v))
+    return text(v)
 
 
 def result_row(r: PointResult) -> dict[str, str]:
@@ -41,6 +42,12 @@ def result_row(r: PointResult) -> dict[str, str]:
         row[f"{pre}_at"] = "" if n is None else _fmt(n.at)
         row[f"{pre}_to"] = "" if n is None else n.to.label
     return row
+
+
+def result_json(r: PointResult) -> dict[str, object]:
+    """:meth:`PointResult.as_dict` with its numbers rounded to 12 significant digits."""
+    out: dict[str, object] = rounded(r.as_dict())
+    return out
 
 
 def _pct(c: Crossing) -> str:

@@ -144,6 +144,14 @@ class Parameters:
         object.__setattr__(self, "c", c)
         object.__setattr__(self, "d", d)
 
+    def __repr__(self) -> str:
+        """The inputs as given, the derived a, b, c, d without float noise (12 digits)."""
+        def num(v: float) -> str:
+            return repr(float(f"{v:.12g}") + 0.0)
+
+        return (f"Parameters(gamma={self.gamma!r}, kprime={self.kprime!r}, a={num(self.a)}, "
+                f"b={num(self.b)}, c={num(self.c)}, d={num(self.d)})")
+
     # -- the chapter and the case -------------------------------------------------
     @property
     def above(self) -> bool:
