@@ -18,7 +18,7 @@ from regimemap.drawing.atlas import (
     sweep_extent,
 )
 from regimemap.io.figures import write_animation, write_atlas
-from regimemap.maps.view import auto_extent
+from regimemap.maps.designer_view import view_extent as auto_extent  # the default view of export and atlas
 from regimemap.mechanics.validation import check_gamma, check_kprime
 
 
@@ -27,7 +27,7 @@ def _panels(fig):
 
 
 def test_atlas_panels_titles_and_shared_axes():
-    gammas, kprimes = [1.0, 3.0], [-0.6, 0.0, 0.9]
+    gammas, kprimes = [1.0, 3.0], [-0.6, 0.4, 0.9]
     fig = atlas_figure(gammas, kprimes, samples=101)
     panels = _panels(fig)
     assert len(panels) == 6
@@ -93,9 +93,9 @@ def test_animation_frames_and_size(tmp_path):
     path = tmp_path / "sweep.gif"
     kps = parse_values("-0.8:0.8:5", "kprime", check_kprime)
     n, size = write_animation(path, 3.0, kps, dpi=40, fps=5, samples=101)
-    assert n == 5 and size == (256, 224)  # 6.4 x 5.6 inches at 40 dpi
+    assert n == 5 and size == (208, 180)  # 5.2 x 4.5 inches at 40 dpi
     with Image.open(path) as im:
-        assert im.format == "GIF" and im.n_frames == 5 and im.size == (256, 224)
+        assert im.format == "GIF" and im.n_frames == 5 and im.size == (208, 180)
         assert im.info.get("duration") == 200
         frames = []
         for i in range(im.n_frames):
@@ -163,3 +163,15 @@ def test_shared_extent_and_points_outside():
     ps = [Parameters(3.0, -0.95), Parameters(3.0, 0.4), Parameters(2.0, -1.0)]
     out = points_outside(ps, 2.0, 2.0)
     assert out == [ps[0]]  # A at k = 6.67; k' = -1 has no A
+
+
+def test_atlas_gives_own_views_where_sharing_would_cram():
+    from regimemap.drawing.atlas import resolve_share
+
+    gammas, kprimes = [1.0, 3.0], [-0.6, 0.0, 0.9]
+    share, ext, crammed = resolve_share(gammas, kprimes, "all")
+    assert share == "none" and (3.0, 0.0) in crammed
+    fig = atlas_figure(gammas, kprimes, samples=101)
+    assert "own view" in fig._suptitle.get_text() and "cram" in fig._suptitle.get_text()
+    views = {(ax.get_xlim(), ax.get_ylim()) for ax in _panels(fig)}
+    assert len(views) > 1

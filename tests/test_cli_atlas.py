@@ -52,7 +52,7 @@ def test_atlas_png_range_syntax(tmp_path):
 
 def test_atlas_notes_panels_whose_point_a_is_cut(tmp_path):
     r = run("atlas", "--gamma", "3", "--kprime", "-0.95,0,0.2,0.4", "--dpi", "30",
-            "-o", str(tmp_path / "a.png"))
+            "--view", "report", "--k-max", "2", "--mu-max", "2", "-o", str(tmp_path / "a.png"))
     assert r.exit_code == 0, r.output
     assert "point A lies outside the shared view for gamma = 3, k' = -0.95" in r.output
 
@@ -84,9 +84,10 @@ def test_animate(tmp_path):
     r = run("animate", "--gamma", "3", "--kprime", "-1:1:6", "--dpi", "30", "--fps", "4",
             "-o", str(out))
     assert r.exit_code == 0, r.output
-    assert "6 frames, 192 x 168 pixels" in r.output
+    assert r.stdout.strip() == str(out)
+    assert "6 frames, 156 x 135 pixels" in r.stderr
     with Image.open(out) as im:
-        assert im.n_frames == 6 and im.size == (192, 168)
+        assert im.n_frames == 6 and im.size == (156, 135)
         assert im.info["duration"] == 250
 
 

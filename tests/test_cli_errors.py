@@ -291,12 +291,27 @@ def test_unwritable_folder_by_access(tmp_path, inputs, monkeypatch):
 
 
 @pytest.mark.parametrize("make,pattern", [
-    (lambda t: t / "missing", r"'--out': folder '.*missing' does not exist"),
+    (lambda t: t / "missing" / "deeper", r"'--out': folder '.*deeper' does not exist"),
     (lambda t: t / "inputs" / "a-file", r"'--out': .*a-file"),
 ])
 def test_figures_bad_out_folder(tmp_path, inputs, make, pattern):
     needs("figures")
     assert_clean_failure(invoke_cli(["figures", "--out", str(make(tmp_path)), "--format", "svg"]), 2, pattern)
+
+
+def test_figures_creates_a_missing_out_folder_whose_parent_exists(tmp_path):
+    needs("figures")
+    out = tmp_path / "new"
+    r = invoke_cli(["figures", "--out", str(out), "--format", "svg", "--jobs", "1"])
+    assert r.code == 0, r.output
+    assert r.stderr == ""
+    written = r.stdout.splitlines()
+    assert len(written) == len(list(out.iterdir())) and all(Path(p).is_file() for p in written)
+
+
+def test_proc_message_names_the_real_cause():
+    assert_clean_failure(invoke_cli(["plot", "--gamma", "3", "--kprime", "0.4", "-o", "/proc/x.png"]),
+                         2, r"virtual proc file system")
 
 
 def test_figures_out_read_only_folder_is_a_usage_error():
@@ -556,18 +571,19 @@ def test_figures_failing_on_the_third_file(tmp_path, monkeypatch, failure):
     out_dir = tmp_path / "gallery"
     out_dir.mkdir()
     if old_present:
-        (out_dir / "fig-3.3a.svg").write_bytes(OLD)  # the third figure
+        (out_dir / "fig-3.2.svg").write_bytes(OLD)  # the third figure (2.1, 3.1, 3.2)
     ctl = WriteFailure(out_dir, exc, nth=3, after=after).install(monkeypatch)
-    r = invoke_cli(["figures", "--out", str(out_dir), "--format", "svg", "--dpi", "30"])
+    # one process, so that "the third file" is well defined
+    r = invoke_cli(["figures", "--out", str(out_dir), "--format", "svg", "--dpi", "30", "--jobs", "1"])
     monkeypatch.undo()
     assert ctl.fired, r.output
     assert_clean_failure(r, code)
     state = _folder_state(out_dir)
-    assert sorted(state) == ["fig-3.1.svg", "fig-3.2.svg"] + (["fig-3.3a.svg"] if old_present else [])
+    assert sorted(state) == ["fig-2.1.svg", "fig-3.1.svg"] + (["fig-3.2.svg"] if old_present else [])
+    check_complete(out_dir / "fig-2.1.svg")
     check_complete(out_dir / "fig-3.1.svg")
-    check_complete(out_dir / "fig-3.2.svg")
     if old_present:
-        assert state["fig-3.3a.svg"] == OLD
+        assert state["fig-3.2.svg"] == OLD
 
 
 # -- random arguments never give a traceback ------------------------------------------------------------

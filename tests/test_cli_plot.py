@@ -191,22 +191,23 @@ def test_figures_all(runner, tmp_path):
     res = _ok(runner.invoke(cli, ["figures", "--out", str(tmp_path), "--format", "svg,png",
                                   "--dpi", "30"]))
     names = sorted(p.name for p in tmp_path.iterdir())
-    assert len(names) == 48
-    assert "fig-3.9a.svg" in names and "fig-4.7b.png" in names
-    assert "48 files" in res.output
+    assert len(names) == 50
+    assert "fig-2.1.svg" in names and "fig-3.9a.svg" in names and "fig-4.7b.png" in names
+    # one line per written file on standard output: its path
+    assert sorted(Path(line).name for line in res.output.splitlines()) == names
     # the same bytes as one figure drawn alone
     _ok(runner.invoke(cli, ["figure", "3.10", "-o", str(tmp_path / "alone.svg")]))
     assert (tmp_path / "alone.svg").read_bytes() == (tmp_path / "fig-3.10.svg").read_bytes()
 
 
 def test_figures_errors_and_list(runner, tmp_path):
-    _usage(runner.invoke(cli, ["figures", "--out", str(tmp_path / "none")]), "--out",
+    _usage(runner.invoke(cli, ["figures", "--out", str(tmp_path / "none" / "deeper")]), "--out",
            "does not exist")
     _usage(runner.invoke(cli, ["figures", "--out", str(tmp_path), "--format", "png,gif"]),
            "--format", "png, svg, pdf")
     res = _ok(runner.invoke(cli, ["figures", "--list"]))
     lines = [ln for ln in res.output.splitlines() if ln.strip()]
-    assert len(lines) == 24 and lines[0].startswith("3.1 ")
+    assert len(lines) == 25 and lines[0].startswith("2.1 ") and lines[1].startswith("3.1 ")
 
 
 # -- help, version, import cost ------------------------------------------------------------------

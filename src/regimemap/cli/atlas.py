@@ -7,7 +7,15 @@ from typing import Any
 
 import click
 
-from ._common import ParamType, RunError, gamma_option, import_matplotlib, output_path, positive_float
+from ._common import (
+    ParamType,
+    RunError,
+    gamma_option,
+    import_matplotlib,
+    output_path,
+    positive_float,
+    report_written,
+)
 
 __all__ = ["atlas_cmd", "animate_cmd"]
 
@@ -79,12 +87,16 @@ def _figure_output(path: str) -> str:
               help="Right end of the k axis of every panel (default: automatic).")
 @click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
               help="Top of the mu axis of every panel (default: automatic).")
+@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
+              show_default=True,
+              help="Each panel's own view: mu up to 1.2 (designer) or every characteristic "
+                   "point (report).")
 @click.option("--dpi", type=click.IntRange(*ATLAS_DPI_RANGE), default=ATLAS_DPI, show_default=True,
               help="Resolution of PNG output.")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
               help="Output file: .png, .svg or .pdf (written atomically).")
 def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: float | None,
-              mu_max: float | None, dpi: int, output: str) -> None:
+              mu_max: float | None, view: str, dpi: int, output: str) -> None:
     """Draw the all-mode map for every GAMMA (rows) and KPRIME (columns) on one page.
 
     The panels share their axes (--share all, the default), so regions can be
@@ -111,17 +123,22 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
             f"{MAX_PANELS}; give fewer values to --gamma or --kprime")
     fmt = _figure_output(output)
     import_matplotlib()
-    from ..drawing.atlas import atlas_extents, points_outside
+    from ..drawing.atlas import points_outside, resolve_share
     from ..io.figures import write_atlas
     from ..mechanics.block import Parameters
 
-    ext = atlas_extents(gammas, kprimes, share, k_max, mu_max)
+    used, ext, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view)
     try:
-        write_atlas(output, gammas, kprimes, fmt=fmt, share=share, extents=ext, dpi=dpi)
+        write_atlas(output, gammas, kprimes, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
+                    view=view, dpi=dpi)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    click.echo(f"wrote {output} ({len(gammas)} x {len(kprimes)} panels)", err=True)
-    if share != "none":
+    report_written(output)
+    if crammed:
+        names = ", ".join(f"gamma = {g:g}, k' = {kp:g}" for g, kp in crammed[:4])
+        click.echo(f"regimemap: note: each panel has its own view; a shared view would cram "
+                   f"{names}{' ...' if len(crammed) > 4 else ''} into a corner", err=True)
+    if used != "none" and view == "report":
         lost = [f"gamma = {g:g}, k' = {kp:g}" for i, g in enumerate(gammas)
                 for j, kp in enumerate(kprimes)
                 if points_outside([Parameters(g, kp)], *ext[i][j])]
@@ -133,18 +150,22 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
 @click.option("--kprime", "kprimes", required=True, metavar="RANGE",
               type=_Values("kprime", _kprime_check, MAX_FRAMES),
               help="k' of the frames: start:stop:count (e.g. -1:1:41) or a list -1,-0.5,0.")
+@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
+              show_default=True,
+              help="The view of the frames: mu up to 1.2 (designer) or every characteristic "
+                   "point (report).")
 @click.option("--fps", type=click.FloatRange(*FPS_RANGE), default=8.0, show_default=True,
               help="Frames per second.")
 @click.option("--dpi", type=click.IntRange(*ANIMATION_DPI_RANGE), default=ANIMATION_DPI, show_default=True,
-              help="Pixels per inch (the frame is 6.4 x 5.6 inches: 512 x 448 at 80).")
+              help="Pixels per inch (the frame is 5.2 x 4.5 inches: 520 x 450 at 100).")
 @click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
               help="Right end of the k axis (default: upper quartile of the frames' automatic views).")
 @click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
               help="Top of the mu axis (default: upper quartile of the frames' automatic views).")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE.gif",
               help="Output GIF (written atomically).")
-def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max: float | None,
-                mu_max: float | None, output: str) -> None:
+def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: int,
+                k_max: float | None, mu_max: float | None, output: str) -> None:
     """Animate the map of GAMMA as k' runs through a range (a GIF).
 
     Every frame shows the all-mode map on the same axes (the upper quartile
@@ -170,19 +191,20 @@ def animate_cmd(gamma: float, kprimes: list[float], fps: float, dpi: int, k_max:
     from ..mechanics.block import Parameters
 
     if k_max is None or mu_max is None:
-        ek, em = sweep_extent(gamma, kprimes)
+        ek, em = sweep_extent(gamma, kprimes, view)
         k_max = ek if k_max is None else k_max
         mu_max = em if mu_max is None else mu_max
-    view = (k_max, mu_max)
+    view_name, frame_view = view, (k_max, mu_max)
     try:
         n, (w, h) = write_animation(output, gamma, kprimes, k_max=k_max, mu_max=mu_max, fps=fps,
                                     dpi=dpi)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    click.echo(f"wrote {output} ({n} frames, {w} x {h} pixels, {fps:g} frames/s)", err=True)
-    lost = [f"k' = {p.kprime:g}" for p in points_outside([Parameters(gamma, kp) for kp in kprimes],
-                                                         *view)]
-    _note_outside(lost)
+    report_written(output, f"{n} frames, {w} x {h} pixels, {fps:g} frames/s")
+    if view_name == "report":
+        lost = [f"k' = {p.kprime:g}" for p in
+                points_outside([Parameters(gamma, kp) for kp in kprimes], *frame_view)]
+        _note_outside(lost)
 
 
 def _note_outside(lost: list[str]) -> None:

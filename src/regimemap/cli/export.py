@@ -4,7 +4,15 @@ from __future__ import annotations
 
 import click
 
-from ._common import RunError, gamma_option, kprime_option, output_path, positive_float, resolution_type
+from ._common import (
+    RunError,
+    gamma_option,
+    kprime_option,
+    output_path,
+    positive_float,
+    report_written,
+    resolution_type,
+)
 
 __all__ = ["export_cmd"]
 
@@ -18,12 +26,15 @@ __all__ = ["export_cmd"]
               help="Top of the mu axis (default: automatic, as in 'plot').")
 @click.option("--resolution", type=resolution_type, default=401, show_default=True,
               metavar="N", help="Grid samples along each axis for .npz/.csv (2 to 5000).")
+@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
+              show_default=True,
+              help="Default view: mu up to 1.2 (designer) or every characteristic point (report).")
 @click.option("--format", "fmt", type=click.Choice(["npz", "csv", "json"], case_sensitive=False),
               default=None, help="Format (default: from the suffix of -o).")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
               help="Output file: .npz, .csv or .json (written atomically).")
 def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float | None,
-               resolution: int, fmt: str | None, output: str) -> None:
+               resolution: int, view: str, fmt: str | None, output: str) -> None:
     """Export the regime map for GAMMA and KPRIME as data.
 
     \b
@@ -36,7 +47,7 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
            case, parameters and constants (non-finite as null), the region
            polygons and the parts where several modes are admissible.
 
-    The view defaults to the one 'plot' chooses.  The grid has N x N points,
+    The view defaults to the one 'plot' chooses (--view).  The grid has N x N points,
     N <= 5000 (25 million points at most).
 
     \b
@@ -55,8 +66,8 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
     output_path(output, "--output")
     p = Parameters(gamma, kprime)
     try:
-        export_map(output, p, k_max=k_max, mu_max=mu_max, resolution=resolution, fmt=fmt)
+        export_map(output, p, k_max=k_max, mu_max=mu_max, resolution=resolution, fmt=fmt,
+                   view=view)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    what = "vector geometry" if fmt == "json" else f"{resolution} x {resolution} grid"
-    click.echo(f"wrote {output} ({fmt}, {what}; gamma = {gamma:g}, k' = {kprime:g})", err=True)
+    report_written(output)

@@ -23,6 +23,7 @@ from ._common import (
     output_dir,
     output_path,
     positive_float,
+    report_written,
     resolution_type,
 )
 
@@ -35,6 +36,8 @@ if TYPE_CHECKING:  # pragma: no cover
 #: this module need not import the renderer).
 FORMATS = ("png", "svg", "pdf")
 DEFAULT_SAMPLES = 801
+#: The number of the report's model figure (repeated from regimemap.drawing.model).
+MODEL_ID = "2.1"
 
 
 # -- option types --------------------------------------------------------------------------
@@ -158,7 +161,7 @@ def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> t
 
 
 def _check_dir(path: str, option: str) -> Path:
-    return output_dir(path, option)
+    return output_dir(path, option, create=True)
 
 
 def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
@@ -174,12 +177,15 @@ def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: floa
     """Design points from ``--points`` files and ``--point`` specs, for this map."""
     points = list(specs)
     if files:
-        from ..io.points import read_points_csv  # imports csv: only when needed
+        from ..io.points import read_points_table  # imports csv: only when needed
     for f in files:
         try:
-            points.extend(read_points_csv(f))
+            table = read_points_table(f)
         except ValueError as exc:
             raise click.BadParameter(str(exc), param_hint="'--points'") from None
+        if table.note:
+            click.echo(f"regimemap: note: {f} is {table.note}; read as such", err=True)
+        points.extend(table.points)
     keep: list[DesignPoint] = []
     other: list[DesignPoint] = []
     for pt in points:
@@ -206,7 +212,7 @@ def _plain(tex: str) -> str:
 
 
 def _written(path: Path) -> None:
-    click.echo(str(path))
+    report_written(path)
 
 
 # -- plot ------------------------------------------------------------------------------------
@@ -216,7 +222,9 @@ _PLOT_HELP = """Draw the regime map of a block for one GAMMA and KPRIME.
 Shades the region of each mode (rest RE, slide SL, rock RO, slide-rock SRO-,
 SRO+, SRO'-), draws the boundary curves mu*(k), mu**(k) and the report's
 lines with the named points (O, A, B', C, D ...), and writes PNG, SVG or PDF
-(from the suffix of -o, or --format).  Without -o the file is
+(from the suffix of -o, or --format).  The view shows the friction
+coefficients of real contacts, mu up to 1.2 (--view report: every
+characteristic point).  Without -o the file is
 regime-g<GAMMA>-kp<KPRIME>.<format> in the current folder, e.g.
 regime-g3-kp0.4.png.
 
@@ -228,6 +236,7 @@ Examples:
   regimemap plot --gamma 3 --kprime 0.4 --point 0.45,0.6:caisson-A
   regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
   regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
+  regimemap plot --gamma 1 --kprime -0.99 --view report
 """
 
 
@@ -239,10 +248,15 @@ Examples:
                    "Default: regime-g<GAMMA>-kp<KPRIME>.<format>.")
 @click.option("--format", "fmt", type=_Format(), default=None,
               help="png, svg or pdf (default: from the suffix of -o, else png).")
+@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
+              show_default=True,
+              help="designer: mu up to 1.2 and k far enough to show every boundary that "
+                   "crosses that band, with arrows at the edge to the points outside; report: "
+                   "every characteristic point in view.")
 @click.option("--k-max", type=positive_float("k-max"), default=None,
-              help="Right end of the k axis (default: shows the map's characteristic points).")
+              help="Right end of the k axis (wins over --view).")
 @click.option("--mu-max", type=positive_float("mu-max"), default=None,
-              help="Top of the mu axis (default: automatic).")
+              help="Top of the mu axis (wins over --view).")
 @click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
               help="Samples of k for the region polygons and curves (2-5000).")
 @click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
@@ -265,10 +279,10 @@ Examples:
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
                    "(repeatable); rows with another gamma/kprime are skipped with a warning.")
 @click.option("--show-ambiguity", is_flag=True,
-              help="Also mark where the report's raw regions overlap (needs "
-                   "regimemap.render_ambiguity).")
+              help="Also mark where the report's raw regions overlap (where the equations "
+                   "of motion admit several modes; below C only).")
 def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | None,
-                 k_max: float | None, mu_max: float | None, resolution: int, dpi: float,
+                 view: str, k_max: float | None, mu_max: float | None, resolution: int, dpi: float,
                  title: str | None, no_curves: bool, no_labels: bool, no_legend: bool,
                  modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
                  points_files: tuple[str, ...], show_ambiguity: bool) -> None:
@@ -285,15 +299,17 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     fig, ax, artists = map_figure(
         params, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
         curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title,
-        samples=resolution)
+        samples=resolution, view=view)
     if show_ambiguity:
         from ..drawing.ambiguity import draw_ambiguity
+        from ..drawing.tidy import tidy_figure
 
         with style_context():
-            artists.extra.extend(draw_ambiguity(ax, params, artists.data.k_max,
-                                                artists.data.mu_max) or [])
+            overlay = draw_ambiguity(ax, params, artists.data.k_max, artists.data.mu_max) or []
+            artists.extra.extend(overlay)
             artists.legend = ax.get_legend()  # rebuilt with one more entry
             fit_figure(fig, ax)  # the overlay may have added legend entries
+            tidy_figure(fig, [artists], fixed=[a for a in overlay if hasattr(a, "get_text")])
     k_hi, mu_hi = artists.extent
     outside = [p for p in points if p.k > k_hi or p.mu > mu_hi]
     if outside:
@@ -306,13 +322,18 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
 
 # -- figure / figures ------------------------------------------------------------------------
 
-_FIGURE_HELP = """Draw one figure of the report (e.g. 3.9a, 4.7b).
+_FIGURE_HELP = """Draw one figure of the report (e.g. 2.1, 3.9a, 4.7b).
+
+Fig. 2.1 is the model: the block of half width B and half height H
+(gamma = H/B), the force F = mgk at h = k'H above the centre of mass C,
+and the reactions of the base.
 
 Each figure uses parameters strictly inside its caption's case (see
 'regimemap figures --list').  Without -o the file is fig-<ID>.<format>.
 
 \b
 Examples:
+  regimemap figure 2.1
   regimemap figure 3.9a
   regimemap figure 4.7a -o fig47a.pdf
   regimemap figure 3.11 --format svg --dpi 300
@@ -320,15 +341,17 @@ Examples:
 
 
 def _preset_or_usage_error(fid: str) -> Any:
-    from ..drawing.presets import FIGURE_IDS, get_preset, suggest_ids
+    from ..drawing.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
 
+    if normalise_id(fid) == MODEL_ID:
+        return None
     try:
         return get_preset(fid)
     except KeyError:
         near = suggest_ids(fid)
         hint = f" Did you mean {' or '.join(near)}?" if near else ""
         raise click.BadParameter(
-            f"no figure {fid!r} in the report.{hint} Known: {', '.join(FIGURE_IDS)}",
+            f"no figure {fid!r} in the report.{hint} Known: {MODEL_ID}, {', '.join(FIGURE_IDS)}",
             param_hint="'FIGURE_ID'") from None
 
 
@@ -342,21 +365,27 @@ def _preset_or_usage_error(fid: str) -> Any:
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: float) -> None:
     preset = _preset_or_usage_error(figure_id)
-    path, fmt = _resolve_output(output, fmt, f"fig-{preset.id}")
+    path, fmt = _resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
 
     import_matplotlib()
     from ..drawing.figure import render_preset
     from ..io.figures import save_figure
 
-    fig = render_preset(preset, dpi=dpi)
+    if preset is None:
+        from ..drawing.model import model_figure
+
+        fig = model_figure(dpi=dpi)
+    else:
+        fig = render_preset(preset, dpi=dpi)
     _save(save_figure, fig, path, fmt, dpi)
     _written(path)
 
 
-_FIGURES_HELP = """Draw all 24 figures of the report into a folder.
+_FIGURES_HELP = """Draw all 25 figures of the report into a folder.
 
-Writes fig-<ID>.<format> for every figure (3.1 ... 3.11, 4.2 ... 4.7b) and
-every format, in one process.  The output is byte-identical from run to run.
+Writes fig-<ID>.<format> for every figure (2.1, 3.1 ... 3.11, 4.2 ... 4.7b) and
+every format, on every core of the machine (--jobs to choose).  The output
+is byte-identical from run to run, whatever the number of processes.
 PNGs are 150 dpi by default (use --dpi 300 for print; SVG and PDF are vector).
 
 \b
@@ -368,19 +397,24 @@ Examples:
 """
 
 
-@click.command("figures", help=_FIGURES_HELP, short_help="Draw all 24 figures of the report.")
+@click.command("figures", help=_FIGURES_HELP, short_help="Draw all 25 figures of the report.")
 @click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
-              help="Existing, writable folder for the files.")
+              help="Folder for the files (created if its parent folder exists).")
 @click.option("--format", "formats", type=_FormatList(), default="png", show_default=True,
               help="Comma-separated formats: png, svg, pdf.")
 @click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
-def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool) -> None:
+@click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
+              help="Worker processes (default: one per core).")
+def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
+                    jobs: int | None) -> None:
     from ..drawing.presets import PRESETS
 
     if list_only:
+        click.echo(f"{MODEL_ID:5s} the model: the block (half width B, half height H), the force "
+                   "F at h = k'H above C, the reactions f_x, f_y at xi, the rotation theta")
         for p in PRESETS.values():
             what = "final map" if not p.raw else "raw region of " + p.modes[0].label
             click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
@@ -390,15 +424,12 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
-    from ..drawing.figure import render_preset
-    from ..io.figures import save_figure
+    from ..io.figures import write_figures
 
-    fig = None  # one Figure for all: its renderer keeps the text caches warm
-    count = 0
-    for preset in PRESETS.values():
-        fig = render_preset(preset, dpi=dpi, fig=fig)
-        for fmt in formats:
-            _save(save_figure, fig, folder / preset.filename(fmt), fmt, dpi)
-            count += 1
-    click.echo(f"wrote {count} files ({len(PRESETS)} figures x {', '.join(formats)}) "
-               f"to {folder}")
+    try:
+        written = write_figures(folder, [MODEL_ID, *PRESETS], formats, dpi, jobs=jobs)
+    except OSError as exc:
+        where = f"cannot write {exc.filename}" if exc.filename else "cannot write a figure"
+        raise RunError(f"{where}: {exc.strerror or exc}") from None
+    for path in written:
+        report_written(path)

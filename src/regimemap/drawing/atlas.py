@@ -45,8 +45,12 @@ __all__ = [
     "check_animation",
     "sweep_extent",
     "shared_extent",
+    "resolve_share",
     "points_outside",
     "render_animation",
+    "draw_frame",
+    "frame_figure",
+    "FRAME_SIZE",
 ]
 
 #: Largest number of panels of an atlas (rows x columns).
@@ -66,7 +70,7 @@ SAMPLES = 401
 ATLAS_DPI = 150
 ATLAS_DPI_RANGE: tuple[int, int] = (30, 600)
 #: Resolution of the frames of an animation by default, and the range allowed.
-ANIMATION_DPI = 80
+ANIMATION_DPI = 100
 ANIMATION_DPI_RANGE: tuple[int, int] = (30, 300)
 #: Frames per second of an animation: the range allowed.
 FPS_RANGE: tuple[float, float] = (0.5, 50.0)
@@ -158,15 +162,47 @@ def parse_values(text: str, name: str, check: Callable[[float], float],
     return out
 
 
-def _extent_of(p: Parameters) -> tuple[float, float]:
-    from ..maps.view import auto_extent
+def _extent_of(p: Parameters, view: str = "designer") -> tuple[float, float]:
+    from ..maps.designer_view import view_extent
 
-    return auto_extent(p)
+    return view_extent(p, view)
+
+
+#: A panel whose own view is this many times smaller than the shared one (in k or
+#: in mu) would be crammed into a corner: the atlas then gives each panel its own view.
+CRAMMED = 3.0
+
+
+def resolve_share(gammas: Sequence[float], kprimes: Sequence[float], share: str = "all",
+                  k_max: float | None = None, mu_max: float | None = None,
+                  view: str = "designer"
+                  ) -> tuple[str, list[list[tuple[float, float]]], list[tuple[float, float]]]:
+    """The sharing an atlas can afford, its views, and the panels sharing would cram.
+
+    A shared view (``share`` ``"all"`` or ``"row"``) that is more than
+    :data:`CRAMMED` times wider or taller than a panel's own view would squeeze
+    that panel into a corner; then every panel gets its own view
+    (``"none"``), and the crammed panels are returned as (gamma, k') pairs so
+    that the caller can say why.  Fixed ``k_max`` and ``mu_max`` always share.
+
+    Returns
+    -------
+    (share, extents, crammed)
+    """
+    own = atlas_extents(gammas, kprimes, "none", k_max, mu_max, view=view)
+    ext = atlas_extents(gammas, kprimes, share, k_max, mu_max, view=view)
+    if share == "none" or (k_max is not None and mu_max is not None):
+        return share, ext, []
+    crammed = [(g, kp) for i, g in enumerate(gammas) for j, kp in enumerate(kprimes)
+               if ext[i][j][0] > CRAMMED * own[i][j][0] or ext[i][j][1] > CRAMMED * own[i][j][1]]
+    if crammed:
+        return "none", own, crammed
+    return share, ext, []
 
 
 def atlas_extents(gammas: Sequence[float], kprimes: Sequence[float], share: str = "all",
-                  k_max: float | None = None, mu_max: float | None = None
-                  ) -> list[list[tuple[float, float]]]:
+                  k_max: float | None = None, mu_max: float | None = None, *,
+                  view: str = "designer") -> list[list[tuple[float, float]]]:
     """The view (k_max, mu_max) of every panel: rows gamma, columns k'.
 
     ``share="all"``: one view for every panel, :func:`shared_extent` of all
@@ -176,7 +212,7 @@ def atlas_extents(gammas: Sequence[float], kprimes: Sequence[float], share: str 
     """
     if share not in SHARE:
         raise ValueError(f"share must be one of {', '.join(SHARE)}, got {share!r}")
-    own = [[_extent_of(Parameters(g, kp)) for kp in kprimes] for g in gammas]
+    own = [[_extent_of(Parameters(g, kp), view) for kp in kprimes] for g in gammas]
     if share == "all":
         km, mm = shared_extent([e for row in own for e in row])
         own = [[(km, mm) for _ in row] for row in own]
@@ -228,7 +264,8 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                  k_max: float | None = None, mu_max: float | None = None,
                  panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
                  dpi: float = ATLAS_DPI, curves: bool = True, labels: bool = True,
-                 extents: Sequence[Sequence[tuple[float, float]]] | None = None) -> Figure:
+                 extents: Sequence[Sequence[tuple[float, float]]] | None = None,
+                 view: str = "designer") -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k'.
 
     Parameters
@@ -246,7 +283,11 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         Size of one panel in inches.
     extents : rows of (k_max, mu_max), optional
         The view of every panel, as :func:`atlas_extents` returns it (computed
-        from ``share``, ``k_max`` and ``mu_max`` when omitted).
+        from ``share``, ``k_max`` and ``mu_max`` when omitted, by
+        :func:`resolve_share`: panels that a shared view would cram get views of
+        their own, and the suptitle says so).
+    view : {"designer", "report"}
+        The panels' own views (:func:`regimemap.maps.designer_view.view_extent`).
     samples : int
         Samples of k per panel.
     dpi : float
@@ -280,16 +321,18 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         raise ValueError("an atlas needs at least one gamma and one kprime")
     if nr * nc > MAX_PANELS:
         raise ValueError(f"{nr} x {nc} = {nr * nc} panels exceed the limit of {MAX_PANELS}")
+    crammed: list[tuple[float, float]] = []
     if extents is None:
-        extents = atlas_extents(gammas, kprimes, share, k_max, mu_max)
+        share, extents, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view)
     pw, ph = panel_size
     handles = _legend_handles(MAP_MODES, dotted=curves and min(kprimes) < 0.0)
     key_cols = min(4, max(2, nc))
     key_rows = -(-len(handles) // key_cols)
     # the key below the panels: 0.1 in from the edge, ~0.2 in a row, then the
     # bottom panels' tick labels and k
-    left, right, top, bottom = 0.62, 0.2, 0.7, 0.62 + 0.2 * key_rows
-    wspace, hspace = (0.3 if share == "all" else 0.5), (0.42 if share == "all" else 0.6)
+    left, right, top, bottom = 0.62, 0.25, 0.7 + (0.18 if crammed else 0.0), 0.62 + 0.2 * key_rows
+    # room between panels for the tick labels and mu of the panel on the right
+    wspace, hspace = (0.3 if share == "all" else 0.72), (0.42 if share == "all" else 0.6)
     fw = left + right + nc * pw + (nc - 1) * wspace
     fh = top + bottom + nr * ph + (nr - 1) * hspace
     with style_context():
@@ -297,6 +340,7 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         FigureCanvasAgg(fig)
         shared: Axes | None = None
         row_first: Axes | None = None
+        arts = []
         for i, g in enumerate(gammas):
             for j, kp in enumerate(kprimes):
                 x0 = (left + j * (pw + wspace)) / fw
@@ -319,6 +363,10 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                 # spill into the next one: the legend and the full map name them
                 for t in art.curve_labels.values():
                     t.remove()
+                art.curve_labels.clear()
+                for t in set(art.off_view.values()):
+                    t.set_fontsize(6.5)
+                arts.append(art)
                 ax.title.set_fontsize(9)
                 ax.xaxis.label.set_fontsize(10)
                 ax.yaxis.label.set_fontsize(10)
@@ -340,16 +388,26 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         title = (r"Regime maps: rows $\gamma = H/B$, columns $k' = h/H$"
                  + ("" if share == "none" else
                     f" (axes shared {'across the figure' if share == 'all' else 'in each row'})"))
+        if crammed:
+            names = "; ".join(rf"$\gamma = {_fmt(g)}$, $k' = {_fmt(kp)}$" for g, kp in crammed[:3])
+            more = f" and {len(crammed) - 3} more" if len(crammed) > 3 else ""
+            title += ("\neach panel has its own view: a shared one would cram " + names + more
+                      + " into a corner")
         fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / fh, va="top")
+        from .tidy import tidy_figure
+
+        tidy_figure(fig, arts)
+    fig._regimemap_maps = arts  # type: ignore[attr-defined]  # what each panel drew
     return fig
 
 
 # --------------------------------------------------------------------------------------
 # animation
 # --------------------------------------------------------------------------------------
-def sweep_extent(gamma: float, kprimes: Sequence[float]) -> tuple[float, float]:
-    """One view for every frame: :func:`shared_extent` of the frames' automatic views."""
-    return shared_extent([_extent_of(Parameters(gamma, kp)) for kp in kprimes])
+def sweep_extent(gamma: float, kprimes: Sequence[float], view: str = "designer"
+                 ) -> tuple[float, float]:
+    """One view for every frame: :func:`shared_extent` of the frames' own views."""
+    return shared_extent([_extent_of(Parameters(gamma, kp), view) for kp in kprimes])
 
 
 def _pillow_writer(fps: float) -> PillowWriter:
@@ -394,6 +452,84 @@ def _check_frames(gamma: float, kprimes: Sequence[float], fps: float) -> None:
         raise ValueError(f"fps must be a number in [{lo:g}, {hi:g}], got {fps!r}")
 
 
+#: Size of an animation frame in inches: 520 x 450 pixels at the default 100 dpi.
+FRAME_SIZE: tuple[float, float] = (5.2, 4.5)
+#: Layout of a frame (inches): margins around the map; the key is below it.
+_F_LEFT, _F_RIGHT, _F_TOP, _F_BOTTOM = 0.55, 0.15, 0.5, 0.95
+
+
+def _frame_handles(modes: Sequence[Mode]) -> list[Any]:
+    """The key of an animation frame: one swatch per mode, with a short description."""
+    from .key import key_handles
+
+    short = {Mode.SRO_MINUS: "slide-rock, slips left", Mode.SRO_PLUS: "slide-rock, slips right",
+             Mode.SRO_PRIME_MINUS: "slide-rock about O'"}
+    handles = key_handles(modes, boundary=False, construction=False)
+    for h, m in zip(handles, modes):
+        h.set_label(short.get(m, h.get_label()))
+    return handles
+
+
+def frame_figure(figsize: tuple[float, float] | None = None, dpi: float = ANIMATION_DPI
+                 ) -> tuple[Figure, Axes]:
+    """The figure of an animation frame: a map, its key below, its caption above."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from .style import style_context
+
+    w, h = figsize or FRAME_SIZE
+    with style_context():
+        fig = Figure(figsize=(w, h), dpi=dpi)
+        FigureCanvasAgg(fig)
+        ax = fig.add_axes((_F_LEFT / w, _F_BOTTOM / h, 1.0 - (_F_LEFT + _F_RIGHT) / w,
+                           1.0 - (_F_TOP + _F_BOTTOM) / h))
+    return fig, ax
+
+
+def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float, mu_max: float,
+               *, modes: Sequence[Mode] = MAP_MODES, samples: int = SAMPLES) -> Any:
+    """Draw one frame of an animation on ``ax`` (cleared first); return its MapArtists.
+
+    The caption states the report's case above the map, the frame's gamma and
+    k' sit in a box beside it (outside the map), and the key below lists the
+    modes, sized to the frame; then :func:`regimemap.drawing.tidy.tidy_figure`
+    keeps every text clear of the others.
+    """
+    from .key import key_legend
+    from .mapplot import draw_map
+    from .style import style_context
+    from .tidy import fit_title, tidy_figure
+
+    p = Parameters(gamma, kprime)
+    with style_context():
+        ax.cla()
+        for leg in list(fig.legends):
+            leg.remove()
+        for t in list(fig.texts):
+            t.remove()
+        art = draw_map(ax, p, k_max=k_max, mu_max=mu_max, legend=False, samples=samples,
+                       title=f"All modes, {p.case.tex}")
+        if art.title is not None:
+            art.title.set_fontsize(8.5)
+        for t in art.curve_labels.values():
+            t.set_fontsize(8.5)
+        key_legend(fig, _frame_handles(modes), loc="lower center", ncols=3,
+                   bbox_to_anchor=(0.5, 0.02), fontsize=8.0, frameon=False, handleheight=1.0,
+                   columnspacing=1.2, borderaxespad=0.0)
+        box = fig.text(1.0 - 0.08 / fig.get_size_inches()[0], 1.0 - 0.06 / fig.get_size_inches()[1],
+                       rf"$\gamma = {_fmt(gamma)}$, $k' = {kprime:+.3f}$", ha="right", va="top",
+                       fontsize=9.5,
+                       bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "0.3", "lw": 0.6})
+        box.set_gid("frame-kprime")
+        renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
+        if art.title is not None:
+            bb = box.get_window_extent(renderer)
+            fit_title(art.title, renderer, bb.x0 - 6.0, fig.bbox.y1 - 2.0)
+        tidy_figure(fig, [art], fixed=[box], fit_titles=False)
+    return art
+
+
 def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
                     k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
                     dpi: float = ANIMATION_DPI, figsize: tuple[float, float] | None = None,
@@ -417,7 +553,7 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     dpi : float
         Pixels per inch of the frames.
     figsize : (float, float), optional
-        Inches (default that of :func:`regimemap.drawing.figure.new_figure`).
+        Inches (default :data:`FRAME_SIZE`).
     samples : int
         Samples of k per frame.
     progress : callable, optional
@@ -430,13 +566,10 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
 
     Notes
     -----
-    Each frame is the all-mode map with the default title, which states the
-    case and (gamma, k'); the legend lists all six modes in every frame, so
-    it does not jump.
+    Each frame is the all-mode map (:func:`draw_frame`): the caption states
+    the case, a box outside the map gives gamma and k', and the key lists all
+    six modes in every frame, so it does not jump.
     """
-    from .figure import FIGSIZE, new_figure
-    from .key import key_legend
-    from .mapplot import draw_map
     from .style import style_context
 
     _check_frames(gamma, kprimes, fps)
@@ -446,24 +579,12 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
         ek, em = sweep_extent(g, kps)
         k_max = ek if k_max is None else k_max
         mu_max = em if mu_max is None else mu_max
-    size = figsize or FIGSIZE
-    fig, ax = new_figure(size, dpi)
+    fig, ax = frame_figure(figsize, dpi)
     writer = _pillow_writer(fps)
-    handles = None
     with style_context():
         writer.setup(fig, str(path), dpi=dpi)
         for i, kp in enumerate(kps):
-            ax.cla()
-            draw_map(ax, Parameters(g, kp), k_max=k_max, mu_max=mu_max, legend=False,
-                     samples=samples)
-            if handles is None:
-                handles = _legend_handles(MAP_MODES, dotted=min(kps) < 0.0)
-            key_legend(ax, handles, loc="upper center", bbox_to_anchor=(0.5, -0.1), ncols=2,
-                       fontsize=8.5, frameon=False, handleheight=1.1, columnspacing=1.5,
-                       borderaxespad=0.0)
-            ax.text(0.99, 0.98, rf"$k' = {kp:+.3f}$", transform=ax.transAxes, ha="right", va="top",
-                    fontsize=11, zorder=10,
-                    bbox={"boxstyle": "round,pad=0.3", "fc": "white", "ec": "0.3", "lw": 0.6})
+            draw_frame(fig, ax, g, kp, k_max, mu_max, samples=samples)
             writer.grab_frame()
             if progress is not None:
                 progress(i + 1, len(kps))

@@ -17,6 +17,7 @@ from ..mechanics.block import Parameters
 from .mapplot import MapArtists, draw_design_points, draw_map
 from .save import DEFAULT_DPI
 from .style import style_context
+from .tidy import tidy_figure
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -128,18 +129,23 @@ def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None
     """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
 
     ``kwargs`` go to :func:`draw_map`; design ``points`` are marked with
-    :func:`draw_design_points` and kept in the automatic view.  Unless
+    :func:`draw_design_points` and kept in the automatic view.  With
+    ``tidy=True`` (the default) the title is fitted to the figure and any
+    text that collides is moved (:func:`regimemap.drawing.tidy.tidy_figure`).  Unless
     ``figsize`` is given, the figure height is fitted to the legend and the
     axes are 5.5 x 3.6 inches.
     """
     fig, ax = new_figure(figsize, dpi, fig)
     include = list(kwargs.pop("include", ())) + [(pt.k, pt.mu) for pt in points]
+    tidy = kwargs.get("tidy", True)
     with style_context():
         artists = draw_map(ax, params, include=include, **kwargs)
         if points:
             artists.extra.extend(draw_design_points(ax, points))
         if figsize is None:
             fit_figure(fig, ax)
+        if tidy:
+            tidy_figure(fig, [artists])
     return fig, ax, artists
 
 
@@ -161,4 +167,5 @@ def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
         preset = get_preset(preset)
     return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
                       mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
-                      title=preset.title, samples=samples, hatches=hatches)[0]
+                      title=preset.title, samples=samples, hatches=hatches, view="report",
+                      tidy=False)[0]

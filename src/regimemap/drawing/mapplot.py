@@ -84,6 +84,9 @@ class MapArtists:
     title : Text or None
     extra : list[Artist]
         Anything else drawn on the axes by regimemap (design points ...).
+    off_view : dict[str, Text]
+        Arrows at the frame's edge to the characteristic points outside the
+        view, with their names and coordinates (``tidy`` maps only).
     """
 
     data: MapData
@@ -96,6 +99,7 @@ class MapArtists:
     legend: Legend | None = None
     title: Text | None = None
     extra: list[Artist] = field(default_factory=list)
+    off_view: dict[str, Text] = field(default_factory=dict)
 
     @property
     def extent(self) -> tuple[float, float]:
@@ -121,7 +125,10 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
     """
     modes = tuple(MAP_MODES if modes is None else modes)
     if raw and len(modes) == 1:
-        what = f"Region of {modes[0].tex} ({modes[0].description}) before Section 4.7"
+        what = f"Raw region of {modes[0].tex} ({modes[0].description}), before Section 4.7"
+    elif raw:
+        which = "all modes" if set(modes) >= set(MAP_MODES) else ", ".join(m.tex for m in modes)
+        what = f"Raw regions of {which} (may overlap), before Section 4.7"
     elif set(modes) >= set(MAP_MODES) or len(modes) > 2:
         what = "All modes" if set(modes) >= set(MAP_MODES) else "Modes " + ", ".join(
             m.tex for m in modes)
@@ -232,7 +239,8 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
              raw: bool = False, curves: bool = True, labels: bool = True,
              legend: bool = True, title: str | None = None, samples: int = DEFAULT_SAMPLES,
              hatches: bool = True, include: Iterable[tuple[float, float]] = (),
-             data: MapData | None = None, legend_kw: dict[str, Any] | None = None) -> MapArtists:
+             data: MapData | None = None, legend_kw: dict[str, Any] | None = None,
+             view: str = "designer", tidy: bool = True) -> MapArtists:
     """Draw the regime map of ``params`` on ``ax``.
 
     Parameters
@@ -266,6 +274,16 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
         arguments are then ignored).
     legend_kw : dict, optional
         Extra keyword arguments of :meth:`~matplotlib.axes.Axes.legend`.
+    view : {"designer", "report"}
+        The default view (:func:`regimemap.maps.designer_view.view_extent`):
+        mu up to 1.2 and every boundary that crosses that band, or every
+        characteristic point of the map.  ``k_max``/``mu_max`` win over both.
+    tidy : bool
+        Draw for people (default): characteristic points outside the view are
+        marked at the frame's edge with an arrow and their coordinates, and a
+        dotted line that coincides with a boundary is left out (and out of the
+        key).  :func:`regimemap.drawing.tidy.tidy_figure` then moves any text
+        that collides; the report's figures are drawn with ``tidy=False``.
 
     Returns
     -------
@@ -275,8 +293,19 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
     from matplotlib.patches import Polygon
 
     if data is None:
+        include = list(include)
+        if k_max is None or mu_max is None:
+            from ..maps.designer_view import view_extent
+
+            modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
+            modes = modes_t
+            raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
+            k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
+                                        mu_max=mu_max)
         data = compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
                            samples=samples, curves=curves, include=include)
+    if tidy and curves:
+        data = _without_coincident_lines(data)
     out = MapArtists(data=data)
     k_max, mu_max = data.k_max, data.mu_max
     frame = _Frame(ax, k_max, mu_max)
@@ -350,6 +379,8 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
                 fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
             obstacles.append(frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va))
+        if tidy:
+            out.off_view = _mark_off_view(ax, params, k_max, mu_max, obstacles, frame)
     lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
     if curves:
         for name, cd in data.curves.items():
@@ -378,8 +409,8 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
                           "alpha": 0.8}))
                 obstacles.append(frame.box(anchor[0], anchor[1], 0, 0, size, "center", "center"))
             out.region_labels[mode] = texts
-        for mode, poly in small:  # too thin for a label: a label with a leader line
-            t = _leader_label(ax, frame, mode, poly, obstacles, lines)
+        for mode, poly in small:  # too thin for a label: on the band, or with a leader line
+            t = (_band_label if tidy else _leader_label)(ax, frame, mode, poly, obstacles, lines)
             if t is not None:
                 out.region_labels.setdefault(mode, []).append(t)
 
@@ -427,7 +458,7 @@ def _curve_label(ax: Axes, frame: _Frame, cd: Any,
                              "alpha": 0.7})
     # crowded (lines close together): a label with a leader to a point of the curve
     for frac in (0.8, 0.6, 0.4):
-        target = _point_along(cd.points, k_max, mu_max, frac)
+        target = point_along(cd.points, k_max, mu_max, frac)
         if target is None:
             return None
         at = leader_label_anchor(target, k_max, mu_max, box, lines, obstacles)
@@ -442,7 +473,7 @@ def _curve_label(ax: Axes, frame: _Frame, cd: Any,
     return None
 
 
-def _point_along(pts: np.ndarray, k_max: float, mu_max: float, frac: float
+def point_along(pts: np.ndarray, k_max: float, mu_max: float, frac: float
                  ) -> tuple[float, float] | None:
     """The point at ``frac`` of the visible length of a polyline (data coordinates)."""
     q = view_points(pts, k_max, mu_max, 0.003)
@@ -452,6 +483,36 @@ def _point_along(pts: np.ndarray, k_max: float, mu_max: float, frac: float
     s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(q, axis=0).T))])
     i = int(np.clip(np.searchsorted(s, frac * s[-1]), 0, len(q) - 1))
     return float(q[i, 0] * k_max), float(q[i, 1] * mu_max)
+
+
+def _band_label(ax: Axes, frame: _Frame, mode: Mode, poly: np.ndarray,
+                obstacles: list[tuple[float, float, float, float]],
+                lines: Sequence[np.ndarray]) -> Text | None:
+    """Label a region too thin to hold its symbol: on the band itself, framed.
+
+    The label's centre lies inside its region, at the thickest part of the
+    band in view, so that it can never be read as the label of a neighbour;
+    :func:`regimemap.drawing.tidy.tidy_figure` moves it along the band if it
+    meets another text.
+    """
+    from .tidy import band_columns
+
+    xs, lo, hi = band_columns(poly, frame.k_max, frame.mu_max, 400)
+    room = hi - lo
+    if room.max() <= 0.0:
+        return None
+    good = np.flatnonzero(room >= 0.6 * room.max())
+    c = int(good[len(good) // 2])
+    target = (float(xs[c] * frame.k_max), float(0.5 * (lo[c] + hi[c]) * frame.mu_max))
+    size = text_size(mode.tex, _REGION_FS)
+    obstacles.append(frame.box(target[0], target[1], 0.0, 0.0, size, "center", "center"))
+    text, style = mode_symbol(mode)
+    t = ax.text(target[0], target[1], text, ha="center", va="center", fontsize=_REGION_FS,
+                fontstyle=style, zorder=_Z_LABEL,
+                bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.3", "lw": 0.6,
+                      "alpha": 0.9})
+    t.set_gid("band-label")
+    return t
 
 
 def _leader_label(ax: Axes, frame: _Frame, mode: Mode, poly: np.ndarray,
@@ -475,6 +536,86 @@ def _leader_label(ax: Axes, frame: _Frame, mode: Mode, poly: np.ndarray,
               "alpha": 0.9},
         arrowprops={"arrowstyle": "-|>", "color": "black", "lw": 0.8,
                     "shrinkA": 0.0, "shrinkB": 1.0, "mutation_scale": 8})
+
+
+def _without_coincident_lines(data: MapData) -> MapData:
+    """``data`` without the dotted lines that coincide with another drawn curve.
+
+    At k' = -1 the dotted line mu = k|k'| (4.22) is OA itself: drawn twice it
+    would be invisible, and named in the key it would mislead.
+    """
+    drop = []
+    for name, cd in data.curves.items():
+        if not cd.dotted or len(cd.points) < 2:
+            continue
+        mine = view_points(cd.points, data.k_max, data.mu_max, 0.01)
+        for other_name, other in data.curves.items():
+            if other_name == name or other.dotted or len(other.points) < 2:
+                continue
+            theirs = view_points(other.points, data.k_max, data.mu_max, 0.002)
+            d = np.hypot(*(mine[:, None, :] - theirs[None, :, :]).transpose(2, 0, 1)).min(axis=1)
+            if float(d.max()) < 2e-3:
+                drop.append(name)
+                break
+    if not drop:
+        return data
+    from dataclasses import replace
+
+    return replace(data, curves={n: c for n, c in data.curves.items() if n not in drop})
+
+
+def _off_view_text(name: str, k: float, mu: float) -> str:
+    return f"{_point_text(name)} ({k:.3g}, {mu:.3g})"
+
+
+_OFF_VIEW_FS = 8.0
+
+
+def _mark_off_view(ax: Axes, params: Parameters, k_max: float, mu_max: float,
+                   obstacles: list[tuple[float, float, float, float]], frame: _Frame
+                   ) -> dict[str, Text]:
+    """Mark the characteristic points outside the view at the frame's edge.
+
+    Each gets a short arrow whose head is on the frame, pointing the way to
+    the point, and its name and coordinates at the arrow's tail, inside the
+    frame; points beyond the same place of the edge share one arrow.
+    """
+    from ..maps.designer_view import points_off_view
+
+    groups: dict[tuple[float, float], list[Any]] = {}
+    for pt in points_off_view(params, k_max, mu_max):
+        x, y = min(pt.k, k_max), min(pt.mu, mu_max)
+        groups.setdefault((round(x / k_max, 2), round(y / mu_max, 2)), []).append(pt)
+    out: dict[str, Text] = {}
+    for (fx, fy), pts in groups.items():
+        pt = pts[0]
+        x, y = min(pt.k, k_max), min(pt.mu, mu_max)
+        right, up = pt.k > k_max, pt.mu > mu_max
+        ux, uy = (1.0 if right else 0.0), (1.0 if up else 0.0)
+        n = float(np.hypot(ux, uy)) or 1.0
+        ux, uy = ux / n, uy / n
+        dx, dy = -18.0 * ux, -18.0 * uy
+        ha = "right" if (right or fx > 0.85) else ("left" if fx < 0.15 else "center")
+        if up:
+            va = "top"
+        else:
+            va = "bottom" if fy < 0.5 else "top"
+            dy += 3.0 if va == "bottom" else -3.0
+        text = "\n".join(_off_view_text(p.name, p.k, p.mu) for p in pts)
+        label = ax.annotate(
+            text, (x, y), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
+            fontsize=_OFF_VIEW_FS, zorder=_Z_LABEL, annotation_clip=False, color="0.1",
+            bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "0.4", "lw": 0.4,
+                  "alpha": 0.9},
+            arrowprops={"arrowstyle": "-|>", "color": "0.1", "lw": 0.9, "mutation_scale": 9,
+                        "shrinkA": 0.0, "shrinkB": 0.0})
+        label.set_gid("off-view")
+        for p in pts:
+            out[p.name] = label
+        longest = max(text.split("\n"), key=len)
+        obstacles.append(frame.box(x, y, dx, dy, text_size(longest, _OFF_VIEW_FS, len(pts)),
+                                   ha, va))
+    return out
 
 
 # -- design points ---------------------------------------------------------------------------
@@ -506,13 +647,16 @@ def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: flo
     (dots,) = ax.plot(ks, mus, linestyle="none", marker="o", markersize=6.0,
                       markerfacecolor="black", markeredgecolor="white", markeredgewidth=1.2,
                       zorder=_Z_DESIGN, label="_design points")
+    dots.set_gid("design-dots")
     artists.append(dots)
     for pt in points:
         if not pt.name:
             continue
-        artists.append(ax.annotate(
+        name = ax.annotate(
             pt.name, (pt.k, pt.mu), xytext=(5.0, 5.0), textcoords="offset points", ha="left",
             va="bottom", fontsize=fontsize, zorder=_Z_DESIGN,
             bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.2", "lw": 0.5,
-                  "alpha": 0.9}))
+                  "alpha": 0.9})
+        name.set_gid("design-name")
+        artists.append(name)
     return artists

@@ -16,6 +16,7 @@ import numpy as np
 __all__ = [
     "Box",
     "box_hits",
+    "column_intervals",
     "curve_label_anchor",
     "interior_point",
     "label_anchor",
@@ -278,3 +279,8 @@ def _column_intervals(x: np.ndarray, y: np.ndarray, xs: np.ndarray) -> tuple[np.
     lo[empty] = 1.0
     hi[empty] = 0.0
     return lo, hi
+
+
+def column_intervals(x: np.ndarray, y: np.ndarray, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """lo, hi of the closed polygon (x, y) along the vertical lines x = xs (empty: lo > hi)."""
+    return _column_intervals(x, y, xs)

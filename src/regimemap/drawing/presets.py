@@ -25,7 +25,7 @@ from dataclasses import dataclass
 from ..mechanics.block import Case, Parameters
 from ..mechanics.modes import MAP_MODES, Mode
 
-__all__ = ["FigurePreset", "PRESETS", "FIGURE_IDS", "get_preset", "suggest_ids"]
+__all__ = ["FigurePreset", "PRESETS", "FIGURE_IDS", "get_preset", "normalise_id", "suggest_ids"]
 
 # -- case conditions (as the captions state them) ----------------------------------------
 
@@ -226,6 +226,11 @@ FIGURE_IDS: tuple[str, ...] = tuple(PRESETS)
 
 assert len(PRESETS) == 24
 assert all(set(p.modes) <= set(MAP_MODES) for p in PRESETS.values())
+
+
+def normalise_id(fid: str) -> str:
+    """A figure number as typed (``"Fig. 3.9A"``, ``"fig-2.1"``) in the form of the ids."""
+    return _normalise(fid)
 
 
 def _normalise(fid: str) -> str:

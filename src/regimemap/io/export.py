@@ -46,6 +46,7 @@ from ..mechanics.block import Parameters
 from ..mechanics.curves import map_curves, named_points
 from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
+from ._numbers import round_sig, text
 from .atomic import atomic_open
 
 __all__ = [
@@ -87,11 +88,12 @@ def format_of(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     return fmt
 
 
-def _extent(p: Parameters, k_max: float | None, mu_max: float | None) -> tuple[float, float]:
+def _extent(p: Parameters, k_max: float | None, mu_max: float | None,
+            view: str = "designer") -> tuple[float, float]:
     if k_max is None or mu_max is None:
-        from ..maps.view import auto_extent
+        from ..maps.designer_view import view_extent
 
-        k_max, mu_max = auto_extent(p, k_max=k_max, mu_max=mu_max)
+        k_max, mu_max = view_extent(p, view, k_max=k_max, mu_max=mu_max)
     return check_positive("k_max", k_max), check_positive("mu_max", mu_max)
 
 
@@ -120,16 +122,16 @@ def grid_axes(k_max: float, mu_max: float, resolution: int | tuple[int, int] = D
 
 
 def map_grid(p: Parameters, k_max: float | None = None, mu_max: float | None = None,
-             resolution: int | tuple[int, int] = DEFAULT_RESOLUTION
+             resolution: int | tuple[int, int] = DEFAULT_RESOLUTION, *, view: str = "designer"
              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The map on a grid: ``(k, mu, mode)`` with ``mode`` of shape (len(mu), len(k)).
 
     ``mode[i, j] == classify(k[j], mu[i], gamma, kprime)`` exactly
-    (:func:`regimemap.label_grid`).  The view defaults to
-    :func:`regimemap.view.auto_extent`.
+    (:func:`regimemap.label_grid`).  The view defaults to ``view``
+    (:func:`regimemap.maps.designer_view.view_extent`: ``designer`` or ``report``).
     """
     _resolution(resolution)  # refuse before computing anything
-    k_max, mu_max = _extent(p, k_max, mu_max)
+    k_max, mu_max = _extent(p, k_max, mu_max, view)
     k, mu = grid_axes(k_max, mu_max, resolution)
     return k, mu, label_grid(k, mu, p.gamma, p.kprime)
 
@@ -171,12 +173,12 @@ def write_npz(path: str | os.PathLike[str], p: Parameters, k: np.ndarray, mu: np
 
 def write_csv(path: str | os.PathLike[str], k: np.ndarray, mu: np.ndarray, mode: np.ndarray) -> None:
     """Write ``k,mu,mode`` rows (mu outer, k inner; the mode as its label), atomically."""
-    k_txt = [repr(float(v)) for v in k]
+    k_txt = [text(v) for v in k]
     labels = [m.label for m in Mode]
     with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
         fh.write("k,mu,mode\n")
         for i, m in enumerate(mu):
-            mt = repr(float(m))
+            mt = text(m)
             row = mode[i]
             fh.write("".join(f"{kt},{mt},{labels[c]}\n" for kt, c in zip(k_txt, row.tolist())))
 
@@ -197,7 +199,7 @@ def _json_safe(obj: Any) -> Any:
     if isinstance(obj, (np.integer,)):
         return int(obj)
     if isinstance(obj, float):
-        return obj if math.isfinite(obj) else None
+        return round_sig(obj) if math.isfinite(obj) else None
     return obj
 
 
@@ -313,16 +315,18 @@ def boundary_curves(p: Parameters, k_max: float, mu_max: float) -> dict[str, dic
 
 
 def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None = None,
-                 samples: int = DEFAULT_SAMPLES) -> dict[str, Any]:
+                 samples: int = DEFAULT_SAMPLES, *, view: str = "designer") -> dict[str, Any]:
     """The map as vectors (the content of the ``.json`` export), JSON-ready.
 
     Parameters
     ----------
     p : Parameters
     k_max, mu_max : float, optional
-        The view (default :func:`regimemap.view.auto_extent`).
+        The view (default: the view named ``view``).
     samples : int
         Columns of k for the region polygons.
+    view : {"designer", "report"}
+        The default view (:func:`regimemap.maps.designer_view.view_extent`).
 
     Returns
     -------
@@ -331,7 +335,7 @@ def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None
         ``extent``, ``modes``, ``curves``, ``named_points``, ``regions``,
         ``ambiguity``; non-finite numbers are None.
     """
-    k_max, mu_max = _extent(p, k_max, mu_max)
+    k_max, mu_max = _extent(p, k_max, mu_max, view)
     polys = region_polygons(p, k_max, mu_max, samples=samples, overshoot=1.0)
     pts = named_points(p)
     geom = {
@@ -369,7 +373,7 @@ def write_json(path: str | os.PathLike[str], geometry: dict[str, Any]) -> None:
 
 def export_map(path: str | os.PathLike[str], p: Parameters, *, k_max: float | None = None,
                mu_max: float | None = None, resolution: int | tuple[int, int] = DEFAULT_RESOLUTION,
-               fmt: str | None = None) -> str:
+               fmt: str | None = None, view: str = "designer") -> str:
     """Export the map of ``p`` to ``path`` in the format of its suffix (or ``fmt``).
 
     Parameters
@@ -378,7 +382,8 @@ def export_map(path: str | os.PathLike[str], p: Parameters, *, k_max: float | No
         ``.npz``, ``.csv`` or ``.json``.
     p : Parameters
     k_max, mu_max : float, optional
-        The view (default :func:`regimemap.view.auto_extent`).
+        The view (default: the view named ``view``, ``designer`` or ``report``;
+        :func:`regimemap.maps.designer_view.view_extent`).
     resolution : int or (int, int)
         Grid samples per axis for ``.npz``/``.csv`` (ignored for ``.json``),
         at most :data:`~regimemap.validation.MAX_RESOLUTION` each and
@@ -399,13 +404,16 @@ def export_map(path: str | os.PathLike[str], p: Parameters, *, k_max: float | No
     """
     fmt = format_of(path, fmt)
     if fmt == "json":
-        write_json(path, map_geometry(p, k_max, mu_max))
+        write_json(path, map_geometry(p, k_max, mu_max, view=view))
         return fmt
     _resolution(resolution)
-    k_max, mu_max = _extent(p, k_max, mu_max)
+    k_max, mu_max = _extent(p, k_max, mu_max, view)
     k, mu, mode = map_grid(p, k_max, mu_max, resolution)
     if fmt == "npz":
         write_npz(path, p, k, mu, mode, k_max, mu_max)
     else:
-        write_csv(path, k, mu, mode)
+        # text for people: the grid values as written (12 digits), classified as written
+        k = np.array([round_sig(v) for v in k])
+        mu = np.array([round_sig(v) for v in mu])
+        write_csv(path, k, mu, label_grid(k, mu, p.gamma, p.kprime))
     return fmt
