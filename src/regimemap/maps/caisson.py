@@ -27,14 +27,16 @@ from numpy.typing import NDArray
 
 from ..mechanics.modes import Mode
 from ..waves import CaissonAnalysis, analyse_caisson
-from .loadedmap import LoadedMap, LoadedMargin, classify_at, margins
+from .loadedmap import LoadedMap, LoadedMargin, classify_at, margins, mode_grid, named_points
 
 __all__ = [
     "PATH_FACTORS",
     "CaissonReport",
+    "MapView",
     "WavePath",
     "caisson_report",
     "loaded_map_of",
+    "map_view",
 ]
 
 #: Wave-height factors of the path (``H1/3`` and ``Hmax`` times s).
@@ -226,3 +228,51 @@ def caisson_report(inputs: Mapping[str, Any], factors: NDArray[np.float64] | Non
     path = _wave_path(inputs, a, fac, m)
     return CaissonReport(inputs=dict(inputs), analysis=a, map=m, k=k, mu=mu, mode=mode,
                          margin_k=mk, margin_mu=mm, path=path)
+
+
+@dataclass(frozen=True)
+class MapView:
+    """The design wave's loaded map, sampled for a drawing.
+
+    Attributes
+    ----------
+    k_axis, mu_axis : ndarray
+        Sample positions (increasing, from 0 to ``k_max`` / ``mu_max``).
+    grid : ndarray of uint8
+        Mode codes, shape ``(len(mu_axis), len(k_axis))``.
+    k_max, mu_max : float
+        The view.
+    points : dict
+        Named points of the map inside the view, ``{name: (k, mu)}``.
+    """
+
+    k_axis: NDArray[np.float64]
+    mu_axis: NDArray[np.float64]
+    grid: NDArray[np.uint8]
+    k_max: float
+    mu_max: float
+    points: dict[str, tuple[float, float]]
+
+
+def map_view(r: CaissonReport, samples: int = 600) -> MapView:
+    """The view of a report's map: the whole path, point A if it is near, and the grid of modes.
+
+    The view reaches 15 % beyond the path's largest k and 60 % above mu;
+    the corner A of the rest region is included when it lies within twice
+    the path's reach (so that the rest region is seen whole).
+    """
+    k_path = float(np.max(r.path.k))
+    k_max = 1.15 * max(k_path, r.k)
+    mu_max = 1.6 * r.mu
+    pts = named_points(r.map)
+    if "A" in pts:
+        ka, ma = pts["A"]
+        if ka <= 2.0 * k_max:
+            k_max = max(k_max, 1.12 * ka)
+        if ma <= 3.0 * r.mu:
+            mu_max = max(mu_max, 1.12 * ma)
+    k_axis = np.linspace(0.0, k_max, samples)
+    mu_axis = np.linspace(0.0, mu_max, samples)
+    inside = {n: p for n, p in pts.items() if n != "O" and p[0] <= k_max and p[1] <= mu_max}
+    return MapView(k_axis=k_axis, mu_axis=mu_axis, grid=mode_grid(k_axis, mu_axis, r.map),
+                   k_max=k_max, mu_max=mu_max, points=inside)
