@@ -212,12 +212,36 @@ def test_sheet_has_its_panels() -> None:
         assert bb.x0 >= -1 and bb.y0 >= -1 and bb.x1 <= w + 1 and bb.y1 <= h + 1, t.get_text()
 
 
-def test_sheet_texts_do_not_collide() -> None:
-    """No two labels, titles or notes of the sheet overlap (tick labels aside)."""
+DEEP = """
+[site]
+depth = 22.0
+armour_depth = 14.0
+seabed_slope = 0.02
+[wave]
+H13 = 7.5
+Hmax = 12.5
+period = 14.0
+[caisson]
+width = 24.0
+base_depth = 16.0
+crest = 6.0
+berm_width = 12.0
+friction = 0.6
+concrete_fraction = 0.25
+concrete_density = 2400
+fill_density = 2000
+fill_density_above = 1700
+"""
+LIGHT = EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 1300")
+
+
+@pytest.mark.parametrize("text", [EXAMPLE, DEEP, LIGHT], ids=["goda", "deep-filled", "light"])
+def test_sheet_texts_do_not_collide(text: str) -> None:
+    """No two labels, titles or notes of the sheet overlap (tick labels aside), all on the page."""
     from regimemap.drawing.sheet import sheet_figure
     from regimemap.maps.caisson import caisson_report
 
-    fig = sheet_figure(caisson_report(parse_design(EXAMPLE).analysis_inputs()), title="goda.toml")
+    fig = sheet_figure(caisson_report(parse_design(text).analysis_inputs()), title="breakwater.toml")
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     texts = [t for t in fig.texts]
@@ -228,3 +252,6 @@ def test_sheet_texts_do_not_collide() -> None:
     hits = [(a, b) for i, (a, ba) in enumerate(boxes) for b, bb in boxes[i + 1:]
             if ba.overlaps(bb)]
     assert not hits, hits
+    w, h = fig.bbox.width, fig.bbox.height
+    for text_, bb in boxes:
+        assert bb.x0 >= 0 and bb.y0 >= 0 and bb.x1 <= w and bb.y1 <= h, text_

@@ -62,7 +62,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
         suffix = output.rsplit(".", 1)[-1].lower() if "." in output.rsplit("/", 1)[-1] else ""
         if suffix not in _FORMATS:
             raise click.BadParameter(f"the sheet's file must end in .pdf, .svg or .png, got {output!r}",
-                                     param_hint="'-o' / '--output'")
+                                     param_hint="'--output'")
         output_path(output, "--output")
     try:
         d = read_design(design)

@@ -25,7 +25,7 @@ from ..maps.caisson import CaissonReport, MapView, map_view
 from ..maps.loadedmap import LO, LoadedMargin, mode_description, mode_label
 from ..mechanics.modes import Mode
 from .save import DEFAULT_DPI
-from .style import HATCH_LW, MODE_STYLE, ModeStyle, style_context
+from .style import HATCH_LW, MODE_STYLE, ModeStyle, style_context, text_size
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -65,9 +65,12 @@ def _style(code: int) -> ModeStyle:
 def _g(x: float, digits: int = 4) -> str:
     if not math.isfinite(x):
         return "inf" if x > 0 else "n/a"
-    s = f"{x:#.{digits}g}"
-    if "e" not in s:
-        s = s.rstrip(".")
+    if 10.0 ** digits <= abs(x) < 1e12:
+        s = f"{x:.0f}"  # 26210, not 2.621e+04
+    else:
+        s = f"{x:#.{digits}g}"
+        if "e" not in s:
+            s = s.rstrip(".")
     return "0" if float(s) == 0.0 else s.replace("-", "\u2212")
 
 
@@ -238,23 +241,23 @@ def _draw_map(ax: Axes, r: CaissonReport, view: MapView) -> list[int]:
         st = _style(int(p.modes[i]))
         ax.plot([p.k[i]], [r.mu], marker="s", markersize=5.0, markerfacecolor=st.color,
                 markeredgecolor="black", markeredgewidth=0.7, zorder=5)
-    for i in (tenth[0], tenth[-1]):
-        ax.annotate(f"{p.factors[i]:g}\u00d7", (p.k[i], r.mu), xytext=(0, -10),
-                    textcoords="offset points", ha="center", va="top", fontsize=_FS - 0.5, zorder=6,
-                    bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.85})
     ax.plot([r.k], [r.mu], marker="o", markersize=7.0, markerfacecolor="black",
             markeredgecolor="white", markeredgewidth=1.3, zorder=7)
-    ax.annotate("design wave", (r.k, r.mu), xytext=(-4, 9), textcoords="offset points", ha="right",
-                va="bottom", fontsize=_FS, zorder=8,
-                bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.2", "lw": 0.5})
+    labels: list[tuple[str, float, dict[str, Any]]] = [
+        ("design wave", r.k, {"bbox": {"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.2",
+                                       "lw": 0.5}})]
     if p.onset is not None and p.onset > float(p.factors[0]):
         ko = float(np.interp(p.onset, p.factors, p.k))
         ax.plot([ko], [r.mu], marker="x", markersize=7.0, color="#b0001c", markeredgewidth=1.6,
                 zorder=8)
-        ax.annotate(f"leaves rest at {p.onset:.3f}\u00d7", (ko, r.mu), xytext=(4, -12),
-                    textcoords="offset points", ha="left", va="top", fontsize=_FS, zorder=8,
-                    color="#b0001c",
-                    bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "#b0001c", "lw": 0.5})
+        labels.append((f"leaves rest at {p.onset:.3f}\u00d7", ko, {
+            "color": "#b0001c",
+            "bbox": {"boxstyle": "round,pad=0.2", "fc": "white", "ec": "#b0001c", "lw": 0.5}}))
+    for i in (tenth[0], tenth[-1]):
+        labels.append((f"{p.factors[i]:g}\u00d7", float(p.k[i]), {
+            "fontsize": _FS - 0.5,
+            "bbox": {"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.85}}))
+    _place_path_labels(ax, labels, r.mu, view)
     ax.set_xlim(0.0, view.k_max)
     ax.set_ylim(0.0, view.mu_max)
     ax.set_xlabel("k = P / (m g)", fontsize=_FS)
@@ -267,6 +270,47 @@ def _draw_map(ax: Axes, r: CaissonReport, view: MapView) -> list[int]:
                  f"buoyancy {_g(m.buoyancy, 3)},  i = {_g(m.gyration or 0.0, 3)}",
                  fontsize=_FS - 0.5, ha="left", va="bottom", color="0.2", transform=ax.transAxes)
     return codes
+
+
+def _place_path_labels(ax: Axes, labels: list[tuple[str, float, dict[str, Any]]], mu: float,
+                       view: MapView) -> None:
+    """Label points of the path (all at height ``mu``) without overlaps, inside the axes.
+
+    Each label tries, in order: above (centred, left, right), below (the same),
+    then further above and below; its size is estimated with
+    :func:`~regimemap.drawing.style.text_size` from the axes' size in points.
+    """
+    bbox = ax.get_position()
+    fig_w, fig_h = SHEET_SIZE
+    w_pt, h_pt = bbox.width * fig_w * 72.0, bbox.height * fig_h * 72.0
+    y0 = mu / view.mu_max * h_pt
+    placed: list[tuple[float, float, float, float]] = []
+    gap, dy = 4.0, 8.0
+    for text, k, kw in labels:
+        fs = float(kw.pop("fontsize", _FS))
+        tw, th = text_size(text, fs)
+        x = k / view.k_max * w_pt
+        candidates = []
+        for level in (1.0, 2.6):
+            for sy in (1.0, -1.0):
+                for sx in (0.0, -1.0, 1.0):
+                    candidates.append((sx, sy * level))
+        choice = candidates[0]
+        for sx, sy in candidates:
+            left = x - tw - gap if sx < 0 else (x + gap if sx > 0 else x - 0.5 * tw)
+            bottom = y0 + dy * sy if sy > 0 else y0 + dy * sy - th
+            box = (left, bottom, left + tw, bottom + th)
+            inside = box[0] >= 0 and box[2] <= w_pt and box[1] >= 0 and box[3] <= h_pt
+            clear = all(box[2] <= b[0] or box[0] >= b[2] or box[3] <= b[1] or box[1] >= b[3]
+                        for b in placed)
+            if inside and clear:
+                choice = (sx, sy)
+                placed.append(box)
+                break
+        sx, sy = choice
+        ha = "right" if sx < 0 else ("left" if sx > 0 else "center")
+        ax.annotate(text, (k, mu), xytext=(gap * sx, dy * sy), textcoords="offset points", ha=ha,
+                    va="bottom" if sy > 0 else "top", fontsize=fs, zorder=8, **kw)
 
 
 def _legend(ax: Axes, codes: list[int]) -> None:
@@ -449,20 +493,20 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         fig = Figure(figsize=SHEET_SIZE, dpi=dpi)
         FigureCanvasAgg(fig)
         head = "caisson design sheet" + (f": {title}" if title else "")
-        fig.text(0.6 / W, 1.0 - 0.45 / H, head, fontsize=13, fontweight="bold", va="top")
+        fig.text(0.6 / W, 1.0 - 0.38 / H, head, fontsize=13, fontweight="bold", va="top")
         a = report.analysis
         inp = report.inputs
         wave = (f"H\u2080\u2032 = {_num(report, 'H0'):g} m" if inp.get("H0") is not None
                 else "H\u2081/\u2083, H$_{max}$ given at the wall")
-        fig.text(0.6 / W, 1.0 - 0.78 / H,
+        fig.text(0.6 / W, 1.0 - 0.68 / H,
                  f"{wave}, T\u2081/\u2083 = {_num(report, 'period'):g} s, "
                  f"\u03b2 = {float(a.pressures.beta):g}\u00b0, "
                  f"tan \u03b8 = {_num(report, 'slope'):g}, \u03bc = {report.mu:g}, "
-                 f"W\u2032 = {float(a.section.buoyant_weight) / 1e3:.6g} kN/m.  "
+                 f"W\u2032 = {_g(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
                  "Goda (2000) with Takahashi's \u03b1$_I$"
                  + ("" if inp.get("impulsive", True) else " (off)")
                  + f"; regimemap {__version__}",
-                 fontsize=_FS + 0.5, va="top", color="0.2")
+                 fontsize=_FS + 0.5, va="top", color="0.2", linespacing=1.4)
 
         ax_sec = fig.add_axes(rect(0.75, 8.55, 4.6, 1.85), label="section")
         _draw_section(ax_sec, report)

@@ -119,9 +119,12 @@ def caisson_json(r: CaissonReport, source: str | None = None) -> dict[str, Any]:
 def _g(x: float, digits: int = 4) -> str:
     if not math.isfinite(x):
         return "inf" if x > 0 else "n/a"
-    s = f"{x:#.{digits}g}"
-    if "e" not in s:
-        s = s.rstrip(".")
+    if 10.0 ** digits <= abs(x) < 1e12:
+        s = f"{x:.0f}"  # 26210, not 2.621e+04
+    else:
+        s = f"{x:#.{digits}g}"
+        if "e" not in s:
+            s = s.rstrip(".")
     return "0" if float(s) == 0.0 else s
 
 
