@@ -20,6 +20,8 @@ $(STAMP): pyproject.toml
 
 figures: $(STAMP)
 	$(BIN)/regimemap figures --out figures --format png,svg
+	$(BIN)/regimemap caisson --example > $(VENV)/goda.toml
+	$(BIN)/regimemap caisson $(VENV)/goda.toml -o figures/caisson-sheet.png > /dev/null
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

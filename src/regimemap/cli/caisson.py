@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import click
 
@@ -88,7 +89,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     from ..drawing.sheet import sheet_figure
     from ..io.figures import save_figure
 
-    fig = sheet_figure(report, title=design)
+    fig = sheet_figure(report, title=Path(design).name)
     try:
         save_figure(fig, output)
     except OSError as exc:
