@@ -255,3 +255,31 @@ def test_sheet_texts_do_not_collide(text: str) -> None:
     w, h = fig.bbox.width, fig.bbox.height
     for text_, bb in boxes:
         assert bb.x0 >= 0 and bb.y0 >= 0 and bb.x1 <= w and bb.y1 <= h, text_
+
+
+def test_random_command_lines_exit_cleanly(tmp_path: Path) -> None:
+    """Any mix of the options: exit 0, 1 or 2, one error line, no traceback, no leftovers."""
+    from hypothesis import given, settings
+    from hypothesis import strategies as st
+
+    good = tmp_path / "goda.toml"
+    good.write_text(EXAMPLE, encoding="utf-8")
+    bad = tmp_path / "bad.toml"
+    bad.write_text(EXAMPLE.replace("width = 15.0", "width = 0"), encoding="utf-8")
+    pieces = st.sampled_from([
+        [str(good)], [str(bad)], [str(tmp_path / "absent.toml")], [str(tmp_path)], ["--example"],
+        ["--json"], ["-o", str(tmp_path / "out" / "s.svg")], ["-o", str(tmp_path / "s.txt")],
+        ["-o", ""], ["--bogus"], ["x", "y"]])
+
+    @settings(max_examples=25, deadline=None, derandomize=True)
+    @given(st.lists(pieces, max_size=3))
+    def run(parts: list[list[str]]) -> None:
+        argv = ["caisson", *[a for p in parts for a in p]]
+        r = invoke_cli(argv)
+        assert r.code in (0, 2), (argv, r.output)
+        assert "Traceback" not in r.output and "internal error" not in r.stderr
+        if r.code:
+            assert len(r.error_lines()) == 1, (argv, r.stderr)
+        assert not [p for p in tmp_path.rglob("*") if p.suffix in (".part", ".svg", ".txt")]
+
+    run()
