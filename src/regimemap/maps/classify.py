@@ -154,7 +154,7 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike, *
     'RE'
     >>> [Mode(c).label for c in classify([0.3, 0.5], [0.2, 0.8], 3.0, 0.4)]
     ['SL', 'RO']
-    >>> Mode(classify(1.0, 0.5, 3.0, 0.4, buoyancy=0.5, uplift=0.3, uplift_ratio=0.5)).label
+    >>> Mode(classify(1.0, 0.5, 3.0, 0.0, buoyancy=0.5, uplift=0.3, uplift_ratio=0.5, uplift_arm=0.0)).label
     'LO'
     """
     k = check_nonnegative_array("k", k)
