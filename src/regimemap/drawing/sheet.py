@@ -22,7 +22,7 @@ import numpy as np
 
 from .. import __version__
 from ..maps.caisson import CaissonReport, MapView, map_view
-from ..maps.loadedmap import LO, LoadedMargin, mode_description, mode_label
+from ..maps.loadedmap import LO, Margin, mode_description, mode_label
 from ..mechanics.modes import Mode
 from .save import DEFAULT_DPI
 from .style import HATCH_LW, MODE_STYLE, ModeStyle, style_context, text_size
@@ -380,7 +380,7 @@ def _curve_label(ax: Axes, s: np.ndarray, sf: np.ndarray, name: str, color: str,
 
 # -- (f) the numbers --------------------------------------------------------------------------
 
-def _margin_text(m: LoadedMargin) -> str:
+def _margin_text(m: Margin) -> str:
     c = m.up if m.variable == "k" else m.down
     sign = "+" if m.variable == "k" else "\u2212"
     word = "more k" if m.variable == "k" else "less \u03bc"

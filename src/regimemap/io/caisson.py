@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from ..maps.caisson import CaissonReport
-from ..maps.loadedmap import LoadedCrossing, LoadedMargin, mode_description, mode_label
+from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
 
 __all__ = ["CONSISTENCY_NOTE", "caisson_json", "format_caisson", "round_sig"]
 
@@ -36,7 +36,7 @@ def _f(x: Any) -> float:
     return float(np.asarray(x))
 
 
-def _crossing_dict(c: LoadedCrossing | None) -> dict[str, Any] | None:
+def _crossing_dict(c: Crossing | None) -> dict[str, Any] | None:
     if c is None:
         return None
     return {"at": round_sig(c.at), "delta": round_sig(c.delta),
@@ -44,7 +44,7 @@ def _crossing_dict(c: LoadedCrossing | None) -> dict[str, Any] | None:
             "to": mode_label(c.to)}
 
 
-def _margin_dict(m: LoadedMargin) -> dict[str, Any]:
+def _margin_dict(m: Margin) -> dict[str, Any]:
     n = m.nearest
     return {"value": round_sig(m.value), "up": _crossing_dict(m.up), "down": _crossing_dict(m.down),
             "nearest": None if n is None else n.direction}
@@ -128,7 +128,7 @@ def _g(x: float, digits: int = 4) -> str:
     return "0" if float(s) == 0.0 else s
 
 
-def _margin_line(m: LoadedMargin) -> str:
+def _margin_line(m: Margin) -> str:
     parts = []
     order = (("up", m.up), ("down", m.down)) if m.variable == "k" else (("down", m.down), ("up", m.up))
     for direction, c in order:

@@ -27,7 +27,7 @@ from numpy.typing import NDArray
 
 from ..mechanics.modes import Mode
 from ..waves import CaissonAnalysis, analyse_caisson
-from .loadedmap import LoadedMap, LoadedMargin, classify_at, margins, mode_grid, named_points
+from .loadedmap import LoadedMap, Margin, classify_at, margins, mode_grid, named_points
 
 __all__ = [
     "PATH_FACTORS",
@@ -123,7 +123,7 @@ class CaissonReport:
         The design point.
     mode : int
         Its mode code on :attr:`map`.
-    margin_k, margin_mu : LoadedMargin
+    margin_k, margin_mu : Margin
         The smallest change of k (mu fixed) and of mu (k fixed) that changes the mode.
     path : WavePath
         The point as the wave grows.
@@ -135,8 +135,8 @@ class CaissonReport:
     k: float
     mu: float
     mode: int
-    margin_k: LoadedMargin
-    margin_mu: LoadedMargin
+    margin_k: Margin
+    margin_mu: Margin
     path: WavePath
 
     @property
