@@ -362,6 +362,8 @@ def thresholds(k: ArrayLike, cst: BlockConstants) -> Thresholds:
     :func:`rest_line`, :func:`mu_star` and :func:`rest_possible`, sharing W and s.
     """
     k = np.asarray(k, dtype=np.float64)
+    if _unloaded(cst):
+        return _thresholds_unloaded(k, cst)
     W, s = _ws(k, cst)
     with np.errstate(divide="ignore", invalid="ignore"):
         sw = s / W
@@ -380,6 +382,34 @@ def thresholds(k: ArrayLike, cst: BlockConstants) -> Thresholds:
     return Thresholds(np.asarray(W), np.asarray(s), np.asarray(lift_off), np.asarray(rest_ok),
                       np.asarray(mu_rest), np.asarray(upper), np.asarray(lower), np.asarray(mu_s),
                       np.asarray(f >= 0.0), np.asarray(regular))
+
+
+def _unloaded(cst: BlockConstants) -> bool:
+    """True when no vertical load acts (scalar zeros): W = 1 and s = k k' exactly."""
+    loads = (cst.buoyancy, cst.uplift, cst.uplift_ratio)
+    return all(isinstance(v, float) and v == 0.0 for v in loads)
+
+
+def _thresholds_unloaded(k: FloatArray, cst: BlockConstants) -> Thresholds:
+    """:func:`thresholds` with no vertical load, with the operations that are identities dropped.
+
+    With ``W = (1 - 0 - 0) - 0 k = 1`` and ``s = k k' + 0``: ``s/W``, ``k/W`` are
+    ``k k'`` and ``k`` exactly; lift-off never happens (``W i^2 > 0``), ``Q' + k P' =
+    1 + k gamma (1+k') > 0`` and ``c_O k + d_O = c k + d0 > 0`` for k >= 0, so every
+    column is regular.  The same floats as the general path, half the work
+    (this is what makes :func:`regimemap.classify` fast for the report's block).
+    """
+    kk = k * cst.kprime
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv_g = 1.0 / cst.gamma
+        upper = inv_g - kk
+        lower = -inv_g - kk
+        f = cst.aO * k + cst.bO
+        mu_s = np.abs(f) / (cst.cO * k + cst.dO)
+    shape = np.shape(kk)
+    return Thresholds(np.broadcast_to(1.0, shape), np.asarray(kk), np.broadcast_to(False, shape),
+                      np.asarray(k * cst.P <= cst.Q), k, np.asarray(upper), np.asarray(lower),
+                      np.asarray(mu_s), np.asarray(f >= 0.0), np.broadcast_to(True, shape))
 
 
 def k_roots_at_mu(mu: FloatArray, gamma: FloatArray, kprime: FloatArray) -> FloatArray:
