@@ -14,6 +14,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from ..dynamics.stepper import OVERTURN, REST, ROCK, SLIDE, SLIDE_ROCK
 from ..mechanics.modes import Mode
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -21,12 +22,15 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = [
     "CONSTRUCTION",
+    "FLIGHT_STYLE",
+    "OUTCOME_STYLE",
     "DOTTED",
     "HATCH_LW",
     "LINE_LW",
     "MODE_STYLE",
     "ModeStyle",
     "mode_symbol",
+    "phase_style",
     "style_context",
     "text_size",
 ]
@@ -66,6 +70,29 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
     Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # never on a map
     Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never on a map
 }
+
+#: Fill style of each outcome category of :func:`regimemap.dynamics.outcome_map` (codes
+#: :data:`regimemap.dynamics.REST` ... :data:`~regimemap.dynamics.OVERTURN`).  The motions take
+#: the colour and hatch of the map's mode they are made of (rest as RE, slide only as SL, rock
+#: only as RO, slide-rock as SRO-), so a reader carries the colours from one figure to the
+#: other; overturning is Paul Tol's *muted* purple, darker than all of them (it stands out in
+#: greyscale too), with a light crossed hatch.
+OUTCOME_STYLE: dict[int, ModeStyle] = {
+    REST: MODE_STYLE[Mode.RE],
+    SLIDE: MODE_STYLE[Mode.SL],
+    ROCK: MODE_STYLE[Mode.RO],
+    SLIDE_ROCK: MODE_STYLE[Mode.SRO_MINUS],
+    OVERTURN: ModeStyle("#AA4499", "xx", (1.0, 1.0, 1.0, 0.5)),
+}
+#: Style of free flight (no corner in contact), the one phase of a motion that is no map mode.
+FLIGHT_STYLE = ModeStyle("#FFFFFF", "oo")
+
+
+def phase_style(code: int) -> ModeStyle:
+    """The fill of a phase of a motion (:class:`regimemap.dynamics.Phase` code): its mode's, or
+    :data:`FLIGHT_STYLE`."""
+    return MODE_STYLE[Mode(code)] if 0 <= code < len(Mode) else FLIGHT_STYLE
+
 
 #: Line widths (points) of hatches and of boundary curves.
 HATCH_LW = 0.45
