@@ -20,6 +20,7 @@ $(STAMP): pyproject.toml
 
 figures: $(STAMP)
 	$(BIN)/regimemap figures --out figures --format png,svg
+	$(BIN)/regimemap dynamics-figures --out figures --format png,svg --cache .cache/dynamics-figures
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
@@ -32,7 +33,7 @@ bench: $(STAMP)
 	$(BIN)/python bench/bench.py
 
 clean:
-	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache build src/*.egg-info
+	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build src/*.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +
 
 distclean: clean

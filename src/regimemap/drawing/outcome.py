@@ -143,12 +143,13 @@ def _depth(mask: NDArray[np.bool_]) -> NDArray[np.int64]:
     return depth
 
 
-def _nice_levels(values: NDArray[np.float64], n: int = 5) -> NDArray[np.float64]:
+def _nice_levels(values: NDArray[np.float64], n: int = 6, span: float = 1e-3) -> NDArray[np.float64]:
     """Round contour levels strictly inside the range of the finite non-zero ``values``.
 
     When the positive values span more than two decades (slides from millimetres to
-    metres), the levels are 1, 2, 5 times powers of ten, at most ``n + 1`` of them, the
-    largest ones; otherwise evenly spaced round numbers.
+    metres), the levels are 1, 2, 5 (or, when that gives too many, 1, 3) times powers of ten
+    from ``span`` times the largest value up, at most ``n`` of them; otherwise evenly spaced
+    round numbers.
     """
     from matplotlib.ticker import MaxNLocator
 
@@ -160,13 +161,14 @@ def _nice_levels(values: NDArray[np.float64], n: int = 5) -> NDArray[np.float64]
         return np.array([])
     pos = v[v > 0]
     if lo >= 0.0 and pos.size and hi > 100.0 * float(pos.min()):
-        e0 = math.floor(math.log10(max(float(pos.min()), hi * 1e-4)))
+        floor = max(float(pos.min()), hi * span)
+        e0 = math.floor(math.log10(floor))
         e1 = math.ceil(math.log10(hi))
         logs = np.array([m * 10.0 ** e for e in range(e0, e1 + 1) for m in (1.0, 2.0, 5.0)])
-        logs = logs[(logs > float(pos.min())) & (logs < hi)]
-        if logs.size > n + 2:  # too many lines: 1 and 3 times powers of ten
+        logs = logs[(logs > floor) & (logs < hi)]
+        if logs.size > n:  # too many lines: 1 and 3 times powers of ten
             thin = np.array([m * 10.0 ** e for e in range(e0, e1 + 1) for m in (1.0, 3.0)])
-            logs = thin[(thin > float(pos.min())) & (thin < hi)]
+            logs = thin[(thin > floor) & (thin < hi)]
         return np.asarray(logs[-n:], dtype=np.float64)
     levels = np.asarray(MaxNLocator(nbins=n, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi),
                         dtype=np.float64)
@@ -275,14 +277,15 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
             # rotation where the block rocked, neither where it overturned
             slid = (cat == SLIDE) | (cat == SLIDE_ROCK)
             rocked = (cat == ROCK) | (cat == SLIDE_ROCK)
-            for key, data, where, unit, style, what in (
-                    ("residual_slide", slide, slid, slide_unit, SLIDE_CONTOUR, "residual slide"),
-                    ("max_rotation", np.degrees(rot), rocked, "°", ROTATION_CONTOUR, "maximum rotation")):
+            for key, data, where, unit, style, what, span in (
+                    ("residual_slide", slide, slid, slide_unit, SLIDE_CONTOUR, "residual slide", 1e-3),
+                    ("max_rotation", np.degrees(rot), rocked, "°", ROTATION_CONTOUR, "maximum rotation",
+                     1e-2)):
                 if not where.any():
                     continue
                 # 0 elsewhere (so that the lines run on to the boundary), masked where it overturned
                 z = np.ma.masked_where(cat == OVERTURN, np.where(where, data, 0.0))
-                levels = _nice_levels(np.asarray(data[where]))
+                levels = _nice_levels(np.asarray(data[where]), span=span)
                 if levels.size == 0:
                     continue
                 cs = ax.contour(xs, ys, z, levels=levels, zorder=_Z_CONTOUR, **style)

@@ -30,6 +30,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = [
     "HISTORY_FORMATS",
+    "cached_outcome",
     "OUTCOME_DATA_FORMATS",
     "SIGNIFICANT",
     "format_simulation",
@@ -303,3 +304,58 @@ def write_block_animation(path: str | os.PathLike[str], history: History, **kwar
         raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
     with atomic_path(path) as tmp:
         return render_block_animation(tmp, history, **kwargs)
+
+
+# -- a cache of computed outcome maps (make figures) ----------------------------------------------
+
+
+def _cache_key(spec: str) -> str:
+    """A digest of ``spec``, regimemap's and numpy's versions and the source of regimemap.dynamics:
+    any change to the stepper makes a new key."""
+    import hashlib
+
+    from .. import __version__
+    from ..dynamics import stepper
+
+    h = hashlib.sha256()
+    h.update(f"{spec}\n{__version__}\n{np.__version__}\n".encode())
+    for src in sorted(Path(stepper.__file__).parent.glob("*.py")):
+        h.update(src.name.encode())
+        h.update(src.read_bytes())
+    return h.hexdigest()[:20]
+
+
+_CACHED = ("first_values", "second_values", "category", "overturned", "max_rotation", "residual_slide")
+
+
+def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
+                   compute: Any) -> tuple[OutcomeMap, NDArray[np.float64], NDArray[np.float64], bool]:
+    """``compute()`` -> (OutcomeMap, x, y), through a cache of ``.npz`` files in ``folder``.
+
+    The file ``<name>-<key>.npz`` holds the map's arrays exactly (float64), so a figure drawn
+    from it is byte-identical to one drawn from a fresh computation.  The key
+    (:func:`_cache_key`) covers ``spec`` (the figure's definition), the versions of regimemap
+    and numpy and the source of :mod:`regimemap.dynamics`.  ``folder`` None: no cache.
+    Returns the map, x, y and whether it came from the cache.
+    """
+    if folder is None:
+        m, x, y = compute()
+        return m, x, y, False
+    path = Path(folder) / f"{name}-{_cache_key(spec)}.npz"
+    if path.is_file():
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                m = OutcomeMap(first_name=str(z["first_name"]), second_name=str(z["second_name"]),
+                               labels=tuple(str(v) for v in z["labels"]),
+                               seconds=float(z["seconds"]), **{k: z[k] for k in _CACHED})
+                return m, z["x"], z["y"], True
+        except (OSError, ValueError, KeyError):  # a damaged cache file: compute again
+            pass
+    m, x, y = compute()
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    arrays = {k: np.asarray(getattr(m, k)) for k in _CACHED}
+    with atomic_open(path, "wb") as fh:
+        np.savez_compressed(fh, first_name=np.array(m.first_name), second_name=np.array(m.second_name),
+                            labels=np.array(m.labels), seconds=np.float64(m.seconds), x=np.asarray(x),
+                            y=np.asarray(y), **arrays)  # type: ignore[arg-type]
+    return m, x, y, False
