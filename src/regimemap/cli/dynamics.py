@@ -159,10 +159,6 @@ def _loads_and_gyration(gammas: Sequence[float], buoyancy: Sequence[float], upli
             raise click.BadParameter(str(exc), param_hint="'--gyration'") from None
 
 
-def _fixed_inputs(**values: Any) -> dict[str, Any]:
-    return dict(values)
-
-
 # -- simulate ----------------------------------------------------------------------------------
 
 
@@ -212,8 +208,6 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
           --duration 4 -o run.csv --animate caisson.gif
       regimemap simulate --gamma 3 --half-width 0.2 --mu 5 --pulse-file record.csv
     """
-    import numpy as np
-
     # -- the pulse --------------------------------------------------------------------------
     given = [n for n, v in (("--pulse", pulse), ("--k-peak", k_peak), ("--duration", duration))
              if v is not None]
@@ -335,7 +329,6 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
     click.echo(format_simulation(record))
     for p in written:
         click.echo(p)
-    del np
 
 
 def _run_title(pulse: str | None, pulse_file: str | None, k_peak: float | None, T: float, gamma: float,
