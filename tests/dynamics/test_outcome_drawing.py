@@ -32,10 +32,11 @@ def synthetic_map(nx: int = 30, ny: int = 20, categories=(REST, SLIDE, ROCK, SLI
 
 
 def test_style_registry_is_complete_and_colour_distinct():
-    assert sorted(OUTCOME_STYLE) == [REST, SLIDE, ROCK, SLIDE_ROCK, OVERTURN]
+    assert sorted(OUTCOME_STYLE) == [REST, SLIDE, ROCK, SLIDE_ROCK, OVERTURN] == [0, 1, 2, 3, 4]
     assert len({s.color for s in OUTCOME_STYLE.values()}) == 5
     assert len({s.hatch for s in OUTCOME_STYLE.values()}) == 5
     assert OUTCOME_STYLE[ROCK] == MODE_STYLE[Mode.RO]  # the map's colours carry over
+    assert OUTCOME_STYLE[SLIDE] == MODE_STYLE[Mode.SL] and OUTCOME_STYLE[REST] == MODE_STYLE[Mode.RE]
     assert phase_style(8).color == "#FFFFFF" and phase_style(2) == MODE_STYLE[Mode.RO]
 
 

@@ -14,7 +14,6 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ..dynamics.stepper import OVERTURN, REST, ROCK, SLIDE, SLIDE_ROCK
 from ..mechanics.modes import Mode
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -77,12 +76,14 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
 #: only as RO, slide-rock as SRO-), so a reader carries the colours from one figure to the
 #: other; overturning is Paul Tol's *muted* purple, darker than all of them (it stands out in
 #: greyscale too), with a light crossed hatch.
+#: (The codes are written out so that drawing a regime map does not import regimemap.dynamics;
+#: tests/dynamics/test_outcome_drawing.py checks them against it.)
 OUTCOME_STYLE: dict[int, ModeStyle] = {
-    REST: MODE_STYLE[Mode.RE],
-    SLIDE: MODE_STYLE[Mode.SL],
-    ROCK: MODE_STYLE[Mode.RO],
-    SLIDE_ROCK: MODE_STYLE[Mode.SRO_MINUS],
-    OVERTURN: ModeStyle("#AA4499", "xx", (1.0, 1.0, 1.0, 0.5)),
+    0: MODE_STYLE[Mode.RE],  # REST
+    1: MODE_STYLE[Mode.SL],  # SLIDE
+    2: MODE_STYLE[Mode.RO],  # ROCK
+    3: MODE_STYLE[Mode.SRO_MINUS],  # SLIDE_ROCK
+    4: ModeStyle("#AA4499", "xx", (1.0, 1.0, 1.0, 0.5)),  # OVERTURN
 }
 #: Style of free flight (no corner in contact), the one phase of a motion that is no map mode.
 FLIGHT_STYLE = ModeStyle("#FFFFFF", "oo")

@@ -10,13 +10,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, check_gamma, check_kprime
-from .block import Block
-from .stepper import FREE_STEP, FREE_TIME, PULSE_STEPS
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .block import Block
 
 __all__ = [
     "Limit",
@@ -130,6 +131,8 @@ def estimated_steps(block: Block, duration: float, dt: float | None = None) -> i
     The default step (:func:`regimemap.dynamics.default_steps`) is at most duration/400 over the
     pulse and 0.004/p after it, and a run is given up 60/p after the pulse.
     """
+    from .stepper import FREE_STEP, FREE_TIME, PULSE_STEPS
+
     p = float(np.min(np.asarray(block.p, dtype=np.float64)))
     h_free = FREE_STEP / p if dt is None else dt
     bound = min(duration / PULSE_STEPS, h_free) if dt is None else dt
