@@ -345,6 +345,8 @@ def tiny_figures(monkeypatch):
 
 
 def test_dynamics_figures_cache_gives_the_same_bytes(tmp_path, tiny_figures):
+    import dataclasses
+
     fresh, cached = tmp_path / "fresh", tmp_path / "cached"
     fresh.mkdir()
     cached.mkdir()
@@ -360,6 +362,14 @@ def test_dynamics_figures_cache_gives_the_same_bytes(tmp_path, tiny_figures):
     for name in names:
         assert (fresh / name).read_bytes() == (cached / name).read_bytes(), name
     assert len(list(cache.glob("*.npz"))) == len(tiny_figures)
+    # a changed definition computes again and replaces the figure's cached map
+    import regimemap.drawing.dynamics_presets as dp
+
+    fid, f = next(iter(tiny_figures.items()))
+    dp.DYNAMICS_FIGURES[fid] = dataclasses.replace(f, title="changed")
+    r = run("dynamics-figures", "--out", str(cached), "--format", "svg", "--cache", str(cache))
+    assert r.code == 0 and f"{fid}: " in r.stderr and "runs)" in r.stderr.split(f"{fid}: ")[1].splitlines()[0]
+    assert len(list(cache.glob(f"{fid}-*.npz"))) == 1
 
 
 def test_dynamics_figures_list_and_errors(tmp_path):
