@@ -342,6 +342,9 @@ def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
         m, x, y = compute()
         return m, x, y, False
     path = Path(folder) / f"{name}-{_cache_key(spec)}.npz"
+    for old in Path(folder).glob(f"{name}-*.npz"):  # the same figure's out-of-date maps
+        if old != path:
+            old.unlink(missing_ok=True)
     if path.is_file():
         try:
             with np.load(path, allow_pickle=False) as z:
@@ -358,7 +361,4 @@ def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
         np.savez_compressed(fh, first_name=np.array(m.first_name), second_name=np.array(m.second_name),
                             labels=np.array(m.labels), seconds=np.float64(m.seconds), x=np.asarray(x),
                             y=np.asarray(y), **arrays)  # type: ignore[arg-type]
-    for old in Path(folder).glob(f"{name}-*.npz"):  # the same figure's out-of-date maps
-        if old != path:
-            old.unlink(missing_ok=True)
     return m, x, y, False
