@@ -2,7 +2,8 @@
 
 Prints points per second for label_grid (2000 x 2000 grid) and classify
 (4 million scattered points), the solver's rate for comparison, and then the
-plotting timings of bench/bench_plot.py.  Times are the best of several runs
+plotting timings of bench/bench_plot.py and the outcome-map benchmark of
+bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics).  Times are the best of several runs
 (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
@@ -71,6 +72,14 @@ def main() -> int:
         else:
             for key, value in mod.run().items():
                 print(f"{key:58s} {value}")
+    dynamics = Path(__file__).with_name("bench_dynamics.py")
+    if dynamics.exists():  # regimemap.dynamics: the 200 x 200 outcome map, thresholds, runs/s
+        spec = importlib.util.spec_from_file_location("bench_dynamics", dynamics)
+        mod = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        mod.main()
     return 0
 
 

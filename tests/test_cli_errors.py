@@ -599,6 +599,10 @@ VALUE_CHOICES = {
     "file": ["{out}.csv", "{out}.json", "{out}.npz", "{out}.gif", "{out}.png", "{out}.txt", "",
              "{missing}/x.csv", "/proc/x.json", "{inputs}/good.csv", "{inputs}/bad.csv", "{inputs}"],
 }
+# the inputs 'outcome' sweeps (lists and ranges)
+VALUE_CHOICES.update({f"{name}-list": ["0.5", "0.1,0.2", "0.1:1:3", "1:2", "a,b", "", "nan", "-1", "0:1:1e9"]
+                      for name in ("k_peak", "duration", "omega_p", "mu", "half_width", "gyration",
+                                   "buoyancy", "uplift", "uplift_ratio", "uplift_arm")})
 ARGUMENT_CHOICES = {"figure_id": ["3.9a", "4.7b", "3.1", "3.9", "9.9", "", "3.9A", "fig", "--", "-1"]}
 
 # Valid values, small so that drawing stays cheap: half of the examples use only these

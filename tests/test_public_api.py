@@ -31,10 +31,14 @@ PUBLIC_API = {
         "FIGSIZE", "MODE_STYLE", "MapArtists", "atlas_figure", "default_title", "draw_ambiguity",
         "draw_design_points", "draw_map", "fit_figure", "load_matplotlib", "map_figure", "new_figure", "render_map",
         "render_preset", "style_context",
+        # outcome maps and motions after initiation (regimemap.dynamics)
+        "OUTCOME_STYLE", "draw_outcome_map", "motion_figure", "outcome_figure",
     ],
     "regimemap.io": [
         "atomic_open", "atomic_path", "export_map", "format_result", "parse_point_spec",
         "read_points_csv", "result_row", "save_figure", "write_animation", "write_atlas",
+        # simulations after initiation: pulse files, time histories, outcome maps
+        "read_pulse_csv", "write_history", "write_outcome",
     ],
     "regimemap.cli": ["cli", "console_main", "main"],
 }

@@ -51,6 +51,7 @@ def _register(group: click.Group) -> None:
     """
     from .atlas import animate_cmd, atlas_cmd
     from .caisson import caisson_cmd
+    from .dynamics import dynamics_figures_cmd, outcome_cmd, simulate_cmd
     from .export import export_cmd
     from .plot import figure_command, figures_command, plot_command
     from .query import classify_cmd
@@ -59,6 +60,9 @@ def _register(group: click.Group) -> None:
                     atlas_cmd, animate_cmd):
         group.add_command(command)
     group.add_command(caisson_cmd)
+    group.add_command(simulate_cmd)
+    group.add_command(outcome_cmd)
+    group.add_command(dynamics_figures_cmd)
 
 
 _register(cli)

@@ -42,6 +42,10 @@ class _Values(ParamType):
             self.fail(str(exc), param, ctx)
 
 
+#: The list-or-range option type, shared with ``regimemap outcome`` (cli/dynamics.py).
+Values = _Values
+
+
 def _gamma_check(v: float) -> float:
     from ..mechanics.validation import check_gamma
 
