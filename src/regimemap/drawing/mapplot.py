@@ -25,6 +25,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..maps.describe import loads_text
 from ..maps.geometry import DEFAULT_SAMPLES
 from ..maps.mapdata import MapData, compute_map
 from ..mechanics.block import Parameters
@@ -117,7 +118,9 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
     """A caption-like title: what is shown, the report's case, and (gamma, k').
 
     Example: ``All modes, case 1, 0 <= k' <= (1+g^2)/(3g^2), a >= 0`` over
-    ``(gamma = 3, k' = 0.2)``, in mathtext.
+    ``(gamma = 3, k' = 0.2)``, in mathtext.  A block with loads is titled with
+    its loads instead of the case: ``All modes, block with loads`` over
+    ``(gamma = 0.7, k' = -0.018; beta = 0.318, nu = 0.524, e_u = 1/3)``.
     """
     modes = tuple(MAP_MODES if modes is None else modes)
     if raw and len(modes) == 1:
@@ -127,6 +130,10 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
             m.tex for m in modes)
     else:
         what = "Modes " + ", ".join(m.tex for m in modes)
+    loads = loads_text(params, tex=True)
+    if loads:  # a loaded block: the loads, not the report's case (which ignores them)
+        return (f"{what}, block with loads\n"
+                rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$; {loads})")
     return (f"{what}, {params.case.tex}\n"
             rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$)")
 
