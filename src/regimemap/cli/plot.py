@@ -20,6 +20,7 @@ from ._common import (
     gamma_option,
     import_matplotlib,
     kprime_option,
+    load_options,
     output_dir,
     output_path,
     positive_float,
@@ -126,12 +127,19 @@ def _num(x: float) -> str:
     return f"{x:g}"
 
 
-def plot_stem(gamma: float, kprime: float) -> str:
+#: Short names of the loads in file names.
+_LOAD_STEM = {"buoyancy": "b", "uplift": "u", "uplift_ratio": "nu", "uplift_arm": "eu",
+              "gyration": "i", "crest": "crest"}
+
+
+def plot_stem(gamma: float, kprime: float, loads: dict[str, Any] | None = None) -> str:
     """The default file name of ``plot`` without suffix: ``regime-g<gamma>-kp<kprime>``.
 
-    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``.
+    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``;
+    the loads given follow, ``regime-g0.7-kp-0.02-b0.32-nu0.52``.
     """
-    return f"regime-g{_num(gamma)}-kp{_num(kprime)}"
+    extra = "".join(f"-{_LOAD_STEM[k]}{_num(v)}" for k, v in (loads or {}).items())
+    return f"regime-g{_num(gamma)}-kp{_num(kprime)}{extra}"
 
 
 def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> tuple[Path, str]:
@@ -169,8 +177,8 @@ def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
         raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float
-                 ) -> list[DesignPoint]:
+def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
+                 loads: dict[str, Any] | None = None) -> list[DesignPoint]:
     """Design points from ``--points`` files and ``--point`` specs, for this map."""
     points = list(specs)
     if files:
@@ -185,13 +193,28 @@ def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: floa
     for pt in points:
         same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
             pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
+        same = same and _same_loads(pt, loads or {})
         (keep if same else other).append(pt)
     if other:
         names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in other[:5])
         more = f" and {len(other) - 5} more" if len(other) > 5 else ""
-        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime "
+        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime or other loads "
                    f"and are not drawn on this map: {names}{more}", err=True)
     return keep
+
+
+def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
+    """Whether the loads a point carries (CSV columns) are the map's."""
+    from ..mechanics.block import LOAD_DEFAULTS
+
+    for key, default in LOAD_DEFAULTS.items():
+        own = getattr(pt, key, None)
+        if own is None:
+            continue
+        want = loads.get(key, default)
+        if want is None or not math.isclose(own, want, rel_tol=1e-9, abs_tol=1e-12):
+            return False
+    return True
 
 
 _PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
@@ -228,6 +251,11 @@ Examples:
   regimemap plot --gamma 3 --kprime 0.4 --point 0.45,0.6:caisson-A
   regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
   regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
+  regimemap plot --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
+
+With loads (--buoyancy, --uplift, --uplift-ratio, --uplift-arm, --gyration,
+--crest) the map is that of the loaded block: lift-off (LO) appears, the
+title states the loads, and the default file name carries them.
 """
 
 
@@ -265,18 +293,20 @@ Examples:
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
                    "(repeatable); rows with another gamma/kprime are skipped with a warning.")
 @click.option("--show-ambiguity", is_flag=True,
-              help="Also mark where the report's raw regions overlap (needs "
-                   "regimemap.render_ambiguity).")
+              help="Also mark where several modes are admissible, with the mode the map "
+                   "keeps (Section 4.7; least constraint with loads).")
+@load_options
 def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | None,
                  k_max: float | None, mu_max: float | None, resolution: int, dpi: float,
                  title: str | None, no_curves: bool, no_labels: bool, no_legend: bool,
                  modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
-                 points_files: tuple[str, ...], show_ambiguity: bool) -> None:
+                 points_files: tuple[str, ...], show_ambiguity: bool,
+                 loads: dict[str, Any]) -> None:
     from ..mechanics.block import Parameters
 
-    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime))
-    params = Parameters(gamma, kprime)
-    points = _read_points(points_files, point_specs, params.gamma, params.kprime)
+    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
+    params = Parameters(gamma, kprime, **loads)
+    points = _read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
     from ..drawing.figure import fit_figure, map_figure
     from ..drawing.style import style_context
