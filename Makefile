@@ -19,7 +19,7 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 figures: $(STAMP)
-	$(BIN)/regimemap figures --out figures --format png,svg
+	$(BIN)/regimemap figures --out figures --format png,svg --set all
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

@@ -84,3 +84,21 @@ def test_loads_text():
     assert loads_text(Parameters(2.0, 0.2, uplift=0.1, uplift_arm=0.0, gyration=0.9, crest=1.5)) == (
         "u = 0.1, e_u = 0, i = 0.9, crest = 1.5")
     assert format_value(-2.0 / 3.0) == "-2/3" and format_value(0.25) == "0.25"
+
+
+def test_worked_figures_ids_and_files(run_cli, tmp_path):
+    from regimemap.drawing.presets import FIGURE_IDS
+    from regimemap.drawing.worked import WORKED, WORKED_IDS
+
+    assert WORKED_IDS == ("W.1", "W.2", "W.3", "W.4")
+    assert not set(WORKED_IDS) & set(FIGURE_IDS)
+    sea, air = WORKED["W.1"].params, WORKED["W.2"].params
+    assert (sea.gamma, sea.kprime) == (air.gamma, air.kprime) and sea.loaded and not air.loaded
+    assert sea.lift_off is not None and WORKED["W.3"].params.lift_off is not None
+    r = run_cli(["figures", "--out", str(tmp_path), "--format", "svg", "--set", "worked"])
+    assert r.code == 0, r.output
+    assert sorted(p.name for p in tmp_path.iterdir()) == [f"fig-{w}.svg" for w in WORKED_IDS]
+    r = run_cli(["figure", "w.1", "-o", str(tmp_path / "one.png"), "--dpi", "40"])
+    assert r.code == 0, r.output
+    r = run_cli(["figures", "--list", "--set", "all"])
+    assert r.stdout.splitlines()[-1].startswith("W.4") and len(r.stdout.splitlines()) == 28

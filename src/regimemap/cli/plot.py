@@ -218,6 +218,7 @@ def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
 
 
 _PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
+          (r"\nu", "nu"),
           ("$", ""), ("{", ""), ("}", ""))
 
 
@@ -351,7 +352,10 @@ Examples:
 
 def _preset_or_usage_error(fid: str) -> Any:
     from ..drawing.presets import FIGURE_IDS, get_preset, suggest_ids
+    from ..drawing.worked import WORKED
 
+    if fid.strip().upper() in WORKED:  # the worked figures of the loaded block: W.1, W.2 ...
+        return WORKED[fid.strip().upper()]
     try:
         return get_preset(fid)
     except KeyError:
@@ -378,12 +382,17 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     from ..drawing.figure import render_preset
     from ..io.figures import save_figure
 
-    fig = render_preset(preset, dpi=dpi)
+    if preset.id.startswith("W"):
+        from ..drawing.worked import render_worked
+
+        fig = render_worked(preset, dpi=dpi)
+    else:
+        fig = render_preset(preset, dpi=dpi)
     _save(save_figure, fig, path, fmt, dpi)
     _written(path)
 
 
-_FIGURES_HELP = """Draw all 24 figures of the report into a folder.
+_FIGURES_HELP = """Draw all 24 figures of the report (and the worked figures W.1 ...) into a folder.
 
 Writes fig-<ID>.<format> for every figure (3.1 ... 3.11, 4.2 ... 4.7b) and
 every format, in one process.  The output is byte-identical from run to run.
@@ -395,6 +404,11 @@ Examples:
   regimemap figures --out figures --format png,svg
   regimemap figures --out paper --format pdf
   regimemap figures --list
+  regimemap figures --out figures --format png,svg --set all
+
+--set worked draws the worked figures of the loaded block instead (W.1:
+Goda's caisson submerged, W.2: in air, W.3: a slender block lifting off,
+W.4: the uplift ratio swept); --set all draws both.
 """
 
 
@@ -407,15 +421,28 @@ Examples:
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
-def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool) -> None:
+@click.option("--set", "which", type=click.Choice(["report", "worked", "all"]), default="report",
+              show_default=True,
+              help="The report's 24 figures, the worked figures of the loaded block "
+                   "(W.1, W.2 ...: submerged caissons), or both.")
+def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
+                    which: str) -> None:
     from ..drawing.presets import PRESETS
+    from ..drawing.worked import WORKED
 
+    report = {} if which == "worked" else PRESETS
     if list_only:
-        for p in PRESETS.values():
+        for p in report.values():
             what = "final map" if not p.raw else "raw region of " + p.modes[0].label
             click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
                        f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
                        f"{_plain(p.caption)}")
+        for w in WORKED.values() if which != "report" else ():
+            g, kp = _num(w.params.gamma), _num(w.params.kprime)
+            what = "atlas of final maps" if w.sweep else "final map"
+            kind = 'loaded' if w.params.loaded else w.params.case.value
+            click.echo(f"{w.id:5s} gamma={g:4s} kprime={kp:6s} {kind:8s} {what:24s} [worked]  "
+                       f"{_plain(w.title.splitlines()[0].split('  ', 1)[1])}")
         return
     folder = _check_dir(out_dir, "--out")
 
@@ -425,10 +452,20 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
 
     fig = None  # one Figure for all: its renderer keeps the text caches warm
     count = 0
-    for preset in PRESETS.values():
+    for preset in report.values():
         fig = render_preset(preset, dpi=dpi, fig=fig)
         for fmt in formats:
             _save(save_figure, fig, folder / preset.filename(fmt), fmt, dpi)
             count += 1
-    click.echo(f"wrote {count} files ({len(PRESETS)} figures x {', '.join(formats)}) "
+    n_figures = len(report)
+    if which != "report":
+        from ..drawing.worked import render_worked
+
+        for w in WORKED.values():
+            fig = render_worked(w, dpi=dpi, fig=fig)
+            for fmt in formats:
+                _save(save_figure, fig, folder / w.filename(fmt), fmt, dpi)
+                count += 1
+        n_figures += len(WORKED)
+    click.echo(f"wrote {count} files ({n_figures} figures x {', '.join(formats)}) "
                f"to {folder}")

@@ -30,7 +30,14 @@ from ..maps.geometry import DEFAULT_SAMPLES
 from ..maps.mapdata import MapData, compute_map
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
-from .placement import curve_label_anchor, interior_point, label_anchor, leader_label_anchor, view_points
+from .placement import (
+    curve_label_anchor,
+    interior_point,
+    label_anchor,
+    leader_label_anchor,
+    overlaps,
+    view_points,
+)
 from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol, text_size
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -353,10 +360,15 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
             dx, dy = (4.0, -2.0) if at_top else (-3.0, 4.0)
             ha, va = ("left", "top") if at_top else ("right", "bottom")
             text = _point_text(name)
+            box = frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va)
+            w, h = text_size(text, _POINT_FS)
+            pad = 8.0 if params.loaded else 0.0  # loaded maps crowd E, B and L near the k axis
+            if overlaps(frame.box(k, mu, dx, dy, (w + pad, h), ha, va), obstacles):
+                continue  # a far end named on top of a point's name (E and B of a loaded map)
             out.point_labels[name] = ax.annotate(
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
                 fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
-            obstacles.append(frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va))
+            obstacles.append(box)
     lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
     if curves:
         for name, cd in data.curves.items():
