@@ -361,9 +361,7 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
             ha, va = ("left", "top") if at_top else ("right", "bottom")
             text = _point_text(name)
             box = frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va)
-            w, h = text_size(text, _POINT_FS)
-            pad = 8.0 if params.loaded else 0.0  # loaded maps crowd E, B and L near the k axis
-            if overlaps(frame.box(k, mu, dx, dy, (w + pad, h), ha, va), obstacles):
+            if overlaps(box, obstacles):
                 continue  # a far end named on top of a point's name (E and B of a loaded map)
             out.point_labels[name] = ax.annotate(
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
