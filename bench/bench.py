@@ -66,9 +66,9 @@ def main() -> int:
     print(f"regimemap {regimemap.__version__}, numpy {np.__version__}, Python "
           f"{platform.python_version()}, {os.cpu_count()} cores, {platform.machine()}")
     print()
-    print(f"{'benchmark':58s} {'result':>14s}  {'unit':9s} target")
+    print(f"{'benchmark':64s} {'result':>14s}  {'unit':9s} target")
     for name, value, unit, target in engine():
-        print(f"{name:58s} {value:14,.0f}  {unit:9s} {target}")
+        print(f"{name:64s} {value:14,.0f}  {unit:9s} {target}")
     plot = Path(__file__).with_name("bench_plot.py")
     if plot.exists():
         spec = importlib.util.spec_from_file_location("bench_plot", plot)
