@@ -9,7 +9,7 @@ import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import click
 
@@ -225,6 +225,17 @@ class _LoadValues(ParamType):
                                 self._max)
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
+
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+@overload
+def load_options(f: _F) -> _F: ...
+
+
+@overload
+def load_options(f: None = None, *, sweep: int | None = None) -> Callable[[_F], _F]: ...
 
 
 def load_options(f: Callable[..., Any] | None = None, *, sweep: int | None = None) -> Any:

@@ -360,13 +360,13 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
             dx, dy = (4.0, -2.0) if at_top else (-3.0, 4.0)
             ha, va = ("left", "top") if at_top else ("right", "bottom")
             text = _point_text(name)
-            box = frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va)
-            if overlaps(box, obstacles):
+            end_box = frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va)
+            if overlaps(end_box, obstacles):
                 continue  # a far end named on top of a point's name (E and B of a loaded map)
             out.point_labels[name] = ax.annotate(
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
                 fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
-            obstacles.append(box)
+            obstacles.append(end_box)
     lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
     if curves:
         for name, cd in data.curves.items():

@@ -123,8 +123,9 @@ def render_worked(worked: WorkedFigure | str, *, dpi: float | None = None,
                                                           if k != w.sweep}}
         out = atlas_figure([p.gamma], list(w.values), sweep=w.sweep, fixed=fixed, k_max=w.k_max,
                            mu_max=w.mu_max, dpi=dpi, **kwargs)
+        # the atlas's own first line ("Regime maps: rows ..., columns ...") gives way to the caption
         out.suptitle(f"Fig. {w.id}  {w.caption}\n" + out.get_suptitle().split("\n", 1)[-1],
-                     fontsize=10.5, y=out._suptitle.get_position()[1], va="top")
+                     fontsize=10.5, y=1.0 - 0.15 / out.get_figheight(), va="top")
         return out
     if fig is not None and len(fig.axes) != 1:
         fig = None  # an atlas before: start afresh
