@@ -19,7 +19,7 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 figures: $(STAMP)
-	$(BIN)/regimemap figures --out figures --format png,svg
+	$(BIN)/regimemap figures --out figures --format png,svg --set all
 	$(BIN)/regimemap caisson --example > $(VENV)/goda.toml
 	$(BIN)/regimemap caisson $(VENV)/goda.toml -o figures/caisson-sheet.png > /dev/null
 	$(BIN)/regimemap dynamics-figures --out figures --format png,svg --cache .cache/dynamics-figures

@@ -20,6 +20,7 @@ from ._common import (
     gamma_option,
     import_matplotlib,
     kprime_option,
+    load_options,
     output_dir,
     output_path,
     positive_float,
@@ -126,12 +127,19 @@ def _num(x: float) -> str:
     return f"{x:g}"
 
 
-def plot_stem(gamma: float, kprime: float) -> str:
+#: Short names of the loads in file names.
+_LOAD_STEM = {"buoyancy": "b", "uplift": "u", "uplift_ratio": "nu", "uplift_arm": "eu",
+              "gyration": "i", "crest": "crest"}
+
+
+def plot_stem(gamma: float, kprime: float, loads: dict[str, Any] | None = None) -> str:
     """The default file name of ``plot`` without suffix: ``regime-g<gamma>-kp<kprime>``.
 
-    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``.
+    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``;
+    the loads given follow, ``regime-g0.7-kp-0.02-b0.32-nu0.52``.
     """
-    return f"regime-g{_num(gamma)}-kp{_num(kprime)}"
+    extra = "".join(f"-{_LOAD_STEM[k]}{_num(v)}" for k, v in (loads or {}).items())
+    return f"regime-g{_num(gamma)}-kp{_num(kprime)}{extra}"
 
 
 def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> tuple[Path, str]:
@@ -169,8 +177,8 @@ def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
         raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float
-                 ) -> list[DesignPoint]:
+def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
+                 loads: dict[str, Any] | None = None) -> list[DesignPoint]:
     """Design points from ``--points`` files and ``--point`` specs, for this map."""
     points = list(specs)
     if files:
@@ -185,16 +193,32 @@ def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: floa
     for pt in points:
         same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
             pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
+        same = same and _same_loads(pt, loads or {})
         (keep if same else other).append(pt)
     if other:
         names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in other[:5])
         more = f" and {len(other) - 5} more" if len(other) > 5 else ""
-        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime "
+        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime or other loads "
                    f"and are not drawn on this map: {names}{more}", err=True)
     return keep
 
 
+def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
+    """Whether the loads a point carries (CSV columns) are the map's."""
+    from ..mechanics.block import LOAD_DEFAULTS
+
+    for key, default in LOAD_DEFAULTS.items():
+        own = getattr(pt, key, None)
+        if own is None:
+            continue
+        want = loads.get(key, default)
+        if want is None or not math.isclose(own, want, rel_tol=1e-9, abs_tol=1e-12):
+            return False
+    return True
+
+
 _PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
+          (r"\nu", "nu"),
           ("$", ""), ("{", ""), ("}", ""))
 
 
@@ -228,6 +252,11 @@ Examples:
   regimemap plot --gamma 3 --kprime 0.4 --point 0.45,0.6:caisson-A
   regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
   regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
+  regimemap plot --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
+
+With loads (--buoyancy, --uplift, --uplift-ratio, --uplift-arm, --gyration,
+--crest) the map is that of the loaded block: lift-off (LO) appears, the
+title states the loads, and the default file name carries them.
 """
 
 
@@ -265,18 +294,20 @@ Examples:
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
                    "(repeatable); rows with another gamma/kprime are skipped with a warning.")
 @click.option("--show-ambiguity", is_flag=True,
-              help="Also mark where the report's raw regions overlap (needs "
-                   "regimemap.render_ambiguity).")
+              help="Also mark where several modes are admissible, with the mode the map "
+                   "keeps (Section 4.7; least constraint with loads).")
+@load_options
 def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | None,
                  k_max: float | None, mu_max: float | None, resolution: int, dpi: float,
                  title: str | None, no_curves: bool, no_labels: bool, no_legend: bool,
                  modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
-                 points_files: tuple[str, ...], show_ambiguity: bool) -> None:
+                 points_files: tuple[str, ...], show_ambiguity: bool,
+                 loads: dict[str, Any]) -> None:
     from ..mechanics.block import Parameters
 
-    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime))
-    params = Parameters(gamma, kprime)
-    points = _read_points(points_files, point_specs, params.gamma, params.kprime)
+    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
+    params = Parameters(gamma, kprime, **loads)
+    points = _read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
     from ..drawing.figure import fit_figure, map_figure
     from ..drawing.style import style_context
@@ -321,7 +352,10 @@ Examples:
 
 def _preset_or_usage_error(fid: str) -> Any:
     from ..drawing.presets import FIGURE_IDS, get_preset, suggest_ids
+    from ..drawing.worked import WORKED
 
+    if fid.strip().upper() in WORKED:  # the worked figures of the loaded block: W.1, W.2 ...
+        return WORKED[fid.strip().upper()]
     try:
         return get_preset(fid)
     except KeyError:
@@ -348,12 +382,17 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     from ..drawing.figure import render_preset
     from ..io.figures import save_figure
 
-    fig = render_preset(preset, dpi=dpi)
+    if preset.id.startswith("W"):
+        from ..drawing.worked import render_worked
+
+        fig = render_worked(preset, dpi=dpi)
+    else:
+        fig = render_preset(preset, dpi=dpi)
     _save(save_figure, fig, path, fmt, dpi)
     _written(path)
 
 
-_FIGURES_HELP = """Draw all 24 figures of the report into a folder.
+_FIGURES_HELP = """Draw all 24 figures of the report (and the worked figures W.1 ...) into a folder.
 
 Writes fig-<ID>.<format> for every figure (3.1 ... 3.11, 4.2 ... 4.7b) and
 every format, in one process.  The output is byte-identical from run to run.
@@ -365,6 +404,11 @@ Examples:
   regimemap figures --out figures --format png,svg
   regimemap figures --out paper --format pdf
   regimemap figures --list
+  regimemap figures --out figures --format png,svg --set all
+
+--set worked draws the worked figures of the loaded block instead (W.1:
+Goda's caisson submerged, W.2: in air, W.3: a slender block lifting off,
+W.4: the uplift ratio swept); --set all draws both.
 """
 
 
@@ -377,15 +421,28 @@ Examples:
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
-def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool) -> None:
+@click.option("--set", "which", type=click.Choice(["report", "worked", "all"]), default="report",
+              show_default=True,
+              help="The report's 24 figures, the worked figures of the loaded block "
+                   "(W.1, W.2 ...: submerged caissons), or both.")
+def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
+                    which: str) -> None:
     from ..drawing.presets import PRESETS
+    from ..drawing.worked import WORKED
 
+    report = {} if which == "worked" else PRESETS
     if list_only:
-        for p in PRESETS.values():
+        for p in report.values():
             what = "final map" if not p.raw else "raw region of " + p.modes[0].label
             click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
                        f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
                        f"{_plain(p.caption)}")
+        for w in WORKED.values() if which != "report" else ():
+            g, kp = _num(w.params.gamma), _num(w.params.kprime)
+            what = "atlas of final maps" if w.sweep else "final map"
+            kind = 'loaded' if w.params.loaded else w.params.case.value
+            click.echo(f"{w.id:5s} gamma={g:4s} kprime={kp:6s} {kind:8s} {what:24s} [worked]  "
+                       f"{_plain(w.title.splitlines()[0].split('  ', 1)[1])}")
         return
     folder = _check_dir(out_dir, "--out")
 
@@ -395,10 +452,20 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
 
     fig = None  # one Figure for all: its renderer keeps the text caches warm
     count = 0
-    for preset in PRESETS.values():
+    for preset in report.values():
         fig = render_preset(preset, dpi=dpi, fig=fig)
         for fmt in formats:
             _save(save_figure, fig, folder / preset.filename(fmt), fmt, dpi)
             count += 1
-    click.echo(f"wrote {count} files ({len(PRESETS)} figures x {', '.join(formats)}) "
+    n_figures = len(report)
+    if which != "report":
+        from ..drawing.worked import render_worked
+
+        for w in WORKED.values():
+            fig = render_worked(w, dpi=dpi, fig=fig)
+            for fmt in formats:
+                _save(save_figure, fig, folder / w.filename(fmt), fmt, dpi)
+                count += 1
+        n_figures += len(WORKED)
+    click.echo(f"wrote {count} files ({n_figures} figures x {', '.join(formats)}) "
                f"to {folder}")

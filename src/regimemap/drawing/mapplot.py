@@ -25,11 +25,19 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..maps.describe import loads_text
 from ..maps.geometry import DEFAULT_SAMPLES
 from ..maps.mapdata import MapData, compute_map
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
-from .placement import curve_label_anchor, interior_point, label_anchor, leader_label_anchor, view_points
+from .placement import (
+    curve_label_anchor,
+    interior_point,
+    label_anchor,
+    leader_label_anchor,
+    overlaps,
+    view_points,
+)
 from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol, text_size
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -117,7 +125,9 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
     """A caption-like title: what is shown, the report's case, and (gamma, k').
 
     Example: ``All modes, case 1, 0 <= k' <= (1+g^2)/(3g^2), a >= 0`` over
-    ``(gamma = 3, k' = 0.2)``, in mathtext.
+    ``(gamma = 3, k' = 0.2)``, in mathtext.  A block with loads is titled with
+    its loads instead of the case: ``All modes, block with loads`` over
+    ``(gamma = 0.7, k' = -0.018; beta = 0.318, nu = 0.524, e_u = 1/3)``.
     """
     modes = tuple(MAP_MODES if modes is None else modes)
     if raw and len(modes) == 1:
@@ -127,6 +137,10 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
             m.tex for m in modes)
     else:
         what = "Modes " + ", ".join(m.tex for m in modes)
+    loads = loads_text(params, tex=True)
+    if loads:  # a loaded block: the loads, not the report's case (which ignores them)
+        return (f"{what}, block with loads\n"
+                rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$; {loads})")
     return (f"{what}, {params.case.tex}\n"
             rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$)")
 
@@ -346,10 +360,13 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
             dx, dy = (4.0, -2.0) if at_top else (-3.0, 4.0)
             ha, va = ("left", "top") if at_top else ("right", "bottom")
             text = _point_text(name)
+            end_box = frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va)
+            if overlaps(end_box, obstacles):
+                continue  # a far end named on top of a point's name (E and B of a loaded map)
             out.point_labels[name] = ax.annotate(
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
                 fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
-            obstacles.append(frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va))
+            obstacles.append(end_box)
     lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
     if curves:
         for name, cd in data.curves.items():

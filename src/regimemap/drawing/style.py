@@ -66,8 +66,9 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
     Mode.SRO_MINUS: ModeStyle("#77AADD", "--"),  # light blue
     Mode.SRO_PLUS: ModeStyle("#44BB99", "||"),  # mint
     Mode.SRO_PRIME_MINUS: ModeStyle("#FFAABB", "xx"),  # pink
-    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # never on a map
-    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never on a map
+    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # pear: loaded blocks only (uplift near O)
+    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never chosen on a map
+    Mode.LO: ModeStyle("#99DDFF", "**"),  # light cyan: lift-off, loaded blocks only
 }
 
 #: Fill style of each outcome category of :func:`regimemap.dynamics.outcome_map` (codes

@@ -76,6 +76,7 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     """
     from ..drawing.atlas import check_animation, render_animation
 
-    check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0))
+    check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0),
+                    sweep=kwargs.get("sweep", "kprime"), fixed=kwargs.get("fixed"))
     with atomic_path(path) as tmp:
         return render_animation(tmp, gamma, kprimes, **kwargs)

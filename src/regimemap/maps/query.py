@@ -357,13 +357,13 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
     Parameters
     ----------
     points : iterable of DesignPoint or (k, mu) pairs
-        A point's own ``gamma``/``kprime`` (see
+        A point's own ``gamma``/``kprime`` and loads (see
         :class:`~regimemap.maps.points.DesignPoint`) take precedence over the
         defaults below.
     gamma, kprime : float, optional
         Defaults for points that do not carry their own.
     buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest : float, keyword-only
-        The loads of the block (shared by all points), as in :func:`regimemap.classify`.
+        The loads of the block (the default of every point), as in :func:`regimemap.classify`.
 
     Returns
     -------
@@ -375,7 +375,39 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
         If a point lacks gamma or kprime and no default is given (the message
         names the point by position and name), or any value is invalid.
     """
-    loads = checked_loads(buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest)
+    defaults = {"buoyancy": buoyancy, "uplift": uplift, "uplift_ratio": uplift_ratio,
+                "uplift_arm": uplift_arm, "gyration": gyration, "crest": crest}
+    pts = list(points)
+    if any(isinstance(pt, DesignPoint) and pt.loads for pt in pts):
+        # points with loads of their own: one shared-loads query per set of loads
+        groups: dict[tuple[Any, ...], list[int]] = {}
+        for i, pt in enumerate(pts):
+            own = pt.loads if isinstance(pt, DesignPoint) else {}
+            key = tuple(own.get(name, default) for name, default in defaults.items())
+            groups.setdefault(key, []).append(i)
+        out_all: list[PointResult | None] = [None] * len(pts)
+        for key, idx in groups.items():
+            res = _query_shared([pts[i] for i in idx], gamma, kprime, dict(zip(defaults, key)),
+                                [i + 1 for i in idx])
+            for i, r in zip(idx, res):
+                out_all[i] = r
+        return [r for r in out_all if r is not None]
+    return _query_shared(pts, gamma, kprime, defaults, range(1, len(pts) + 1))
+
+
+def _query_shared(points: Sequence[DesignPoint | tuple[float, float]], gamma: float | None,
+                  kprime: float | None, load_kw: dict[str, Any], positions: Iterable[int]
+                  ) -> list[PointResult]:
+    """:func:`query_points` of points that share their loads (``positions``: their numbers)."""
+    try:
+        loads = checked_loads(**load_kw)
+    except ValueError as exc:
+        first = next(iter(positions), 1)
+        pt0 = points[0] if points else None
+        if pt0 is not None and isinstance(pt0, DesignPoint) and pt0.loads:
+            label = f"point {first}" + (f" ({pt0.name!r})" if pt0.name else "")
+            raise ValueError(f"{label}: {exc}") from None
+        raise
     g_def = None if gamma is None else check_gamma(gamma)
     kp_def = None if kprime is None else check_kprime(kprime, loads["crest"])
     ks: list[float] = []
@@ -383,7 +415,7 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
     gs: list[float] = []
     kps: list[float] = []
     names: list[str] = []
-    for i, pt in enumerate(points, start=1):
+    for i, pt in zip(positions, points):
         if not isinstance(pt, DesignPoint):
             try:
                 kk, mm = pt

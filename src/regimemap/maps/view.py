@@ -20,6 +20,9 @@ __all__ = ["auto_extent", "nice_ceil", "simplify"]
 
 #: lie and still be pulled into the automatic view.
 _CAP = 12.0
+#: With loads, mu*(k) over the view is followed up to this many times the highest
+#: characteristic mu (it may have a pole, c_O k + d_O = 0, inside the view).
+_POLE_CAP = 3.0
 #: Relative margin added around the characteristic points.
 _MARGIN = 0.15
 
@@ -211,7 +214,10 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
         k_max = nice_ceil((1.0 + _MARGIN) * max(max(ks), 1e-12))
     if mu_max is None:
         if raw_mode is None or Mode(raw_mode) is not Mode.RE:
-            mus.append(_mu_on_view(p, k_max))
+            on_view = _mu_on_view(p, k_max)
+            if p.loaded:  # mu* of a loaded block may have a pole in view: show its rise, not all of it
+                on_view = min(on_view, _POLE_CAP * max(mus))
+            mus.append(on_view)
         if not math.isfinite(kA):  # rest up to mu = k everywhere: show OA to mid height
             mus.append(0.5 * k_max)
         mu_max = nice_ceil((1.0 + _MARGIN) * max(max(mus), 1e-12))

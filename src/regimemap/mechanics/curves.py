@@ -231,7 +231,7 @@ def map_curves(p: Parameters) -> dict[str, Curve]:
                           if loaded else _line(-1.0 / g, -kp), p.k_D, math.inf, lambda k: lower_line(p, k))
         out["dotted"] = Curve("dotted", "mu = -s/W" if loaded else "mu = k|k'|", "(4.22)",
                               "xi = 0 in sliding (construction line)",
-                              "dotted", r"$\mu = k|k'|$",
+                              "dotted", r"$\xi = 0$" if loaded else r"$\mu = k|k'|$",
                               _over_w(p, -eu_u / g, -kp - cst.uplift_ratio * cst.uplift_arm / g)
                               if loaded else _line(0.0, abs(kp)), 0.0, math.inf,
                               lambda k: dotted_line(p, k))
@@ -244,7 +244,7 @@ def map_curves(p: Parameters) -> dict[str, Curve]:
     if p.above and cst.aO < 0.0:
         out["dotted"] = Curve("dotted", "mu = s/W - 1/gamma" if loaded else "mu = k k' - 1/gamma", "(3.44)",
                               "theta'' = 0 in slide-rock about O (SRO+)", "dotted",
-                              r"$\mu = kk' - 1/\gamma$",
+                              r"$\ddot{\theta} = 0$" if loaded else r"$\mu = kk' - 1/\gamma$",
                               _over_w(p, -(cst.w0 * (1.0 / g) - eu_u / g),
                                       kp + cst.uplift_ratio * (1.0 + cst.uplift_arm) / g)
                               if loaded else _line(-1.0 / g, kp), p.k_D, math.inf,
