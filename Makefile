@@ -19,7 +19,10 @@ $(STAMP): pyproject.toml
 	@touch $(STAMP)
 
 figures: $(STAMP)
-	$(BIN)/regimemap figures --out figures --format png,svg
+	$(BIN)/regimemap figures --out figures --format png,svg --set all
+	$(BIN)/regimemap caisson --example > $(VENV)/goda.toml
+	$(BIN)/regimemap caisson $(VENV)/goda.toml -o figures/caisson-sheet.png > /dev/null
+	$(BIN)/regimemap dynamics-figures --out figures --format png,svg --cache .cache/dynamics-figures
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q
@@ -32,7 +35,7 @@ bench: $(STAMP)
 	$(BIN)/python bench/bench.py
 
 clean:
-	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache build src/*.egg-info
+	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build src/*.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +
 
 distclean: clean

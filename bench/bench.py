@@ -2,7 +2,8 @@
 
 Prints points per second for label_grid (2000 x 2000 grid) and classify
 (4 million scattered points), the solver's rate for comparison, and then the
-plotting timings of bench/bench_plot.py.  Times are the best of several runs
+plotting timings of bench/bench_plot.py and the outcome-map benchmark of
+bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics).  Times are the best of several runs
 (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
@@ -39,6 +40,16 @@ def engine() -> list[tuple[str, float, str, str]]:
         t = best_of(lambda gamma=gamma, kprime=kprime: label_grid(k, mu, gamma, kprime))
         rows.append((f"label_grid 2000x2000 (gamma={gamma}, k'={kprime})", 4e6 / t, "points/s",
                      ">= 100e6"))
+    # with loads (issue 10): Goda's caisson submerged (lift-off in view), a slender block
+    # whose uplift grows with the push
+    k6 = np.linspace(0, 6, 2000)
+    for what, gamma, kprime, loads in (
+            ("beta=0.318, nu=0.524", 0.7, -0.018, {"buoyancy": 0.318, "uplift_ratio": 0.524}),
+            ("nu=1", 3.0, 0.4, {"uplift_ratio": 1.0})):
+        t = best_of(lambda gamma=gamma, kprime=kprime, loads=loads:
+                    label_grid(k6, mu, gamma, kprime, **loads))
+        rows.append((f"label_grid 2000x2000 loaded ({gamma}, {kprime}; {what})", 4e6 / t,
+                     "points/s", ">= 100e6"))
     rng = np.random.default_rng(0)
     ks = rng.uniform(0, 3, 4_000_000)
     ms = rng.uniform(0, 3, 4_000_000)
@@ -56,9 +67,9 @@ def main() -> int:
     print(f"regimemap {regimemap.__version__}, numpy {np.__version__}, Python "
           f"{platform.python_version()}, {os.cpu_count()} cores, {platform.machine()}")
     print()
-    print(f"{'benchmark':58s} {'result':>14s}  {'unit':9s} target")
+    print(f"{'benchmark':64s} {'result':>14s}  {'unit':9s} target")
     for name, value, unit, target in engine():
-        print(f"{name:58s} {value:14,.0f}  {unit:9s} {target}")
+        print(f"{name:64s} {value:14,.0f}  {unit:9s} {target}")
     plot = Path(__file__).with_name("bench_plot.py")
     if plot.exists():
         spec = importlib.util.spec_from_file_location("bench_plot", plot)
@@ -71,6 +82,14 @@ def main() -> int:
         else:
             for key, value in mod.run().items():
                 print(f"{key:58s} {value}")
+    dynamics = Path(__file__).with_name("bench_dynamics.py")
+    if dynamics.exists():  # regimemap.dynamics: the 200 x 200 outcome map, thresholds, runs/s
+        spec = importlib.util.spec_from_file_location("bench_dynamics", dynamics)
+        mod = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        mod.main()
     return 0
 
 

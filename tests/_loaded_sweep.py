@@ -7,7 +7,8 @@ from typing import Any
 
 import numpy as np
 
-from regimemap.mechanics.loaded import loaded_constants, named_points_loaded
+from regimemap import Parameters
+from regimemap.mechanics.curves import named_points
 
 GAMMAS = [0.3, 0.8, 1.5, 3.0, 6.0]
 
@@ -60,11 +61,11 @@ def loaded_sweep(n_random: int = 60, seed: int = 0) -> list[tuple[float, float, 
 
 def view(gamma: float, kprime: float, loads: dict[str, Any]) -> tuple[float, float]:
     """k and mu ranges that hold every named point of the loaded map (capped)."""
-    cst = loaded_constants(gamma, kprime, **loads)
-    marks = [1.0] + [p.k for p in named_points_loaded(cst).values() if math.isfinite(p.k)]
+    par = Parameters(gamma, kprime, **loads)
+    pts = named_points(par).values()
+    marks = [1.0] + [p.k for p in pts if math.isfinite(p.k)]
     k_hi = min(3.0 * max(marks), 60.0)
-    mus = [1.0, cst.mu_Bprime, 1.0 / gamma] + [p.mu for p in named_points_loaded(cst).values()
-                                               if math.isfinite(p.mu)]
+    mus = [1.0, par.mu_Bprime, 1.0 / gamma] + [p.mu for p in pts if math.isfinite(p.mu)]
     mu_hi = min(2.0 * max(mus), 60.0)
     return k_hi, mu_hi
 

@@ -610,11 +610,24 @@ VALUE_CHOICES = {
                    "1:2:-1", "3,nan"],
     "kprime-list": ["0,0.4", "-1:1:3", "0", "-1:1:401", "0:1:0", "a", "2", "", "-1:1", "0:1:1e9",
                     "nan,0"],
+    # the loads (issue 10)
+    "buoyancy": ["0", "0.3", "0.99", "1", "-0.1"] + NUMBERS,
+    "uplift": ["0", "0.2", "0.5"] + NUMBERS,
+    "uplift_ratio": ["0", "0.5", "1"] + NUMBERS,
+    "uplift_arm": ["0.333333", "0", "-1", "1", "1.01"] + NUMBERS,
+    "gyration": ["0.7", "1", "0"] + NUMBERS,
+    "crest": ["1", "1.2", "0.5", "0"] + NUMBERS,
+    **{f"{name}-list": ["0,0.3", "0:0.5:3", "0", "0,2", "a", "", "0:1", "0:1:1e9"]
+       for name in ("buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration", "crest")},
     "text": ["{out}.png", "{out}.svg", "{out}.pdf", "{out}", "{out}.bmp", "", "{missing}/x.png",
              "{inputs}/a-file/x.png", "/proc/x.png", "{inputs}", "$\\frac{", "α β", "$x^2$"],
     "file": ["{out}.csv", "{out}.json", "{out}.npz", "{out}.gif", "{out}.png", "{out}.txt", "",
              "{missing}/x.csv", "/proc/x.json", "{inputs}/good.csv", "{inputs}/bad.csv", "{inputs}"],
 }
+# the inputs 'outcome' sweeps (lists and ranges)
+VALUE_CHOICES.update({f"{name}-list": ["0.5", "0.1,0.2", "0.1:1:3", "1:2", "a,b", "", "nan", "-1", "0:1:1e9"]
+                      for name in ("k_peak", "duration", "omega_p", "mu", "half_width", "gyration",
+                                   "buoyancy", "uplift", "uplift_ratio", "uplift_arm")})
 ARGUMENT_CHOICES = {"figure_id": ["3.9a", "4.7b", "3.1", "3.9", "9.9", "", "3.9A", "fig", "--", "-1"]}
 
 # Valid values, small so that drawing stays cheap: half of the examples use only these
@@ -636,6 +649,10 @@ VALID_BY_TYPE = {
     "K,MU[:NAME]": ["0.45,0.6:A", "1,2", "0,0", "100,100:far"],
     "gamma-list": ["1,2", "3", "0.5:3:2", "50"],
     "kprime-list": ["0,0.4", "-1:1:3", "0", "-1,1"],
+    "buoyancy": ["0", "0.3"], "uplift": ["0", "0.2"], "uplift_ratio": ["0", "0.5"],
+    "uplift_arm": ["0.333333", "0"], "gyration": ["0.7", "1.5"], "crest": ["1", "1.2"],
+    "buoyancy-list": ["0", "0,0.3"], "uplift-list": ["0"], "uplift_ratio-list": ["0", "0.2,0.5"],
+    "uplift_arm-list": ["0.333333"], "gyration-list": ["0.8"], "crest-list": ["1"],
 }
 VALID_BY_NAME = {
     "points_files": ["{inputs}/good.csv"], "points_file": ["{inputs}/good.csv"],

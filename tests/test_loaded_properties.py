@@ -8,13 +8,12 @@ import numpy as np
 from hypothesis import assume, given, note
 from hypothesis import strategies as st
 
-from regimemap import Mode
-from regimemap.mechanics.loaded import LO, classify_loaded, label_grid_loaded, loaded_constants
-from regimemap.mechanics.loaded_solver import least_constraint
+from regimemap import Mode, Parameters, classify, label_grid
+from regimemap.mechanics.solver import least_constraint
 
 from ._loaded_sweep import view
 
-CODES = {int(m) for m in Mode} | {LO}
+CODES = {int(m) for m in Mode}
 
 gammas = st.floats(math.log(0.3), math.log(6.0)).map(math.exp)
 
@@ -53,7 +52,7 @@ def _solver_kw(loads):
 @given(loaded_scene())
 def test_exactly_one_mode_per_point(sc):
     g, kp, loads, k, mu = sc
-    lab = classify_loaded(k, mu, g, kp, **loads)
+    lab = classify(k, mu, g, kp, **loads)
     assert lab.shape == k.shape and lab.dtype == np.uint8
     assert set(np.unique(lab).tolist()) <= CODES  # never 255: some rule always applies
 
@@ -63,7 +62,7 @@ def test_solver_admissible_set_never_empty_and_label_admissible(sc):
     g, kp, loads, k, mu = sc
     codes, adm, _ = least_constraint(k, mu, g, kp, tol=1e-7, **_solver_kw(loads))
     assert (codes != 255).all()
-    lab = classify_loaded(k, mu, g, kp, **loads)
+    lab = classify(k, mu, g, kp, **loads)
     for c in CODES:
         sel = lab == c
         note(f"{c}: k={k[sel & ~adm[c]]}, mu={mu[sel & ~adm[c]]}")
@@ -75,18 +74,18 @@ def test_continuity_at_zero_loads(sc, eps):
     """Tiny loads (and a tiny change of inertia) change no label away from the boundaries."""
     g, kp, _, k, mu = sc
     kp = min(kp, 1.0)
-    base = classify_loaded(k, mu, g, kp)
+    base = classify(k, mu, g, kp)
     k_hi, mu_hi = view(g, kp, {})
     near = np.zeros(k.shape, bool)
     for dk, dm in ((1, 0), (-1, 0), (0, 1), (0, -1)):
-        near |= classify_loaded(np.maximum(k + dk * 1e-6 * k_hi, 0), np.maximum(mu + dm * 1e-6 * mu_hi, 0),
+        near |= classify(np.maximum(k + dk * 1e-6 * k_hi, 0), np.maximum(mu + dm * 1e-6 * mu_hi, 0),
                                 g, kp) != base
     assume((~near).any())
     i = math.sqrt((1 + g * g) / 3) * (1 + eps)
     for loads in (dict(buoyancy=eps), dict(uplift=eps), dict(uplift_ratio=eps),
                   dict(uplift=eps, uplift_arm=-1.0), dict(gyration=i),
                   dict(buoyancy=eps, uplift=eps, uplift_ratio=eps, uplift_arm=0.7)):
-        lab = classify_loaded(k, mu, g, kp, **loads)
+        lab = classify(k, mu, g, kp, **loads)
         assert np.array_equal(lab[~near], base[~near]), loads
 
 
@@ -97,20 +96,32 @@ def test_grid_equals_pointwise(p, nk, nm):
     rng = np.random.default_rng(nk * 31 + nm)
     kk = rng.uniform(0, k_hi, nk)
     mu = rng.uniform(0, mu_hi, nm)
-    grid = label_grid_loaded(kk, mu, g, kp, **loads)
+    grid = label_grid(kk, mu, g, kp, **loads)
     K, M = np.meshgrid(kk, mu)
-    assert np.array_equal(grid, classify_loaded(K, M, g, kp, **loads))
+    assert np.array_equal(grid, classify(K, M, g, kp, **loads))
 
 
 def test_parameters_are_validated():
     import pytest
 
-    for kw in (dict(buoyancy=1.0), dict(buoyancy=-0.1), dict(uplift=-1.0), dict(uplift_ratio=-1.0),
-               dict(uplift_arm=1.5), dict(gyration=0.0), dict(crest=0.0)):
-        with pytest.raises(ValueError):
-            loaded_constants(2.0, 0.5, **kw)
+    for kw, msg in ((dict(buoyancy=1.0), r"buoyancy must be a number in \[0, 1\), got 1.0"),
+                    (dict(buoyancy=-0.1), r"buoyancy must be a number in \[0, 1\), got -0.1"),
+                    (dict(uplift=-1.0), r"uplift must be a number in \[0, 1e\+06\], got -1.0"),
+                    (dict(uplift_ratio=float("nan")), r"uplift_ratio must be a number in \[0, 1e\+06\], got nan"),
+                    (dict(uplift_arm=1.5), r"uplift_arm must be a number in \[-1, 1\], got 1.5"),
+                    (dict(gyration=0.0), r"gyration must be a number in \(0, 1000\], got 0.0"),
+                    (dict(gyration="1"), r"gyration must be .*got '1' \(not a number\)"),
+                    (dict(crest=0.0), r"crest must be a number in \(0, 1000\], got 0.0")):
+        with pytest.raises(ValueError, match=msg):
+            Parameters(2.0, 0.5, **kw)
+        with pytest.raises(ValueError, match=msg):
+            classify(0.1, 0.5, 2.0, 0.5, **kw)
+        with pytest.raises(ValueError, match=msg):
+            label_grid([0.1], [0.5], 2.0, 0.5, **kw)
+    with pytest.raises(ValueError, match=r"kprime must be a number in \[-1, 1\], got 1.2"):
+        Parameters(2.0, 1.2)
+    with pytest.raises(ValueError, match=r"kprime must be a number in \[-1, 1.5\], got 1.7"):
+        classify(0.1, 0.5, 2.0, 1.7, crest=1.5)
+    assert Parameters(2.0, 1.2, crest=1.5).kprime == 1.2
     with pytest.raises(ValueError):
-        loaded_constants(2.0, 1.2)
-    assert loaded_constants(2.0, 1.2, crest=1.5).kprime == 1.2
-    with pytest.raises(ValueError):
-        classify_loaded(-1.0, 0.5, 2.0, 0.5)
+        classify(-1.0, 0.5, 2.0, 0.5)

@@ -5,14 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from regimemap.mechanics.loaded_solver import (
-    LoadedHypothesis,
-    admissible_loaded,
-    applied_loads,
-    contact_rows,
-    least_constraint,
-    solve_loaded,
-)
+from regimemap import Mode, admissible
+from regimemap.mechanics.solver import Hypothesis, applied_loads, contact_rows, least_constraint, solve
 
 from ._loaded_sweep import loaded_sweep, sample
 
@@ -29,10 +23,10 @@ def _random(n, seed):
     )
 
 
-@pytest.mark.parametrize("hyp", list(LoadedHypothesis))
+@pytest.mark.parametrize("hyp", list(Hypothesis))
 def test_solutions_satisfy_the_equations_of_motion(hyp):
     p = _random(600, 1)
-    r = solve_loaded(hyp, p["k"], p["mu"], p["gamma"], p["kprime"], buoyancy=p["buoyancy"],
+    r = solve(hyp, p["k"], p["mu"], p["gamma"], p["kprime"], buoyancy=p["buoyancy"],
                      uplift=p["uplift"], uplift_ratio=p["uplift_ratio"], uplift_arm=p["uplift_arm"],
                      gyration=p["gyration"])
     g, k, i2 = p["gamma"], p["k"], p["gyration"] ** 2
@@ -59,7 +53,7 @@ def test_solutions_satisfy_the_equations_of_motion(hyp):
 
 def test_rest_is_statics_with_loads():
     k, g, kp = 0.1, 2.0, 0.5
-    r = solve_loaded(LoadedHypothesis.REST, k, 5.0, g, kp, **LOADS)
+    r = solve(Hypothesis.REST, k, 5.0, g, kp, **LOADS)
     W = 1 - 0.3 - 0.2 - 0.4 * k
     U = 0.2 + 0.4 * k
     assert r.fx == pytest.approx(k) and r.fy == pytest.approx(W)
@@ -70,7 +64,7 @@ def test_rest_is_statics_with_loads():
 
 def test_contact_rows_do_not_depend_on_the_loads():
     mu, g = np.array([0.3, 1.0]), np.array([2.0, 0.5])
-    for hyp in LoadedHypothesis:
+    for hyp in Hypothesis:
         A, rhs = contact_rows(hyp, mu, g)
         assert A.shape == (2, 3, 6) and not rhs.any()
     fx, fy, mc = applied_loads(np.array([1.0]), 2.0, 0.5, buoyancy=0.1, uplift=0.2, uplift_ratio=0.3,
@@ -83,27 +77,26 @@ def test_lift_off_when_the_block_floats_level():
     # W < 0 with no moment: free flight, nothing else admissible
     codes, adm, cons = least_constraint(np.array([0.0, 0.0]), np.array([0.1, 2.0]), 2.0, 0.0,
                                         buoyancy=0.5, uplift=0.8, uplift_arm=0.0)
-    assert (codes == 8).all() and (cons[8] == 0).all()
-    assert not adm[0].any() and not adm[1].any()
+    assert (codes == Mode.LO).all() and (cons[Mode.LO] == 0).all()
+    assert not adm[Mode.RE].any() and not adm[Mode.SL].any()
 
 
 def test_no_lift_off_while_a_corner_would_sink():
     # W < 0 but the free rotation drives O into the base: a pivot mode, not lift-off
     k = np.array([0.0])
     codes, adm, _ = least_constraint(k, np.array([1.0]), 2.0, 0.0, uplift=1.2, uplift_arm=1.0)
-    assert not adm[8].any() and codes[0] != 8
+    assert not adm[Mode.LO].any() and codes[0] != Mode.LO
 
 
 def test_admissible_set_never_empty_on_the_sweep():
     for g, kp, loads in loaded_sweep(80, seed=3):
-        kw = {key: v for key, v in loads.items() if key != "crest"}
         k, mu = sample(g, kp, loads, 2000, seed=4)
-        adm = admissible_loaded(k, mu, g, kp, **kw)
+        adm = admissible(k, mu, g, kp, **loads)
         assert np.stack(list(adm.values())).any(axis=0).all(), (g, kp, loads)
 
 
 def test_singular_slide_rock_is_not_admissible():
     g, gy = 2.0, 1.1
     mu = (gy * gy + 1) / g  # i^2 + 1 - mu gamma = 0
-    r = solve_loaded(LoadedHypothesis.SLIDE_ROCK_O_LEFT, 1.0, mu, g, -0.5, gyration=gy, buoyancy=0.2)
+    r = solve(Hypothesis.SLIDE_ROCK_O_LEFT, 1.0, mu, g, -0.5, gyration=gy, buoyancy=0.2)
     assert not bool(r.solvable) and not bool(r.ok)

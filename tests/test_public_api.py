@@ -12,14 +12,15 @@ import pytest
 
 PUBLIC_API = {
     "regimemap": [
-        "Case", "Hypothesis", "MAP_MODES", "Mode", "PRIORITY", "Parameters", "PointResult",
-        "__version__", "admissible", "classify", "label_grid", "margin", "query_point",
+        "Case", "Hypothesis", "LOADED_MAP_MODES", "MAP_MODES", "Mode", "PRIORITY", "Parameters",
+        "PointResult", "SELECTION_ORDER", "__version__", "admissible", "classify", "label_grid", "margin", "query_point",
         "query_points",
     ],
     "regimemap.mechanics": [
-        "Case", "Curve", "Hypothesis", "MAP_MODES", "Mode", "NamedPoint", "PRIORITY", "Parameters",
-        "RAW_REGIONS", "Response", "TOLERANCE", "admissible", "admissible_hypotheses", "case_of",
-        "choose", "map_curves", "named_points", "raw_region", "solve",
+        "Case", "Curve", "Hypothesis", "LOADED_MAP_MODES", "MAP_MODES", "Mode", "NamedPoint",
+        "PRIORITY", "Parameters", "RAW_REGIONS", "Response", "SELECTION_ORDER", "TOLERANCE",
+        "admissible", "admissible_hypotheses", "case_of", "choose", "least_constraint", "map_curves",
+        "named_points", "raw_region", "solve",
     ],
     "regimemap.maps": [
         "AmbiguousRegion", "Crossing", "CurveData", "DEFAULT_SAMPLES", "DesignPoint", "MapData",
@@ -30,10 +31,14 @@ PUBLIC_API = {
         "FIGSIZE", "MODE_STYLE", "MapArtists", "atlas_figure", "default_title", "draw_ambiguity",
         "draw_design_points", "draw_map", "fit_figure", "load_matplotlib", "map_figure", "new_figure", "render_map",
         "render_preset", "style_context",
+        # outcome maps and motions after initiation (regimemap.dynamics)
+        "OUTCOME_STYLE", "draw_outcome_map", "motion_figure", "outcome_figure",
     ],
     "regimemap.io": [
         "atomic_open", "atomic_path", "export_map", "format_result", "parse_point_spec",
         "read_points_csv", "result_row", "save_figure", "write_animation", "write_atlas",
+        # simulations after initiation: pulse files, time histories, outcome maps
+        "read_pulse_csv", "write_history", "write_outcome",
     ],
     "regimemap.cli": ["cli", "console_main", "main"],
 }
@@ -75,3 +80,21 @@ def test_positional_wrappers_are_the_documented_ones():
         (regimemap.query_point, ["k", "mu", "gamma", "kprime", "name"]),
     ):
         assert list(inspect.signature(fn).parameters)[: len(params)] == params
+
+
+LOAD_KEYWORDS = ["buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration", "crest"]
+
+
+def test_every_block_description_takes_the_load_keywords():
+    """The loads are keyword-only, with the report's block as default, wherever a block is described."""
+    import inspect
+
+    import regimemap
+    from regimemap.maps import margin, query_points
+
+    for fn in (regimemap.classify, regimemap.label_grid, regimemap.query_point, query_points, margin,
+               regimemap.Parameters):
+        params = inspect.signature(fn).parameters
+        for name in LOAD_KEYWORDS:
+            assert params[name].kind is inspect.Parameter.KEYWORD_ONLY, (fn, name)
+        assert params["buoyancy"].default == 0.0 and params["gyration"].default is None

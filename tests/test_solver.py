@@ -36,6 +36,8 @@ def test_solutions_satisfy_equations_of_motion(hyp):
     elif hyp.contact == "O'":
         assert np.allclose(r.xi[good], 1)
         assert np.allclose(r.ydd + r.thdd, 0)
+    elif hyp.contact == "none":  # lift-off: free flight, no reaction
+        assert np.allclose(r.fx, 0) and np.allclose(r.fy, 0) and np.allclose(r.ydd, -1)
     else:
         assert np.allclose(r.ydd, 0) and np.allclose(r.thdd, 0)
     if hyp.sigma:

@@ -50,6 +50,8 @@ def _register(group: click.Group) -> None:
     parts are imported inside the commands that use them.
     """
     from .atlas import animate_cmd, atlas_cmd
+    from .caisson import caisson_cmd
+    from .dynamics import dynamics_figures_cmd, outcome_cmd, simulate_cmd
     from .export import export_cmd
     from .plot import figure_command, figures_command, plot_command
     from .query import classify_cmd
@@ -57,6 +59,10 @@ def _register(group: click.Group) -> None:
     for command in (plot_command, figure_command, figures_command, classify_cmd, export_cmd,
                     atlas_cmd, animate_cmd):
         group.add_command(command)
+    group.add_command(caisson_cmd)
+    group.add_command(simulate_cmd)
+    group.add_command(outcome_cmd)
+    group.add_command(dynamics_figures_cmd)
 
 
 _register(cli)

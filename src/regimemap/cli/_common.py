@@ -3,21 +3,24 @@
 from __future__ import annotations
 
 import contextlib
+import functools
 import gc
 import os
 import sys
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import click
 
 from ..mechanics.validation import (
     GAMMA_MAX,
     GAMMA_MIN,
+    LOAD_LIMITS,
     MAX_AXIS,
     check_gamma,
     check_kprime,
+    check_loads,
     check_positive,
     check_resolution,
 )
@@ -35,6 +38,11 @@ __all__ = [
     "CONTEXT_SETTINGS",
     "gamma_option",
     "kprime_option",
+    "LOAD_OPTIONS",
+    "load_options",
+    "load_range",
+    "check_load_value",
+    "check_kprime_crest",
     "positive_float",
     "resolution_type",
     "output_path",
@@ -113,11 +121,157 @@ def gamma_option(**kwargs: Any) -> Callable[[FC], FC]:
 
 
 def kprime_option(**kwargs: Any) -> Callable[[FC], FC]:
-    """``--kprime`` (force height h/H in [-1, 1])."""
+    """``--kprime`` (force height h/H in [-1, 1], or [-1, crest] with ``--crest``).
+
+    Use it with :func:`load_options`, which checks the range once the crest is known.
+    """
     kwargs.setdefault("required", True)
-    return click.option("--kprime", type=KPRIME,
+    return click.option("--kprime", type=_KprimeUpToCrest(),
                         help="Force height k' = h/H in [-1, 1] (negative below the centre of mass).",
                         **kwargs)
+
+
+# -- the loads of a block (issue 10) -------------------------------------------------------
+
+#: The load options of the commands: (keyword of Parameters, option, metavar, help).
+LOAD_OPTIONS: tuple[tuple[str, str, str, str], ...] = (
+    ("buoyancy", "--buoyancy", "BETA",
+     "Buoyancy over the dry weight, beta in [0, 1), upward through C (default 0)."),
+    ("uplift", "--uplift", "U",
+     "Uplift at zero push over the dry weight, u >= 0 (default 0)."),
+    ("uplift_ratio", "--uplift-ratio", "NU",
+     "Growth of the uplift with the push, nu >= 0: U = (u + nu k) m g (default 0)."),
+    ("uplift_arm", "--uplift-arm", "E_U",
+     "Where the uplift acts, from C towards the seaward corner O', over B, in [-1, 1] "
+     "(default 1/3: Goda's triangle)."),
+    ("gyration", "--gyration", "I",
+     "Radius of gyration about C over B, i > 0 (default: the uniform block, "
+     "i^2 = (1 + gamma^2)/3)."),
+    ("crest", "--crest", "CREST",
+     "Top of the block above C over H, > 0 (default 1); the force may act up to it: "
+     "kprime in [-1, CREST]."),
+)
+
+
+def load_range(name: str) -> str:
+    """The allowed range of a load, as the messages write it: ``a number in [0, 1)``."""
+    lo, hi, lo_open, hi_open = LOAD_LIMITS[name]
+    return f"a number in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+
+
+def check_load_value(name: str, value: Any) -> float:
+    """One load checked as :class:`~regimemap.mechanics.block.Parameters` checks it."""
+    index = [n for n, *_ in LOAD_OPTIONS].index(name)
+    out = check_loads(**{name: value})[index]
+    assert out is not None
+    return out
+
+
+class _KprimeText(float):
+    """A k' as typed (``text``), checked against the crest once the crest is known."""
+
+    text: str
+
+
+class _KprimeUpToCrest(ParamType):
+    """``--kprime`` of a command with loads: a number; its range [-1, crest] is checked later."""
+
+    name = "kprime"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if isinstance(value, float):
+            return value
+        try:
+            v = _KprimeText(float(value))
+        except ValueError:
+            self.fail(f"kprime must be a number in [-1, 1] (up to --crest), got {value!r} "
+                      "(not a number)", param, ctx)
+        v.text = str(value)
+        top = LOAD_LIMITS["crest"][1]
+        if not -1.0 <= v <= top:  # beyond any crest (and NaN): refused at once
+            self.fail(f"kprime must be a number in [-1, 1] (up to --crest), got {value!r}",
+                      param, ctx)
+        return v
+
+
+def check_kprime_crest(kprime: float, crest: float, option: str = "--kprime") -> float:
+    """``kprime`` checked against [-1, crest]; a usage error naming the option if outside."""
+    try:
+        return check_kprime(float(kprime), crest)
+    except ValueError:
+        got = kprime.text if isinstance(kprime, _KprimeText) else kprime
+        raise click.BadParameter(f"kprime must be a number in [-1, {crest:g}], got {got!r}",
+                                 param_hint=f"'{option}'") from None
+
+
+def _load_type(name: str) -> ParamType:
+    return _Checked(name, lambda v: check_load_value(name, v), load_range(name))
+
+
+class _LoadValues(ParamType):
+    """A list ``a,b,c`` or a range ``start:stop:count`` of one load (atlas, animate)."""
+
+    def __init__(self, name: str, max_count: int):
+        self.name = f"{name}-list"
+        self._what = name
+        self._max = max_count
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if isinstance(value, list):
+            return value
+        from ..drawing.atlas import parse_values
+
+        try:
+            return parse_values(str(value), self._what, lambda v: check_load_value(self._what, v),
+                                self._max)
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
+
+
+_F = TypeVar("_F", bound=Callable[..., Any])
+
+
+@overload
+def load_options(f: _F) -> _F: ...
+
+
+@overload
+def load_options(f: None = None, *, sweep: int | None = None) -> Callable[[_F], _F]: ...
+
+
+def load_options(f: Callable[..., Any] | None = None, *, sweep: int | None = None) -> Any:
+    """Add ``--buoyancy``, ``--uplift``, ``--uplift-ratio``, ``--uplift-arm``, ``--gyration``
+    and ``--crest`` to a command; it receives them as one keyword, ``loads``.
+
+    ``loads`` holds the keywords of :class:`~regimemap.mechanics.block.Parameters`
+    that were given (``{}`` for the report's block), each checked (a usage error,
+    exit 2, names the option and its range).  A ``--kprime`` of the command is
+    checked against [-1, crest] here, since the crest may come after it.
+    Place it under ``@click.command`` like any option.
+
+    ``@load_options(sweep=N)`` (atlas, animate): each option takes a list
+    ``a,b,c`` or a range ``start:stop:count`` of at most N values, and
+    ``loads`` maps each given load to its list of values.
+    """
+    if f is None:
+        return functools.partial(load_options, sweep=sweep)
+
+    @functools.wraps(f)
+    def wrapper(*args: Any, **kwargs: Any) -> Any:
+        loads = {name: kwargs.pop(name) for name, *_ in LOAD_OPTIONS}
+        loads = {name: v for name, v in loads.items() if v is not None}
+        if sweep is None and kwargs.get("kprime") is not None:
+            kwargs["kprime"] = check_kprime_crest(kwargs["kprime"], loads.get("crest", 1.0))
+        return f(*args, loads=loads, **kwargs)
+
+    out: Callable[..., Any] = wrapper
+    for name, option, metavar, text in reversed(LOAD_OPTIONS):
+        kind: ParamType = _load_type(name) if sweep is None else _LoadValues(name, sweep)
+        if sweep is not None:
+            metavar, text = "LIST", text + " A list a,b,c or a range start:stop:count sweeps it."
+        out = click.option(option, name, type=kind, default=None, metavar=metavar,
+                           help=text)(out)
+    return out
 
 
 def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:

@@ -8,10 +8,12 @@ from typing import Any
 import click
 
 from ._common import (
+    LOAD_OPTIONS,
     ParamType,
     RunError,
     gamma_option,
     import_matplotlib,
+    load_options,
     output_path,
     positive_float,
     report_written,
@@ -50,6 +52,10 @@ class _Values(ParamType):
             self.fail(str(exc), param, ctx)
 
 
+#: The list-or-range option type, shared with ``regimemap outcome`` (cli/dynamics.py).
+Values = _Values
+
+
 def _gamma_check(v: float) -> float:
     from ..mechanics.validation import check_gamma
 
@@ -60,6 +66,36 @@ def _kprime_check(v: float) -> float:
     from ..mechanics.validation import check_kprime
 
     return check_kprime(v)
+
+
+def _sweep(kprimes: list[float], loads: dict[str, list[float]], axis: str
+           ) -> tuple[str, list[float], dict[str, Any]]:
+    """What varies along ``axis`` (columns, frames): k' or the one load given several values.
+
+    Returns ``(sweep, values, fixed)``; a usage error if two quantities have several values.
+    """
+    options = {"kprime": "--kprime", **{name: opt for name, opt, *_ in LOAD_OPTIONS}}
+    given: dict[str, list[float]] = {"kprime": kprimes, **loads}
+    several = [name for name, values in given.items() if len(values) > 1]
+    if len(several) > 1:
+        names = " and ".join(options[n] for n in several)
+        raise click.UsageError(
+            f"one quantity per axis: {names} each have several values; the {axis} sweep one "
+            f"of k' or a load, give the others one value each")
+    sweep = several[0] if several else "kprime"
+    fixed = {name: values[0] for name, values in given.items() if name != sweep}
+    return sweep, given[sweep], fixed
+
+
+def _checked_blocks(gammas: list[float], sweep: str, values: list[float], fixed: dict[str, Any]
+                    ) -> list[Any]:
+    """The block of every panel or frame; a usage error when one cannot exist (k' above the crest)."""
+    from ..drawing.atlas import sweep_params
+
+    try:
+        return [sweep_params(g, sweep, v, fixed) for g in gammas for v in values]
+    except ValueError as exc:
+        raise click.UsageError(str(exc)) from None
 
 
 def _figure_output(path: str) -> str:
@@ -95,8 +131,10 @@ def _figure_output(path: str) -> str:
               help="Resolution of PNG output.")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
               help="Output file: .png, .svg or .pdf (written atomically).")
+@load_options(sweep=MAX_PANELS)
 def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: float | None,
-              mu_max: float | None, view: str, dpi: int, output: str) -> None:
+              mu_max: float | None, view: str, dpi: int, output: str,
+              loads: dict[str, list[float]]) -> None:
     """Draw the all-mode map for every GAMMA (rows) and KPRIME (columns) on one page.
 
     The panels share their axes (--share all, the default), so regions can be
@@ -110,38 +148,48 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
     Lists are comma-separated (1,2,3) or ranges start:stop:count with both
     ends included (-1:1:5 is -1, -0.5, 0, 0.5, 1).
 
+    The columns may sweep a load instead of k': give --kprime one value and
+    a list to one of --buoyancy, --uplift, --uplift-ratio, --uplift-arm,
+    --gyration, --crest (one quantity per axis; the others take one value).
+    The page title names the swept quantity and what the panels share.
+
     \b
     Examples:
       regimemap atlas --gamma 1,2,3 --kprime -0.6,-0.2,0,0.4,0.9 -o atlas.svg
       regimemap atlas --gamma 3 --kprime -1:1:5 --share none -o row.png
       regimemap atlas --gamma 0.5:3:6 --kprime -0.4 --mu-max 3 -o slender.pdf
+      regimemap atlas --gamma 0.7 --kprime -0.02 --uplift-ratio 0.52 --buoyancy 0,0.3,0.6 -o b.png
     """
-    n = len(gammas) * len(kprimes)
+    sweep, values, fixed = _sweep(kprimes, loads, "columns")
+    n = len(gammas) * len(values)
     if n > MAX_PANELS:
+        opt = "--kprime" if sweep == "kprime" else "--" + sweep.replace("_", "-")
         raise click.UsageError(
-            f"{len(gammas)} gamma x {len(kprimes)} kprime = {n} panels exceed the limit of "
-            f"{MAX_PANELS}; give fewer values to --gamma or --kprime")
+            f"{len(gammas)} gamma x {len(values)} {sweep} = {n} panels exceed the limit of "
+            f"{MAX_PANELS}; give fewer values to --gamma or {opt}")
+    blocks = _checked_blocks(gammas, sweep, values, fixed)
     fmt = _figure_output(output)
     import_matplotlib()
     from ..drawing.atlas import points_outside, resolve_share
     from ..io.figures import write_atlas
-    from ..mechanics.block import Parameters
 
-    used, ext, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view)
+    used, ext, crammed = resolve_share(gammas, values, share, k_max, mu_max, view=view,
+                                       sweep=sweep, fixed=fixed)
     try:
-        write_atlas(output, gammas, kprimes, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
-                    view=view, dpi=dpi)
+        write_atlas(output, gammas, values, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
+                    view=view, dpi=dpi, sweep=sweep, fixed=fixed)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     report_written(output)
+    label = "k'" if sweep == "kprime" else sweep
     if crammed:
-        names = ", ".join(f"gamma = {g:g}, k' = {kp:g}" for g, kp in crammed[:4])
+        names = ", ".join(f"gamma = {g:g}, {label} = {v:g}" for g, v in crammed[:4])
         click.echo(f"regimemap: note: each panel has its own view; a shared view would cram "
                    f"{names}{' ...' if len(crammed) > 4 else ''} into a corner", err=True)
     if used != "none" and view == "report":
-        lost = [f"gamma = {g:g}, k' = {kp:g}" for i, g in enumerate(gammas)
-                for j, kp in enumerate(kprimes)
-                if points_outside([Parameters(g, kp)], *ext[i][j])]
+        lost = [f"gamma = {g:g}, {label} = {v:g}" for i, g in enumerate(gammas)
+                for j, v in enumerate(values)
+                if points_outside([blocks[i * len(values) + j]], *ext[i][j])]
         _note_outside(lost)
 
 
@@ -164,8 +212,10 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
               help="Top of the mu axis (default: upper quartile of the frames' automatic views).")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE.gif",
               help="Output GIF (written atomically).")
+@load_options(sweep=MAX_FRAMES)
 def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: int,
-                k_max: float | None, mu_max: float | None, output: str) -> None:
+                k_max: float | None, mu_max: float | None, output: str,
+                loads: dict[str, list[float]]) -> None:
     """Animate the map of GAMMA as k' runs through a range (a GIF).
 
     Every frame shows the all-mode map on the same axes (the upper quartile
@@ -174,10 +224,15 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
     report's case, and the frame's k' is written in the top right corner.
     At most 400 frames.
 
+    The frames may sweep a load instead of k': give --kprime one value and a
+    range to one load option (e.g. --uplift-ratio 0:1:21); the swept value is
+    written in the corner, the loads in the title.
+
     \b
     Examples:
       regimemap animate --gamma 3 --kprime -1:1:41 -o sweep.gif
       regimemap animate --gamma 1.5 --kprime -0.8:0:17 --fps 4 --k-max 5 --mu-max 3 -o below.gif
+      regimemap animate --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0:1:21 -o nu.gif
     """
     from pathlib import Path
 
@@ -185,25 +240,27 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
         raise click.BadParameter(f"the animation is a GIF: give a file ending in .gif, got {output!r}",
                                  param_hint="'-o' / '--output'")
     output_path(output, "--output")
+    sweep, values, fixed = _sweep(kprimes, loads, "frames")
+    blocks = _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()
     from ..drawing.atlas import points_outside, sweep_extent
     from ..io.figures import write_animation
-    from ..mechanics.block import Parameters
 
     if k_max is None or mu_max is None:
-        ek, em = sweep_extent(gamma, kprimes, view)
+        ek, em = sweep_extent(gamma, values, view, sweep=sweep, fixed=fixed)
         k_max = ek if k_max is None else k_max
         mu_max = em if mu_max is None else mu_max
     view_name, frame_view = view, (k_max, mu_max)
     try:
-        n, (w, h) = write_animation(output, gamma, kprimes, k_max=k_max, mu_max=mu_max, fps=fps,
-                                    dpi=dpi)
+        n, (w, h) = write_animation(output, gamma, values, k_max=k_max, mu_max=mu_max, fps=fps,
+                                    dpi=dpi, sweep=sweep, fixed=fixed)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     report_written(output, f"{n} frames, {w} x {h} pixels, {fps:g} frames/s")
     if view_name == "report":
-        lost = [f"k' = {p.kprime:g}" for p in
-                points_outside([Parameters(gamma, kp) for kp in kprimes], *frame_view)]
+        label = "k'" if sweep == "kprime" else sweep
+        lost = [f"{label} = {v:g}" for v, p in zip(values, blocks)
+                if points_outside([p], *frame_view)]
         _note_outside(lost)
 
 

@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 import click
 
 from ._common import (
     RunError,
     gamma_option,
     kprime_option,
+    load_options,
     output_path,
     positive_float,
     report_written,
@@ -33,8 +36,10 @@ __all__ = ["export_cmd"]
               default=None, help="Format (default: from the suffix of -o).")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
               help="Output file: .npz, .csv or .json (written atomically).")
+@load_options
 def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float | None,
-               resolution: int, view: str, fmt: str | None, output: str) -> None:
+               resolution: int, view: str, fmt: str | None, output: str,
+               loads: dict[str, Any]) -> None:
     """Export the regime map for GAMMA and KPRIME as data.
 
     \b
@@ -50,11 +55,17 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
     The view defaults to the one 'plot' chooses (--view).  The grid has N x N points,
     N <= 5000 (25 million points at most).
 
+    With loads (--buoyancy ... --crest) the map is the loaded block's: .npz
+    holds the loads and the loaded constants (k_L where lift-off starts), .csv
+    adds the columns gamma, kprime and the loads (as read by 'classify
+    --points'), .json the loads, lift-off's region and the curve LO.
+
     \b
     Examples:
       regimemap export --gamma 3 --kprime 0.4 -o map.npz
       regimemap export --gamma 3 --kprime -0.6 --resolution 201 -o map.csv
       regimemap export --gamma 3 --kprime -0.6 --k-max 4 --mu-max 3 -o map.json
+      regimemap export --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52 -o goda.json
     """
     from ..io.export import export_map, format_of
     from ..mechanics.block import Parameters
@@ -64,7 +75,7 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
     output_path(output, "--output")
-    p = Parameters(gamma, kprime)
+    p = Parameters(gamma, kprime, **loads)
     try:
         export_map(output, p, k_max=k_max, mu_max=mu_max, resolution=resolution, fmt=fmt,
                    view=view)

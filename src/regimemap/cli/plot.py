@@ -20,6 +20,7 @@ from ._common import (
     gamma_option,
     import_matplotlib,
     kprime_option,
+    load_options,
     output_dir,
     output_path,
     positive_float,
@@ -129,12 +130,19 @@ def _num(x: float) -> str:
     return f"{x:g}"
 
 
-def plot_stem(gamma: float, kprime: float) -> str:
+#: Short names of the loads in file names.
+_LOAD_STEM = {"buoyancy": "b", "uplift": "u", "uplift_ratio": "nu", "uplift_arm": "eu",
+              "gyration": "i", "crest": "crest"}
+
+
+def plot_stem(gamma: float, kprime: float, loads: dict[str, Any] | None = None) -> str:
     """The default file name of ``plot`` without suffix: ``regime-g<gamma>-kp<kprime>``.
 
-    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``.
+    Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``;
+    the loads given follow, ``regime-g0.7-kp-0.02-b0.32-nu0.52``.
     """
-    return f"regime-g{_num(gamma)}-kp{_num(kprime)}"
+    extra = "".join(f"-{_LOAD_STEM[k]}{_num(v)}" for k, v in (loads or {}).items())
+    return f"regime-g{_num(gamma)}-kp{_num(kprime)}{extra}"
 
 
 def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> tuple[Path, str]:
@@ -172,8 +180,8 @@ def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
         raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
-def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float
-                 ) -> list[DesignPoint]:
+def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
+                 loads: dict[str, Any] | None = None) -> list[DesignPoint]:
     """Design points from ``--points`` files and ``--point`` specs, for this map."""
     points = list(specs)
     if files:
@@ -191,16 +199,32 @@ def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: floa
     for pt in points:
         same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
             pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
+        same = same and _same_loads(pt, loads or {})
         (keep if same else other).append(pt)
     if other:
         names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in other[:5])
         more = f" and {len(other) - 5} more" if len(other) > 5 else ""
-        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime "
+        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime or other loads "
                    f"and are not drawn on this map: {names}{more}", err=True)
     return keep
 
 
+def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
+    """Whether the loads a point carries (CSV columns) are the map's."""
+    from ..mechanics.block import LOAD_DEFAULTS
+
+    for key, default in LOAD_DEFAULTS.items():
+        own = getattr(pt, key, None)
+        if own is None:
+            continue
+        want = loads.get(key, default)
+        if want is None or not math.isclose(own, want, rel_tol=1e-9, abs_tol=1e-12):
+            return False
+    return True
+
+
 _PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
+          (r"\nu", "nu"),
           ("$", ""), ("{", ""), ("}", ""))
 
 
@@ -237,6 +261,11 @@ Examples:
   regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
   regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
   regimemap plot --gamma 1 --kprime -0.99 --view report
+  regimemap plot --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
+
+With loads (--buoyancy, --uplift, --uplift-ratio, --uplift-arm, --gyration,
+--crest) the map is that of the loaded block: lift-off (LO) appears, the
+title states the loads, and the default file name carries them.
 """
 
 
@@ -279,18 +308,20 @@ Examples:
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
                    "(repeatable); rows with another gamma/kprime are skipped with a warning.")
 @click.option("--show-ambiguity", is_flag=True,
-              help="Also mark where the report's raw regions overlap (where the equations "
-                   "of motion admit several modes; below C only).")
+              help="Also mark where the equations of motion admit several modes, with the "
+                   "mode the map keeps (Section 4.7, below C; least constraint with loads).")
+@load_options
 def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | None,
                  view: str, k_max: float | None, mu_max: float | None, resolution: int, dpi: float,
                  title: str | None, no_curves: bool, no_labels: bool, no_legend: bool,
                  modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
-                 points_files: tuple[str, ...], show_ambiguity: bool) -> None:
+                 points_files: tuple[str, ...], show_ambiguity: bool,
+                 loads: dict[str, Any]) -> None:
     from ..mechanics.block import Parameters
 
-    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime))
-    params = Parameters(gamma, kprime)
-    points = _read_points(points_files, point_specs, params.gamma, params.kprime)
+    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
+    params = Parameters(gamma, kprime, **loads)
+    points = _read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
     from ..drawing.figure import fit_figure, map_figure
     from ..drawing.style import style_context
@@ -342,9 +373,12 @@ Examples:
 
 def _preset_or_usage_error(fid: str) -> Any:
     from ..drawing.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
+    from ..drawing.worked import WORKED
 
     if normalise_id(fid) == MODEL_ID:
         return None
+    if fid.strip().upper() in WORKED:  # the worked figures of the loaded block: W.1, W.2 ...
+        return WORKED[fid.strip().upper()]
     try:
         return get_preset(fid)
     except KeyError:
@@ -375,13 +409,17 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
         from ..drawing.model import model_figure
 
         fig = model_figure(dpi=dpi)
+    elif preset.id.startswith("W"):
+        from ..drawing.worked import render_worked
+
+        fig = render_worked(preset, dpi=dpi)
     else:
         fig = render_preset(preset, dpi=dpi)
     _save(save_figure, fig, path, fmt, dpi)
     _written(path)
 
 
-_FIGURES_HELP = """Draw all 25 figures of the report into a folder.
+_FIGURES_HELP = """Draw all 25 figures of the report (and the worked figures W.1 ...) into a folder.
 
 Writes fig-<ID>.<format> for every figure (2.1, 3.1 ... 3.11, 4.2 ... 4.7b) and
 every format, on every core of the machine (--jobs to choose).  The output
@@ -394,6 +432,11 @@ Examples:
   regimemap figures --out figures --format png,svg
   regimemap figures --out paper --format pdf
   regimemap figures --list
+  regimemap figures --out figures --format png,svg --set all
+
+--set worked draws the worked figures of the loaded block instead (W.1:
+Goda's caisson submerged, W.2: in air, W.3: a slender block lifting off,
+W.4: the uplift ratio swept); --set all draws both.
 """
 
 
@@ -406,28 +449,44 @@ Examples:
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
+@click.option("--set", "which", type=click.Choice(["report", "worked", "all"]), default="report",
+              show_default=True,
+              help="The report's 25 figures, the worked figures of the loaded block "
+                   "(W.1, W.2 ...: submerged caissons), or both.")
 @click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
               help="Worker processes (default: one per core).")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
-                    jobs: int | None) -> None:
+                    which: str, jobs: int | None) -> None:
     from ..drawing.presets import PRESETS
+    from ..drawing.worked import WORKED
 
+    report = {} if which == "worked" else PRESETS
     if list_only:
-        click.echo(f"{MODEL_ID:5s} the model: the block (half width B, half height H), the force "
-                   "F at h = k'H above C, the reactions f_x, f_y at xi, the rotation theta")
-        for p in PRESETS.values():
+        if which != "worked":
+            click.echo(f"{MODEL_ID:5s} the model: the block (half width B, half height H), the "
+                       "force F at h = k'H above C, the reactions f_x, f_y at xi, the rotation theta")
+        for p in report.values():
             what = "final map" if not p.raw else "raw region of " + p.modes[0].label
             click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
                        f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
                        f"{_plain(p.caption)}")
+        for w in WORKED.values() if which != "report" else ():
+            g, kp = _num(w.params.gamma), _num(w.params.kprime)
+            what = "atlas of final maps" if w.sweep else "final map"
+            kind = 'loaded' if w.params.loaded else w.params.case.value
+            click.echo(f"{w.id:5s} gamma={g:4s} kprime={kp:6s} {kind:8s} {what:24s} [worked]  "
+                       f"{_plain(w.title.splitlines()[0].split('  ', 1)[1])}")
         return
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
     from ..io.figures import write_figures
 
+    ids = [] if which == "worked" else [MODEL_ID, *PRESETS]
+    if which != "report":
+        ids += list(WORKED)
     try:
-        written = write_figures(folder, [MODEL_ID, *PRESETS], formats, dpi, jobs=jobs)
+        written = write_figures(folder, ids, formats, dpi, jobs=jobs)
     except OSError as exc:
         where = f"cannot write {exc.filename}" if exc.filename else "cannot write a figure"
         raise RunError(f"{where}: {exc.strerror or exc}") from None

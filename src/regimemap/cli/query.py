@@ -9,7 +9,15 @@ from typing import Any
 
 import click
 
-from ._common import ParamType, RunError, gamma_option, kprime_option, output_path, report_written
+from ._common import (
+    ParamType,
+    RunError,
+    gamma_option,
+    kprime_option,
+    load_options,
+    output_path,
+    report_written,
+)
 
 __all__ = ["classify_cmd"]
 
@@ -50,8 +58,10 @@ class _NonNegative(ParamType):
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
               help="With --points: write to FILE (atomically) instead of standard output; "
                    "a .json suffix selects JSON.")
+@load_options
 def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
-                 points_file: str | None, as_json: bool, output: str | None) -> None:
+                 points_file: str | None, as_json: bool, output: str | None,
+                 loads: dict[str, Any]) -> None:
     """Which motion starts at a design point (k, mu), and how far it is from changing.
 
     For one point prints the mode of the map (Section 4.7 of the report below
@@ -69,15 +79,23 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     kprime use --gamma/--kprime (required only then).  Output is CSV (or
     JSON with --json or an -o FILE.json).
 
+    With loads (--buoyancy ... --crest, or the CSV columns buoyancy, uplift,
+    uplift_ratio, uplift_arm, gyration, crest, which take precedence) the
+    block is the loaded one: lift-off (LO) is a mode, the report's lines
+    move, and where several modes are admissible the map keeps the one of
+    least constraint ("chosen by least constraint").  The CSV output then
+    adds the loads and chosen_by.
+
     \b
     Examples:
       regimemap classify --gamma 3 --kprime 0.4 --k 0.5 --mu 0.8
       regimemap classify --gamma 3 --kprime -0.6 --k 3.5 --mu 2.3 --json
       regimemap classify --points caissons.csv --gamma 3 -o results.csv
       regimemap classify --points caissons.csv -o results.json
+      regimemap classify --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52 --k 0.28 --mu 0.6
     """
     from ..io.points import DesignPoint, read_points_table
-    from ..io.tables import CSV_COLUMNS, format_result, result_json, result_row
+    from ..io.tables import columns_for, format_result, result_json, result_row
     from ..maps.query import query_points
 
     if points_file is None:
@@ -92,7 +110,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
                 "--k (>= 0) and --mu (>= 0), or --points FILE.csv")
         assert k is not None and mu is not None
         try:
-            res = query_points([DesignPoint(k, mu)], gamma=gamma, kprime=kprime)[0]
+            res = query_points([DesignPoint(k, mu)], gamma=gamma, kprime=kprime, **loads)[0]
         except ValueError as exc:  # pragma: no cover - inputs are validated above
             raise RunError(str(exc)) from None
         if as_json:
@@ -123,7 +141,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     if output is not None:
         output_path(output, "--output")
     try:
-        results = query_points(pts, gamma=gamma, kprime=kprime)
+        results = query_points(pts, gamma=gamma, kprime=kprime, **loads)
     except ValueError as exc:
         raise RunError(str(exc)) from None
     if to_json:
@@ -133,7 +151,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
         buf = io.StringIO()
         import csv  # only when writing CSV: keeps start-up light
 
-        w = csv.DictWriter(buf, fieldnames=list(CSV_COLUMNS), lineterminator="\n")
+        w = csv.DictWriter(buf, fieldnames=list(columns_for(results)), lineterminator="\n")
         w.writeheader()
         for r in results:
             w.writerow(result_row(r))

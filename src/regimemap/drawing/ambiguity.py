@@ -4,7 +4,11 @@
 :func:`regimemap.ambiguity.ambiguous_regions` with a bold dashed line and a
 light stipple - no fill, so the map's own colours stay visible underneath -
 and writes the admissible set with the mode Section 4.7 keeps, e.g.
-"{SL, RO, SRO-} -> SL (§4.7)".  A legend entry "several modes admissible" is
+"{SL, RO, SRO-} -> SL (§4.7)", or with loads the mode of least constraint,
+"{LO, RO, SRO-} -> LO (least constraint)".  Both rules are conventions of
+rigid contact, not consequences of it (a compliant-contact engine started RO,
+not SL, at 40 of 40 sampled points of the {SL, RO, SRO-} sliver); the overlay
+shows where the map's mode is such a convention.  A legend entry "several modes admissible" is
 added to the axes' legend.  Where no part is in view (always above C) nothing
 is drawn and an empty list is returned.
 

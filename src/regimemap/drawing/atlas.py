@@ -24,8 +24,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..maps.describe import LOAD_SYMBOLS, format_value, loads_text
 from ..mechanics.block import Parameters
-from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.validation import check_gamma, check_kprime
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -51,7 +52,37 @@ __all__ = [
     "draw_frame",
     "frame_figure",
     "FRAME_SIZE",
+    "SWEEPS",
+    "sweep_params",
 ]
+
+#: What the columns of an atlas or the frames of an animation may sweep: k' or a load,
+#: with its symbol (mathtext) and what it is.
+SWEEPS: dict[str, tuple[str, str]] = {
+    "kprime": ("k'", "force height h/H"),
+    **{name: (tex, what) for name, (_, tex, what) in LOAD_SYMBOLS.items()},
+}
+
+
+def sweep_params(gamma: float, sweep: str, value: float,
+                 fixed: dict[str, Any] | None = None) -> Parameters:
+    """The block of one panel or frame: ``gamma``, ``sweep = value`` and the ``fixed`` rest.
+
+    ``fixed`` holds ``kprime`` (when the sweep is a load) and the loads that do not vary.
+    Raises ValueError (from :class:`Parameters`) for a value out of range.
+    """
+    if sweep not in SWEEPS:
+        raise ValueError(f"sweep must be one of {', '.join(SWEEPS)}, got {sweep!r}")
+    kw = dict(fixed or {})
+    kw[sweep] = value
+    kp = kw.pop("kprime", 0.0)
+    return Parameters(gamma, kp, **kw)
+
+
+def _sweep_text(sweep: str, value: float) -> str:
+    """``$k' = 0.4$``, ``$\beta = 0.3$``: the swept quantity of a panel or frame (mathtext)."""
+    sym = SWEEPS[sweep][0]
+    return rf"${sym} = {format_value(value) if sweep != 'kprime' else _fmt(value)}$"
 
 #: Largest number of panels of an atlas (rows x columns).
 MAX_PANELS = 48
@@ -175,7 +206,8 @@ CRAMMED = 3.0
 
 def resolve_share(gammas: Sequence[float], kprimes: Sequence[float], share: str = "all",
                   k_max: float | None = None, mu_max: float | None = None,
-                  view: str = "designer"
+                  view: str = "designer", *, sweep: str = "kprime",
+                  fixed: dict[str, Any] | None = None
                   ) -> tuple[str, list[list[tuple[float, float]]], list[tuple[float, float]]]:
     """The sharing an atlas can afford, its views, and the panels sharing would cram.
 
@@ -189,8 +221,10 @@ def resolve_share(gammas: Sequence[float], kprimes: Sequence[float], share: str 
     -------
     (share, extents, crammed)
     """
-    own = atlas_extents(gammas, kprimes, "none", k_max, mu_max, view=view)
-    ext = atlas_extents(gammas, kprimes, share, k_max, mu_max, view=view)
+    own = atlas_extents(gammas, kprimes, "none", k_max, mu_max, sweep=sweep, fixed=fixed,
+                        view=view)
+    ext = atlas_extents(gammas, kprimes, share, k_max, mu_max, sweep=sweep, fixed=fixed,
+                        view=view)
     if share == "none" or (k_max is not None and mu_max is not None):
         return share, ext, []
     crammed = [(g, kp) for i, g in enumerate(gammas) for j, kp in enumerate(kprimes)
@@ -202,17 +236,20 @@ def resolve_share(gammas: Sequence[float], kprimes: Sequence[float], share: str 
 
 def atlas_extents(gammas: Sequence[float], kprimes: Sequence[float], share: str = "all",
                   k_max: float | None = None, mu_max: float | None = None, *,
+                  sweep: str = "kprime", fixed: dict[str, Any] | None = None,
                   view: str = "designer") -> list[list[tuple[float, float]]]:
     """The view (k_max, mu_max) of every panel: rows gamma, columns k'.
 
     ``share="all"``: one view for every panel, :func:`shared_extent` of all
     panels' automatic views (:func:`regimemap.view.auto_extent`); ``"row"``:
     one per row; ``"none"``: each panel's own automatic view.  A given
-    ``k_max`` or ``mu_max`` overrides the automatic value everywhere.
+    ``k_max`` or ``mu_max`` overrides the automatic value everywhere.  The
+    columns are the values of ``sweep`` (k' by default, or a load; see
+    :func:`sweep_params`).
     """
     if share not in SHARE:
         raise ValueError(f"share must be one of {', '.join(SHARE)}, got {share!r}")
-    own = [[_extent_of(Parameters(g, kp), view) for kp in kprimes] for g in gammas]
+    own = [[_extent_of(sweep_params(g, sweep, v, fixed), view) for v in kprimes] for g in gammas]
     if share == "all":
         km, mm = shared_extent([e for row in own for e in row])
         own = [[(km, mm) for _ in row] for row in own]
@@ -256,8 +293,24 @@ def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
     return key_handles(modes, dotted_label=r"dotted line $\mu = k|k'|$ (4.22)" if dotted else None)
 
 
-def _panel_title(g: float, kp: float) -> str:
-    return rf"$\gamma = {_fmt(g)}$, $k' = {_fmt(kp)}$"
+def _panel_title(g: float, kp: float, sweep: str = "kprime") -> str:
+    return rf"$\gamma = {_fmt(g)}$, " + _sweep_text(sweep, kp)
+
+
+def _fixed_text(sweep: str, fixed: dict[str, Any] | None) -> str:
+    """What the panels or frames share besides gamma: k' (when a load is swept) and the loads."""
+    if not fixed:
+        return ""
+    parts = [_sweep_text(name, v) for name, v in fixed.items()
+             if name != sweep and v is not None and not (name == "uplift_arm" and not (
+                 fixed.get("uplift") or fixed.get("uplift_ratio") or sweep.startswith("uplift")))]
+    return ", ".join(parts)
+
+
+def _key_modes(datas: Sequence[Any]) -> tuple[Mode, ...]:
+    """The modes shown by any of several maps (their MapData), in code order."""
+    shown = {m for d in datas for m, polys in d.polygons.items() if any(len(q) >= 3 for q in polys)}
+    return tuple(m for m in LOADED_MAP_MODES if m in shown)
 
 
 def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
@@ -265,14 +318,21 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                  panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
                  dpi: float = ATLAS_DPI, curves: bool = True, labels: bool = True,
                  extents: Sequence[Sequence[tuple[float, float]]] | None = None,
-                 view: str = "designer") -> Figure:
-    """Small multiples of the all-mode map: rows gamma, columns k'.
+                 sweep: str = "kprime", fixed: dict[str, Any] | None = None,
+                 view: str = "designer", tidy: bool = True) -> Figure:
+    """Small multiples of the all-mode map: rows gamma, columns k' (or a load).
 
     Parameters
     ----------
     gammas, kprimes : sequence of float
-        Aspect ratios (rows) and force heights (columns); at most
-        :data:`MAX_PANELS` panels in all.
+        Aspect ratios (rows) and the values of the columns, force heights k'
+        by default; at most :data:`MAX_PANELS` panels in all.
+    sweep : str
+        What the columns vary: ``"kprime"`` or a load of :data:`SWEEPS`
+        (``"buoyancy"``, ``"uplift_ratio"`` ...).
+    fixed : dict, optional
+        What every panel shares: ``kprime`` when a load is swept, and the
+        other loads (keywords of :class:`Parameters`).
     share : {"all", "row", "none"}
         Share the axes over the whole figure (default; tick labels only on
         the outer panels), within each row, or not at all
@@ -288,6 +348,10 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         their own, and the suptitle says so).
     view : {"designer", "report"}
         The panels' own views (:func:`regimemap.maps.designer_view.view_extent`).
+    tidy : bool
+        Mark the points off view and move any text that collides
+        (:func:`regimemap.drawing.tidy.tidy_figure`; default).  False draws the
+        panels as the report's figures are drawn (the worked figures).
     samples : int
         Samples of k per panel.
     dpi : float
@@ -310,12 +374,14 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
+    from ..maps.mapdata import compute_map
     from .key import key_legend
     from .mapplot import draw_map
     from .style import style_context
 
     gammas = [check_gamma(g) for g in gammas]
-    kprimes = [check_kprime(k) for k in kprimes]
+    if sweep == "kprime":
+        kprimes = [check_kprime(k, (fixed or {}).get("crest", 1.0)) for k in kprimes]
     nr, nc = len(gammas), len(kprimes)
     if nr == 0 or nc == 0:
         raise ValueError("an atlas needs at least one gamma and one kprime")
@@ -323,16 +389,34 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         raise ValueError(f"{nr} x {nc} = {nr * nc} panels exceed the limit of {MAX_PANELS}")
     crammed: list[tuple[float, float]] = []
     if extents is None:
-        share, extents, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view)
+        share, extents, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view,
+                                                sweep=sweep, fixed=fixed)
     pw, ph = panel_size
-    handles = _legend_handles(MAP_MODES, dotted=curves and min(kprimes) < 0.0)
+    blocks = [[sweep_params(g, sweep, v, fixed) for v in kprimes] for g in gammas]
+    loaded = any(p.loaded for row in blocks for p in row)
+    datas: list[list[Any]] = [[None] * nc for _ in range(nr)]
+    if loaded:  # the key lists the modes the panels show (lift-off ...): compute them first
+        datas = [[compute_map(p, k_max=extents[i][j][0], mu_max=extents[i][j][1],
+                              samples=samples, curves=curves) for j, p in enumerate(row)]
+                 for i, row in enumerate(blocks)]
+        from .key import key_handles
+
+        flat = [d for row in datas for d in row]
+        dotted = [d.curves["dotted"].label for d in flat if "dotted" in d.curves]
+        handles = key_handles(_key_modes(flat),
+                              dotted_label=("dotted line " + dotted[0]) if dotted else None)
+    else:
+        handles = _legend_handles(MAP_MODES, dotted=curves and min(p.kprime for row in blocks
+                                                                    for p in row) < 0.0)
     key_cols = min(4, max(2, nc))
     key_rows = -(-len(handles) // key_cols)
     # the key below the panels: 0.1 in from the edge, ~0.2 in a row, then the
     # bottom panels' tick labels and k
-    left, right, top, bottom = 0.62, 0.25, 0.7 + (0.18 if crammed else 0.0), 0.62 + 0.2 * key_rows
+    left, right, top, bottom = (0.62, 0.25 if tidy else 0.2, 0.7 + (0.18 if crammed else 0.0),
+                                0.62 + 0.2 * key_rows)
     # room between panels for the tick labels and mu of the panel on the right
-    wspace, hspace = (0.3 if share == "all" else 0.72), (0.42 if share == "all" else 0.6)
+    wspace, hspace = (0.3 if share == "all" else (0.72 if tidy else 0.5)), (
+        0.42 if share == "all" else 0.6)
     fw = left + right + nc * pw + (nc - 1) * wspace
     fh = top + bottom + nr * ph + (nr - 1) * hspace
     with style_context():
@@ -343,6 +427,7 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         arts = []
         for i, g in enumerate(gammas):
             for j, kp in enumerate(kprimes):
+                block = blocks[i][j]
                 x0 = (left + j * (pw + wspace)) / fw
                 y0 = (bottom + (nr - 1 - i) * (ph + hspace)) / fh
                 kw: dict[str, Any] = {}
@@ -356,9 +441,9 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                 if j == 0:
                     row_first = ax
                 km, mm = extents[i][j]
-                art = draw_map(ax, Parameters(g, kp), k_max=km, mu_max=mm, legend=False,
-                               title=_panel_title(g, kp), samples=samples, curves=curves,
-                               labels=labels)
+                art = draw_map(ax, block, k_max=km, mu_max=mm, legend=False,
+                               title=_panel_title(g, kp, sweep), samples=samples, curves=curves,
+                               labels=labels, data=datas[i][j], tidy=tidy)
                 # the curves' names (mu*(k), mu = k|k'| ...) crowd a small panel and
                 # spill into the next one: the legend and the full map name them
                 for t in art.curve_labels.values():
@@ -385,18 +470,25 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         key_legend(fig, handles, loc="lower center", ncols=key_cols,
                    bbox_to_anchor=(0.5, 0.1 / fh), fontsize=8, frameon=False,
                    handleheight=1.1, columnspacing=1.5)
-        title = (r"Regime maps: rows $\gamma = H/B$, columns $k' = h/H$"
+        columns = r"$k' = h/H$" if sweep == "kprime" else (
+            f"${SWEEPS[sweep][0]}$ ({SWEEPS[sweep][1]})")
+        title = (rf"Regime maps: rows $\gamma = H/B$, columns {columns}"
                  + ("" if share == "none" else
                     f" (axes shared {'across the figure' if share == 'all' else 'in each row'})"))
+        shared_text = _fixed_text(sweep, fixed) if loaded or sweep != "kprime" else ""
+        if shared_text:
+            title += "\n" + shared_text
         if crammed:
-            names = "; ".join(rf"$\gamma = {_fmt(g)}$, $k' = {_fmt(kp)}$" for g, kp in crammed[:3])
+            names = "; ".join(rf"$\gamma = {_fmt(g)}$, {_sweep_text(sweep, v)}"
+                              for g, v in crammed[:3])
             more = f" and {len(crammed) - 3} more" if len(crammed) > 3 else ""
             title += ("\neach panel has its own view: a shared one would cram " + names + more
                       + " into a corner")
         fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / fh, va="top")
-        from .tidy import tidy_figure
+        if tidy:
+            from .tidy import tidy_figure
 
-        tidy_figure(fig, arts)
+            tidy_figure(fig, arts)
     fig._regimemap_maps = arts  # type: ignore[attr-defined]  # what each panel drew
     return fig
 
@@ -404,10 +496,11 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
 # --------------------------------------------------------------------------------------
 # animation
 # --------------------------------------------------------------------------------------
-def sweep_extent(gamma: float, kprimes: Sequence[float], view: str = "designer"
+def sweep_extent(gamma: float, kprimes: Sequence[float], view: str = "designer", *,
+                 sweep: str = "kprime", fixed: dict[str, Any] | None = None
                  ) -> tuple[float, float]:
     """One view for every frame: :func:`shared_extent` of the frames' own views."""
-    return shared_extent([_extent_of(Parameters(gamma, kp), view) for kp in kprimes])
+    return shared_extent([_extent_of(sweep_params(gamma, sweep, v, fixed), view) for v in kprimes])
 
 
 def _pillow_writer(fps: float) -> PillowWriter:
@@ -427,7 +520,8 @@ def _pillow_writer(fps: float) -> PillowWriter:
 
 
 def check_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float],
-                    fps: float) -> None:
+                    fps: float, *, sweep: str = "kprime", fixed: dict[str, Any] | None = None
+                    ) -> None:
     """Refuse an animation that cannot be written (before any file is touched).
 
     Raises
@@ -435,14 +529,15 @@ def check_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     ValueError
         Naming the parameter and its range, or a file that is not ``.gif``.
     """
-    _check_frames(gamma, kprimes, fps)
+    _check_frames(gamma, kprimes, fps, sweep, fixed)
     if Path(path).suffix.lower() != ".gif":
         raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
 
 
-def _check_frames(gamma: float, kprimes: Sequence[float], fps: float) -> None:
+def _check_frames(gamma: float, kprimes: Sequence[float], fps: float, sweep: str = "kprime",
+                  fixed: dict[str, Any] | None = None) -> None:
     check_gamma(gamma)
-    kps = [check_kprime(k) for k in kprimes]
+    kps = [sweep_params(gamma, sweep, k, fixed) for k in kprimes]
     if not kps:
         raise ValueError("an animation needs at least one kprime")
     if len(kps) > MAX_FRAMES:
@@ -488,20 +583,27 @@ def frame_figure(figsize: tuple[float, float] | None = None, dpi: float = ANIMAT
 
 
 def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float, mu_max: float,
-               *, modes: Sequence[Mode] = MAP_MODES, samples: int = SAMPLES) -> Any:
+               *, modes: Sequence[Mode] = MAP_MODES, samples: int = SAMPLES,
+               block: Parameters | None = None, swept: str | None = None,
+               data: Any = None) -> Any:
     """Draw one frame of an animation on ``ax`` (cleared first); return its MapArtists.
 
-    The caption states the report's case above the map, the frame's gamma and
-    k' sit in a box beside it (outside the map), and the key below lists the
-    modes, sized to the frame; then :func:`regimemap.drawing.tidy.tidy_figure`
-    keeps every text clear of the others.
+    The caption states the report's case (or the block's loads) above the map,
+    the frame's gamma and k' (or ``swept``, the swept load, in mathtext) sit in
+    a box beside it (outside the map), and the key below lists the modes, sized
+    to the frame; then :func:`regimemap.drawing.tidy.tidy_figure` keeps every
+    text clear of the others.  ``block`` is the frame's block with loads
+    (default ``Parameters(gamma, kprime)``) and ``data`` its precomputed map.
     """
     from .key import key_legend
     from .mapplot import draw_map
     from .style import style_context
     from .tidy import fit_title, tidy_figure
 
-    p = Parameters(gamma, kprime)
+    p = Parameters(gamma, kprime) if block is None else block
+    loads = loads_text(p, tex=True)
+    caption = f"All modes, block with loads ({loads})" if loads else f"All modes, {p.case.tex}"
+    corner = rf"$\gamma = {_fmt(gamma)}$, " + (rf"$k' = {kprime:+.3f}$" if swept is None else swept)
     with style_context():
         ax.cla()
         for leg in list(fig.legends):
@@ -509,7 +611,7 @@ def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float,
         for t in list(fig.texts):
             t.remove()
         art = draw_map(ax, p, k_max=k_max, mu_max=mu_max, legend=False, samples=samples,
-                       title=f"All modes, {p.case.tex}")
+                       title=caption, data=data)
         if art.title is not None:
             art.title.set_fontsize(8.5)
         for t in art.curve_labels.values():
@@ -518,7 +620,7 @@ def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float,
                    bbox_to_anchor=(0.5, 0.02), fontsize=8.0, frameon=False, handleheight=1.0,
                    columnspacing=1.2, borderaxespad=0.0)
         box = fig.text(1.0 - 0.08 / fig.get_size_inches()[0], 1.0 - 0.06 / fig.get_size_inches()[1],
-                       rf"$\gamma = {_fmt(gamma)}$, $k' = {kprime:+.3f}$", ha="right", va="top",
+                       corner, ha="right", va="top",
                        fontsize=9.5,
                        bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "0.3", "lw": 0.6})
         box.set_gid("frame-kprime")
@@ -534,7 +636,9 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
                     k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
                     dpi: float = ANIMATION_DPI, figsize: tuple[float, float] | None = None,
                     samples: int = SAMPLES,
-                    progress: Callable[[int, int], None] | None = None) -> tuple[int, tuple[int, int]]:
+                    progress: Callable[[int, int], None] | None = None,
+                    sweep: str = "kprime", fixed: dict[str, Any] | None = None
+                    ) -> tuple[int, tuple[int, int]]:
     """Write a GIF of the map of ``gamma`` as k' runs through ``kprimes``.
 
     Parameters
@@ -544,7 +648,8 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     gamma : float
         Aspect ratio H/B.
     kprimes : sequence of float
-        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1]).
+        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1]), or the
+        value of ``sweep`` in each frame.
     k_max, mu_max : float, optional
         The view of every frame (default :func:`sweep_extent`; the axes are
         the same in every frame).
@@ -558,6 +663,9 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
         Samples of k per frame.
     progress : callable, optional
         Called as ``progress(i, n)`` after frame i of n.
+    sweep, fixed : str, dict
+        What the frames vary (k' or a load) and what they share, as in
+        :func:`atlas_figure`.
 
     Returns
     -------
@@ -570,21 +678,30 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     the case, a box outside the map gives gamma and k', and the key lists all
     six modes in every frame, so it does not jump.
     """
+    from ..maps.mapdata import compute_map
     from .style import style_context
 
-    _check_frames(gamma, kprimes, fps)
+    _check_frames(gamma, kprimes, fps, sweep, fixed)
     g = check_gamma(gamma)
-    kps = [check_kprime(k) for k in kprimes]
+    kps = [check_kprime(k) for k in kprimes] if sweep == "kprime" else [float(v) for v in kprimes]
+    blocks = [sweep_params(g, sweep, v, fixed) for v in kps]
     if k_max is None or mu_max is None:
-        ek, em = sweep_extent(g, kps)
+        ek, em = sweep_extent(g, kps, sweep=sweep, fixed=fixed)
         k_max = ek if k_max is None else k_max
         mu_max = em if mu_max is None else mu_max
     fig, ax = frame_figure(figsize, dpi)
     writer = _pillow_writer(fps)
+    modes: Sequence[Mode] = MAP_MODES
+    datas: list[Any] = [None] * len(blocks)
+    if any(p.loaded for p in blocks):  # one key for every frame: the modes any frame shows
+        datas = [compute_map(p, k_max=k_max, mu_max=mu_max, samples=samples) for p in blocks]
+        modes = _key_modes(datas)
     with style_context():
         writer.setup(fig, str(path), dpi=dpi)
         for i, kp in enumerate(kps):
-            draw_frame(fig, ax, g, kp, k_max, mu_max, samples=samples)
+            draw_frame(fig, ax, g, blocks[i].kprime, k_max, mu_max, modes=modes, samples=samples,
+                       block=blocks[i], swept=_sweep_text(sweep, kp) if sweep != "kprime" else None,
+                       data=datas[i])
             writer.grab_frame()
             if progress is not None:
                 progress(i + 1, len(kps))

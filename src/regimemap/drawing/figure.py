@@ -141,7 +141,7 @@ def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None
     with style_context():
         artists = draw_map(ax, params, include=include, **kwargs)
         if points:
-            artists.extra.extend(draw_design_points(ax, points))
+            artists.extra.extend(draw_design_points(ax, points, tagged=tidy))
         if figsize is None:
             fit_figure(fig, ax)
         if tidy:

@@ -25,11 +25,19 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..maps.describe import loads_text
 from ..maps.geometry import DEFAULT_SAMPLES
 from ..maps.mapdata import MapData, compute_map
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
-from .placement import curve_label_anchor, interior_point, label_anchor, leader_label_anchor, view_points
+from .placement import (
+    curve_label_anchor,
+    interior_point,
+    label_anchor,
+    leader_label_anchor,
+    overlaps,
+    view_points,
+)
 from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol, text_size
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -121,7 +129,9 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
     """A caption-like title: what is shown, the report's case, and (gamma, k').
 
     Example: ``All modes, case 1, 0 <= k' <= (1+g^2)/(3g^2), a >= 0`` over
-    ``(gamma = 3, k' = 0.2)``, in mathtext.
+    ``(gamma = 3, k' = 0.2)``, in mathtext.  A block with loads is titled with
+    its loads instead of the case: ``All modes, block with loads`` over
+    ``(gamma = 0.7, k' = -0.018; beta = 0.318, nu = 0.524, e_u = 1/3)``.
     """
     modes = tuple(MAP_MODES if modes is None else modes)
     if raw and len(modes) == 1:
@@ -134,6 +144,10 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
             m.tex for m in modes)
     else:
         what = "Modes " + ", ".join(m.tex for m in modes)
+    loads = loads_text(params, tex=True)
+    if loads:  # a loaded block: the loads, not the report's case (which ignores them)
+        return (f"{what}, block with loads\n"
+                rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$; {loads})")
     return (f"{what}, {params.case.tex}\n"
             rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$)")
 
@@ -298,7 +312,8 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
             from ..maps.designer_view import view_extent
 
             modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
-            modes = modes_t
+            if modes is not None:  # None: every mode the block shows (LO with loads)
+                modes = modes_t
             raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
             k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
                                         mu_max=mu_max)
@@ -375,10 +390,13 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
             dx, dy = (4.0, -2.0) if at_top else (-3.0, 4.0)
             ha, va = ("left", "top") if at_top else ("right", "bottom")
             text = _point_text(name)
+            end_box = frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va)
+            if overlaps(end_box, obstacles):
+                continue  # a far end named on top of a point's name (E and B of a loaded map)
             out.point_labels[name] = ax.annotate(
                 text, (k, mu), xytext=(dx, dy), textcoords="offset points", ha=ha, va=va,
                 fontsize=_POINT_FS, fontstyle="italic", zorder=_Z_LABEL, annotation_clip=False)
-            obstacles.append(frame.box(k, mu, dx, dy, text_size(text, _POINT_FS), ha, va))
+            obstacles.append(end_box)
         if tidy:
             out.off_view = _mark_off_view(ax, params, k_max, mu_max, obstacles, frame)
     lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if curves else []
@@ -621,8 +639,8 @@ def _mark_off_view(ax: Axes, params: Parameters, k_max: float, mu_max: float,
 # -- design points ---------------------------------------------------------------------------
 
 
-def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: float = 8.5
-                       ) -> list[Artist]:
+def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: float = 8.5,
+                       tagged: bool = True) -> list[Artist]:
     """Mark design points on a map: a black dot with a white rim and the point's name.
 
     Black with a white rim and a white-backed name reads on every fill colour,
@@ -633,6 +651,10 @@ def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: flo
     ax : Axes
     points : sequence of DesignPoint
         Points (k, mu, name); unnamed points get no text.
+    tagged : bool
+        Give the artists the ids :func:`regimemap.drawing.tidy.tidy_figure`
+        knows them by (``design-dots``, ``design-name``; default).  False
+        draws them as the report's figures are drawn.
 
     Returns
     -------
@@ -647,7 +669,8 @@ def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: flo
     (dots,) = ax.plot(ks, mus, linestyle="none", marker="o", markersize=6.0,
                       markerfacecolor="black", markeredgecolor="white", markeredgewidth=1.2,
                       zorder=_Z_DESIGN, label="_design points")
-    dots.set_gid("design-dots")
+    if tagged:
+        dots.set_gid("design-dots")
     artists.append(dots)
     for pt in points:
         if not pt.name:
@@ -657,6 +680,7 @@ def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: flo
             va="bottom", fontsize=fontsize, zorder=_Z_DESIGN,
             bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.2", "lw": 0.5,
                   "alpha": 0.9})
-        name.set_gid("design-name")
+        if tagged:
+            name.set_gid("design-name")
         artists.append(name)
     return artists

@@ -21,6 +21,7 @@ __all__ = [
     "interior_point",
     "label_anchor",
     "leader_label_anchor",
+    "overlaps",
     "view_points",
 ]
 
@@ -33,6 +34,11 @@ Box = tuple[float, float, float, float]
 def _overlaps(box: Box, others: Sequence[Box]) -> bool:
     x0, y0, x1, y1 = box
     return any(x0 < b[2] and b[0] < x1 and y0 < b[3] and b[1] < y1 for b in others)
+
+
+def overlaps(box: Box, others: Sequence[Box]) -> bool:
+    """Whether ``box`` overlaps any of ``others`` (boxes in view fractions)."""
+    return _overlaps(box, others)
 
 
 def _polygon_columns(polygon: np.ndarray, k_max: float, mu_max: float, columns: int

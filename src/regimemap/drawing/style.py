@@ -21,12 +21,15 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = [
     "CONSTRUCTION",
+    "FLIGHT_STYLE",
+    "OUTCOME_STYLE",
     "DOTTED",
     "HATCH_LW",
     "LINE_LW",
     "MODE_STYLE",
     "ModeStyle",
     "mode_symbol",
+    "phase_style",
     "style_context",
     "text_size",
 ]
@@ -63,9 +66,35 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
     Mode.SRO_MINUS: ModeStyle("#77AADD", "--"),  # light blue
     Mode.SRO_PLUS: ModeStyle("#44BB99", "||"),  # mint
     Mode.SRO_PRIME_MINUS: ModeStyle("#FFAABB", "xx"),  # pink
-    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # never on a map
-    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never on a map
+    Mode.RO_PRIME: ModeStyle("#BBCC33", "++"),  # pear: loaded blocks only (uplift near O)
+    Mode.SRO_PRIME_PLUS: ModeStyle("#AAAA00", "oo"),  # never chosen on a map
+    Mode.LO: ModeStyle("#99DDFF", "**"),  # light cyan: lift-off, loaded blocks only
 }
+
+#: Fill style of each outcome category of :func:`regimemap.dynamics.outcome_map` (codes
+#: :data:`regimemap.dynamics.REST` ... :data:`~regimemap.dynamics.OVERTURN`).  The motions take
+#: the colour and hatch of the map's mode they are made of (rest as RE, slide only as SL, rock
+#: only as RO, slide-rock as SRO-), so a reader carries the colours from one figure to the
+#: other; overturning is Paul Tol's *muted* purple, darker than all of them (it stands out in
+#: greyscale too), with a light crossed hatch.
+#: (The codes are written out so that drawing a regime map does not import regimemap.dynamics;
+#: tests/dynamics/test_outcome_drawing.py checks them against it.)
+OUTCOME_STYLE: dict[int, ModeStyle] = {
+    0: MODE_STYLE[Mode.RE],  # REST
+    1: MODE_STYLE[Mode.SL],  # SLIDE
+    2: MODE_STYLE[Mode.RO],  # ROCK
+    3: MODE_STYLE[Mode.SRO_MINUS],  # SLIDE_ROCK
+    4: ModeStyle("#AA4499", "xx", (1.0, 1.0, 1.0, 0.5)),  # OVERTURN
+}
+#: Style of free flight (no corner in contact), the one phase of a motion that is no map mode.
+FLIGHT_STYLE = ModeStyle("#FFFFFF", "oo")
+
+
+def phase_style(code: int) -> ModeStyle:
+    """The fill of a phase of a motion (:class:`regimemap.dynamics.Phase` code): its mode's, or
+    :data:`FLIGHT_STYLE`."""
+    return MODE_STYLE[Mode(code)] if 0 <= code < len(Mode) else FLIGHT_STYLE
+
 
 #: Line widths (points) of hatches and of boundary curves.
 HATCH_LW = 0.45

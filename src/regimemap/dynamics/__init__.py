@@ -3,34 +3,35 @@
 numpy only.  :func:`simulate` steps a batch of runs with a Moreau-Jean scheme
 (:mod:`regimemap.dynamics.stepper`); :class:`Pulse` gives the force histories;
 :func:`outcome_map` sweeps two inputs.  See docs/dynamics.md.
+
+Names are imported on first use (PEP 562), so that the command line can read
+the input limits (:mod:`regimemap.dynamics.limits`) without importing the stepper.
 """
 
 from __future__ import annotations
 
-from .block import Block, G, frequency_parameter, size_R, slenderness
-from .outcome import (
-    SWEEPABLE,
-    OutcomeMap,
-    from_dimensionless,
-    outcome_map,
-    to_dimensionless,
-)
-from .pulses import SHAPES, Pulse
-from .stepper import (
-    CATEGORY_LABELS,
-    FREE_STEP,
-    OVERTURN,
-    PULSE_STEPS,
-    REST,
-    ROCK,
-    SLIDE,
-    SLIDE_ROCK,
-    History,
-    Phase,
-    Simulation,
-    default_steps,
-    simulate,
-)
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .block import Block, G, frequency_parameter, size_R, slenderness
+    from .outcome import SWEEPABLE, OutcomeMap, from_dimensionless, outcome_map, to_dimensionless
+    from .pulses import SHAPES, Pulse
+    from .stepper import (
+        CATEGORY_LABELS,
+        FREE_STEP,
+        OVERTURN,
+        PULSE_STEPS,
+        REST,
+        ROCK,
+        SLIDE,
+        SLIDE_ROCK,
+        History,
+        Phase,
+        Simulation,
+        default_steps,
+        simulate,
+    )
 
 __all__ = [
     "Block",
@@ -59,3 +60,18 @@ __all__ = [
     "slenderness",
     "to_dimensionless",
 ]
+
+_WHERE = {
+    "Block": "block", "G": "block", "frequency_parameter": "block", "size_R": "block",
+    "slenderness": "block",
+    "SWEEPABLE": "outcome", "OutcomeMap": "outcome", "from_dimensionless": "outcome",
+    "outcome_map": "outcome", "to_dimensionless": "outcome",
+    "SHAPES": "pulses", "Pulse": "pulses",
+}
+
+
+def __getattr__(name: str) -> Any:  # PEP 562
+    if name in __all__:
+        module = _WHERE.get(name, "stepper")
+        return getattr(importlib.import_module(f"{__name__}.{module}"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

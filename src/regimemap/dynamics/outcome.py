@@ -26,7 +26,8 @@ from .block import Block, G, frequency_parameter, slenderness
 from .pulses import Pulse
 from .stepper import CATEGORY_LABELS, simulate
 
-__all__ = ["OutcomeMap", "outcome_map", "SWEEPABLE", "to_dimensionless", "from_dimensionless"]
+__all__ = ["OutcomeMap", "outcome_map", "SWEEPABLE", "DIMENSIONLESS", "to_dimensionless",
+           "from_dimensionless", "dimensionless_values"]
 
 FloatArray = NDArray[np.float64]
 
@@ -49,6 +50,39 @@ def from_dimensionless(omega_ratio: ArrayLike, k_ratio: ArrayLike, B: float, gam
     p = frequency_parameter(B, gamma, g)
     return (np.asarray(k_ratio, dtype=np.float64) * np.tan(slenderness(gamma)),
             np.asarray(omega_ratio, dtype=np.float64) * p)
+
+
+#: The swept inputs that have a dimensionless form, and its name: k_peak/tan(alpha), omega_p/p.
+DIMENSIONLESS: dict[str, str] = {"k_peak": "k_peak/tan(alpha)", "duration": "omega_p/p",
+                                 "omega_p": "omega_p/p"}
+
+
+def dimensionless_values(name: str, values: ArrayLike, block: Block, shape: str) -> FloatArray:
+    """The values of a swept input in the dimensionless units of :data:`DIMENSIONLESS`.
+
+    ``k_peak`` -> k_peak/tan(alpha), ``omega_p`` -> omega_p/p and ``duration`` -> omega_p/p
+    with omega_p the pulse's (pi/duration, or 2 pi/duration for one-sine and one-cosine), for
+    the block's own p (which accounts for its radius of gyration) and alpha.
+
+    Raises
+    ------
+    ValueError
+        For an input without a dimensionless form, or a block whose p or alpha is not one
+        number (a block field that is swept).
+    """
+    if name not in DIMENSIONLESS:
+        raise ValueError(f"{name} has no dimensionless form (only {', '.join(DIMENSIONLESS)})")
+    p_all = np.asarray(block.p, dtype=np.float64)
+    alpha_all = np.asarray(block.alpha, dtype=np.float64)
+    if p_all.size != 1 or alpha_all.size != 1:
+        raise ValueError("dimensionless axes need one block (p and alpha the same in every cell)")
+    p, alpha = float(p_all.ravel()[0]), float(alpha_all.ravel()[0])
+    v = np.asarray(values, dtype=np.float64)
+    if name == "k_peak":
+        return np.asarray(v / np.tan(alpha), dtype=np.float64)
+    if name == "omega_p":
+        return np.asarray(v / p, dtype=np.float64)
+    return np.asarray(Pulse.make(shape, 1.0, v).omega_p, dtype=np.float64) / p
 
 
 @dataclass(frozen=True)

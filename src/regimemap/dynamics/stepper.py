@@ -170,6 +170,11 @@ class History:
     k: FloatArray
     phase: NDArray[np.int8]
 
+    def base_slide(self, H: float) -> FloatArray:
+        """Horizontal displacement of the middle of the base (m), positive towards O, for a
+        block whose C is ``H`` (m) above the base: -(x + H sin(theta))."""
+        return -(self.x + H * np.sin(self.theta))
+
 
 @dataclass(frozen=True)
 class Simulation:

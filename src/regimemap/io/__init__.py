@@ -17,10 +17,13 @@ __all__ = [
     "format_result",
     "parse_point_spec",
     "read_points_csv",
+    "read_pulse_csv",
     "result_row",
     "save_figure",
     "write_animation",
     "write_atlas",
+    "write_history",
+    "write_outcome",
 ]
 
 _WHERE = {
@@ -34,6 +37,9 @@ _WHERE = {
     "save_figure": "figures",
     "write_animation": "figures",
     "write_atlas": "figures",
+    "read_pulse_csv": "pulses",
+    "write_history": "dynamics",
+    "write_outcome": "dynamics",
 }
 
 

@@ -92,9 +92,9 @@ class Design:
     caisson: CaissonSpec
     source: str
 
-    def analyse(self, g: float = 9.81) -> CaissonAnalysis:
-        """Run :func:`regimemap.waves.analyse_caisson` on this design (SI: N, Pa)."""
-        from regimemap.waves import Densities, analyse_caisson
+    def analysis_inputs(self, g: float = 9.81) -> dict[str, Any]:
+        """The keyword arguments of :func:`regimemap.waves.analyse_caisson` for this design (SI: N, Pa)."""
+        from regimemap.waves import Densities
 
         c = self.caisson
         densities = None
@@ -106,13 +106,19 @@ class Design:
             assert c.fill_density is not None
             densities = Densities(c.concrete_fraction, c.concrete_density, c.fill_density,
                                   c.fill_density_above)
-        return analyse_caisson(
+        return dict(
             depth=self.site.depth, armour_depth=self.site.armour_depth, slope=self.site.seabed_slope,
             period=self.wave.period, H0=self.wave.H0, H13=self.wave.H13, Hmax=self.wave.Hmax,
             angle_deg=self.wave.angle, rotation_deg=self.wave.rotation, width=c.width,
             base_depth=c.base_depth, crest=c.crest, berm_width=c.berm_width, friction=c.friction,
             buoyant_weight=weight, densities=densities, impulsive=c.impulsive,
             rho_w=self.site.water_density, g=g)
+
+    def analyse(self, g: float = 9.81) -> CaissonAnalysis:
+        """Run :func:`regimemap.waves.analyse_caisson` on this design (SI: N, Pa)."""
+        from regimemap.waves import analyse_caisson
+
+        return analyse_caisson(**self.analysis_inputs(g))
 
 
 # -- the accepted keys ----------------------------------------------------------------------------

@@ -44,7 +44,7 @@ from ..maps.classify import label_grid
 from ..maps.geometry import DEFAULT_SAMPLES, region_polygons
 from ..mechanics.block import Parameters
 from ..mechanics.curves import map_curves, named_points
-from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
 from ._numbers import round_sig, text
 from .atomic import atomic_open
@@ -133,12 +133,17 @@ def map_grid(p: Parameters, k_max: float | None = None, mu_max: float | None = N
     _resolution(resolution)  # refuse before computing anything
     k_max, mu_max = _extent(p, k_max, mu_max, view)
     k, mu = grid_axes(k_max, mu_max, resolution)
-    return k, mu, label_grid(k, mu, p.gamma, p.kprime)
+    return k, mu, label_grid(k, mu, p.gamma, p.kprime, **_loads_of(p))
+
+
+def _loads_of(p: Parameters) -> dict[str, Any]:
+    """The load keywords of ``p`` for the evaluators ({} for the report's block)."""
+    return p.loads if (p.loaded or p.crest != 1.0) else {}
 
 
 def _constants(p: Parameters) -> dict[str, Any]:
     d = p.as_dict()
-    for key in ("gamma", "kprime", "case"):
+    for key in ("gamma", "kprime", "case", *p.loads):
         d.pop(key, None)
     d.update({
         "k_D": p.k_D,
@@ -167,20 +172,38 @@ def write_npz(path: str | os.PathLike[str], p: Parameters, k: np.ndarray, mu: np
     }
     for key, v in _constants(p).items():
         arrays[key] = np.float64(v)
+    if _loads_of(p):  # the loads (gyration nan for the uniform block) and the loaded constants
+        arrays["loaded"] = np.array(True)
+        for key, v in p.loads.items():
+            arrays[key] = np.float64(math.nan if v is None else v)
     with atomic_open(path, "wb") as fh:
         np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
 
 
-def write_csv(path: str | os.PathLike[str], k: np.ndarray, mu: np.ndarray, mode: np.ndarray) -> None:
-    """Write ``k,mu,mode`` rows (mu outer, k inner; the mode as its label), atomically."""
+def write_csv(path: str | os.PathLike[str], k: np.ndarray, mu: np.ndarray, mode: np.ndarray,
+              p: Parameters | None = None) -> None:
+    """Write ``k,mu,mode`` rows (mu outer, k inner; the mode as its label), atomically.
+
+    For a block with loads (``p``) every row also carries ``gamma``, ``kprime`` and
+    the loads the block carries, under the column names ``classify --points`` reads.
+    Numbers are written to 12 significant digits.
+    """
     k_txt = [text(v) for v in k]
     labels = [m.label for m in Mode]
+    tail = ""
+    head = "k,mu,mode"
+    if p is not None and _loads_of(p):
+        from ..maps.describe import load_items
+
+        cols = [("gamma", p.gamma), ("kprime", p.kprime)] + load_items(p)
+        head += "".join(f",{name}" for name, _ in cols)
+        tail = "".join(f",{text(v)}" for _, v in cols)
     with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write("k,mu,mode\n")
+        fh.write(head + "\n")
         for i, m in enumerate(mu):
             mt = text(m)
             row = mode[i]
-            fh.write("".join(f"{kt},{mt},{labels[c]}\n" for kt, c in zip(k_txt, row.tolist())))
+            fh.write("".join(f"{kt},{mt},{labels[c]}{tail}\n" for kt, c in zip(k_txt, row.tolist())))
 
 
 # --------------------------------------------------------------------------------------
@@ -284,7 +307,8 @@ def boundary_curves(p: Parameters, k_max: float, mu_max: float) -> dict[str, dic
     for name, c in map_curves(p).items():
         if c.vertical_k is not None:
             kA = c.vertical_k
-            bottom = kA if p.above else 0.0
+            # AB above C starts at A (mu_A = k_A on the report's block); the others at mu = 0
+            bottom = p.mu_A if (p.above and name == "AB") else 0.0
             if not (kA <= k_max and bottom <= mu_max):
                 continue
             polylines = [np.array([[kA, bottom], [kA, mu_max]])]
@@ -338,20 +362,22 @@ def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None
     k_max, mu_max = _extent(p, k_max, mu_max, view)
     polys = region_polygons(p, k_max, mu_max, samples=samples, overshoot=1.0)
     pts = named_points(p)
+    loaded = bool(_loads_of(p))
+    modes = LOADED_MAP_MODES if p.loaded else MAP_MODES
     geom = {
         "format": "regimemap-map",
         "version": JSON_VERSION,
-        "parameters": {"gamma": p.gamma, "kprime": p.kprime},
+        "parameters": {"gamma": p.gamma, "kprime": p.kprime, **(p.loads if loaded else {})},
         "case": {"value": p.case.value, "description": p.case.description},
         "constants": _constants(p),
         "extent": {"k_min": 0.0, "k_max": k_max, "mu_min": 0.0, "mu_max": mu_max},
-        "modes": {m.label: {"code": int(m), "description": m.description} for m in MAP_MODES},
+        "modes": {m.label: {"code": int(m), "description": m.description} for m in modes},
         "curves": boundary_curves(p, k_max, mu_max),
         "named_points": {
             name: dict(pt.as_dict(), in_view=bool(0.0 <= pt.k <= k_max and 0.0 <= pt.mu <= mu_max))
             for name, pt in pts.items()
         },
-        "regions": {m.label: [poly.tolist() for poly in polys.get(m, [])] for m in MAP_MODES},
+        "regions": {m.label: [poly.tolist() for poly in polys.get(m, [])] for m in modes},
         "ambiguity": [r.as_dict() for r in ambiguous_regions(p, k_max, mu_max, samples=samples)],
         "notes": {
             "grid": "regions are polygons of (k, mu); each vertical line k = const meets a region "
@@ -360,6 +386,15 @@ def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None
                          "the mode Section 4.7 of the report keeps ('chosen')",
         },
     }
+    if loaded:
+        geom["lift_off"] = {"k_L": p.k_L, "range": list(p.lift_off) if p.lift_off else None}
+        geom["notes"]["ambiguity"] = (  # type: ignore[index]
+            "parts where the equations of motion admit several modes; the map shows the mode "
+            "Gauss's least constraint chooses ('chosen'), a convention of rigid contact")
+        geom["notes"]["loads"] = (  # type: ignore[index]
+            "buoyancy beta m g up through C; uplift (u + nu k) m g up at uplift_arm B from C "
+            "towards O'; gyration i: I = m B^2 i^2 (null: the uniform block); crest: the top "
+            "of the block above C over H")
     safe: dict[str, Any] = _json_safe(geom)  # a dict stays a dict (with str keys)
     return safe
 
@@ -412,8 +447,11 @@ def export_map(path: str | os.PathLike[str], p: Parameters, *, k_max: float | No
     if fmt == "npz":
         write_npz(path, p, k, mu, mode, k_max, mu_max)
     else:
-        # text for people: the grid values as written (12 digits), classified as written
+        # text for people: the grid values and loads as written (12 digits), classified as written
         k = np.array([round_sig(v) for v in k])
         mu = np.array([round_sig(v) for v in mu])
-        write_csv(path, k, mu, label_grid(k, mu, p.gamma, p.kprime))
+        loads: dict[str, Any] = {key: (None if v is None else round_sig(v))
+                                 for key, v in _loads_of(p).items()}
+        gamma, kprime = (round_sig(p.gamma), round_sig(p.kprime)) if loads else (p.gamma, p.kprime)
+        write_csv(path, k, mu, label_grid(k, mu, gamma, kprime, **loads), p)
     return fmt

@@ -76,23 +76,28 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     """
     from ..drawing.atlas import check_animation, render_animation
 
-    check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0))
+    check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0),
+                    sweep=kwargs.get("sweep", "kprime"), fixed=kwargs.get("fixed"))
     with atomic_path(path) as tmp:
         return render_animation(tmp, gamma, kprimes, **kwargs)
 
 
 def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: float
                   ) -> list[str]:
-    """Draw the report's figures ``ids`` and write them in every format (one process)."""
+    """Draw the figures ``ids`` and write them in every format (one process)."""
     from ..drawing.figure import render_preset
     from ..drawing.model import MODEL_FIGURE_ID, model_figure
     from ..drawing.presets import get_preset
+    from ..drawing.worked import WORKED, render_worked
 
     fig = None  # one Figure for all maps: its renderer keeps the text caches warm
     written: list[str] = []
     for fid in ids:
         if fid == MODEL_FIGURE_ID:
             one = model_figure(dpi=dpi)
+            name = f"fig-{fid}"
+        elif fid in WORKED:
+            one = fig = render_worked(WORKED[fid], dpi=dpi, fig=fig)
             name = f"fig-{fid}"
         else:
             preset = get_preset(fid)
@@ -115,10 +120,11 @@ def cpu_count() -> int:
 
 def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: Sequence[str],
                   dpi: float, jobs: int | None = None) -> list[Path]:
-    """Write the report's figures ``ids`` into ``folder``, in every format, on every core.
+    """Write the figures ``ids`` into ``folder``, in every format, on every core.
 
     ``ids`` are the report's numbers: ``"2.1"`` (the model) and those of
-    :data:`regimemap.drawing.presets.PRESETS`.
+    :data:`regimemap.drawing.presets.PRESETS`, and the worked figures of
+    :data:`regimemap.drawing.worked.WORKED` (``"W.1"`` ...).
 
     The figures are shared out among ``jobs`` worker processes (default: one
     per core; 1 draws them here).  Each figure is drawn and written by one

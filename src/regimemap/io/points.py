@@ -1,4 +1,6 @@
-"""Design points: ``K,MU[:NAME]`` specs and CSV files with columns ``k,mu[,gamma,kprime,name]``."""
+"""Design points: ``K,MU[:NAME]`` specs and CSV files with columns ``k,mu[,gamma,kprime,name]``
+and, for a block with loads, ``buoyancy``, ``uplift``, ``uplift_ratio``, ``uplift_arm``,
+``gyration``, ``crest``."""
 
 from __future__ import annotations
 
@@ -11,8 +13,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TextIO
 
-from ..maps.points import DesignPoint
-from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, MAX_VALUE
+from ..maps.points import LOAD_FIELDS, DesignPoint
+from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, LOAD_LIMITS, MAX_VALUE
 
 __all__ = ["DesignPoint", "PointsTable", "parse_point_spec", "read_points_csv", "read_points_table",
            "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
@@ -33,12 +35,18 @@ _NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|inf
                      re.ASCII | re.IGNORECASE)
 
 
-def _number(text: str, what: str, where: str) -> float:
-    """``text`` as the value of ``what`` (k, mu, gamma or kprime), with the library's ranges."""
+def _number(text: str, what: str, where: str, crest: float = 1.0) -> float:
+    """``text`` as the value of ``what`` (k, mu, gamma, kprime or a load), with the library's ranges."""
     if what == "gamma":
         rng, lo, hi = f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]", GAMMA_MIN, GAMMA_MAX
     elif what == "kprime":
-        rng, lo, hi = "a number in [-1, 1]", -1.0, 1.0
+        rng, lo, hi = f"a number in [-1, {crest:g}]", -1.0, crest
+    elif what in LOAD_LIMITS:
+        lo, hi, lo_open, hi_open = LOAD_LIMITS[what]
+        rng = f"a number in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+        if text and _NUMBER.fullmatch(text) and ((lo_open and float(text) == lo)
+                                                  or (hi_open and float(text) == hi)):
+            raise ValueError(f"{where}: {what} must be {rng}, got {text!r}")
     else:
         rng, lo, hi = f"a finite number >= 0 (at most {MAX_VALUE:g})", 0.0, MAX_VALUE
     if not text:
@@ -157,8 +165,11 @@ _DECIMAL_COMMA = re.compile(r"[+-]?\d*,\d+(?:[eE][+-]?\d+)?", re.ASCII)
 def read_points_csv(path: str | os.PathLike[str]) -> list[DesignPoint]:
     """Read design points from a CSV file with a header row.
 
-    Required columns ``k`` and ``mu``; optional ``gamma``, ``kprime`` and
-    ``name`` (other columns are ignored; names are case-insensitive).  Blank
+    Required columns ``k`` and ``mu``; optional ``gamma``, ``kprime``,
+    ``name`` and the loads ``buoyancy``, ``uplift``, ``uplift_ratio``,
+    ``uplift_arm``, ``gyration``, ``crest`` (an empty cell: the caller's
+    default; other columns are ignored; names are case-insensitive).  A row's
+    kprime is checked against its own crest (1 when the row has none).  Blank
     lines are skipped, also before the header.  At most :data:`MAX_POINTS`
     points and :data:`MAX_POINTS_FILE_BYTES` bytes.  A file saved by a
     spreadsheet where the comma is the decimal mark (``k;mu`` and
@@ -203,7 +214,7 @@ def read_points_table(path: str | os.PathLike[str]) -> PointsTable:
                     f"{where}: missing column(s) {', '.join(missing)}; the header must name k and mu"
                     f" (got {', '.join(repr(h) for h in header[:6])})"
                 )
-            known = ("k", "mu", "gamma", "kprime", "name")
+            known = ("k", "mu", "gamma", "kprime", "name", *LOAD_FIELDS)
             twice = [c for c in known if cols.count(c) > 1]
             if twice:
                 raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
@@ -227,14 +238,19 @@ def read_points_table(path: str | os.PathLike[str]) -> PointsTable:
                 k = _number(cell("k"), "k", f"{where}, column k")
                 mu = _number(cell("mu"), "mu", f"{where}, column mu")
                 gamma = kprime = None
+                loads: dict[str, float] = {}
+                for c in LOAD_FIELDS:
+                    if c in idx and cell(c):
+                        loads[c] = _number(cell(c), c, f"{where}, column {c}")
                 if "gamma" in idx and cell("gamma"):
                     gamma = _number(cell("gamma"), "gamma", f"{where}, column gamma")
                 if "kprime" in idx and cell("kprime"):
-                    kprime = _number(cell("kprime"), "kprime", f"{where}, column kprime")
+                    kprime = _number(cell("kprime"), "kprime", f"{where}, column kprime",
+                                     loads.get("crest", 1.0))
                 name = cell("name") if "name" in idx else ""
                 if len(points) >= MAX_POINTS:
                     raise ValueError(f"{where}: more than {MAX_POINTS} points (the limit)")
-                points.append(DesignPoint(k, mu, name, gamma, kprime))
+                points.append(DesignPoint(k, mu, name, gamma, kprime, **loads))
                 lines.append(line)
         except (csv.Error, UnicodeDecodeError) as exc:
             raise ValueError(f"{path}, line {reader.line_num + 1}: not CSV text ({exc})") from None

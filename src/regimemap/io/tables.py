@@ -9,7 +9,7 @@ from ..maps.margins import Crossing
 from ..maps.query import PointResult
 from ._numbers import rounded, text
 
-__all__ = ["CSV_COLUMNS", "format_result", "result_json", "result_row"]
+__all__ = ["CSV_COLUMNS", "LOAD_COLUMNS", "columns_for", "format_result", "result_json", "result_row"]
 
 CSV_COLUMNS: tuple[str, ...] = (
     "name", "k", "mu", "gamma", "kprime", "case", "mode", "hypothesis",
@@ -17,6 +17,18 @@ CSV_COLUMNS: tuple[str, ...] = (
     "margin_k", "margin_k_direction", "margin_k_at", "margin_k_to",
     "margin_mu", "margin_mu_direction", "margin_mu_at", "margin_mu_to",
 )
+
+#: Columns added to :data:`CSV_COLUMNS` when a result carries loads: the loads (the
+#: names of the points file) and how the mode was chosen.
+LOAD_COLUMNS: tuple[str, ...] = (
+    "buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration", "crest", "chosen_by",
+)
+
+
+def columns_for(results: list[PointResult]) -> tuple[str, ...]:
+    """The CSV columns of ``results``: :data:`CSV_COLUMNS`, and :data:`LOAD_COLUMNS` if any carries loads."""
+    return CSV_COLUMNS + (LOAD_COLUMNS if any(r.loads for r in results) else ())
+
 
 def _fmt(v: float | None) -> str:
     if v is None or not math.isfinite(v):
@@ -34,6 +46,10 @@ def result_row(r: PointResult) -> dict[str, str]:
         "ydd": _fmt(r.ydd), "thdd": _fmt(r.thdd), "slip": _fmt(r.slip), "lift": _fmt(r.lift),
         "admissible": " ".join(m.label for m in r.admissible),
     }
+    if r.loads:
+        for key, v in r.loads.items():
+            row[key] = "" if v is None else _fmt(v)
+        row["chosen_by"] = r.chosen_by
     for m in (r.margin_k, r.margin_mu):
         n = m.nearest
         pre = f"margin_{m.variable}"
@@ -65,7 +81,17 @@ def format_result(r: PointResult) -> str:
     title = f"point {r.name!r}: " if r.name else ""
     lines.append(f"{title}k = {r.k:g}, mu = {r.mu:g}   (gamma = {r.gamma:g}, k' = {r.kprime:g}: "
                  f"force {p_side} the centre of mass)")
-    lines.append(f"case      {r.case.value}: {r.case.description}")
+    if r.loads:
+        from ..maps.describe import format_value
+
+        shown = []
+        for key, sym in (("buoyancy", "beta"), ("uplift", "u"), ("uplift_ratio", "nu"),
+                         ("uplift_arm", "e_u"), ("gyration", "i"), ("crest", "crest")):
+            v = r.loads.get(key)
+            shown.append(f"{sym} = {'uniform' if v is None else format_value(v)}")
+        lines.append(f"loads     {', '.join(shown)}")
+    else:
+        lines.append(f"case      {r.case.value}: {r.case.description}")
     lines.append(f"mode      {r.mode.label}  ({r.mode.description})")
     lines.append(f"at initiation (solver, hypothesis {r.hypothesis.name}"
                  + ("" if r.hypothesis_admissible or not r.solvable else ", NOT admissible")
@@ -82,6 +108,8 @@ def format_result(r: PointResult) -> str:
         lines.append(f"  {key:<5} = {_val(v):>11}   {what}")
     if r.slip is None and not r.solvable and r.hypothesis.sigma != 0:
         lines.append(f"  {'slip':<5} = {'n/a':>11}")
+    elif r.slip is None and r.hypothesis.contact == "none":
+        lines.append(f"  {'slip':<5} = {'none':>11}   no contact: the block leaves the base")
     elif r.slip is None:
         lines.append(f"  {'slip':<5} = {'none':>11}   the contact sticks")
     else:
@@ -122,6 +150,10 @@ def format_result(r: PointResult) -> str:
         note = (f"several modes satisfy the equations of motion here (non-uniqueness of rigid "
                 f"contact with friction, below C and mu > mu_B' = {r.thresholds['mu_Bprime']:.4g}); "
                 f"Section 4.7 of the report keeps {r.mode.label}")
+    elif r.chosen_by == "least constraint":
+        note = (f"several modes satisfy the equations of motion here; chosen by least "
+                f"constraint (Gauss): {r.mode.label}, the motion closest to free fall "
+                f"(a convention of rigid contact)")
     elif r.chosen_by == "boundary":
         note = (f"the point is on a boundary, where the modes of both sides are admissible; "
                 f"the map gives it {r.mode.label}")

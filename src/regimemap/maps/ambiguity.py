@@ -20,6 +20,13 @@ ambiguous parts; they are joined across columns into polygons whose vertices
 lie on the boundary curves.  Boundaries themselves (where the modes of both
 sides are admissible, a set of zero area) are not ambiguity.  Nothing here
 imports matplotlib.
+
+With loads the intervals are those of every hypothesis
+(:func:`regimemap.mechanics.regions.column_intervals`), the sets may hold RO',
+SRO'+ and lift-off (e.g. {LO, RO, SRO-} where the block lifts off while rocking
+would also be consistent), and the mode chosen is Gauss's least constraint,
+the first of the set in :data:`~regimemap.mechanics.modes.SELECTION_ORDER`:
+labels read ``{LO, RO, SRO-} -> LO (least constraint)``.
 """
 
 from __future__ import annotations
@@ -30,7 +37,8 @@ from typing import Any
 import numpy as np
 
 from ..mechanics.block import Parameters
-from ..mechanics.modes import MAP_MODES, PRIORITY, Mode
+from ..mechanics.modes import MAP_MODES, PRIORITY, SELECTION_ORDER, Mode
+from ..mechanics.regions import column_intervals
 from .geometry import DEFAULT_SAMPLES, bisect_edge, raw_intervals, sample_k
 
 __all__ = [
@@ -39,17 +47,27 @@ __all__ = [
     "column_pieces",
     "admissible_set",
     "set_label",
+    "RULE_LEAST_CONSTRAINT",
+    "RULE_SECTION_4_7",
 ]
 
 _MODES: tuple[Mode, ...] = tuple(m for m in PRIORITY if m in MAP_MODES)
 
 
-def set_label(modes: tuple[Mode, ...], chosen: Mode, tex: bool = False) -> str:
+#: How the chosen mode of a set is decided: Section 4.7 on the report's block, Gauss's
+#: least constraint with loads (the same choice wherever both apply).
+RULE_SECTION_4_7 = "Section 4.7"
+RULE_LEAST_CONSTRAINT = "least constraint"
+
+
+def set_label(modes: tuple[Mode, ...], chosen: Mode, tex: bool = False,
+              rule: str = RULE_SECTION_4_7) -> str:
     """``"{SL, RO, SRO-} -> SL (Section 4.7)"``, or its mathtext form for figures."""
     if tex:
         body = ", ".join(m.tex.strip("$") for m in modes)
-        return rf"$\{{{body}\}}$" + "\n" + rf"$\rightarrow {chosen.tex.strip('$')}$ (§4.7)"
-    return "{" + ", ".join(m.label for m in modes) + "} -> " + chosen.label + " (Section 4.7)"
+        short = "§4.7" if rule == RULE_SECTION_4_7 else rule
+        return rf"$\{{{body}\}}$" + "\n" + rf"$\rightarrow {chosen.tex.strip('$')}$ ({short})"
+    return "{" + ", ".join(m.label for m in modes) + "} -> " + chosen.label + f" ({rule})"
 
 
 @dataclass(frozen=True)
@@ -59,9 +77,11 @@ class AmbiguousRegion:
     Attributes
     ----------
     modes : tuple of Mode
-        The admissible set, in code order (RE, SL, RO, SRO-, SRO+, SRO'-).
+        The admissible set, in code order (RE, SL, RO, SRO-, SRO+, SRO'-) on the
+        report's block, in :data:`~regimemap.mechanics.modes.SELECTION_ORDER` with loads.
     chosen : Mode
-        The mode Section 4.7 (and :func:`regimemap.classify`) gives these points.
+        The mode Section 4.7 (least constraint with loads; :func:`regimemap.classify`)
+        gives these points.
     polygon : ndarray, shape (n, 2)
         Closed polygon of (k, mu) vertices: the lower edge left to right, then
         the upper edge right to left.
@@ -76,16 +96,17 @@ class AmbiguousRegion:
     k: np.ndarray
     lo: np.ndarray
     hi: np.ndarray
+    rule: str = RULE_SECTION_4_7
 
     @property
     def label(self) -> str:
         """Plain-text label, e.g. ``{SL, RO, SRO-} -> SL (Section 4.7)``."""
-        return set_label(self.modes, self.chosen)
+        return set_label(self.modes, self.chosen, rule=self.rule)
 
     @property
     def tex(self) -> str:
         """Mathtext label for figures, on two lines (the set, then "-> chosen (§4.7)")."""
-        return set_label(self.modes, self.chosen, tex=True)
+        return set_label(self.modes, self.chosen, tex=True, rule=self.rule)
 
     def area(self) -> float:
         """Area of the polygon (shoelace formula)."""
@@ -120,9 +141,21 @@ class AmbiguousRegion:
         }
 
 
-def _mask_modes(mask: int) -> tuple[Mode, ...]:
-    """The modes of a bit mask, in code order (RE, SL, RO, SRO-, SRO+, SRO'-)."""
-    return tuple(m for m in MAP_MODES if mask >> int(m) & 1)
+def _mask_modes(mask: int, loaded: bool = False) -> tuple[Mode, ...]:
+    """The modes of a bit mask, in code order (RE, SL, RO, SRO-, SRO+, SRO'-); with loads
+    in :data:`SELECTION_ORDER`."""
+    return tuple(m for m in (SELECTION_ORDER if loaded else MAP_MODES) if mask >> int(m) & 1)
+
+
+def _intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> list[tuple[Mode, np.ndarray, np.ndarray]]:
+    """Every raw interval of every mode per column, clipped to [0, mu_cap] (empty: lo == hi)."""
+    if not p.loaded:
+        return [(m, *raw_intervals(m, p, k, mu_cap)) for m in _MODES]
+    out = []
+    for m, lo, hi in column_intervals(k, p.constants):
+        lo_c = np.clip(lo, 0.0, mu_cap)
+        out.append((m, lo_c, np.maximum(np.clip(hi, 0.0, mu_cap), lo_c)))
+    return out
 
 
 def column_pieces(p: Parameters, k: np.ndarray, mu_cap: float
@@ -145,20 +178,20 @@ def column_pieces(p: Parameters, k: np.ndarray, mu_cap: float
         from the bottom up; adjacent pieces with the same set are merged.
     """
     k = np.asarray(k, dtype=np.float64)
-    ivs = {m: raw_intervals(m, p, k, mu_cap) for m in _MODES}
+    ivs = _intervals(p, k, mu_cap)
     ends = [np.zeros_like(k), np.full_like(k, mu_cap)]
-    for lo, hi in ivs.values():
+    for _, lo, hi in ivs:
         ends += [lo, hi]
-    E = np.sort(np.stack(ends, axis=1), axis=1)  # (n, 2 + 2*modes)
+    E = np.sort(np.stack(ends, axis=1), axis=1)  # (n, 2 + 2*intervals)
     a, b = E[:, :-1], E[:, 1:]
     mid = 0.5 * (a + b)
     mask = np.zeros(mid.shape, dtype=np.int64)
-    for m, (lo, hi) in ivs.items():
+    for m, lo, hi in ivs:
         inside = (hi[:, None] > lo[:, None]) & (lo[:, None] <= mid) & (mid <= hi[:, None])
         mask |= inside.astype(np.int64) << int(m)
     positive = b > a
     pop = np.zeros(mask.shape, dtype=np.int64)
-    for m in _MODES:
+    for m in Mode:
         pop += (mask >> int(m)) & 1
     multi = positive & (pop >= 2)
     out: list[list[tuple[int, float, float]]] = []
@@ -180,17 +213,19 @@ def admissible_set(p: Parameters, k: float, mu: float) -> tuple[Mode, ...]:
     Equal to the solver's admissible set off the boundaries.
     """
     mu_cap = max(2.0 * mu, 1.0)
-    ivs = {m: raw_intervals(m, p, np.array([float(k)]), mu_cap) for m in _MODES}
-    return tuple(m for m, (lo, hi) in ivs.items() if hi[0] > lo[0] and lo[0] <= mu <= hi[0])
+    ivs = _intervals(p, np.array([float(k)]), mu_cap)
+    found = {m for m, lo, hi in ivs if hi[0] > lo[0] and lo[0] <= mu <= hi[0]}
+    return tuple(m for m in (SELECTION_ORDER if p.loaded else _MODES) if m in found)
 
 
 def _extra_breaks(p: Parameters) -> list[float]:
     """Abscissae where an edge of an ambiguous part may have a corner (besides breakpoints)."""
     mb = p.mu_Bprime
     out = [mb]  # OA meets mu = mu_B'
-    den = p.a - mb * p.c
+    c = p.constants
+    den = c.aO - mb * c.cO
     if den != 0.0:
-        out.append((mb * p.d - p.b) / den)  # mu* meets mu = mu_B'
+        out.append((mb * c.dO - c.bO) / den)  # mu* meets mu = mu_B'
     if p.kprime != 0.0:
         out.append((-1.0 / p.gamma - mb) / p.kprime)  # DC meets mu = mu_B'
         # DC meets OA (mu = k): k = -1/g - k k'
@@ -230,8 +265,9 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
     Returns
     -------
     list of AmbiguousRegion
-        Sorted by the chosen mode (in :data:`PRIORITY` order), the set, then k;
-        empty above C (k' >= 0), where the regions do not overlap.
+        Sorted by the chosen mode (in :data:`PRIORITY` order, lift-off first),
+        the set, then k; empty above C (k' >= 0) on the report's block, where
+        the regions do not overlap.
 
     Examples
     --------
@@ -240,6 +276,9 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
     ['{SL, RO, SRO-} -> SL (Section 4.7)']
     >>> ambiguous_regions(Parameters(3.0, 0.4), 4.0, 3.0)
     []
+    >>> q = Parameters(1.5, 0.0, uplift=0.4, uplift_ratio=0.5, uplift_arm=0.0)
+    >>> sorted({r.label for r in ambiguous_regions(q, 4.0, 3.0)})[0]
+    '{LO, RO, SRO-} -> LO (least constraint)'
     """
     if not (np.isfinite(k_max) and np.isfinite(mu_max)) or k_max <= 0 or mu_max <= 0:
         raise ValueError(f"k_max and mu_max must be finite numbers > 0, got {k_max!r}, {mu_max!r}")
@@ -261,8 +300,9 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
         present = np.isfinite(lo)
         idx = np.flatnonzero(present)
         runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
-        modes = _mask_modes(mask)
-        chosen = next(m for m in PRIORITY if m in modes)
+        modes = _mask_modes(mask, p.loaded)
+        chosen = next(m for m in SELECTION_ORDER if m in modes)
+        rule = RULE_LEAST_CONSTRAINT if p.loaded else RULE_SECTION_4_7
         for run in runs:
             ks = list(k[run])
             los = list(lo[run])
@@ -290,7 +330,7 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
                 # their boundary: a line, not an area
                 continue
             poly = np.concatenate([np.column_stack([kk, ll]), np.column_stack([kk[::-1], hh[::-1]])])
-            out.append(AmbiguousRegion(modes, chosen, poly, kk, ll, hh))
-    order = {m: i for i, m in enumerate(PRIORITY)}
+            out.append(AmbiguousRegion(modes, chosen, poly, kk, ll, hh, rule))
+    order = {m: i for i, m in enumerate(SELECTION_ORDER)}
     out.sort(key=lambda r: (order[r.chosen], tuple(int(m) for m in r.modes), float(r.k[0])))
     return out

@@ -17,6 +17,20 @@ and SRO-); below DC the body pivots about O', not O (SRO'- wins over RO and
 SRO-); slide-rock about O for mu >= mu_B' "simply can not happen" (it loses to
 RE, SL and RO, which the solver finds admissible at each of its points).
 
+Loads (issue 10).  With buoyancy, uplift or another inertia (keyword-only
+arguments, as in :class:`~regimemap.mechanics.block.Parameters`) the same rule
+holds in every *regular* column (W > 0, f_y of rocking about O > 0, rest not
+failing about O'; every column of the report's block) with the generalised
+thresholds of :func:`regimemap.mechanics.constants.thresholds`: OA is mu = k/W,
+the lines are 1/gamma - s/W and -1/gamma - s/W, mu* has the constants a_O...d_O.
+At zero loads these are the report's thresholds bit for bit.  Other columns
+(lift-off, W <= 0, rest failing about O' ...) are cut at the ends of every
+hypothesis's interval of mu (:func:`regimemap.mechanics.regions.column_intervals`)
+and each piece takes the first admissible mode in
+:data:`~regimemap.mechanics.modes.SELECTION_ORDER`, which is Gauss's least
+constraint (measured); lift-off is a whole column.  ``docs/derivation.md``
+Section 5 derives the rule.
+
 Boundaries.  A point exactly on a boundary gets the label of the first rule
 above that it satisfies: rest on OA and on AB/AE (limiting equilibrium does
 not move), slide on CD/AB and on DC (the reaction just reaches a corner), rock
@@ -29,28 +43,35 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from ..mechanics.constants import thresholds
+from ..mechanics.loads import BlockConstants, block_constants, subset
 from ..mechanics.modes import PRIORITY, Mode
+from ..mechanics.regions import column_intervals
 from ..mechanics.validation import (
     MAX_GRID_POINTS,
     check_axis,
     check_gamma,
     check_kprime,
+    check_loads,
     check_nonnegative_array,
 )
 
-__all__ = ["classify", "label_grid", "PRIORITY", "column_segments"]
+__all__ = ["classify", "classify_constants", "label_grid", "PRIORITY", "column_segments",
+           "block_of"]
 
 _RE, _SL, _RO, _SM, _SP, _SPM = (np.uint8(m) for m in (
     Mode.RE, Mode.SL, Mode.RO, Mode.SRO_MINUS, Mode.SRO_PLUS, Mode.SRO_PRIME_MINUS))
 
+U8 = NDArray[np.uint8]
 
-def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
+
+def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike, crest: float = 1.0) -> tuple[Any, Any]:
     """gamma and kprime as floats (scalars) or float arrays, each value checked."""
     out: list[Any] = []
-    for name, value, check in (("gamma", gamma, check_gamma), ("kprime", kprime, check_kprime)):
+    checks = (("gamma", gamma, check_gamma), ("kprime", kprime, lambda v: check_kprime(v, crest)))
+    for name, value, check in checks:
         if np.ndim(value) == 0:
             out.append(check(value.item() if isinstance(value, np.ndarray) else value))
             continue
@@ -69,6 +90,15 @@ def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike) -> tuple[Any, Any]:
     return out[0], out[1]
 
 
+def block_of(gamma: ArrayLike, kprime: ArrayLike, buoyancy: Any = 0.0, uplift: Any = 0.0,
+             uplift_ratio: Any = 0.0, uplift_arm: Any = 1.0 / 3.0, gyration: Any = None,
+             crest: Any = 1.0) -> BlockConstants:
+    """The checked constants of a block (gamma, kprime may be arrays; the loads are numbers)."""
+    beta, u, nu, eu, gy, cr = check_loads(buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest)
+    g, kp = _check_param_arrays(gamma, kprime, cr)
+    return block_constants(g, kp, beta, u, nu, eu, gy)
+
+
 def _broadcast(*arrays: Any) -> list[np.ndarray]:
     try:
         return list(np.broadcast_arrays(*arrays))
@@ -77,7 +107,10 @@ def _broadcast(*arrays: Any) -> list[np.ndarray]:
         raise ValueError(f"k, mu, gamma and kprime must broadcast to one shape, got {shapes}") from None
 
 
-def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -> np.ndarray:
+def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike, *,
+             buoyancy: float = 0.0, uplift: float = 0.0, uplift_ratio: float = 0.0,
+             uplift_arm: float = 1.0 / 3.0, gyration: float | None = None, crest: float = 1.0
+             ) -> np.ndarray:
     """Mode code at each point (k, mu) for aspect ratio gamma and force height kprime.
 
     Parameters
@@ -89,8 +122,11 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
     gamma : array_like
         Aspect ratio H/B > 0.
     kprime : array_like
-        Force height h/H in [-1, 1] (negative below the centre of mass).
+        Force height h/H in [-1, crest] (negative below the centre of mass).
         All four broadcast together like the arguments of a numpy ufunc.
+    buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest : float, keyword-only
+        The loads of the block (see :class:`~regimemap.mechanics.block.Parameters`);
+        the defaults are the report's block.
 
     Returns
     -------
@@ -101,8 +137,9 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
     Raises
     ------
     ValueError
-        If any k or mu is negative, NaN or infinite, gamma is not > 0, or kprime
-        is outside [-1, 1] (the message names the parameter and the range).
+        If any k or mu is negative, NaN or infinite, gamma is not > 0, kprime
+        is outside [-1, crest] or a load is outside its range (the message names
+        the parameter and the range).
 
     Notes
     -----
@@ -117,54 +154,106 @@ def classify(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: ArrayLike) -
     'RE'
     >>> [Mode(c).label for c in classify([0.3, 0.5], [0.2, 0.8], 3.0, 0.4)]
     ['SL', 'RO']
+    >>> Mode(classify(1.0, 0.5, 3.0, 0.0, buoyancy=0.5, uplift=0.3, uplift_ratio=0.5, uplift_arm=0.0)).label
+    'LO'
     """
     k = check_nonnegative_array("k", k)
     mu = check_nonnegative_array("mu", mu)
-    g, kp = _check_param_arrays(gamma, kprime)
+    beta, u, nu, eu, gy, cr = check_loads(buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest)
+    g, kp = _check_param_arrays(gamma, kprime, cr)
     if np.ndim(g) or np.ndim(kp):
         k, mu, g, kp = _broadcast(k, mu, g, kp)
     else:
         k, mu = _broadcast(k, mu)
-    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, g, kp)
-    out = np.where(f_pos, _SM, _SP)
-    np.copyto(out, _RO, where=mu >= mu_s)
-    np.copyto(out, _SL, where=mu <= upper)
-    np.copyto(out, _SPM, where=mu < lower)
-    np.copyto(out, _RE, where=(mu >= k) & rest_ok)
+    return classify_constants(k, mu, block_constants(g, kp, beta, u, nu, eu, gy))
+
+
+def classify_constants(k: np.ndarray, mu: np.ndarray, cst: BlockConstants) -> np.ndarray:
+    """The rule of :func:`classify` on checked arrays of one shape and a block's constants."""
+    t = thresholds(k, cst)
+    out = np.where(t.f_pos, _SM, _SP)
+    np.copyto(out, _RO, where=mu >= t.mu_star)
+    np.copyto(out, _SL, where=mu <= t.upper)
+    np.copyto(out, _SPM, where=mu < t.lower)
+    np.copyto(out, _RE, where=(mu >= t.mu_rest) & t.rest_ok)
+    odd = ~t.regular
+    if odd.any():
+        kk, mm = k[odd], mu[odd]
+        gen = np.full(kk.shape, 255, dtype=np.uint8)
+        for mode, lo, hi in reversed(column_intervals(kk, subset(cst, k.shape, odd))):
+            np.copyto(gen, np.uint8(mode), where=(mm >= lo) & (mm <= hi))
+        out[odd] = gen
     return np.asarray(out)
 
 
-def column_segments(k: np.ndarray, mu_sorted: np.ndarray, gamma: float, kprime: float
-                    ) -> tuple[np.ndarray, np.ndarray]:
+def column_segments(k: np.ndarray, mu_sorted: np.ndarray, gamma: float, kprime: float,
+                    **loads: Any) -> tuple[np.ndarray, np.ndarray]:
     """Labels and run lengths along each column of a grid whose mu axis is sorted.
 
-    Along a column (fixed k) the rule of :func:`classify` gives, from mu = 0
-    up, at most five runs: SRO'-, SL, SRO-/SRO+, RO, RE.  The run ends are
+    Along a regular column (fixed k) the rule of :func:`classify` gives, from
+    mu = 0 up, at most five runs: SRO'-, SL, SRO-/SRO+, RO, RE.  The run ends are
     counted with ``searchsorted`` against the very thresholds ``classify``
-    compares with, so the two agree exactly.
+    compares with, so the two agree exactly.  Other columns (loads only) are
+    cut at the ends of every interval of
+    :func:`~regimemap.mechanics.regions.column_intervals` and each piece takes
+    the first interval holding it.  ``loads`` are the keywords of :func:`classify`.
 
     Returns
     -------
-    labels, counts : ndarray, shape (len(k), 5)
+    labels, counts : ndarray, shape (len(k), m), m >= 5
         Mode codes and run lengths (sum of each row = len(mu_sorted)).
     """
+    return _segments(np.asarray(k, dtype=np.float64), np.asarray(mu_sorted, dtype=np.float64),
+                     block_of(gamma, kprime, **loads))
+
+
+def _segments(k: np.ndarray, mu_sorted: np.ndarray, cst: BlockConstants
+              ) -> tuple[np.ndarray, np.ndarray]:
     n = mu_sorted.size
-    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, gamma, kprime)
-    n_k = np.where(rest_ok, np.searchsorted(mu_sorted, k, side="left"), n)
-    c1 = np.minimum(np.searchsorted(mu_sorted, lower, side="left"), n_k)
-    c2 = np.minimum(np.searchsorted(mu_sorted, upper, side="right"), n_k)
-    c3 = np.minimum(np.maximum(np.searchsorted(mu_sorted, mu_s, side="left"), c2), n_k)
-    counts = np.stack([c1, c2 - c1, c3 - c2, n_k - c3, n - n_k], axis=1)
-    labels = np.empty((k.size, 5), dtype=np.uint8)
-    labels[:, 0] = _SPM
-    labels[:, 1] = _SL
-    labels[:, 2] = np.where(f_pos, _SM, _SP)
-    labels[:, 3] = _RO
-    labels[:, 4] = _RE
+    t = thresholds(k, cst)
+    n_k = np.where(t.rest_ok, np.searchsorted(mu_sorted, t.mu_rest, side="left"), n)
+    c1 = np.minimum(np.searchsorted(mu_sorted, t.lower, side="left"), n_k)
+    c2 = np.minimum(np.searchsorted(mu_sorted, t.upper, side="right"), n_k)
+    c3 = np.minimum(np.maximum(np.searchsorted(mu_sorted, t.mu_star, side="left"), c2), n_k)
+    counts5 = np.stack([c1, c2 - c1, c3 - c2, n_k - c3, n - n_k], axis=1)
+    labels5 = np.empty((k.size, 5), dtype=np.uint8)
+    labels5[:, 0] = _SPM
+    labels5[:, 1] = _SL
+    labels5[:, 2] = np.where(t.f_pos, _SM, _SP)
+    labels5[:, 3] = _RO
+    labels5[:, 4] = _RE
+    odd = np.flatnonzero(~t.regular)
+    if odd.size == 0:
+        return labels5, counts5
+    ivs = column_intervals(k[odd], subset(cst, k.shape, odd))
+    starts = np.stack([np.searchsorted(mu_sorted, lo, side="left") for _, lo, _ in ivs], axis=1)
+    ends = np.stack([np.searchsorted(mu_sorted, hi, side="right") for _, _, hi in ivs], axis=1)
+    ends = np.maximum(ends, starts)
+    codes = np.array([int(m) for m, _, _ in ivs], dtype=np.uint8)
+    cuts = np.sort(np.concatenate([starts, ends, np.zeros((odd.size, 1), np.intp),
+                                   np.full((odd.size, 1), n, np.intp)], axis=1), axis=1)
+    left = cuts[:, :-1]
+    cnt = np.diff(cuts, axis=1)
+    # piece [left, left + cnt) lies in interval j iff starts_j <= left < ends_j (cuts hold every end)
+    inside = (starts[:, None, :] <= left[:, :, None]) & (left[:, :, None] < ends[:, None, :])
+    first = np.argmax(inside, axis=2)
+    lab = np.where(inside.any(axis=2), codes[first], np.uint8(255)).astype(np.uint8)
+    m = max(5, cnt.shape[1])
+    labels = np.zeros((k.size, m), dtype=np.uint8)
+    counts = np.zeros((k.size, m), dtype=np.intp)
+    labels[:, :5] = labels5
+    counts[:, :5] = counts5
+    labels[odd] = 0
+    counts[odd] = 0
+    labels[odd, : cnt.shape[1]] = lab
+    counts[odd, : cnt.shape[1]] = cnt
     return labels, counts
 
 
-def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: float) -> np.ndarray:
+def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: float, *,
+               buoyancy: float = 0.0, uplift: float = 0.0, uplift_ratio: float = 0.0,
+               uplift_arm: float = 1.0 / 3.0, gyration: float | None = None, crest: float = 1.0
+               ) -> np.ndarray:
     """Mode codes on the rectilinear grid ``k_axis x mu_axis``.
 
     Parameters
@@ -174,14 +263,16 @@ def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: floa
     gamma : float
         Aspect ratio H/B > 0.
     kprime : float
-        Force height h/H in [-1, 1].
+        Force height h/H in [-1, crest].
+    buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest : float, keyword-only
+        The loads, as in :func:`classify`.
 
     Returns
     -------
     numpy.ndarray of uint8, shape (len(mu_axis), len(k_axis))
-        ``out[i, j] == classify(k_axis[j], mu_axis[i], gamma, kprime)`` exactly
-        (rows mu, columns k, as an image with origin lower left when mu_axis
-        increases), C-contiguous.
+        ``out[i, j] == classify(k_axis[j], mu_axis[i], gamma, kprime, **loads)``
+        exactly (rows mu, columns k, as an image with origin lower left when
+        mu_axis increases), C-contiguous.
 
     Raises
     ------
@@ -191,12 +282,13 @@ def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: floa
 
     Notes
     -----
-    Each column is cut into at most five runs by ``searchsorted`` against the
-    thresholds of :func:`classify` and filled with ``numpy.repeat``: the cost is
-    that of writing the labels, not of evaluating every hypothesis.
+    Each column is cut into runs by ``searchsorted`` against the thresholds of
+    :func:`classify` and filled with ``numpy.repeat``: the cost is that of
+    writing the labels, not of evaluating every hypothesis.
     """
+    beta, u, nu, eu, gy, cr = check_loads(buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest)
     g = check_gamma(gamma)
-    kp = check_kprime(kprime)
+    kp = check_kprime(kprime, cr)
     k_axis = check_axis("k_axis", k_axis)
     mu_axis = check_axis("mu_axis", mu_axis)
     if k_axis.size * mu_axis.size > MAX_GRID_POINTS:
@@ -217,7 +309,7 @@ def label_grid(k_axis: ArrayLike, mu_axis: ArrayLike, gamma: float, kprime: floa
     else:
         order = np.argsort(mu_axis, kind="stable")
         mu_sorted = mu_axis[order]
-    labels, counts = column_segments(k_axis, mu_sorted, g, kp)
+    labels, counts = _segments(k_axis, mu_sorted, block_constants(g, kp, beta, u, nu, eu, gy))
     cols = np.repeat(labels.ravel(), counts.ravel()).reshape(k_axis.size, mu_sorted.size)
     grid = np.ascontiguousarray(cols.T)
     if order is None:

@@ -6,7 +6,11 @@ functions of k.  The polygons below sample those edges on a fine k grid that
 contains every characteristic abscissa of the map (k_A, k_B', b/|a|, k_D,
 the pole d/c, the crossing C' ...), and locate the ends of each run of
 non-empty columns by bisection, so the fills meet the boundary curves without
-a staircase.  Nothing here imports matplotlib.
+a staircase.  With loads a mode may hold several intervals of a column (lift-off
+holds whole columns), so each column is cut at every threshold and interval end
+of the column rule (:func:`final_pieces`), the pieces are labelled by the rule,
+and the polygons follow each mode's pieces across the columns.  Nothing here
+imports matplotlib.
 """
 
 from __future__ import annotations
@@ -17,14 +21,18 @@ from collections.abc import Callable, Iterable
 import numpy as np
 
 from ..mechanics.block import Parameters
-from ..mechanics.constants import mu_star_signed, mu_star_star, thresholds
-from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.constants import dotted_line_344, mu_star_signed, mu_star_star, rock_possible, thresholds
+from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
+from ..mechanics.regions import affine_terms, column_intervals
+from .classify import classify_constants
 
 __all__ = [
     "DEFAULT_SAMPLES",
     "Interval",
     "sample_k",
     "final_intervals",
+    "final_pieces",
+    "raw_pieces",
     "raw_intervals",
     "breakpoints",
     "bisect_edge",
@@ -44,8 +52,9 @@ def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, I
     Intervals are clipped to [0, mu_cap]; a mode absent from a column has lo == hi.
     """
     k = np.asarray(k, dtype=np.float64)
-    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, p.gamma, p.kprime)
-    e4 = np.where(rest_ok, k, np.inf)
+    t = thresholds(k, p.constants)
+    lower, upper, mu_s, f_pos = t.lower, t.upper, t.mu_star, t.f_pos
+    e4 = np.where(t.rest_ok, t.mu_rest, np.inf)
     e1 = np.minimum(np.maximum(lower, 0.0), e4)
     e2 = np.minimum(np.maximum(upper, e1), e4)
     e3 = np.minimum(np.maximum(mu_s, e2), e4)
@@ -62,9 +71,15 @@ def final_intervals(p: Parameters, k: np.ndarray, mu_cap: float) -> dict[Mode, I
 
 
 def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> Interval:
-    """The interval of mu of the report's raw region of ``mode`` (:mod:`regimemap.mechanics.regions`)."""
+    """The interval of mu of the report's raw region of ``mode`` (:mod:`regimemap.mechanics.regions`).
+
+    For the report's block (regular columns); a loaded block's raw regions are
+    :func:`raw_pieces`.
+    """
     k = np.asarray(k, dtype=np.float64)
-    rest_ok, lower, upper, mu_s, f_pos = thresholds(k, p.gamma, p.kprime)
+    cst = p.constants
+    t = thresholds(k, cst)
+    rest_ok, lower, upper, mu_s, f_pos = t.rest_ok, t.lower, t.upper, t.mu_star, t.f_pos
     zero = np.zeros_like(k)
     top = np.full_like(k, mu_cap)
     mode = Mode(mode)
@@ -73,10 +88,10 @@ def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> In
     elif mode is Mode.SL:
         lo, hi = np.maximum(lower, 0.0), np.minimum(k, upper)
     elif mode is Mode.RO:
-        rock_ok = k * (p.gamma * (1.0 + p.kprime)) >= 1.0
+        rock_ok = rock_possible(k, cst)
         lo, hi = np.where(rock_ok, mu_s, top), top
     elif mode is Mode.SRO_MINUS:
-        ms = mu_star_signed(k, p.a, p.b, p.c, p.d)
+        ms = mu_star_signed(k, cst.aO, cst.bO, cst.cO, cst.dO)
         mb = p.mu_Bprime
         lo1, hi1 = np.maximum(upper, 0.0), np.minimum(ms, mb)
         lo2, hi2 = np.maximum(np.maximum(ms, mb), 0.0), upper
@@ -84,10 +99,10 @@ def raw_intervals(mode: Mode, p: Parameters, k: np.ndarray, mu_cap: float) -> In
         lo, hi = np.where(use2, lo2, lo1), np.where(use2, hi2, hi1)
     elif mode is Mode.SRO_PLUS:
         lo = zero
-        hi = np.where(~f_pos, np.minimum(mu_s, k * p.kprime - 1.0 / p.gamma), zero)
+        hi = np.where(~f_pos, np.minimum(mu_s, dotted_line_344(k, cst)), zero)
     elif mode is Mode.SRO_PRIME_MINUS:
-        mss = mu_star_star(k, p.a, p.b, p.c, p.d)
-        bound = np.where(p.c * k >= p.d, lower, np.minimum(lower, mss))
+        mss = mu_star_star(k, cst.aP, cst.bP, cst.cP, cst.dP)
+        bound = np.where(cst.cP * k >= cst.dP, lower, np.minimum(lower, mss))
         lo, hi = zero, bound
     else:
         lo, hi = zero, zero
@@ -105,6 +120,17 @@ def breakpoints(p: Parameters) -> list[float]:
     # where the upper line crosses mu = 0 (above C) and mu_B' (below C)
     if p.kprime != 0.0:
         pts.append((1.0 / p.gamma - p.mu_Bprime) / p.kprime)
+    if p.loaded:
+        # where a condition on k alone changes: W = 0, f_y of rocking about O = 0,
+        # rest about O' fails, lift-off starts or ends, and where the lines meet mu_B'
+        c = p.constants
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t0, t1 = affine_terms(np.zeros(1), c), affine_terms(np.ones(1), c)
+            for key in ("W", "fyO", "TP", "TO", "fxO", "fxP"):
+                pts.append(float(-t0[key][0] / (t1[key][0] - t0[key][0])))
+        lift = p.lift_off
+        if lift is not None:
+            pts += list(lift)
     return sorted({float(x) for x in pts if math.isfinite(x) and x >= 0.0})
 
 
@@ -164,9 +190,11 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
     dict[Mode, list[ndarray of shape (n, 2)]]
         For each mode, one closed polygon per run of k where it is present.
     """
-    modes = tuple(MAP_MODES if modes is None else modes)
+    modes = tuple((LOADED_MAP_MODES if p.loaded else MAP_MODES) if modes is None else modes)
     mu_cap = mu_max * overshoot
     k = sample_k(p, k_max, samples)
+    if p.loaded:
+        return _track_polygons(p, k, mu_cap, modes, raw)
 
     def intervals(kk: np.ndarray) -> dict[Mode, Interval]:
         if raw:
@@ -199,4 +227,116 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
                 poly = np.concatenate([np.column_stack([kk, lo_k]), np.column_stack([kk[::-1], hi_k[::-1]])])
                 polys.append(poly)
         out[mode] = polys
+    return out
+
+
+# -- loaded blocks: several pieces of a mode per column --------------------------------------
+
+Pieces = list[list[tuple[Mode, float, float]]]
+
+
+def _merge(column: list[tuple[Mode, float, float]]) -> list[tuple[Mode, float, float]]:
+    """Sort pieces by lo and join touching pieces of the same mode."""
+    out: list[tuple[Mode, float, float]] = []
+    for m, lo, hi in sorted(column, key=lambda x: (x[1], x[2])):
+        if out and out[-1][0] == m and out[-1][2] >= lo:
+            out[-1] = (m, out[-1][1], max(out[-1][2], hi))
+        else:
+            out.append((m, lo, hi))
+    return out
+
+
+def final_pieces(p: Parameters, k: np.ndarray, mu_cap: float) -> Pieces:
+    """The final map along each column as pieces ``(mode, lo, hi)`` of mu in [0, mu_cap], bottom up.
+
+    Each column is cut at the thresholds of the rule and at the ends of every
+    hypothesis's interval (:func:`~regimemap.mechanics.regions.column_intervals`),
+    so the mode is constant on each piece; it is labelled by the rule itself
+    (:func:`~regimemap.maps.classify.classify_constants`) at its middle.
+    """
+    k = np.asarray(k, dtype=np.float64)
+    cst = p.constants
+    t = thresholds(k, cst)
+    ends = [np.zeros_like(k), np.full_like(k, mu_cap), t.mu_rest, t.upper, t.lower, t.mu_star]
+    for _, lo, hi in column_intervals(k, cst):
+        ends += [lo, hi]
+    E = np.stack([np.broadcast_to(e, k.shape) for e in ends], axis=1)
+    E = np.sort(np.clip(np.where(np.isfinite(E), E, np.where(E > 0, mu_cap, 0.0)), 0.0, mu_cap), axis=1)
+    a, b = E[:, :-1], E[:, 1:]
+    mid = 0.5 * (a + b)
+    lab = classify_constants(np.broadcast_to(k[:, None], mid.shape).copy(), mid, cst)
+    out: Pieces = []
+    for j in range(k.size):
+        col = [(Mode(int(lab[j, s])), float(a[j, s]), float(b[j, s]))
+               for s in range(mid.shape[1]) if b[j, s] > a[j, s]]
+        out.append(_merge(col))
+    return out
+
+
+def raw_pieces(p: Parameters, k: np.ndarray, mu_cap: float, modes: Iterable[Mode]) -> Pieces:
+    """The raw regions of ``modes`` along each column as pieces ``(mode, lo, hi)`` (they may overlap)."""
+    k = np.asarray(k, dtype=np.float64)
+    wanted = set(modes)
+    out: Pieces = [[] for _ in range(k.size)]
+    for m, lo, hi in column_intervals(k, p.constants):
+        if m not in wanted:
+            continue
+        lo_c, hi_c = np.clip(lo, 0.0, mu_cap), np.clip(hi, 0.0, mu_cap)
+        for j in np.flatnonzero(hi_c > lo_c):
+            out[j].append((m, float(lo_c[j]), float(hi_c[j])))
+    return [_merge(col) for col in out]
+
+
+def _tracks(cols: Pieces, n: int) -> dict[tuple[Mode, int], tuple[np.ndarray, np.ndarray]]:
+    """(mode, t) -> per-column (lo, hi) of the t-th piece of that mode (NaN where absent)."""
+    tracks: dict[tuple[Mode, int], tuple[np.ndarray, np.ndarray]] = {}
+    for j, pieces in enumerate(cols):
+        seen: dict[Mode, int] = {}
+        for m, lo, hi in pieces:
+            t = seen.get(m, 0)
+            seen[m] = t + 1
+            if (m, t) not in tracks:
+                tracks[(m, t)] = (np.full(n, np.nan), np.full(n, np.nan))
+            tracks[(m, t)][0][j] = lo
+            tracks[(m, t)][1][j] = hi
+    return tracks
+
+
+def _track_polygons(p: Parameters, k: np.ndarray, mu_cap: float, modes: tuple[Mode, ...],
+                    raw: bool) -> dict[Mode, list[np.ndarray]]:
+    def pieces(kk: np.ndarray) -> Pieces:
+        return raw_pieces(p, kk, mu_cap, modes) if raw else final_pieces(p, kk, mu_cap)
+
+    def piece_at(kk: float, key: tuple[Mode, int]) -> tuple[float, float] | None:
+        found = [(lo, hi) for m, lo, hi in pieces(np.array([kk]))[0] if m == key[0]]
+        return found[key[1]] if len(found) > key[1] else None
+
+    out: dict[Mode, list[np.ndarray]] = {m: [] for m in modes}
+    for key, (lo, hi) in sorted(_tracks(pieces(k), k.size).items(), key=lambda kv: (int(kv[0][0]), kv[0][1])):
+        if key[0] not in out:
+            continue
+        def present(kk: float, key: tuple[Mode, int] = key) -> bool:
+            return piece_at(kk, key) is not None
+
+        idx = np.flatnonzero(np.isfinite(lo))
+        for run in np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1):
+            ks, los, his = list(k[run]), list(lo[run]), list(hi[run])
+            i0, i1 = run[0], run[-1]
+            for inner, outer, front in ((i0, i0 - 1, True), (i1, i1 + 1, False)):
+                if not 0 <= outer < k.size:
+                    continue
+                ke = bisect_edge(present, k[inner], k[outer])
+                pc = piece_at(ke, key)
+                if pc is not None and ke != k[inner]:
+                    if front:
+                        ks.insert(0, ke)
+                        los.insert(0, pc[0])
+                        his.insert(0, pc[1])
+                    else:
+                        ks.append(ke)
+                        los.append(pc[0])
+                        his.append(pc[1])
+            kk, ll, hh = np.asarray(ks), np.asarray(los), np.asarray(his)
+            out[key[0]].append(np.concatenate([np.column_stack([kk, ll]),
+                                               np.column_stack([kk[::-1], hh[::-1]])]))
     return out

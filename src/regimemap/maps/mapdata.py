@@ -23,7 +23,7 @@ import numpy as np
 
 from ..mechanics.block import Parameters
 from ..mechanics.curves import Curve, NamedPoint, map_curves, named_points
-from ..mechanics.modes import MAP_MODES, Mode
+from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.regions import raw_region
 from .classify import classify
 from .geometry import DEFAULT_SAMPLES, breakpoints, region_polygons
@@ -85,7 +85,7 @@ def _side_key(p: Parameters, k: np.ndarray, mu: np.ndarray, raw: bool,
     k = np.maximum(k, 0.0)
     mu = np.maximum(mu, 0.0)
     if not raw:
-        return classify(k, mu, p.gamma, p.kprime).astype(np.int64)
+        return classify(k, mu, p.gamma, p.kprime, **p.loads).astype(np.int64)
     key = np.zeros(k.shape, dtype=np.int64)
     for i, m in enumerate(modes):
         key |= raw_region(m, p, k, mu).astype(np.int64) << i
@@ -194,8 +194,13 @@ def _sampled(c: Curve, p: Parameters, k_max: float, mu_max: float, n: int) -> np
     top = mu_max * 1.02
     k_end = k_max * 1.02
     kA = p.k_A
+    if c.vertical_k is not None and c.name in ("LO", "LO_end"):
+        if not 0.0 <= c.vertical_k <= k_max:
+            return None
+        mu = np.linspace(0.0, top, n)
+        return np.column_stack([np.full_like(mu, c.vertical_k), mu])
     if c.vertical_k is not None:
-        mu0 = kA if p.above else 0.0
+        mu0 = p.mu_A if p.above else 0.0
         if p.above and not (kA <= k_max and kA < top):
             return None
         if not p.above and not (math.isfinite(kA) and kA <= k_max):
@@ -204,13 +209,17 @@ def _sampled(c: Curve, p: Parameters, k_max: float, mu_max: float, n: int) -> np
         return np.column_stack([np.full_like(mu, c.vertical_k), mu])
     assert c.func is not None
     if c.name == "OA":
+        if p.loaded:
+            pts = _graph(c.func, p, 0.0, min(c.k_to, k_end), n)
+            return _clip_mu(pts[np.isfinite(pts[:, 1])], 0.0, top)
         return _graph(c.func, p, 0.0, min(c.k_to, k_end, top), n)
     if c.name == "mu_star_star":
         kF = c.k_from
         if not 0.0 <= kF < k_max:
             return None
         # mu** = (ak - b)/(d - ck) reaches the top of the view at k = (b + M d)/(a + M c)
-        k_top = (p.b + top * p.d) / (p.a + top * p.c)
+        cst = p.constants
+        k_top = (cst.bP + top * cst.dP) / (cst.aP + top * cst.cP)
         k1 = min(k_top, k_end, c.k_to)
         kk = kF + (k1 - kF) * np.sin(np.linspace(0.0, 0.5 * np.pi, n))  # dense near the pole
         pts = _graph(c.func, p, kF, k1, n, k=kk)
@@ -222,7 +231,10 @@ def _sampled(c: Curve, p: Parameters, k_max: float, mu_max: float, n: int) -> np
     # a curve that starts right of the view is not drawn (mu* from A: up to the edge)
     if c.k_from > 0.0 and not (c.k_from <= k_max if c.name == "mu_star" else c.k_from < k_max):
         return None
-    return _clip_mu(_graph(c.func, p, c.k_from, min(c.k_to, k_end), n), 0.0, top)
+    pts = _graph(c.func, p, c.k_from, min(c.k_to, k_end), n)
+    if p.loaded:  # a loaded curve may have a pole (W = 0, f_y = 0): keep its finite part
+        pts = pts[np.isfinite(pts[:, 1])]
+    return _clip_mu(pts, 0.0, top)
 
 
 # Which curves a single-mode (raw) figure draws although they bound nothing there:
@@ -312,7 +324,8 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
     k_max, mu_max : float, optional
         The view; computed by :func:`auto_extent` when omitted.
     modes : iterable of Mode, optional
-        Modes to shade (default: the six map modes).
+        Modes to shade (default: the six map modes, or
+        :data:`~regimemap.mechanics.modes.LOADED_MAP_MODES` for a loaded block).
     raw : bool
         The report's raw region of each mode instead of the final map.
     samples : int
@@ -329,7 +342,8 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
     MapData
     """
     p = params
-    modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
+    default = LOADED_MAP_MODES if p.loaded else MAP_MODES
+    modes_t = tuple(default if modes is None else (Mode(m) for m in modes))
     raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
     include = list(include)
     if k_max is None or mu_max is None:

@@ -26,6 +26,15 @@ floating-point numbers.  The reported boundary ``at`` is the first value
 found with another mode, so ``classify`` gives the point's mode everywhere
 strictly between the point and ``at`` and another mode at ``at``.
 
+With loads
+----------
+The rule's conditions (:func:`regimemap.mechanics.regions.column_intervals`)
+are all sign conditions on expressions that are affine in k at fixed mu
+(:func:`regimemap.mechanics.regions.affine_terms`) and affine in mu at fixed k,
+so the list of roots stays complete: along k the root of every such expression
+(each from its values at k = 0 and k = 1), along mu the ends of every
+hypothesis's interval.  The walk and the bisection are the same.
+
 Search range and special values
 -------------------------------
 The search covers the whole half-line: k (or mu) from the point's value up
@@ -47,14 +56,18 @@ from typing import Any
 import numpy as np
 
 from ..mechanics import constants as C
+from ..mechanics.loads import BlockConstants, block_constants
 from ..mechanics.modes import Mode
-from ..mechanics.validation import check_gamma, check_kprime, check_nonnegative_array
+from ..mechanics.regions import affine_terms, column_intervals
+from ..mechanics.validation import check_gamma, check_kprime, check_loads, check_nonnegative_array
 from .classify import classify
 
 __all__ = [
     "BOUNDARY_ULPS",
     "Crossing",
     "Margin",
+    "carries_loads",
+    "checked_loads",
     "crossing",
     "finite_or_none",
     "margin",
@@ -170,28 +183,67 @@ class Margin:
         }
 
 
-def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray) -> np.ndarray:
-    """Every k where the rule of classify may change along the line of constant mu; shape (n, 7)."""
-    return C.k_roots_at_mu(mu, g, kp)
+def _constants(g: np.ndarray, kp: np.ndarray, loads: dict[str, Any]) -> BlockConstants:
+    return block_constants(g, kp, loads.get("buoyancy", 0.0), loads.get("uplift", 0.0),
+                           loads.get("uplift_ratio", 0.0), loads.get("uplift_arm", 1.0 / 3.0),
+                           loads.get("gyration"))
 
 
-def _roots_along_mu(k: np.ndarray, g: np.ndarray, kp: np.ndarray) -> np.ndarray:
-    """Every mu where the rule of classify may change along the line of constant k; shape (n, 4)."""
-    _, lower, upper, mu_s, _ = C.thresholds(k, g, kp)
-    return np.stack([k, upper, lower, mu_s], axis=1)
+def carries_loads(loads: dict[str, Any]) -> bool:
+    """True when the keywords describe a loaded block (not the report's)."""
+    return any(loads.get(key, 0.0) != 0.0 for key in ("buoyancy", "uplift", "uplift_ratio")) \
+        or loads.get("gyration") is not None
+
+
+def _expressions(t: dict[str, np.ndarray], mu: np.ndarray, g: np.ndarray, i2: Any,
+                 k: float) -> list[np.ndarray]:
+    """Every expression whose sign a condition of the rule tests, at one k (affine in k)."""
+    W, S = t["W"], t["S"]
+    out = [W, S, t["TO"], t["TP"], t["fxO"], t["fyO"], t["fxP"], t["fyP"], W * i2 + S, W * i2 - S,
+           mu * W - k]
+    for sg in (1.0, -1.0):
+        out += [W - S - sg * g * mu * W, W + S - sg * g * mu * W, S - W - sg * g * mu * W,
+                mu * t["fyO"] - sg * t["fxO"], mu * t["fyP"] - sg * t["fxP"]]
+    return out
+
+
+def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
+                   loads: dict[str, Any] | None = None) -> np.ndarray:
+    """Every k where the rule of classify may change along the line of constant mu; shape (n, m)."""
+    if not loads or not carries_loads(loads):
+        return C.k_roots_at_mu(mu, g, kp)
+    cst = _constants(g, kp, loads)
+    e0 = _expressions(affine_terms(np.zeros_like(mu), cst), mu, g, cst.i2, 0.0)
+    e1 = _expressions(affine_terms(np.ones_like(mu), cst), mu, g, cst.i2, 1.0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        roots = [np.broadcast_to(-a / (b - a), mu.shape) for a, b in zip(e0, e1)]
+    return np.stack(roots, axis=1)
+
+
+def _roots_along_mu(k: np.ndarray, g: np.ndarray, kp: np.ndarray,
+                    loads: dict[str, Any] | None = None) -> np.ndarray:
+    """Every mu where the rule of classify may change along the line of constant k; shape (n, m)."""
+    cst = _constants(g, kp, loads or {})
+    t = C.thresholds(k, cst)
+    cols = [t.mu_rest, t.upper, t.lower, t.mu_star]
+    if loads and carries_loads(loads):
+        cols.append(np.broadcast_to(cst.A0 / (3.0 * cst.gamma), k.shape))
+        for _, lo, hi in column_intervals(k, cst):
+            cols += [lo, hi]
+    return np.stack([np.broadcast_to(c, k.shape) for c in cols], axis=1)
 
 
 def _classify_along(var: str, values: np.ndarray, other: np.ndarray, g: np.ndarray,
-                    kp: np.ndarray) -> np.ndarray:
+                    kp: np.ndarray, loads: dict[str, Any]) -> np.ndarray:
     """classify with ``var`` = values (n, m) and the other variable fixed per row."""
     o, gg, kk = (np.broadcast_to(v[:, None], values.shape) for v in (other, g, kp))
     if var == "k":
-        return classify(values, o, gg, kk)
-    return classify(o, values, gg, kk)
+        return classify(values, o, gg, kk, **loads)
+    return classify(o, values, gg, kk, **loads)
 
 
 def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndarray,
-          m0: np.ndarray, roots: np.ndarray, up: bool
+          m0: np.ndarray, roots: np.ndarray, up: bool, loads: dict[str, Any]
           ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Nearest change of mode from x in one direction; returns (found, at, to)."""
     n = x.size
@@ -237,7 +289,7 @@ def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndar
     # a gap of zero width between equal roots has no interior
     pvalid &= np.isfinite(probes)
     safe = np.where(pvalid, probes, xc)
-    modes = _classify_along(var, safe, other, g, kp)
+    modes = _classify_along(var, safe, other, g, kp, loads)
     differs = pvalid & (modes != m0[:, None])
     found = differs.any(axis=1)
     j = np.argmax(differs, axis=1)
@@ -266,7 +318,7 @@ def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndar
         if go.any():
             ii = idx[go]
             mm = mid[go]
-            mk = _classify_along(var, mm[:, None], other[ii], g[ii], kp[ii])[:, 0]
+            mk = _classify_along(var, mm[:, None], other[ii], g[ii], kp[ii], loads)[:, 0]
             same = mk == m0[ii]
             lo[ii[same]] = mm[same]
             hi[ii[~same]] = mm[~same]
@@ -275,19 +327,29 @@ def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndar
 
 
 def margin_arrays(var: str, k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
-                  m0: np.ndarray) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
+                  m0: np.ndarray, loads: dict[str, Any] | None = None
+                  ) -> dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]]:
     """The nearest change of mode up and down along ``var`` for arrays of points.
 
+    ``loads`` are the (checked) keywords of :func:`regimemap.classify`.
     Returns ``{"up": (found, at, to), "down": (found, at, to)}``, each an array per point.
     """
+    loads = dict(loads or {})
     if var == "k":
-        x, other, roots = k, mu, _roots_along_k(mu, g, kp)
+        x, other, roots = k, mu, _roots_along_k(mu, g, kp, loads)
     else:
-        x, other, roots = mu, k, _roots_along_mu(k, g, kp)
+        x, other, roots = mu, k, _roots_along_mu(k, g, kp, loads)
     return {
-        "up": _walk(var, x, other, g, kp, m0, roots, up=True),
-        "down": _walk(var, x, other, g, kp, m0, roots, up=False),
+        "up": _walk(var, x, other, g, kp, m0, roots, True, loads),
+        "down": _walk(var, x, other, g, kp, m0, roots, False, loads),
     }
+
+
+def checked_loads(buoyancy: Any = 0.0, uplift: Any = 0.0, uplift_ratio: Any = 0.0,
+                  uplift_arm: Any = 1.0 / 3.0, gyration: Any = None, crest: Any = 1.0) -> dict[str, Any]:
+    """The loads as checked keyword arguments of :func:`regimemap.classify`."""
+    names = ("buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration", "crest")
+    return dict(zip(names, check_loads(buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest)))
 
 
 def crossing(direction: str, x: float, found: bool, at: float, to: int) -> Crossing | None:
@@ -298,7 +360,9 @@ def crossing(direction: str, x: float, found: bool, at: float, to: int) -> Cross
     return Crossing(direction, float(at), delta, rel, Mode(int(to)))
 
 
-def margin(k: float, mu: float, gamma: float, kprime: float) -> tuple[Margin, Margin]:
+def margin(k: float, mu: float, gamma: float, kprime: float, *, buoyancy: float = 0.0,
+           uplift: float = 0.0, uplift_ratio: float = 0.0, uplift_arm: float = 1.0 / 3.0,
+           gyration: float | None = None, crest: float = 1.0) -> tuple[Margin, Margin]:
     """The margins of one point along k (mu fixed) and along mu (k fixed).
 
     Parameters
@@ -306,7 +370,9 @@ def margin(k: float, mu: float, gamma: float, kprime: float) -> tuple[Margin, Ma
     k, mu : float
         The point: force F/(mg) >= 0 and friction coefficient >= 0.
     gamma, kprime : float
-        Aspect ratio H/B > 0 and force height h/H in [-1, 1].
+        Aspect ratio H/B > 0 and force height h/H in [-1, crest].
+    buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest : float, keyword-only
+        The loads, as in :func:`regimemap.classify`.
 
     Returns
     -------
@@ -324,12 +390,13 @@ def margin(k: float, mu: float, gamma: float, kprime: float) -> tuple[Margin, Ma
     mu_arr = check_nonnegative_array("mu", mu).reshape(-1)
     if k_arr.size != 1 or mu_arr.size != 1:
         raise ValueError("margin() takes one point; use query_points for many")
+    loads = checked_loads(buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest)
     g = np.array([check_gamma(gamma)])
-    kp = np.array([check_kprime(kprime)])
-    m0 = classify(k_arr, mu_arr, g, kp)
+    kp = np.array([check_kprime(kprime, loads["crest"])])
+    m0 = classify(k_arr, mu_arr, g, kp, **loads)
     out = []
     for var, x in (("k", float(k_arr[0])), ("mu", float(mu_arr[0]))):
-        arr = margin_arrays(var, k_arr, mu_arr, g, kp, m0)
+        arr = margin_arrays(var, k_arr, mu_arr, g, kp, m0, loads)
         up = crossing("up", x, bool(arr["up"][0][0]), arr["up"][1][0], arr["up"][2][0])
         down = crossing("down", x, bool(arr["down"][0][0]), arr["down"][1][0], arr["down"][2][0])
         out.append(Margin(var, x, up, down))

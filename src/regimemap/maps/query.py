@@ -24,6 +24,11 @@ the dimensionless groups that decided it), the answer is a
   fixed), up or down, that changes the mode, and the mode it changes to;
 * the thresholds at the point's k (mu*(k), the lines CD/AB and DC, k_A, mu_B').
 
+With loads (keyword-only ``buoyancy``, ``uplift``, ``uplift_ratio``,
+``uplift_arm``, ``gyration``, ``crest``, as in :func:`regimemap.classify`) the
+solver carries them, lift-off (LO) is one more mode, and where several modes are
+admissible Gauss's least constraint chooses (:attr:`PointResult.chosen_by`).
+
 The margin is computed by :mod:`regimemap.maps.margins`; flat rows and text for
 people are :mod:`regimemap.io.tables`.
 """
@@ -39,11 +44,22 @@ import numpy as np
 
 from ..mechanics import constants as C
 from ..mechanics.block import Case, Parameters
-from ..mechanics.modes import PRIORITY, Mode
+from ..mechanics.loads import block_constants
+from ..mechanics.modes import SELECTION_ORDER, Mode
 from ..mechanics.solver import Hypothesis, solve
 from ..mechanics.validation import check_gamma, check_kprime, check_nonnegative_array
 from .classify import classify
-from .margins import Crossing, Margin, crossing, finite_or_none, margin, margin_arrays, negligible
+from .margins import (
+    Crossing,
+    Margin,
+    carries_loads,
+    checked_loads,
+    crossing,
+    finite_or_none,
+    margin,
+    margin_arrays,
+    negligible,
+)
 from .points import DesignPoint
 
 __all__ = [
@@ -101,8 +117,9 @@ class PointResult:
         The report's case of (gamma, kprime).
     admissible : tuple of Mode
         Every mode the equations of motion admit at the point (in
-        :data:`~regimemap.mechanics.modes.PRIORITY` order).  Section 4.7 picks the
-        first, which is :attr:`mode`.
+        :data:`~regimemap.mechanics.modes.SELECTION_ORDER`: lift-off, then
+        Section 4.7's PRIORITY).  Section 4.7 (least constraint with loads)
+        picks the first, which is :attr:`mode`.
     hypothesis_admissible : bool
         Whether the solver finds the chosen hypothesis admissible (True for
         valid input wherever the solver can solve; reported rather than assumed).
@@ -117,7 +134,11 @@ class PointResult:
     thresholds : dict
         The map's thresholds at this k: ``mu_star`` (3.24)/(4.40),
         ``upper_line`` 1/g - k k' (CD above C, AB below), ``lower_line``
-        -1/g - k k' (DC), ``k_A`` (3.5)/(4.10) and ``mu_Bprime`` (4.49).
+        -1/g - k k' (DC), ``k_A`` (3.5)/(4.10) and ``mu_Bprime`` (4.49)
+        (their generalised forms with loads).
+    loads : dict
+        The loads of the block (``buoyancy`` ... ``crest``) when it carries any,
+        else empty.
     """
 
     k: float
@@ -142,6 +163,7 @@ class PointResult:
     thresholds: dict[str, float] = field(default_factory=dict)
     name: str = ""
     solvable: bool = True
+    loads: dict[str, Any] = field(default_factory=dict)
 
     @property
     def several_admissible(self) -> bool:
@@ -168,13 +190,16 @@ class PointResult:
 
     @property
     def chosen_by(self) -> str:
-        """How the mode was chosen: ``"unique"``, ``"boundary"``, ``"Section 4.7"``, or
-        ``"map only"`` when the solver admits nothing (see :attr:`solvable`)."""
+        """How the mode was chosen: ``"unique"``, ``"boundary"``, ``"Section 4.7"``
+        (``"least constraint"`` for a loaded block), or ``"map only"`` when the
+        solver admits nothing (see :attr:`solvable`)."""
         if not self.admissible:
             return "map only"
         if not self.several_admissible:
             return "unique"
-        return "boundary" if self.on_boundary else "Section 4.7"
+        if self.on_boundary:
+            return "boundary"
+        return "least constraint" if self.loads else "Section 4.7"
 
     def as_dict(self) -> dict[str, Any]:
         """A JSON-ready dict (labels for modes, None for non-finite numbers)."""
@@ -205,6 +230,7 @@ class PointResult:
             "chosen_by": self.chosen_by,
             "margin": {"k": self.margin_k.as_dict(), "mu": self.margin_mu.as_dict()},
             "thresholds": {key: finite_or_none(v) for key, v in self.thresholds.items()},
+            **({"loads": dict(self.loads)} if self.loads else {}),
         }
 
 
@@ -212,14 +238,20 @@ class PointResult:
 # queries
 # --------------------------------------------------------------------------------------
 def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
-                 names: Sequence[str], cases: Sequence[Case]) -> list[PointResult]:
-    m0 = classify(k, mu, g, kp)
-    responses = {h: solve(h, k, mu, g, kp) for h in Hypothesis}
+                 names: Sequence[str], cases: Sequence[Case], loads: dict[str, Any]
+                 ) -> list[PointResult]:
+    m0 = classify(k, mu, g, kp, **loads)
+    solver_loads = {key: v for key, v in loads.items() if key != "crest"}
+    responses = {h: solve(h, k, mu, g, kp, **solver_loads) for h in Hypothesis}
     adm_mode: dict[Mode, np.ndarray] = {}
     for h, r in responses.items():
         adm_mode[h.mode] = adm_mode[h.mode] | r.ok if h.mode in adm_mode else r.ok
-    margins = {var: margin_arrays(var, k, mu, g, kp, m0) for var in ("k", "mu")}
-    _, lower, upper, mu_s, _ = C.thresholds(k, g, kp)
+    margins = {var: margin_arrays(var, k, mu, g, kp, m0, loads) for var in ("k", "mu")}
+    cst = block_constants(g, kp, loads["buoyancy"], loads["uplift"], loads["uplift_ratio"],
+                          loads["uplift_arm"], loads["gyration"])
+    t = C.thresholds(k, cst)
+    lower, upper, mu_s = t.lower, t.upper, t.mu_star
+    shown = dict(loads) if carries_loads(loads) else {}
     out: list[PointResult] = []
     for i in range(k.size):
         mode = Mode(int(m0[i]))
@@ -233,7 +265,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
 
         slip = None if hyp.sigma == 0 or not solvable else float(r.slip[i])
         lift = None if hyp.contact == "full" or not solvable else float(r.lift[i])
-        adm = tuple(m for m in PRIORITY if m in adm_mode and adm_mode[m][i])
+        adm = tuple(m for m in SELECTION_ORDER if m in adm_mode and adm_mode[m][i])
         mrg = []
         for var, x in (("k", float(k[i])), ("mu", float(mu[i]))):
             arr = margins[var]
@@ -253,15 +285,22 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
                 "mu_star": float(mu_s[i]),
                 "upper_line": float(upper[i]),
                 "lower_line": float(lower[i]),
-                "k_A": C.k_A(float(g[i]), float(kp[i])),
-                "mu_Bprime": C.mu_Bprime(float(g[i])),
+                "k_A": C.k_A(block_constants(float(g[i]), float(kp[i]), *_load_args(loads))),
+                "mu_Bprime": C.mu_Bprime(block_constants(float(g[i]), float(kp[i]), *_load_args(loads))),
             },
-            name=names[i],
+            name=names[i], loads=shown,
         ))
     return out
 
 
-def query_point(k: float, mu: float, gamma: float, kprime: float, name: str = "") -> PointResult:
+def _load_args(loads: dict[str, Any]) -> tuple[Any, ...]:
+    return tuple(loads[key] for key in ("buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration"))
+
+
+def query_point(k: float, mu: float, gamma: float, kprime: float, name: str = "", *,
+                buoyancy: float = 0.0, uplift: float = 0.0, uplift_ratio: float = 0.0,
+                uplift_arm: float = 1.0 / 3.0, gyration: float | None = None,
+                crest: float = 1.0) -> PointResult:
     """The mode at (k, mu), the physics at its initiation and its margin.
 
     Parameters
@@ -273,9 +312,11 @@ def query_point(k: float, mu: float, gamma: float, kprime: float, name: str = ""
     gamma : float
         Aspect ratio H/B > 0.
     kprime : float
-        Force height h/H in [-1, 1] (negative below the centre of mass).
+        Force height h/H in [-1, crest] (negative below the centre of mass).
     name : str, optional
         A label carried into the result.
+    buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest : float, keyword-only
+        The loads of the block, as in :func:`regimemap.classify`.
 
     Returns
     -------
@@ -294,7 +335,9 @@ def query_point(k: float, mu: float, gamma: float, kprime: float, name: str = ""
     ('RO', 'ROCK_O', True)
     """
     return query_points([DesignPoint(_scalar("k", k), _scalar("mu", mu), name)],
-                        gamma=gamma, kprime=kprime)[0]
+                        gamma=gamma, kprime=kprime, buoyancy=buoyancy, uplift=uplift,
+                        uplift_ratio=uplift_ratio, uplift_arm=uplift_arm, gyration=gyration,
+                        crest=crest)[0]
 
 
 def _scalar(name: str, v: Any) -> float:
@@ -305,17 +348,22 @@ def _scalar(name: str, v: Any) -> float:
 
 
 def query_points(points: Iterable[DesignPoint | tuple[float, float]],
-                 gamma: float | None = None, kprime: float | None = None) -> list[PointResult]:
+                 gamma: float | None = None, kprime: float | None = None, *,
+                 buoyancy: float = 0.0, uplift: float = 0.0, uplift_ratio: float = 0.0,
+                 uplift_arm: float = 1.0 / 3.0, gyration: float | None = None,
+                 crest: float = 1.0) -> list[PointResult]:
     """:func:`query_point` for many points (vectorised in blocks).
 
     Parameters
     ----------
     points : iterable of DesignPoint or (k, mu) pairs
-        A point's own ``gamma``/``kprime`` (see
+        A point's own ``gamma``/``kprime`` and loads (see
         :class:`~regimemap.maps.points.DesignPoint`) take precedence over the
         defaults below.
     gamma, kprime : float, optional
         Defaults for points that do not carry their own.
+    buoyancy, uplift, uplift_ratio, uplift_arm, gyration, crest : float, keyword-only
+        The loads of the block (the default of every point), as in :func:`regimemap.classify`.
 
     Returns
     -------
@@ -327,14 +375,47 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
         If a point lacks gamma or kprime and no default is given (the message
         names the point by position and name), or any value is invalid.
     """
+    defaults = {"buoyancy": buoyancy, "uplift": uplift, "uplift_ratio": uplift_ratio,
+                "uplift_arm": uplift_arm, "gyration": gyration, "crest": crest}
+    pts = list(points)
+    if any(isinstance(pt, DesignPoint) and pt.loads for pt in pts):
+        # points with loads of their own: one shared-loads query per set of loads
+        groups: dict[tuple[Any, ...], list[int]] = {}
+        for i, pt in enumerate(pts):
+            own = pt.loads if isinstance(pt, DesignPoint) else {}
+            key = tuple(own.get(name, default) for name, default in defaults.items())
+            groups.setdefault(key, []).append(i)
+        out_all: list[PointResult | None] = [None] * len(pts)
+        for key, idx in groups.items():
+            res = _query_shared([pts[i] for i in idx], gamma, kprime, dict(zip(defaults, key)),
+                                [i + 1 for i in idx])
+            for i, r in zip(idx, res):
+                out_all[i] = r
+        return [r for r in out_all if r is not None]
+    return _query_shared(pts, gamma, kprime, defaults, range(1, len(pts) + 1))
+
+
+def _query_shared(points: Sequence[DesignPoint | tuple[float, float]], gamma: float | None,
+                  kprime: float | None, load_kw: dict[str, Any], positions: Iterable[int]
+                  ) -> list[PointResult]:
+    """:func:`query_points` of points that share their loads (``positions``: their numbers)."""
+    try:
+        loads = checked_loads(**load_kw)
+    except ValueError as exc:
+        first = next(iter(positions), 1)
+        pt0 = points[0] if points else None
+        if pt0 is not None and isinstance(pt0, DesignPoint) and pt0.loads:
+            label = f"point {first}" + (f" ({pt0.name!r})" if pt0.name else "")
+            raise ValueError(f"{label}: {exc}") from None
+        raise
     g_def = None if gamma is None else check_gamma(gamma)
-    kp_def = None if kprime is None else check_kprime(kprime)
+    kp_def = None if kprime is None else check_kprime(kprime, loads["crest"])
     ks: list[float] = []
     mus: list[float] = []
     gs: list[float] = []
     kps: list[float] = []
     names: list[str] = []
-    for i, pt in enumerate(points, start=1):
+    for i, pt in zip(positions, points):
         if not isinstance(pt, DesignPoint):
             try:
                 kk, mm = pt
@@ -353,7 +434,7 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
             ks.append(_scalar("k", pt.k))
             mus.append(_scalar("mu", pt.mu))
             gs.append(check_gamma(g))
-            kps.append(check_kprime(kp))
+            kps.append(check_kprime(kp, loads["crest"]))
         except ValueError as exc:
             raise ValueError(f"{label}: {exc}") from None
         names.append(pt.name)
@@ -366,10 +447,10 @@ def query_points(points: Iterable[DesignPoint | tuple[float, float]],
     for gi, kpi in zip(gs, kps):
         key = (gi, kpi)
         if key not in case_cache:
-            case_cache[key] = Parameters(gi, kpi).case
+            case_cache[key] = Parameters(gi, kpi, crest=loads["crest"]).case
         cases.append(case_cache[key])
     out: list[PointResult] = []
     for s in range(0, k.size, _BLOCK):
         sl = slice(s, s + _BLOCK)
-        out.extend(_query_block(k[sl], mu[sl], g_arr[sl], kp_arr[sl], names[sl], cases[sl]))
+        out.extend(_query_block(k[sl], mu[sl], g_arr[sl], kp_arr[sl], names[sl], cases[sl], loads))
     return out

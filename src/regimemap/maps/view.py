@@ -20,6 +20,9 @@ __all__ = ["auto_extent", "nice_ceil", "simplify"]
 
 #: lie and still be pulled into the automatic view.
 _CAP = 12.0
+#: With loads, mu*(k) over the view is followed up to this many times the highest
+#: characteristic mu (it may have a pole, c_O k + d_O = 0, inside the view).
+_POLE_CAP = 3.0
 #: Relative margin added around the characteristic points.
 _MARGIN = 0.15
 
@@ -104,21 +107,25 @@ def simplify(points: np.ndarray, tol: float, scale: tuple[float, float] = (1.0, 
 
 
 def _reference_scale(p: Parameters) -> float:
-    """k_A when it is finite, else the abscissa of D (k' = -1)."""
-    if math.isfinite(p.k_A):
+    """k_A when it is finite (and > 0), else the abscissa of D (k' = -1), else of L."""
+    if math.isfinite(p.k_A) and p.k_A > 0.0:
         return p.k_A
-    return p.k_D if math.isfinite(p.k_D) else 1.0 / p.gamma
+    if math.isfinite(p.k_D):
+        return p.k_D
+    return p.k_L if math.isfinite(p.k_L) and p.k_L > 0.0 else 1.0 / p.gamma
 
 
 def _mu_on_view(p: Parameters, k_max: float) -> float:
     """The largest mu* (from A on, where it is drawn) within [0, k_max]."""
     if not math.isfinite(p.k_A):
         return 0.0  # k' = -1: no rocking, mu* is not drawn
-    k0 = min(p.k_A, k_max)
+    k0 = min(max(p.k_A, 0.0), k_max)
     if k0 >= k_max:
         return 0.0
     k = np.linspace(k0, k_max, 64)
-    return float(np.max(mu_star(p, k)))
+    ms = mu_star(p, k)
+    ms = ms[np.isfinite(ms) & (ms >= 0.0)] if p.loaded else ms
+    return float(np.max(ms)) if ms.size else 0.0
 
 
 def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
@@ -145,7 +152,8 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
 
     Notes
     -----
-    Shown: A (and E), C above C, D, the point G = b/|a| and some of the range
+    Shown: A (and E), C above C, D, with loads every named point and L
+    (where lift-off starts) with some room beyond it, the point G = b/|a| and some of the range
     beyond it (cases 2/3, SRO+), B' with mu_B' when Delta >= 0, room right of D
     for SRO'- below C, and mu*(k) over the view (for the raw rest region, only
     the strip around A: Figs 3.1 and 4.2).  Points farther than 12 k_A
@@ -158,9 +166,10 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
     ks: list[float] = []
     mus: list[float] = [1.0 / p.gamma]
     kA = p.k_A
-    if math.isfinite(kA):
+    if math.isfinite(kA) and kA >= 0.0:
         ks += [kA, 1.6 * kA]
-        mus.append(kA)
+        if math.isfinite(p.mu_A):
+            mus.append(p.mu_A)
     if raw_mode is not None and Mode(raw_mode) is Mode.RE:
         # Figs 3.1 and 4.2: the rest region is the strip left of A, above OA
         ks = [2.2 * kA if math.isfinite(kA) else 2.0 / p.gamma]
@@ -186,6 +195,15 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
             if cp is not None and cp.k <= max(cap, 2.5 * max(ks, default=0.0)):
                 ks.append(cp.k)
                 mus.append(cp.mu)
+    if p.loaded:
+        # the loaded map's characteristic points, lift-off's start L among them
+        for pt in named_points(p).values():
+            if math.isfinite(pt.k) and math.isfinite(pt.mu) and 0.0 < pt.k <= cap:
+                ks.append(pt.k)
+                if pt.mu <= _CAP * max(1.0 / p.gamma, p.mu_Bprime):
+                    mus.append(pt.mu)
+        if math.isfinite(p.k_L):  # lift-off is shown wherever it starts
+            ks.append(1.3 * p.k_L if p.k_L > 0.0 else 0.3 * ref)
     for k, mu in include:
         if math.isfinite(k) and math.isfinite(mu):
             ks.append(float(k))
@@ -196,7 +214,10 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
         k_max = nice_ceil((1.0 + _MARGIN) * max(max(ks), 1e-12))
     if mu_max is None:
         if raw_mode is None or Mode(raw_mode) is not Mode.RE:
-            mus.append(_mu_on_view(p, k_max))
+            on_view = _mu_on_view(p, k_max)
+            if p.loaded:  # mu* of a loaded block may have a pole in view: show its rise, not all of it
+                on_view = min(on_view, _POLE_CAP * max(mus))
+            mus.append(on_view)
         if not math.isfinite(kA):  # rest up to mu = k everywhere: show OA to mid height
             mus.append(0.5 * k_max)
         mu_max = nice_ceil((1.0 + _MARGIN) * max(max(mus), 1e-12))

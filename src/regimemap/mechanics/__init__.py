@@ -1,4 +1,4 @@
-"""The mechanics core (numpy only): modes, the block and its loading, the closed forms,
+"""The mechanics core (numpy only): modes, the block and its loads, the closed forms,
 the curves, the raw regions and the independent equations-of-motion solver.
 
 Nothing here draws, reads or writes files, or imports another part of regimemap:
@@ -10,14 +10,24 @@ from __future__ import annotations
 
 from .block import Case, Parameters, case_of
 from .curves import Curve, NamedPoint, map_curves, named_points
-from .modes import MAP_MODES, PRIORITY, Mode
+from .modes import LOADED_MAP_MODES, MAP_MODES, PRIORITY, SELECTION_ORDER, Mode
 from .regions import RAW_REGIONS, raw_region
-from .solver import TOLERANCE, Hypothesis, Response, admissible, admissible_hypotheses, choose, solve
+from .solver import (
+    TOLERANCE,
+    Hypothesis,
+    Response,
+    admissible,
+    admissible_hypotheses,
+    choose,
+    least_constraint,
+    solve,
+)
 
 __all__ = [
     "Case",
     "Curve",
     "Hypothesis",
+    "LOADED_MAP_MODES",
     "MAP_MODES",
     "Mode",
     "NamedPoint",
@@ -25,11 +35,13 @@ __all__ = [
     "Parameters",
     "RAW_REGIONS",
     "Response",
+    "SELECTION_ORDER",
     "TOLERANCE",
     "admissible",
     "admissible_hypotheses",
     "case_of",
     "choose",
+    "least_constraint",
     "map_curves",
     "named_points",
     "raw_region",

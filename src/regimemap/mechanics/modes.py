@@ -6,7 +6,9 @@ left, x_O'' <= 0), SRO+ (slide-rock about O with O slipping right) and SRO'-
 (slide-rock about the right corner O' with O' slipping left).  Two more contact
 hypotheses exist for the equations-of-motion solver: rock about O' (RO') and
 slide-rock about O' with O' slipping right (SRO'+).  The report shows (4.57)
-that RO' is never possible; the solver confirms that neither ever wins.
+that RO' is never possible; the solver confirms that neither ever wins on the
+report's block.  With vertical loads (issue 10) both can win, and a ninth mode
+appears: lift-off (LO), no contact at all.
 
 Codes are small integers so that whole maps fit in ``uint8`` arrays, after the
 integer regime codes of ``fluids.two_phase``.
@@ -16,7 +18,7 @@ from __future__ import annotations
 
 from enum import IntEnum
 
-__all__ = ["Mode", "MAP_MODES", "PRIORITY"]
+__all__ = ["Mode", "MAP_MODES", "LOADED_MAP_MODES", "PRIORITY", "SELECTION_ORDER"]
 
 
 class Mode(IntEnum):
@@ -26,7 +28,7 @@ class Mode(IntEnum):
     ----------
     label : str
         The report's symbol in plain text: ``RE``, ``SL``, ``RO``, ``SRO-``,
-        ``SRO+``, ``SRO'-``, ``RO'`` or ``SRO'+``.
+        ``SRO+``, ``SRO'-``, ``RO'``, ``SRO'+`` or ``LO``.
     tex : str
         The symbol as matplotlib mathtext, e.g. ``$SRO_{-}$``.
     description : str
@@ -41,6 +43,7 @@ class Mode(IntEnum):
     SRO_PRIME_MINUS = 5
     RO_PRIME = 6
     SRO_PRIME_PLUS = 7
+    LO = 8
 
     @property
     def label(self) -> str:
@@ -83,6 +86,7 @@ _LABELS = {
     Mode.SRO_PRIME_MINUS: ("SRO'-", r"$SRO'_{-}$", "slide-rock about O', O' slipping left"),
     Mode.RO_PRIME: ("RO'", r"$RO'$", "rock about O'"),
     Mode.SRO_PRIME_PLUS: ("SRO'+", r"$SRO'_{+}$", "slide-rock about O', O' slipping right"),
+    Mode.LO: ("LO", r"$LO$", "lift-off (no contact)"),
 }
 
 #: The modes that can appear on a map (the report's six), in code order.
@@ -94,6 +98,12 @@ MAP_MODES: tuple[Mode, ...] = (
     Mode.SRO_PLUS,
     Mode.SRO_PRIME_MINUS,
 )
+
+#: The modes that can appear on the map of a loaded block, in code order: the six,
+#: rock about O' (where uplift near O lifts O) and lift-off.  Slide-rock about O'
+#: slipping right is admissible in places but never chosen (measured,
+#: ``tests/test_loaded_regions.py``).
+LOADED_MAP_MODES: tuple[Mode, ...] = MAP_MODES + (Mode.RO_PRIME, Mode.LO)
 
 #: Section 4.7's order: where several modes are admissible the first one holds
 #: (slide inside the slide region, slide-rock about O' below DC, then rock).
@@ -107,3 +117,10 @@ PRIORITY: tuple[Mode, ...] = (
     Mode.RO_PRIME,
     Mode.SRO_PRIME_PLUS,
 )
+
+#: The order in which the solver breaks ties of Gauss's least constraint
+#: (:func:`regimemap.mechanics.solver.least_constraint`): lift-off (whose
+#: constraint is 0) first, then Section 4.7's :data:`PRIORITY`.  Wherever several
+#: modes are admissible off the boundaries, least constraint chooses the first of
+#: them in this order (measured: ``tests/test_loaded_regions.py``).
+SELECTION_ORDER: tuple[Mode, ...] = (Mode.LO,) + PRIORITY

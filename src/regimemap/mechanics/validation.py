@@ -20,6 +20,7 @@ import numpy as np
 __all__ = [
     "check_gamma",
     "check_kprime",
+    "check_loads",
     "check_positive",
     "check_nonnegative_array",
     "check_axis",
@@ -30,6 +31,7 @@ __all__ = [
     "GAMMA_MAX",
     "MAX_VALUE",
     "MAX_AXIS",
+    "LOAD_LIMITS",
 ]
 
 #: Largest grid accepted by :func:`regimemap.label_grid` and the CLI
@@ -48,6 +50,20 @@ MAX_VALUE = 1e100
 #: Largest end of a plotted or exported axis (--k-max, --mu-max): the view is
 #: sampled a little beyond it, and the samples must stay below MAX_VALUE.
 MAX_AXIS = 1e6
+#: The loads of a block (issue 10) and their allowed ranges, as
+#: ``name: (low, high, low open, high open)``: buoyancy beta in [0, 1) (beta = 1
+#: floats the block), uplift u and its ratio nu to the push >= 0, the uplift's
+#: arm e_u in [-1, 1] (a fraction of B from C towards O'), the radius of
+#: gyration i > 0 (over B) and the crest (the top of the block over H) > 0,
+#: which bounds kprime from above.  The upper ends keep the closed forms finite.
+LOAD_LIMITS: dict[str, tuple[float, float, bool, bool]] = {
+    "buoyancy": (0.0, 1.0, False, True),
+    "uplift": (0.0, 1e6, False, False),
+    "uplift_ratio": (0.0, 1e6, False, False),
+    "uplift_arm": (-1.0, 1.0, False, False),
+    "gyration": (0.0, 1e3, True, False),
+    "crest": (0.0, 1e3, True, False),
+}
 #: kprime closer to 0 than this is taken as 0 (a subnormal k' would make
 #: gamma*|k'| underflow to 0 in 1/(gamma |k'|)); the map is the same.
 _KPRIME_ZERO = 1e-300
@@ -109,21 +125,49 @@ def check_gamma(gamma: Any) -> float:
     return g
 
 
-def check_kprime(kprime: Any) -> float:
+def check_kprime(kprime: Any, crest: float = 1.0) -> float:
     """Return ``kprime`` (the force height h/H) as a float, or raise.
 
     Raises
     ------
     ValueError
-        If kprime is not a number in [-1, 1].
+        If kprime is not a number in [-1, crest] ([-1, 1] for the report's block).
     """
-    allowed = "a number in [-1, 1]"
+    allowed = f"a number in [-1, {crest:g}]"
     kp = _as_float("kprime", kprime, allowed)
-    if not math.isfinite(kp) or not (-1.0 <= kp <= 1.0):
+    if not math.isfinite(kp) or not (-1.0 <= kp <= crest):
         raise ValueError(f"kprime must be {allowed}, got {_describe(kprime)}")
     if abs(kp) < _KPRIME_ZERO:
         kp = 0.0  # fold -0.0 (and subnormal values) into +0.0
     return kp
+
+
+def _check_load(name: str, value: Any) -> float:
+    lo, hi, lo_open, hi_open = LOAD_LIMITS[name]
+    allowed = f"a number in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
+    v = _as_float(name, value, allowed)
+    bad = (not math.isfinite(v) or v < lo or v > hi or (lo_open and v == lo) or (hi_open and v == hi))
+    if bad:
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)}")
+    return v + 0.0  # fold -0.0
+
+
+def check_loads(buoyancy: Any = 0.0, uplift: Any = 0.0, uplift_ratio: Any = 0.0,
+                uplift_arm: Any = 1.0 / 3.0, gyration: Any = None, crest: Any = 1.0
+                ) -> tuple[float, float, float, float, float | None, float]:
+    """Return the loads of a block as floats (gyration None stays None), or raise.
+
+    Raises
+    ------
+    ValueError
+        If a load is outside its range of :data:`LOAD_LIMITS`; the message names
+        the load, the value received and the allowed range, e.g.
+        ``buoyancy must be a number in [0, 1), got 1.0``.
+    """
+    return (_check_load("buoyancy", buoyancy), _check_load("uplift", uplift),
+            _check_load("uplift_ratio", uplift_ratio), _check_load("uplift_arm", uplift_arm),
+            None if gyration is None else _check_load("gyration", gyration),
+            _check_load("crest", crest))
 
 
 def check_positive(name: str, value: Any, hi: float = MAX_VALUE) -> float:

@@ -1,0 +1,97 @@
+"""``regimemap caisson``: from a design file to loads, safety factors and the loaded map."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+from ._common import RunError, import_matplotlib, output_path, report_written
+
+__all__ = ["caisson_cmd"]
+
+_FORMATS = ("png", "svg", "pdf")
+
+
+@click.command(
+    "caisson",
+    short_help="Goda loads, safety factors and the mode on the loaded map of a caisson (design file).",
+)
+@click.argument("design", required=False, type=click.Path(dir_okay=False), metavar="DESIGN.toml")
+@click.option("--example", is_flag=True,
+              help="Print the commented example design file (Goda's worked caisson) and exit.")
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
+@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
+              help="Also write a one-page design sheet (.pdf, .svg or .png), atomically.")
+def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None) -> None:
+    """Goda's design procedure for a vertical-breakwater caisson, placed on the regime map.
+
+    Reads DESIGN.toml (site, design wave, caisson; `regimemap caisson --example`
+    prints a commented one) and prints the design heights, Goda's pressures
+    (kPa), the loads per metre (kN/m, kN m/m), the safety factors, the
+    equivalent loaded block (gamma, k, k', buoyancy, uplift ratio and arm,
+    gyration), its mode on the loaded map with its margins (how much more k,
+    or less mu, changes the mode), and how the caisson fares as the wave
+    grows from 0.5 to 1.5 times the design heights.  Goda's safety factors
+    are both >= 1 exactly when the map says rest.
+
+    With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
+    the cross-section, the pressure diagram, the loaded map with the design
+    point and its path as the wave grows, and the numbers.
+
+    \b
+    Examples:
+      regimemap caisson --example > goda.toml
+      regimemap caisson goda.toml
+      regimemap caisson goda.toml --json
+      regimemap caisson goda.toml -o sheet.pdf
+    """
+    from ..io.design import DesignFileError, example_design_text, read_design
+
+    ctx = click.get_current_context()
+    if example:
+        if design is not None or as_json or output is not None:
+            raise click.UsageError("--example prints the example file and takes nothing else "
+                                   "(no DESIGN.toml, --json or -o)", ctx=ctx)
+        click.echo(example_design_text(), nl=False)
+        return
+    if design is None:
+        raise click.UsageError("missing DESIGN.toml (a design file; `regimemap caisson --example` "
+                               "prints one)", ctx=ctx)
+    if output is not None:
+        suffix = output.rsplit(".", 1)[-1].lower() if "." in output.rsplit("/", 1)[-1] else ""
+        if suffix not in _FORMATS:
+            raise click.BadParameter(f"the sheet's file must end in .pdf, .svg or .png, got {output!r}",
+                                     param_hint="'--output'")
+        output_path(output, "--output")
+    try:
+        d = read_design(design)
+    except DesignFileError as exc:
+        raise click.BadParameter(str(exc), param_hint="'DESIGN.toml'") from None
+
+    from ..maps.caisson import caisson_report
+
+    try:
+        report = caisson_report(d.analysis_inputs())
+    except ValueError as exc:
+        raise RunError(f"{design}: {exc}") from None
+
+    from ..io.caisson import caisson_json, format_caisson
+
+    if as_json:
+        click.echo(json.dumps(caisson_json(report, source=design), indent=2, allow_nan=False))
+    else:
+        click.echo(format_caisson(report, source=design))
+    if output is None:
+        return
+    import_matplotlib()
+    from ..drawing.sheet import sheet_figure
+    from ..io.figures import save_figure
+
+    fig = sheet_figure(report, title=Path(design).name)
+    try:
+        save_figure(fig, output)
+    except OSError as exc:
+        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    report_written(output)

@@ -1,0 +1,414 @@
+"""An outcome map: what a pulse does to the block, cell by cell, over two swept inputs.
+
+Draws an :class:`regimemap.dynamics.OutcomeMap` (the data; this module only
+draws): each cell's outcome category -- rest, slide only, rock only,
+slide-rock, overturned -- as a filled, hatched region in the style of the
+regime maps (:data:`regimemap.drawing.style.OUTCOME_STYLE`), black boundaries
+between categories, contours of the residual slide and of the maximum
+rotation outside the overturned cells, a label in every region large enough
+for one, and the key below the axes.
+
+Cells are drawn as they were computed: each sample is the centre of a cell
+reaching half-way to its neighbours, so a region's edge is a staircase at the
+resolution of the map.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..dynamics.outcome import OutcomeMap
+from ..dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK
+from .save import DEFAULT_DPI
+from .style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context, text_size
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.collections import LineCollection
+    from matplotlib.contour import QuadContourSet
+    from matplotlib.figure import Figure
+    from matplotlib.legend import Legend
+    from matplotlib.patches import PathPatch
+    from matplotlib.text import Text
+
+__all__ = ["AXIS_LABELS", "OutcomeArtists", "OUTCOME_FIGSIZE", "axis_label", "cell_edges",
+           "category_rectangles", "draw_outcome_map", "outcome_figure", "outcome_title"]
+
+#: Size of an outcome-map figure in inches (width, height): the regime map's width.
+OUTCOME_FIGSIZE: tuple[float, float] = (6.4, 5.9)
+
+# zorders: fills < hatch < boundaries < contours < labels
+_Z_FILL, _Z_EDGE, _Z_CONTOUR, _Z_LABEL = 1.0, 2.5, 3.0, 6.0
+#: Contours: residual slide solid, maximum rotation dashed (both dark: they cross every fill).
+SLIDE_CONTOUR: dict[str, Any] = {"colors": "#222255", "linewidths": 0.9}
+ROTATION_CONTOUR: dict[str, Any] = {"colors": "#222222", "linewidths": 0.9, "linestyles": [(0, (4.0, 2.0))]}
+
+
+@dataclass
+class OutcomeArtists:
+    """What :func:`draw_outcome_map` drew.
+
+    Attributes
+    ----------
+    regions : dict
+        Category code -> the PathPatch of its cells (one per category present).
+    boundaries : LineCollection or None
+        The black lines between cells of different categories.
+    contours : dict
+        ``"residual_slide"`` and ``"max_rotation"`` -> their ContourSet (when drawn).
+    labels : list of Text
+        Region labels.
+    legend : Legend or None
+    """
+
+    regions: dict[int, PathPatch] = field(default_factory=dict)
+    boundaries: LineCollection | None = None
+    contours: dict[str, QuadContourSet] = field(default_factory=dict)
+    labels: list[Text] = field(default_factory=list)
+    legend: Legend | None = None
+
+
+def cell_edges(values: Sequence[float] | NDArray[np.float64]) -> NDArray[np.float64]:
+    """Edges of the cells centred on increasing ``values``: half-way between samples, and half a
+    spacing beyond the ends."""
+    v = np.asarray(values, dtype=np.float64)
+    if v.size == 1:
+        half = 0.5 * max(abs(float(v[0])), 1.0)
+        return np.array([v[0] - half, v[0] + half])
+    mid = 0.5 * (v[1:] + v[:-1])
+    return np.concatenate(([v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]))
+
+
+def category_rectangles(category: NDArray[Any], code: int) -> list[tuple[int, int, int, int]]:
+    """Cells of ``category == code`` as few rectangles (j0, j1, i0, i1): columns j0..j1-1, rows i0..i1-1.
+
+    Runs along each row, merged with the identical runs of the rows above.
+    """
+    mask = np.asarray(category) == code
+    out: list[tuple[int, int, int, int]] = []
+    open_: dict[tuple[int, int], int] = {}  # (j0, j1) -> first row
+    for i in range(mask.shape[0]):
+        row = np.concatenate(([False], mask[i], [False]))
+        d = np.flatnonzero(np.diff(row.astype(np.int8)))
+        runs = set(zip(d[0::2].tolist(), d[1::2].tolist()))
+        for run in sorted(set(open_) - runs):
+            out.append((run[0], run[1], open_.pop(run), i))
+        for run in sorted(runs - set(open_)):
+            open_[run] = i
+    for run in sorted(open_):
+        out.append((run[0], run[1], open_[run], mask.shape[0]))
+    out.sort(key=lambda r: (r[2], r[0]))
+    return out
+
+
+def _boundary_segments(category: NDArray[Any], xe: NDArray[np.float64], ye: NDArray[np.float64]
+                       ) -> list[NDArray[np.float64]]:
+    """Cell edges between different categories, joined along straight runs."""
+    segs: list[NDArray[np.float64]] = []
+    c = np.asarray(category)
+    # vertical edges: between columns j-1 and j, row i
+    diff_v = c[:, 1:] != c[:, :-1]
+    for j in range(diff_v.shape[1]):
+        col = np.concatenate(([False], diff_v[:, j], [False]))
+        d = np.flatnonzero(np.diff(col.astype(np.int8)))
+        for i0, i1 in zip(d[0::2], d[1::2]):
+            segs.append(np.array([[xe[j + 1], ye[i0]], [xe[j + 1], ye[i1]]]))
+    diff_h = c[1:, :] != c[:-1, :]
+    for i in range(diff_h.shape[0]):
+        row = np.concatenate(([False], diff_h[i], [False]))
+        d = np.flatnonzero(np.diff(row.astype(np.int8)))
+        for j0, j1 in zip(d[0::2], d[1::2]):
+            segs.append(np.array([[xe[j0], ye[i + 1]], [xe[j1], ye[i + 1]]]))
+    return segs
+
+
+def _depth(mask: NDArray[np.bool_]) -> NDArray[np.int64]:
+    """Number of erosions (3 x 3) each cell of ``mask`` survives; the border counts as outside."""
+    depth = np.zeros(mask.shape, dtype=np.int64)
+    cur = mask.copy()
+    while cur.any():
+        depth += cur
+        p = np.pad(cur, 1, constant_values=False)
+        nxt = cur.copy()
+        for di in (-1, 0, 1):
+            for dj in (-1, 0, 1):
+                nxt &= p[1 + di:1 + di + cur.shape[0], 1 + dj:1 + dj + cur.shape[1]]
+        cur = nxt
+    return depth
+
+
+def _nice_levels(values: NDArray[np.float64], n: int = 6, span: float = 1e-3) -> NDArray[np.float64]:
+    """Round contour levels strictly inside the range of the finite non-zero ``values``.
+
+    When the positive values span more than two decades (slides from millimetres to
+    metres), the levels are 1, 2, 5 (or, when that gives too many, 1, 3) times powers of ten
+    from ``span`` times the largest value up, at most ``n`` of them; otherwise evenly spaced
+    round numbers.
+    """
+    from matplotlib.ticker import MaxNLocator
+
+    v = values[np.isfinite(values)]
+    if v.size == 0:
+        return np.array([])
+    lo, hi = float(v.min()), float(v.max())
+    if not hi > lo:
+        return np.array([])
+    pos = v[v > 0]
+    if lo >= 0.0 and pos.size and hi > 100.0 * float(pos.min()):
+        floor = max(float(pos.min()), hi * span)
+        e0 = math.floor(math.log10(floor))
+        e1 = math.ceil(math.log10(hi))
+        logs = np.array([m * 10.0 ** e for e in range(e0, e1 + 1) for m in (1.0, 2.0, 5.0)])
+        logs = logs[(logs > floor) & (logs < hi)]
+        if logs.size > n:  # too many lines: 1 and 3 times powers of ten
+            thin = np.array([m * 10.0 ** e for e in range(e0, e1 + 1) for m in (1.0, 3.0)])
+            logs = thin[(thin > floor) & (thin < hi)]
+        return np.asarray(logs[-n:], dtype=np.float64)
+    levels = np.asarray(MaxNLocator(nbins=n, steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi),
+                        dtype=np.float64)
+    keep = (levels > lo) & (levels < hi) & (np.abs(levels) > 1e-12 * max(abs(lo), abs(hi)))
+    return np.asarray(levels[keep], dtype=np.float64)
+
+
+def _fmt_level(v: float, unit: str) -> str:
+    return f"{v:g}{unit}"
+
+
+def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np.float64] | None = None,
+                     y: Sequence[float] | NDArray[np.float64] | None = None,
+                     xlabel: str | None = None, ylabel: str | None = None, title: str | None = None,
+                     contours: bool = True, labels: bool = True, legend: bool = True,
+                     hatches: bool = True, slide_unit: str = " m") -> OutcomeArtists:
+    """Draw an outcome map on ``ax``.
+
+    Parameters
+    ----------
+    ax : Axes
+    m : OutcomeMap
+        The data (:func:`regimemap.dynamics.outcome_map`).
+    x, y : array_like, optional
+        The horizontal and vertical coordinates of the columns and rows (default the swept
+        values, ``m.first_values`` and ``m.second_values``; e.g. dimensionless values from
+        :func:`regimemap.dynamics.outcome.axis_values`).  Each must be monotonic.
+    xlabel, ylabel, title : str, optional
+        Axis labels (default: the swept names) and title (mathtext allowed).
+    contours : bool
+        Draw the contours of the residual slide (solid, labelled in metres) and of the
+        maximum rotation (dashed, labelled in degrees), outside the overturned cells.
+    labels : bool
+        Write the category's name inside each region that has room for it.
+    legend : bool
+        Draw the key below the axes.
+    hatches : bool
+        Hatch the regions (as the regime maps do).
+    slide_unit : str
+        Suffix of the slide contour labels.
+
+    Returns
+    -------
+    OutcomeArtists
+    """
+    from matplotlib.collections import LineCollection
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import PathPatch, Rectangle
+    from matplotlib.path import Path as MplPath
+
+    xs = np.asarray(m.first_values if x is None else x, dtype=np.float64)
+    ys = np.asarray(m.second_values if y is None else y, dtype=np.float64)
+    cat = np.asarray(m.category)
+    rot = np.asarray(m.max_rotation, dtype=np.float64)
+    slide = np.asarray(m.residual_slide, dtype=np.float64)
+    if cat.shape != (ys.size, xs.size):
+        raise ValueError(f"the map is {cat.shape[0]} x {cat.shape[1]} (rows x columns), the axes have "
+                         f"{ys.size} and {xs.size} values")
+    # increasing axes (a decreasing one, e.g. omega_p from a duration sweep, is flipped)
+    if xs.size > 1 and xs[0] > xs[-1]:
+        xs, cat, rot, slide = xs[::-1], cat[:, ::-1], rot[:, ::-1], slide[:, ::-1]
+    if ys.size > 1 and ys[0] > ys[-1]:
+        ys, cat, rot, slide = ys[::-1], cat[::-1], rot[::-1], slide[::-1]
+    xe, ye = cell_edges(xs), cell_edges(ys)
+    out = OutcomeArtists()
+    with style_context():
+        ax.set_xlim(xe[0], xe[-1])
+        ax.set_ylim(ye[0], ye[-1])
+        ax.set_xlabel(xlabel if xlabel is not None else m.first_name, fontsize=11)
+        ax.set_ylabel(ylabel if ylabel is not None else m.second_name, fontsize=11)
+        ax.tick_params(labelsize=9)
+        if title:
+            ax.set_title(title, fontsize=10.5)
+        present = [c for c in sorted(OUTCOME_STYLE) if np.any(cat == c)]
+        for code in present:
+            st = OUTCOME_STYLE[code]
+            verts: list[tuple[float, float]] = []
+            codes: list[Any] = []
+            for j0, j1, i0, i1 in category_rectangles(cat, code):
+                verts += [(xe[j0], ye[i0]), (xe[j1], ye[i0]), (xe[j1], ye[i1]), (xe[j0], ye[i1]),
+                          (xe[j0], ye[i0])]
+                codes += [MplPath.MOVETO, MplPath.LINETO, MplPath.LINETO, MplPath.LINETO,
+                          MplPath.CLOSEPOLY]
+            patch = PathPatch(MplPath(verts, codes), facecolor=st.color, edgecolor="none", linewidth=0.0,
+                              hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
+                              zorder=_Z_FILL, label=f"_{m.labels[code]}")
+            patch.set_hatch_linewidth(HATCH_LW)
+            ax.add_patch(patch)
+            out.regions[code] = patch
+        segs = _boundary_segments(cat, xe, ye)
+        if segs:
+            out.boundaries = LineCollection(segs, colors="black", linewidths=0.8 * LINE_LW,
+                                            capstyle="projecting", zorder=_Z_EDGE)
+            ax.add_collection(out.boundaries)
+
+        handles: list[Any] = []
+        for code in present:
+            st = OUTCOME_STYLE[code]
+            h = Rectangle((0, 0), 1, 1, facecolor=st.color, edgecolor="0.4", linewidth=0.4,
+                          hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
+                          label=m.labels[code])
+            h.set_hatch_linewidth(HATCH_LW)
+            handles.append(h)
+        if contours and xs.size > 1 and ys.size > 1:
+            # each quantity where it means something: the slide where the base slipped, the
+            # rotation where the block rocked, neither where it overturned
+            slid = (cat == SLIDE) | (cat == SLIDE_ROCK)
+            rocked = (cat == ROCK) | (cat == SLIDE_ROCK)
+            for key, data, where, unit, style, what, span in (
+                    ("residual_slide", slide, slid, slide_unit, SLIDE_CONTOUR, "residual slide", 1e-3),
+                    ("max_rotation", np.degrees(rot), rocked, "°", ROTATION_CONTOUR, "maximum rotation",
+                     1e-2)):
+                if not where.any():
+                    continue
+                # 0 elsewhere (so that the lines run on to the boundary), masked where it overturned
+                z = np.ma.masked_where(cat == OVERTURN, np.where(where, data, 0.0))
+                levels = _nice_levels(np.asarray(data[where]), span=span)
+                if levels.size == 0:
+                    continue
+                cs = ax.contour(xs, ys, z, levels=levels, zorder=_Z_CONTOUR, **style)
+                texts = ax.clabel(cs, fontsize=7.5, inline=True, inline_spacing=3,
+                                  fmt=lambda v, unit=unit: _fmt_level(v, unit))
+                for t in texts:
+                    t.set_zorder(_Z_LABEL - 0.5)
+                out.contours[key] = cs
+                ls = style.get("linestyles", ["solid"])[0]
+                handles.append(Line2D([], [], color=style["colors"], linewidth=style["linewidths"],
+                                      linestyle=ls, label=f"{what} ({unit.strip()})"))
+        if labels:
+            lines = [seg for cs in out.contours.values() for level in cs.allsegs for seg in level]
+            out.labels = _region_labels(ax, cat, xs, ys, m.labels, present, lines)
+        if legend and handles:
+            out.legend = ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.13),
+                                   ncols=3, fontsize=8.5, frameon=False, handlelength=2.2,
+                                   handleheight=1.1, columnspacing=1.4, borderaxespad=0.0)
+    return out
+
+
+def _region_labels(ax: Axes, cat: NDArray[Any], xs: NDArray[np.float64], ys: NDArray[np.float64],
+                   names: Sequence[str], present: Sequence[int],
+                   lines: Sequence[NDArray[np.float64]] = ()) -> list[Text]:
+    """A label in each region that has room for it: among the cells whose box fits inside the
+    region, the one farthest from the contour lines (the deepest one if there are none)."""
+    out: list[Text] = []
+    from matplotlib.figure import Figure
+
+    fig = ax.get_figure()
+    if not isinstance(fig, Figure):  # pragma: no cover - a subfigure: no labels
+        return out
+    w_in, h_in = ax.get_position().size * fig.get_size_inches()
+    cell_w = 72.0 * w_in / max(xs.size, 1)  # points per cell
+    cell_h = 72.0 * h_in / max(ys.size, 1)
+    x0, x1 = ax.get_xlim()
+    y0, y1 = ax.get_ylim()
+    pts = (np.concatenate([np.asarray(seg, dtype=np.float64) for seg in lines if len(seg)])
+           if any(len(seg) for seg in lines) else np.zeros((0, 2)))
+    pts_f = np.column_stack(((pts[:, 0] - x0) / (x1 - x0) * w_in, (pts[:, 1] - y0) / (y1 - y0) * h_in))
+    for code in present:
+        name = names[code]
+        bw, bh = text_size(name, 8.5)
+        depth = _depth(cat == code)
+        need = max(math.ceil((bw / cell_w + 1) / 2), math.ceil((bh / cell_h + 1) / 2))
+        ok = np.argwhere(depth >= need)
+        if ok.size == 0:
+            continue
+        if len(pts_f):
+            step = max(1, len(ok) // 400)
+            cand = ok[::step]
+            cx = (xs[cand[:, 1]] - x0) / (x1 - x0) * w_in
+            cy = (ys[cand[:, 0]] - y0) / (y1 - y0) * h_in
+            d2 = ((cx[:, None] - pts_f[None, :, 0]) ** 2 + (cy[:, None] - pts_f[None, :, 1]) ** 2).min(axis=1)
+            i, j = (int(v) for v in cand[int(np.argmax(d2))])
+        else:
+            i, j = (int(v) for v in np.unravel_index(int(np.argmax(depth)), depth.shape))
+        st = OUTCOME_STYLE[code]
+        dark = code == OVERTURN
+        out.append(ax.text(xs[j], ys[i], name, ha="center", va="center", fontsize=8.5,
+                           color="white" if dark else "black", zorder=_Z_LABEL,
+                           bbox={"boxstyle": "round,pad=0.25", "fc": st.color, "ec": "none",
+                                 "alpha": 0.9}))
+    return out
+
+
+#: Axis labels by swept input: (physical, dimensionless).
+AXIS_LABELS: dict[str, tuple[str, str | None]] = {
+    "k_peak": (r"peak force $k_p = F_{max}/(mg)$", r"$k_p\,/\tan\alpha$"),
+    "duration": (r"pulse duration $T$ (s)", r"$\omega_p\,/\,p$"),
+    "omega_p": (r"pulse frequency $\omega_p$ (rad/s)", r"$\omega_p\,/\,p$"),
+    "mu": (r"friction $\mu$", None),
+    "kprime": (r"height of the push $k'$", None),
+    "gamma": (r"aspect ratio $\gamma = H/B$", None),
+    "half_width": (r"half width $B$ (m)", None),
+    "gyration": (r"radius of gyration / $B$", None),
+    "buoyancy": (r"buoyancy $\beta$ (× $mg$)", None),
+    "uplift": (r"uplift $u$ (× $mg$)", None),
+    "uplift_ratio": (r"uplift ratio $\nu$ (× $F$)", None),
+    "uplift_arm": (r"uplift arm $e_u$ (× $B$)", None),
+}
+
+
+def axis_label(name: str, dimensionless: bool = False, shape: str | None = None) -> str:
+    """The axis label of a swept input (mathtext), physical or dimensionless."""
+    phys, dim = AXIS_LABELS.get(name, (name, None))
+    if dimensionless and dim is not None:
+        if name == "duration" and shape is not None:
+            cycles = "2\\pi" if shape in ("one-sine", "one-cosine") else "\\pi"
+            return dim + rf"  ($\omega_p = {cycles}/T$)"
+        return dim
+    return phys
+
+
+_TITLE_NAMES = (("gamma", "γ", ""), ("half_width", "B", " m"), ("mu", "μ", ""), ("kprime", "k'", ""),
+                ("k_peak", "k_p", ""), ("duration", "T", " s"), ("omega_p", "ω_p", " rad/s"),
+                ("gyration", "r/B", ""), ("buoyancy", "β", ""), ("uplift", "u", ""),
+                ("uplift_ratio", "ν", ""), ("uplift_arm", "e_u", ""))
+
+
+def outcome_title(shape: str, fixed: dict[str, Any], restitution: float | None = None) -> str:
+    """A title naming the pulse and the fixed inputs (plain text), e.g.
+    ``half-sine pulse; γ = 3, B = 0.2 m, μ = 5, k' = 0``."""
+    parts = []
+    for key, sym, unit in _TITLE_NAMES:
+        v = fixed.get(key)
+        if v is None or (key in ("buoyancy", "uplift", "uplift_ratio") and v == 0.0):
+            continue
+        if key == "uplift_arm" and not (fixed.get("uplift") or fixed.get("uplift_ratio")):
+            continue
+        parts.append(f"{sym} = {v:.4g}{unit}")
+    if restitution is not None:
+        parts.append(f"restitution {restitution:g}")
+    return f"{shape} pulse; " + ", ".join(parts)
+
+
+def outcome_figure(m: OutcomeMap, *, dpi: float = DEFAULT_DPI, figsize: tuple[float, float] | None = None,
+                   fig: Figure | None = None, **kwargs: Any) -> tuple[Figure, Axes, OutcomeArtists]:
+    """A Figure (Agg canvas, no pyplot) with one outcome map; ``kwargs`` go to :func:`draw_outcome_map`."""
+    from .figure import new_figure
+
+    fig, ax = new_figure(figsize or OUTCOME_FIGSIZE, dpi, fig)
+    w, h = fig.get_size_inches()
+    ax.set_position((0.78 / w, 1.05 / h, 5.3 / w, (h - 1.05 - 0.55) / h))
+    artists = draw_outcome_map(ax, m, **kwargs)
+    return fig, ax, artists

@@ -1,0 +1,364 @@
+"""Simulations and outcome maps as text, JSON and files (``regimemap simulate``, ``regimemap outcome``).
+
+* :func:`simulation_record` -- one run as a JSON-ready dict (numbers rounded to 12 significant
+  digits), :func:`format_simulation` the same for people;
+* :func:`write_history` -- the time history of a run, ``.csv`` or ``.npz``;
+* :func:`write_outcome` -- an outcome map, ``.npz`` or ``.csv``;
+* :func:`write_motion_plot`, :func:`write_block_animation` -- the figures, written atomically.
+
+Every file is written atomically (a temporary file in the same folder, then a rename).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..dynamics.outcome import OutcomeMap
+from ..dynamics.stepper import CATEGORY_LABELS, History, Phase, Simulation
+from ..mechanics.modes import Mode
+from .atomic import atomic_open, atomic_path
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
+
+__all__ = [
+    "HISTORY_FORMATS",
+    "cached_outcome",
+    "OUTCOME_DATA_FORMATS",
+    "SIGNIFICANT",
+    "format_simulation",
+    "history_arrays",
+    "phase_description",
+    "round_sig",
+    "simulation_record",
+    "write_block_animation",
+    "write_history",
+    "write_motion_plot",
+    "write_outcome",
+]
+
+#: Formats of a time history and of an outcome map's data, by file suffix.
+HISTORY_FORMATS: tuple[str, ...] = ("csv", "npz")
+OUTCOME_DATA_FORMATS: tuple[str, ...] = ("npz", "csv")
+#: Significant digits of the numbers of :func:`simulation_record`.
+SIGNIFICANT = 12
+
+_PHASE_BY_LABEL = {ph.label: ph for ph in Phase}
+
+
+def round_sig(x: float, digits: int = SIGNIFICANT) -> float:
+    """``x`` rounded to ``digits`` significant digits (as the shortest float of that text)."""
+    v = float(x)
+    if not math.isfinite(v) or v == 0.0:
+        return v + 0.0
+    return float(f"{v:.{digits}g}") + 0.0
+
+
+def phase_description(label: str) -> str:
+    """What a phase label (RE, SL, RO, ..., FLIGHT) means, in words."""
+    ph = _PHASE_BY_LABEL[label]
+    return "free flight (no corner in contact)" if ph is Phase.FLIGHT else Mode(int(ph)).description
+
+
+def _json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for key, v in inputs.items():
+        if isinstance(v, float):
+            out[key] = round_sig(v)
+        elif isinstance(v, (list, tuple)):
+            out[key] = [round_sig(x) if isinstance(x, float) else x for x in v]
+        else:
+            out[key] = v
+    return out
+
+
+def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mapping[str, float],
+                      run: int = 0) -> dict[str, Any]:
+    """One run of ``sim`` as a JSON-ready dict.
+
+    Keys: ``overturned``, ``category``, ``max_rotation`` (rad), ``max_rotation_deg``,
+    ``residual_rotation`` (rad), ``residual_rotation_deg``, ``residual_slide`` (m, positive
+    towards O), ``impacts``, ``initial_mode``, ``phases`` (list of {``mode``, ``start``} in s),
+    ``settled``, ``end_time`` (s), ``steps``, ``derived`` (``derived``: p, alpha, ...) and
+    ``inputs``.  Floats are rounded to :data:`SIGNIFICANT` significant digits.
+    """
+    phases = sim.phases[run] if sim.phases is not None else []
+    init = int(sim.initial_mode[run])
+    return {
+        "overturned": bool(sim.overturned[run]),
+        "category": CATEGORY_LABELS[int(sim.category[run])],
+        "max_rotation": round_sig(sim.max_rotation[run]),
+        "max_rotation_deg": round_sig(math.degrees(float(sim.max_rotation[run]))),
+        "residual_rotation": round_sig(sim.residual_rotation[run]),
+        "residual_rotation_deg": round_sig(math.degrees(float(sim.residual_rotation[run]))),
+        "residual_slide": round_sig(sim.residual_slide[run]),
+        "impacts": int(sim.impacts[run]),
+        "initial_mode": Phase(init).label if init >= 0 else None,
+        "phases": [{"mode": label, "start": round_sig(t)} for label, t in phases],
+        "settled": bool(sim.settled[run]),
+        "end_time": round_sig(sim.end_time[run]),
+        "steps": int(sim.steps[run]),
+        "derived": {key: round_sig(v) for key, v in derived.items()},
+        "inputs": _json_inputs(inputs),
+    }
+
+
+def _num(x: float, digits: int = 6) -> str:
+    v = float(x)
+    return f"{v:.{digits}g}" if v != 0.0 else "0"
+
+
+#: Phases listed in full up to this many; beyond, the first and the last ones.
+_PHASES_SHOWN = 24
+
+
+def format_simulation(record: Mapping[str, Any]) -> str:
+    """A run (:func:`simulation_record`) as text for people: the block and pulse, the phases of
+    the motion with their start times, and the outcome."""
+    inp = record["inputs"]
+    der = record["derived"]
+    lines = []
+    H = inp["gamma"] * inp["half_width"]
+    kp = "from the pulse file" if inp.get("kprime") is None else _num(inp["kprime"])
+    lines.append(f"block      B = {_num(inp['half_width'])} m, H = {_num(H)} m "
+                 f"(gamma = {_num(inp['gamma'])}), mu = {_num(inp['mu'])}, k' = {kp}")
+    lines.append(f"           p = {_num(der['p'], 5)} rad/s, alpha = {_num(der['alpha'], 5)} rad "
+                 f"({_num(math.degrees(der['alpha']), 4)} deg), impact ratio "
+                 f"{_num(der['impact_ratio'], 4)}"
+                 + (" (Housner)" if inp.get("restitution") is None else " (--restitution)"))
+    loads = [f"{name} = {_num(inp[key])}" for key, name in
+             (("buoyancy", "buoyancy"), ("uplift", "uplift"), ("uplift_ratio", "uplift ratio"))
+             if inp.get(key)]
+    if loads:
+        lines.append(f"loads      {', '.join(loads)}, uplift arm = {_num(inp['uplift_arm'])} B")
+    if inp.get("pulse_file"):
+        lines.append(f"pulse      from {inp['pulse_file']}: peak |k| = {_num(der['k_peak'])}, "
+                     f"duration {_num(der['duration'])} s")
+    else:
+        lines.append(f"pulse      {inp['pulse']}, k_peak = {_num(inp['k_peak'])}, duration = "
+                     f"{_num(inp['duration'])} s (omega_p = {_num(der['omega_p'], 5)} rad/s, "
+                     f"omega_p/p = {_num(der['omega_p'] / der['p'], 4)})")
+    phases = record["phases"]
+    lines.append(f"phases     {len(phases)} (start time in s, mode)")
+    shown: list[Any] = list(phases)
+    if len(phases) > _PHASES_SHOWN:
+        shown = phases[:18] + [None] + phases[-4:]
+    for ph in shown:
+        if ph is None:
+            lines.append(f"  ... {len(phases) - 22} more ...")
+            continue
+        lines.append(f"  {_num(ph['start']):>10s}  {ph['mode']:6s}  {phase_description(ph['mode'])}")
+    over = "OVERTURNED" if record["overturned"] else "not overturned"
+    if record["overturned"]:
+        end = f"overturning declared at t = {_num(record['end_time'])} s"
+    elif record["settled"]:
+        end = f"came to rest at t = {_num(record['end_time'])} s"
+    else:
+        end = f"still moving at t = {_num(record['end_time'])} s (given up)"
+    lines.append(f"outcome    {record['category']}: {over} ({end})")
+    lines.append(f"  max rotation        {_num(record['max_rotation'])} rad "
+                 f"({_num(record['max_rotation_deg'], 4)} deg)")
+    lines.append(f"  residual rotation   {_num(record['residual_rotation'])} rad "
+                 f"({_num(record['residual_rotation_deg'], 4)} deg)")
+    lines.append(f"  residual slide      {_num(record['residual_slide'])} m (positive towards O)")
+    lines.append(f"  impacts             {record['impacts']}")
+    init = record["initial_mode"]
+    lines.append(f"  initial mode        {init} ({phase_description(init)})" if init else
+                 "  initial mode        none")
+    return "\n".join(lines)
+
+
+# -- files ----------------------------------------------------------------------------------------
+
+
+def _format(path: str | os.PathLike[str], formats: Sequence[str], what: str) -> str:
+    suffix = Path(path).suffix.lower().lstrip(".")
+    if suffix not in formats:
+        got = f".{suffix}" if suffix else "no suffix"
+        raise ValueError(f"{what} is written as {' or '.join('.' + f for f in formats)}, from the file's "
+                         f"suffix; got {got} in {os.fspath(path)!r}")
+    return suffix
+
+
+def history_arrays(history: History, H: float) -> dict[str, NDArray[Any]]:
+    """The columns of a time history: t, k, x, y, theta, vx, vy, omega, slide (of the base,
+    positive towards O) and phase (the label of the step ending at t; '' at t = 0)."""
+    labels = np.array([""] + [ph.label for ph in Phase])
+    return {
+        "t": history.t, "k": history.k, "x": history.x, "y": history.y, "theta": history.theta,
+        "vx": history.vx, "vy": history.vy, "omega": history.omega, "slide": history.base_slide(H),
+        "phase": labels[history.phase.astype(np.int64) + 1],
+    }
+
+
+def write_history(path: str | os.PathLike[str], history: History, H: float,
+                  inputs: Mapping[str, Any] | None = None) -> str:
+    """Write the time history of a run, atomically; the format (csv or npz) from the suffix.
+
+    ``.csv``: a header and one row per step (numbers as ``repr``, so they read back exactly).
+    ``.npz``: the same columns as 1-D arrays, and the inputs as 0-d arrays.
+    Returns the format.
+    """
+    fmt = _format(path, HISTORY_FORMATS, "a time history")
+    cols = history_arrays(history, H)
+    if fmt == "npz":
+        arrays: dict[str, NDArray[Any]] = dict(cols)
+        for key, v in (inputs or {}).items():
+            if v is not None and key not in arrays:
+                arrays[key] = np.asarray(v)
+        with atomic_open(path, "wb") as fh:
+            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        return fmt
+    names = list(cols)
+    numeric = [cols[n].tolist() for n in names[:-1]]
+    phase = cols["phase"].tolist()
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write(",".join(names) + "\n")
+        for i in range(len(phase)):
+            fh.write(",".join(repr(float(c[i]) + 0.0) for c in numeric) + f",{phase[i]}\n")
+    return fmt
+
+
+def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, second: str,
+                  inputs: Mapping[str, Any] | None = None,
+                  axes: Mapping[str, NDArray[np.float64]] | None = None) -> str:
+    """Write an outcome map's data, atomically; the format (npz or csv) from the suffix.
+
+    Parameters
+    ----------
+    m : OutcomeMap
+    first, second : str
+        Names of the swept inputs (columns, rows), e.g. ``k_peak`` and ``duration``.
+    inputs : mapping, optional
+        The fixed inputs (written as 0-d arrays in ``.npz``).
+    axes : mapping, optional
+        More 1-D arrays (e.g. the dimensionless values of the axes), written to ``.npz``.
+
+    ``.npz``: 1-D arrays ``first`` and ``second`` (the swept values), 2-D arrays ``category``
+    (int8 codes), ``overturned``, ``max_rotation`` (rad) and ``residual_slide`` (m, positive
+    towards O) of shape (len(second), len(first)), ``labels`` (category names by code) and the
+    inputs.  ``.csv``: header ``first,second,category,overturned,max_rotation,residual_slide``,
+    one row per cell (second outer, first inner), the category as its name.
+    Returns the format.
+    """
+    fmt = _format(path, OUTCOME_DATA_FORMATS, "an outcome map's data")
+    if first == second:
+        raise ValueError("the two swept inputs must differ")
+    if fmt == "npz":
+        arrays: dict[str, NDArray[Any]] = {
+            first: np.asarray(m.first_values, dtype=np.float64),
+            second: np.asarray(m.second_values, dtype=np.float64),
+            "category": np.asarray(m.category, dtype=np.int8),
+            "overturned": np.asarray(m.overturned, dtype=bool),
+            "max_rotation": np.asarray(m.max_rotation, dtype=np.float64),
+            "residual_slide": np.asarray(m.residual_slide, dtype=np.float64),
+            "labels": np.array(m.labels),
+        }
+        for key, arr in (axes or {}).items():
+            arrays[key] = np.asarray(arr, dtype=np.float64)
+        for key, v in (inputs or {}).items():
+            if v is not None and key not in arrays:
+                arrays[key] = np.asarray(v)
+        with atomic_open(path, "wb") as fh:
+            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        return fmt
+    xs = [repr(float(v)) for v in m.first_values]
+    labels = list(m.labels)
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write(f"{first},{second},category,overturned,max_rotation,residual_slide\n")
+        for i, yv in enumerate(m.second_values):
+            yt = repr(float(yv))
+            cat = m.category[i].tolist()
+            over = m.overturned[i].tolist()
+            rot = m.max_rotation[i].tolist()
+            sl = m.residual_slide[i].tolist()
+            fh.write("".join(f"{xs[j]},{yt},{labels[cat[j]]},{'true' if over[j] else 'false'},"
+                             f"{rot[j] + 0.0!r},{sl[j] + 0.0!r}\n" for j in range(len(xs))))
+    return fmt
+
+
+def write_motion_plot(path: str | os.PathLike[str], fig: Figure, fmt: str | None = None,
+                      dpi: float | None = None) -> Path:
+    """Save a figure atomically (:func:`regimemap.io.figures.save_figure`)."""
+    from .figures import save_figure
+
+    return save_figure(fig, path, fmt, dpi)
+
+
+def write_block_animation(path: str | os.PathLike[str], history: History, **kwargs: Any
+                          ) -> tuple[int, tuple[int, int], float]:
+    """Write the GIF of :func:`regimemap.drawing.motion.render_block_animation` atomically.
+
+    Returns the number of frames, their size in pixels and the speed-up over real time.
+    """
+    from ..drawing.motion import render_block_animation
+
+    if Path(path).suffix.lower() != ".gif":
+        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+    with atomic_path(path) as tmp:
+        return render_block_animation(tmp, history, **kwargs)
+
+
+# -- a cache of computed outcome maps (make figures) ----------------------------------------------
+
+
+def _cache_key(spec: str) -> str:
+    """A digest of ``spec``, regimemap's and numpy's versions and the source of regimemap.dynamics:
+    any change to the stepper makes a new key."""
+    import hashlib
+
+    from .. import __version__
+    from ..dynamics import stepper
+
+    h = hashlib.sha256()
+    h.update(f"{spec}\n{__version__}\n{np.__version__}\n".encode())
+    for src in sorted(Path(stepper.__file__).parent.glob("*.py")):
+        h.update(src.name.encode())
+        h.update(src.read_bytes())
+    return h.hexdigest()[:20]
+
+
+_CACHED = ("first_values", "second_values", "category", "overturned", "max_rotation", "residual_slide")
+
+
+def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
+                   compute: Any) -> tuple[OutcomeMap, NDArray[np.float64], NDArray[np.float64], bool]:
+    """``compute()`` -> (OutcomeMap, x, y), through a cache of ``.npz`` files in ``folder``.
+
+    The file ``<name>-<key>.npz`` holds the map's arrays exactly (float64), so a figure drawn
+    from it is byte-identical to one drawn from a fresh computation.  The key
+    (:func:`_cache_key`) covers ``spec`` (the figure's definition), the versions of regimemap
+    and numpy and the source of :mod:`regimemap.dynamics`.  ``folder`` None: no cache.
+    Returns the map, x, y and whether it came from the cache.
+    """
+    if folder is None:
+        m, x, y = compute()
+        return m, x, y, False
+    path = Path(folder) / f"{name}-{_cache_key(spec)}.npz"
+    for old in Path(folder).glob(f"{name}-*.npz"):  # the same figure's out-of-date maps
+        if old != path:
+            old.unlink(missing_ok=True)
+    if path.is_file():
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                m = OutcomeMap(first_name=str(z["first_name"]), second_name=str(z["second_name"]),
+                               labels=tuple(str(v) for v in z["labels"]),
+                               seconds=float(z["seconds"]), **{k: z[k] for k in _CACHED})
+                return m, z["x"], z["y"], True
+        except (OSError, ValueError, KeyError):  # a damaged cache file: compute again
+            pass
+    m, x, y = compute()
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    arrays = {k: np.asarray(getattr(m, k)) for k in _CACHED}
+    with atomic_open(path, "wb") as fh:
+        np.savez_compressed(fh, first_name=np.array(m.first_name), second_name=np.array(m.second_name),
+                            labels=np.array(m.labels), seconds=np.float64(m.seconds), x=np.asarray(x),
+                            y=np.asarray(y), **arrays)  # type: ignore[arg-type]
+    return m, x, y, False

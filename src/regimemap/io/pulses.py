@@ -1,0 +1,154 @@
+"""A force history from a CSV file: columns ``t,k`` and optionally ``kprime``.
+
+``t`` is the time in seconds (>= 0, strictly increasing), ``k`` the force over
+m g at that time (positive pushes towards O), ``kprime`` the height of the
+force over H_C (in [-1, 1]; it then replaces the block's k').  The history is
+linearly interpolated between the samples and is zero after the last one
+(:meth:`regimemap.dynamics.Pulse.from_arrays`).  Bad files are refused with the
+file, the line and the column of the first problem, as for points files
+(:mod:`regimemap.io.points`).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import os
+import re
+import stat
+from collections.abc import Iterator
+from typing import TextIO
+
+from ..dynamics.limits import INPUT_LIMITS
+from ..dynamics.pulses import Pulse
+
+__all__ = ["read_pulse_csv", "MAX_PULSE_SAMPLES", "MAX_PULSE_FILE_BYTES"]
+
+#: Largest number of samples accepted from a pulse file.
+MAX_PULSE_SAMPLES = 1_000_000
+#: Largest pulse file accepted, in bytes (checked before reading a regular file, and while
+#: reading a pipe or a device).
+MAX_PULSE_FILE_BYTES = 128 * 1024 * 1024
+#: Longest line accepted, in characters.
+_MAX_LINE = 65536
+
+# A plain decimal number (ASCII digits, optional sign, fraction and exponent), or a word float()
+# knows for infinities and NaN (refused afterwards with a clearer message).
+_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infinity|nan)",
+                     re.ASCII | re.IGNORECASE)
+
+_COLUMNS = ("t", "k", "kprime")
+
+
+def _value(text: str, what: str, where: str) -> float:
+    lim = INPUT_LIMITS[what]
+    rng = lim.text if what != "kprime" else "a number in [-1, 1]"
+    if not text:
+        raise ValueError(f"{where}: {what} is missing; it must be {rng}")
+    if not _NUMBER.fullmatch(text):
+        raise ValueError(f"{where}: {what} must be {rng}, got {text!r} (not a number)")
+    v = float(text)
+    if not lim.contains(v):
+        raise ValueError(f"{where}: {what} must be {rng}, got {text!r}")
+    return v + 0.0
+
+
+def _open(path: str) -> TextIO:
+    try:
+        st = os.stat(path)
+    except OSError as exc:
+        raise ValueError(f"cannot read pulse file {path!r}: {exc.strerror}") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise ValueError(f"pulse file {path!r} is a folder, not a file")
+    if stat.S_ISREG(st.st_mode) and st.st_size > MAX_PULSE_FILE_BYTES:
+        raise ValueError(f"pulse file {path!r} is {st.st_size} bytes, more than the limit of "
+                         f"{MAX_PULSE_FILE_BYTES} bytes")
+    try:
+        return open(path, newline="", encoding="utf-8-sig")
+    except OSError as exc:
+        raise ValueError(f"cannot read pulse file {path!r}: {exc.strerror}") from None
+
+
+def _lines(fh: TextIO, path: str) -> Iterator[str]:
+    total = 0
+    number = 0
+    while True:
+        line = fh.readline(_MAX_LINE + 1)
+        if not line:
+            return
+        number += 1
+        if len(line) > _MAX_LINE:
+            raise ValueError(f"{path}, line {number}: not CSV text (a line longer than {_MAX_LINE} "
+                             "characters)")
+        total += len(line)
+        if total > MAX_PULSE_FILE_BYTES:
+            raise ValueError(f"pulse file {path!r} is more than the limit of {MAX_PULSE_FILE_BYTES} bytes")
+        yield line
+
+
+def read_pulse_csv(path: str | os.PathLike[str]) -> Pulse:
+    """Read a sampled force history (a :class:`~regimemap.dynamics.Pulse` of shape ``arrays``).
+
+    The header names ``t`` and ``k`` and optionally ``kprime`` (case-insensitive,
+    any order; other columns are ignored).  Blank lines are skipped.  At least
+    two samples, times from 0 up, strictly increasing, the last one > 0; at most
+    :data:`MAX_PULSE_SAMPLES` samples and :data:`MAX_PULSE_FILE_BYTES` bytes.
+
+    Raises
+    ------
+    ValueError
+        Naming the file, the line and the column of the first bad value, or a
+        missing or repeated column.
+    """
+    path = os.fspath(path)
+    fh = _open(path)
+    ts: list[float] = []
+    ks: list[float] = []
+    kps: list[float] = []
+    with fh:
+        reader = csv.reader(_lines(fh, path))
+        try:
+            header: list[str] | None = None
+            for row in reader:
+                if row and any(c.strip() for c in row):
+                    header = row
+                    break
+            if header is None:
+                raise ValueError(f"{path}: empty file; expected a header with columns t,k")
+            where = f"{path}, line {reader.line_num}"
+            if any("\x00" in c for c in header):
+                raise ValueError(f"{where}: not CSV text (NUL bytes; a binary file?)")
+            cols = [h.strip().lower() for h in header]
+            missing = [c for c in ("t", "k") if c not in cols]
+            if missing:
+                raise ValueError(f"{where}: missing column(s) {', '.join(missing)}; the header must name "
+                                 f"t and k (got {', '.join(repr(h) for h in header[:6])})")
+            twice = [c for c in _COLUMNS if cols.count(c) > 1]
+            if twice:
+                raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
+            idx = {c: cols.index(c) for c in _COLUMNS if c in cols}
+            has_kprime = "kprime" in idx
+            for row in reader:
+                line = reader.line_num
+                if not row or all(not c.strip() for c in row):
+                    continue
+                if len(row) < len(cols):
+                    row = row + [""] * (len(cols) - len(row))
+                where = f"{path}, line {line}"
+                t = _value(row[idx["t"]].strip(), "t", f"{where}, column t")
+                if ts and not t > ts[-1]:
+                    raise ValueError(f"{where}, column t: times must increase, got {t:g} after {ts[-1]:g}")
+                k = _value(row[idx["k"]].strip(), "k", f"{where}, column k")
+                if has_kprime:
+                    kps.append(_value(row[idx["kprime"]].strip(), "kprime", f"{where}, column kprime"))
+                if len(ts) >= MAX_PULSE_SAMPLES:
+                    raise ValueError(f"{where}: more than {MAX_PULSE_SAMPLES} samples (the limit)")
+                ts.append(t)
+                ks.append(k)
+        except (csv.Error, UnicodeDecodeError) as exc:
+            raise ValueError(f"{path}, line {reader.line_num + 1}: not CSV text ({exc})") from None
+    if len(ts) < 2:
+        raise ValueError(f"{path}: {len(ts)} sample(s); a pulse needs at least two rows t,k")
+    if not math.isfinite(ts[-1]) or ts[-1] <= 0.0:  # pragma: no cover - increasing times from >= 0
+        raise ValueError(f"{path}: the last time must be > 0")
+    return Pulse.from_arrays(ts, ks, kps if has_kprime else None)
