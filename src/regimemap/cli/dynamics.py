@@ -21,6 +21,7 @@ from ..dynamics.pulses import SHAPES
 from ._common import (
     ParamType,
     RunError,
+    check_kprime_crest,
     gamma_option,
     import_matplotlib,
     kprime_option,
@@ -208,6 +209,8 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
           --duration 4 -o run.csv --animate caisson.gif
       regimemap simulate --gamma 3 --half-width 0.2 --mu 5 --pulse-file record.csv
     """
+    if isinstance(kprime, float):  # the block of the dynamics has the crest at H (k' <= 1)
+        kprime = check_kprime_crest(kprime, 1.0)
     # -- the pulse --------------------------------------------------------------------------
     given = [n for n, v in (("--pulse", pulse), ("--k-peak", k_peak), ("--duration", duration))
              if v is not None]
