@@ -93,7 +93,9 @@ FLIGHT_STYLE = ModeStyle("#FFFFFF", "oo")
 def phase_style(code: int) -> ModeStyle:
     """The fill of a phase of a motion (:class:`regimemap.dynamics.Phase` code): its mode's, or
     :data:`FLIGHT_STYLE`."""
-    return MODE_STYLE[Mode(code)] if 0 <= code < len(Mode) else FLIGHT_STYLE
+    # the contact phases share their codes with RE ... SRO'+ (0-7); code 8 is flight, not
+    # lift-off (Mode.LO, a mode of the map that a phase never carries)
+    return MODE_STYLE[Mode(code)] if 0 <= code < Mode.LO.value else FLIGHT_STYLE
 
 
 #: Line widths (points) of hatches and of boundary curves.
