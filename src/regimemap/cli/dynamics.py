@@ -1,4 +1,6 @@
 """``regimemap simulate`` (one run after initiation), ``regimemap outcome`` (an outcome map over two
+
+Size: over 500 lines on purpose: three commands sharing option types, limits and outputs.
 swept inputs) and ``regimemap dynamics-figures`` (the figures D.1-D.3).
 
 The commands parse and check their options, call :mod:`regimemap.dynamics`,

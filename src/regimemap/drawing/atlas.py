@@ -1,6 +1,9 @@
 """Many maps at once: an atlas of small multiples and an animation over k'.
 
-:func:`atlas_figure` draws the all-mode map (:func:`regimemap.render.draw_map`)
+Size: over 500 lines on purpose: the atlas and the animation share the views, the key
+and the panel layout.
+
+:func:`atlas_figure` draws the all-mode map (:func:`regimemap.drawing.mapplot.draw_map`)
 for every pair of a list of gamma (rows) and a list of k' (columns), on
 shared axes, with one legend and each panel titled with its gamma and k'.
 :func:`render_animation` draws a GIF of the map as k' sweeps a range, on

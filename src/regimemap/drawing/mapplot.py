@@ -1,5 +1,8 @@
 """Draw regime maps with matplotlib, without pyplot and its global state.
 
+Size: over 500 lines on purpose: :func:`draw_map` and its label helpers share one
+frame of conversions (data, view fractions, points) and the offsets of the named points.
+
 The numbers come from :mod:`regimemap.maps.mapdata` (region polygons, curves,
 named points) and the labels are placed by :mod:`regimemap.drawing.placement`;
 this module only turns them into artists.  Every drawing function takes an

@@ -1,5 +1,7 @@
 """The one-page design sheet of a caisson (A4 portrait).
 
+Size: over 500 lines on purpose: one function per panel of one page, sharing its layout.
+
 Panels: (a) the cross-section to scale (still-water level, mound and berm,
 caisson, crest, the forces on the equivalent block); (b) Goda's pressure
 diagram on the wall (``p1``, ``p3``, ``p4``, ``eta*``) and (c) the uplift

@@ -1,5 +1,8 @@
 """Moreau-Jean time stepping of a rigid block with two unilateral frictional corners.
 
+Size: over 500 lines on purpose: the scheme, the closed forms of the ten contact states
+and the bookkeeping of a batch belong to one time step.
+
 The scheme
 ----------
 Velocity-level time stepping of Moreau (1988) and Jean (1999), theta-method with

@@ -8,13 +8,11 @@ import csv
 import math
 import os
 import re
-import stat
-from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import TextIO
 
 from ..maps.points import LOAD_FIELDS, DesignPoint
 from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, LOAD_LIMITS, MAX_VALUE
+from .textfile import NUMBER, guarded_lines, open_text_file
 
 __all__ = ["DesignPoint", "PointsTable", "parse_point_spec", "read_points_csv", "read_points_table",
            "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
@@ -24,15 +22,6 @@ MAX_POINTS = 1_000_000
 #: Largest points file accepted, in bytes (checked before reading a regular
 #: file, and while reading a pipe or a device).
 MAX_POINTS_FILE_BYTES = 128 * 1024 * 1024
-#: Longest line accepted, in characters.
-_MAX_LINE = 65536
-
-# A decimal number as written in a CSV file or on the command line (ASCII digits,
-# optional sign, fraction and exponent) or one of the words float() knows for
-# infinities and NaN (refused afterwards with a clearer message).  Python's
-# float() alone would also take "1_000" and non-ASCII digits.
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infinity|nan)",
-                     re.ASCII | re.IGNORECASE)
 
 
 def _number(text: str, what: str, where: str, crest: float = 1.0) -> float:
@@ -44,14 +33,14 @@ def _number(text: str, what: str, where: str, crest: float = 1.0) -> float:
     elif what in LOAD_LIMITS:
         lo, hi, lo_open, hi_open = LOAD_LIMITS[what]
         rng = f"a number in {'(' if lo_open else '['}{lo:g}, {hi:g}{')' if hi_open else ']'}"
-        if text and _NUMBER.fullmatch(text) and ((lo_open and float(text) == lo)
+        if text and NUMBER.fullmatch(text) and ((lo_open and float(text) == lo)
                                                   or (hi_open and float(text) == hi)):
             raise ValueError(f"{where}: {what} must be {rng}, got {text!r}")
     else:
         rng, lo, hi = f"a finite number >= 0 (at most {MAX_VALUE:g})", 0.0, MAX_VALUE
     if not text:
         raise ValueError(f"{where}: {what} is missing; it must be {rng}")
-    if not _NUMBER.fullmatch(text):
+    if not NUMBER.fullmatch(text):
         raise ValueError(f"{where}: {what} must be {rng}, got {text!r} (not a number)")
     v = float(text)
     if not math.isfinite(v) or v < lo or v > hi:
@@ -74,43 +63,6 @@ def parse_point_spec(spec: str) -> DesignPoint:
     k = _number(parts[0].strip(), "k", f"point {spec!r}")
     mu = _number(parts[1].strip(), "mu", f"point {spec!r}")
     return DesignPoint(k, mu, name.strip())
-
-
-def _open_points_file(path: str) -> TextIO:
-    try:
-        st = os.stat(path)
-    except OSError as exc:
-        raise ValueError(f"cannot read points file {path!r}: {exc.strerror}") from None
-    if stat.S_ISDIR(st.st_mode):
-        raise ValueError(f"points file {path!r} is a folder, not a file")
-    if stat.S_ISREG(st.st_mode) and st.st_size > MAX_POINTS_FILE_BYTES:
-        raise ValueError(
-            f"points file {path!r} is {st.st_size} bytes, more than the limit of "
-            f"{MAX_POINTS_FILE_BYTES} bytes"
-        )
-    try:
-        return open(path, newline="", encoding="utf-8-sig")
-    except OSError as exc:
-        raise ValueError(f"cannot read points file {path!r}: {exc.strerror}") from None
-
-
-def _lines(fh: TextIO, path: str) -> Iterator[str]:
-    """The lines of ``fh``, refusing endless lines and files beyond the size limit."""
-    total = 0
-    number = 0
-    while True:
-        line = fh.readline(_MAX_LINE + 1)
-        if not line:
-            return
-        number += 1
-        if len(line) > _MAX_LINE:
-            raise ValueError(f"{path}, line {number}: not CSV text (a line longer than "
-                             f"{_MAX_LINE} characters)")
-        total += len(line)
-        if total > MAX_POINTS_FILE_BYTES:
-            raise ValueError(f"points file {path!r} is more than the limit of "
-                             f"{MAX_POINTS_FILE_BYTES} bytes")
-        yield line
 
 
 @dataclass(frozen=True)
@@ -139,10 +91,10 @@ def _sniff(path: str) -> tuple[str, bool]:
     when split at semicolons (what a spreadsheet writes where the comma is
     the decimal mark: ``k;mu`` and ``0,5;0,3``) or at tabs.
     """
-    fh = _open_points_file(path)
+    fh = open_text_file(path, "points file", MAX_POINTS_FILE_BYTES)
     with fh:
         try:
-            for line in _lines(fh, path):
+            for line in guarded_lines(fh, path, "points file", MAX_POINTS_FILE_BYTES):
                 if line.strip():
                     break
             else:
@@ -193,9 +145,10 @@ def read_points_table(path: str | os.PathLike[str]) -> PointsTable:
         note = "semicolon-separated with decimal commas (as a spreadsheet writes it)"
     elif sep == "\t":
         note = "tab-separated"
-    fh = _open_points_file(path)
+    fh = open_text_file(path, "points file", MAX_POINTS_FILE_BYTES)
     with fh:
-        reader = csv.reader(_lines(fh, path), delimiter=sep)
+        reader = csv.reader(guarded_lines(fh, path, "points file", MAX_POINTS_FILE_BYTES),
+                            delimiter=sep)
         try:
             header: list[str] | None = None
             for row in reader:

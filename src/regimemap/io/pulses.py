@@ -14,13 +14,10 @@ from __future__ import annotations
 import csv
 import math
 import os
-import re
-import stat
-from collections.abc import Iterator
-from typing import TextIO
 
 from ..dynamics.limits import INPUT_LIMITS
 from ..dynamics.pulses import Pulse
+from .textfile import NUMBER, guarded_lines, open_text_file
 
 __all__ = ["read_pulse_csv", "MAX_PULSE_SAMPLES", "MAX_PULSE_FILE_BYTES"]
 
@@ -29,13 +26,7 @@ MAX_PULSE_SAMPLES = 1_000_000
 #: Largest pulse file accepted, in bytes (checked before reading a regular file, and while
 #: reading a pipe or a device).
 MAX_PULSE_FILE_BYTES = 128 * 1024 * 1024
-#: Longest line accepted, in characters.
-_MAX_LINE = 65536
 
-# A plain decimal number (ASCII digits, optional sign, fraction and exponent), or a word float()
-# knows for infinities and NaN (refused afterwards with a clearer message).
-_NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infinity|nan)",
-                     re.ASCII | re.IGNORECASE)
 
 _COLUMNS = ("t", "k", "kprime")
 
@@ -45,45 +36,12 @@ def _value(text: str, what: str, where: str) -> float:
     rng = lim.text if what != "kprime" else "a number in [-1, 1]"
     if not text:
         raise ValueError(f"{where}: {what} is missing; it must be {rng}")
-    if not _NUMBER.fullmatch(text):
+    if not NUMBER.fullmatch(text):
         raise ValueError(f"{where}: {what} must be {rng}, got {text!r} (not a number)")
     v = float(text)
     if not lim.contains(v):
         raise ValueError(f"{where}: {what} must be {rng}, got {text!r}")
     return v + 0.0
-
-
-def _open(path: str) -> TextIO:
-    try:
-        st = os.stat(path)
-    except OSError as exc:
-        raise ValueError(f"cannot read pulse file {path!r}: {exc.strerror}") from None
-    if stat.S_ISDIR(st.st_mode):
-        raise ValueError(f"pulse file {path!r} is a folder, not a file")
-    if stat.S_ISREG(st.st_mode) and st.st_size > MAX_PULSE_FILE_BYTES:
-        raise ValueError(f"pulse file {path!r} is {st.st_size} bytes, more than the limit of "
-                         f"{MAX_PULSE_FILE_BYTES} bytes")
-    try:
-        return open(path, newline="", encoding="utf-8-sig")
-    except OSError as exc:
-        raise ValueError(f"cannot read pulse file {path!r}: {exc.strerror}") from None
-
-
-def _lines(fh: TextIO, path: str) -> Iterator[str]:
-    total = 0
-    number = 0
-    while True:
-        line = fh.readline(_MAX_LINE + 1)
-        if not line:
-            return
-        number += 1
-        if len(line) > _MAX_LINE:
-            raise ValueError(f"{path}, line {number}: not CSV text (a line longer than {_MAX_LINE} "
-                             "characters)")
-        total += len(line)
-        if total > MAX_PULSE_FILE_BYTES:
-            raise ValueError(f"pulse file {path!r} is more than the limit of {MAX_PULSE_FILE_BYTES} bytes")
-        yield line
 
 
 def read_pulse_csv(path: str | os.PathLike[str]) -> Pulse:
@@ -101,12 +59,12 @@ def read_pulse_csv(path: str | os.PathLike[str]) -> Pulse:
         missing or repeated column.
     """
     path = os.fspath(path)
-    fh = _open(path)
+    fh = open_text_file(path, "pulse file", MAX_PULSE_FILE_BYTES)
     ts: list[float] = []
     ks: list[float] = []
     kps: list[float] = []
     with fh:
-        reader = csv.reader(_lines(fh, path))
+        reader = csv.reader(guarded_lines(fh, path, "pulse file", MAX_PULSE_FILE_BYTES))
         try:
             header: list[str] | None = None
             for row in reader:

@@ -1,0 +1,63 @@
+"""Reading a user's text file with guards: one helper for the points and the pulse files.
+
+A file that is a folder, too large, unreadable or made of endless lines is
+refused with a message naming the file (and the line), never a traceback.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import stat
+from collections.abc import Iterator
+from typing import TextIO
+
+__all__ = ["MAX_LINE", "NUMBER", "guarded_lines", "open_text_file"]
+
+#: Longest line accepted, in characters.
+MAX_LINE = 65536
+
+#: A decimal number as written in a CSV file or on the command line (ASCII digits,
+#: optional sign, fraction and exponent) or one of the words float() knows for
+#: infinities and NaN (refused afterwards with a clearer message).  Python's
+#: float() alone would also take "1_000" and non-ASCII digits.
+NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infinity|nan)",
+                    re.ASCII | re.IGNORECASE)
+
+
+def open_text_file(path: str, what: str, max_bytes: int) -> TextIO:
+    """Open ``path`` (a ``what``, e.g. "points file") as UTF-8 text; ValueError if it cannot be read.
+
+    A regular file larger than ``max_bytes`` is refused before reading.
+    """
+    try:
+        st = os.stat(path)
+    except OSError as exc:
+        raise ValueError(f"cannot read {what} {path!r}: {exc.strerror}") from None
+    if stat.S_ISDIR(st.st_mode):
+        raise ValueError(f"{what} {path!r} is a folder, not a file")
+    if stat.S_ISREG(st.st_mode) and st.st_size > max_bytes:
+        raise ValueError(f"{what} {path!r} is {st.st_size} bytes, more than the limit of "
+                         f"{max_bytes} bytes")
+    try:
+        return open(path, newline="", encoding="utf-8-sig")
+    except OSError as exc:
+        raise ValueError(f"cannot read {what} {path!r}: {exc.strerror}") from None
+
+
+def guarded_lines(fh: TextIO, path: str, what: str, max_bytes: int) -> Iterator[str]:
+    """The lines of ``fh``, refusing endless lines and (pipes, devices) more than ``max_bytes``."""
+    total = 0
+    number = 0
+    while True:
+        line = fh.readline(MAX_LINE + 1)
+        if not line:
+            return
+        number += 1
+        if len(line) > MAX_LINE:
+            raise ValueError(f"{path}, line {number}: not CSV text (a line longer than "
+                             f"{MAX_LINE} characters)")
+        total += len(line)
+        if total > max_bytes:
+            raise ValueError(f"{what} {path!r} is more than the limit of {max_bytes} bytes")
+        yield line
