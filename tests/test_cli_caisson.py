@@ -159,7 +159,7 @@ def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
     out = tmp_path / f"sheet.{suffix}"
     r = invoke_cli(["caisson", str(goda), "--json", "-o", str(out)])
     assert r.code == 0, r.output
-    json.loads(r.stdout)
+    assert json.loads(r.stdout)["sheet"] == str(out)  # the path inside the one JSON object
     head = out.read_bytes()[:8]
     assert head.startswith(b"%PDF" if suffix == "pdf" else b"\x89PNG")
 

@@ -130,7 +130,8 @@ def test_export_csv_round_trip_with_loads(run_cli, tmp_path):
     assert [Mode(int(c)).label for c in codes] == [r_["mode"] for r_ in rows]
     # the rows read back as design points with their loads (classify --points)
     pts = read_points_csv(out)
-    assert pts[0].loads == {"buoyancy": 0.318, "uplift_ratio": 0.524, "uplift_arm": 1.0 / 3.0}
+    # numbers for people: 12 significant digits (1/3 reads 0.333333333333)
+    assert pts[0].loads == {"buoyancy": 0.318, "uplift_ratio": 0.524, "uplift_arm": 0.333333333333}
 
 
 def test_export_json_with_loads(run_cli, tmp_path):
@@ -139,9 +140,14 @@ def test_export_json_with_loads(run_cli, tmp_path):
     assert r.code == 0, r.output
     g = json.loads(out.read_text())
     assert g["parameters"]["buoyancy"] == 0.318 and g["parameters"]["gyration"] is None
-    assert g["lift_off"]["k_L"] == GODA_P.k_L
+    assert g["lift_off"]["k_L"] == float(f"{GODA_P.k_L:.12g}")  # 12 significant digits
     assert "LO" in g["modes"] and g["regions"]["LO"] and "LO" in g["curves"]
-    assert g["curves"]["LO"]["polylines"][0][0] == [GODA_P.k_L, 0.0]
+    assert g["curves"]["LO"]["polylines"][0][0] == [float(f"{GODA_P.k_L:.12g}"), 0.0]
+    # {LO, RO, SRO-} lies above mu = 1.2: in the report's view, not the designer's
+    assert not any("least constraint" in a["label"] for a in g["ambiguity"])
+    r = run_cli(["export", *GODA, "--view", "report", "-o", str(out)])
+    assert r.code == 0, r.output
+    g = json.loads(out.read_text())
     assert any("least constraint" in a["label"] for a in g["ambiguity"])
     # the report's block keeps its file: no loads, no lift-off
     r = run_cli(["export", "--gamma", "3", "--kprime", "0.4", "-o", str(tmp_path / "z.json")])

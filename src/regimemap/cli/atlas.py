@@ -180,7 +180,8 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
                     view=view, dpi=dpi, sweep=sweep, fixed=fixed)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    report_written(output)
+    across = "" if sweep == "kprime" else f", columns {sweep}"
+    report_written(output, f"{len(gammas)} x {len(values)} panels{across}")
     label = "k'" if sweep == "kprime" else sweep
     if crammed:
         names = ", ".join(f"gamma = {g:g}, {label} = {v:g}" for g, v in crammed[:4])

@@ -38,7 +38,8 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
 
     With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
     the cross-section, the pressure diagram, the loaded map with the design
-    point and its path as the wave grows, and the numbers.
+    point and its path as the wave grows, and the numbers; its path follows
+    the report on standard output (with --json, as the key "sheet").
 
     \b
     Examples:
@@ -79,19 +80,22 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
 
     from ..io.caisson import caisson_json, format_caisson
 
-    if as_json:
-        click.echo(json.dumps(caisson_json(report, source=design), indent=2, allow_nan=False))
-    else:
-        click.echo(format_caisson(report, source=design))
-    if output is None:
-        return
-    import_matplotlib()
-    from ..drawing.sheet import sheet_figure
-    from ..io.figures import save_figure
+    if output is not None:  # the sheet first: a failure leaves no report half-printed
+        import_matplotlib()
+        from ..drawing.sheet import sheet_figure
+        from ..io.figures import save_figure
 
-    fig = sheet_figure(report, title=Path(design).name)
-    try:
-        save_figure(fig, output)
-    except OSError as exc:
-        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    report_written(output)
+        fig = sheet_figure(report, title=Path(design).name)
+        try:
+            save_figure(fig, output)
+        except OSError as exc:
+            raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    if as_json:
+        obj = caisson_json(report, source=design)
+        if output is not None:  # the written file's path, inside the one JSON object
+            obj["sheet"] = output
+        click.echo(json.dumps(obj, indent=2, allow_nan=False))
+        return
+    click.echo(format_caisson(report, source=design))
+    if output is not None:
+        report_written(output)

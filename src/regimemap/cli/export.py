@@ -81,4 +81,9 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
                    view=view)
     except OSError as exc:
         raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
-    report_written(output)
+    from ..maps.describe import loads_text
+
+    what = "vector geometry" if fmt == "json" else f"{resolution} x {resolution} grid"
+    extra = loads_text(p)
+    report_written(output, f"{fmt}, {what}; gamma = {gamma:g}, k' = {kprime:g}"
+                           f"{', ' + extra if extra else ''}")

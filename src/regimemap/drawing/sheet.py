@@ -16,7 +16,6 @@ and :func:`regimemap.maps.caisson.map_view`); this module only draws.
 
 from __future__ import annotations
 
-import math
 import textwrap
 from typing import TYPE_CHECKING, Any
 
@@ -24,6 +23,7 @@ import numpy as np
 
 from .. import __version__
 from ..maps.caisson import CaissonReport, MapView, map_view
+from ..maps.describe import format_significant
 from ..maps.loadedmap import LO, Margin, mode_description, mode_label
 from ..mechanics.modes import Mode
 from .save import DEFAULT_DPI
@@ -65,15 +65,7 @@ def _style(code: int) -> ModeStyle:
 
 
 def _g(x: float, digits: int = 4) -> str:
-    if not math.isfinite(x):
-        return "inf" if x > 0 else "n/a"
-    if 10.0 ** digits <= abs(x) < 1e12:
-        s = f"{x:.0f}"  # 26210, not 2.621e+04
-    else:
-        s = f"{x:#.{digits}g}"
-        if "e" not in s:
-            s = s.rstrip(".")
-    return "0" if float(s) == 0.0 else s.replace("-", "\u2212")
+    return format_significant(x, digits).replace("-", "\u2212")
 
 
 def _num(r: CaissonReport, name: str) -> float:

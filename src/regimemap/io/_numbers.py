@@ -26,6 +26,12 @@ def round_sig(v: float, digits: int = DIGITS) -> float:
     return float(f"{v:.{digits}g}") + 0.0
 
 
+def json_number(v: float, digits: int = DIGITS) -> float | None:
+    """``v`` rounded as :func:`round_sig`, or ``None`` (JSON's null) if it is not finite."""
+    v = float(v)
+    return round_sig(v, digits) if math.isfinite(v) else None
+
+
 def text(v: float, digits: int = DIGITS) -> str:
     """The shortest text of ``v`` rounded to ``digits`` significant digits (``repr`` style)."""
     return repr(round_sig(v, digits))

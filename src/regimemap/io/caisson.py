@@ -7,13 +7,14 @@ breakwater), lengths in m; the loaded block's numbers are dimensionless.
 
 from __future__ import annotations
 
-import math
 from typing import Any
 
 import numpy as np
 
 from ..maps.caisson import CaissonReport
+from ..maps.describe import format_significant as _sig
 from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
+from ._numbers import json_number as round_sig
 
 __all__ = ["CONSISTENCY_NOTE", "caisson_json", "format_caisson", "round_sig"]
 
@@ -22,14 +23,6 @@ CONSISTENCY_NOTE = (
     "Goda's SF_sliding >= 1 and SF_overturning >= 1 (both) <=> rest (RE) on the loaded map: "
     "with t = B, SF_s = mu (1 - beta - nu k)/k and SF_o = ((1 - beta) - nu k (1 + e_u))/"
     "(k (1 + k') gamma), exactly the map's conditions of rest (docs/waves.md, Sect. 7)")
-
-
-def round_sig(x: float, digits: int = 12) -> float | None:
-    """``x`` rounded to ``digits`` significant digits; None if it is not finite."""
-    x = float(x)
-    if not math.isfinite(x):
-        return None
-    return float(f"{x:.{digits}g}")
 
 
 def _f(x: Any) -> float:
@@ -116,18 +109,6 @@ def caisson_json(r: CaissonReport, source: str | None = None) -> dict[str, Any]:
     return out
 
 
-def _g(x: float, digits: int = 4) -> str:
-    if not math.isfinite(x):
-        return "inf" if x > 0 else "n/a"
-    if 10.0 ** digits <= abs(x) < 1e12:
-        s = f"{x:.0f}"  # 26210, not 2.621e+04
-    else:
-        s = f"{x:#.{digits}g}"
-        if "e" not in s:
-            s = s.rstrip(".")
-    return "0" if float(s) == 0.0 else s
-
-
 def _margin_line(m: Margin) -> str:
     parts = []
     order = (("up", m.up), ("down", m.down)) if m.variable == "k" else (("down", m.down), ("up", m.up))
@@ -151,17 +132,17 @@ def format_caisson(r: CaissonReport, source: str | None = None) -> str:
         lines.append(f"caisson design: {source}")
 
     def row(name: str, value: float, unit: str, what: str, digits: int = 4) -> None:
-        lines.append(f"  {name:<14}{_g(value, digits):>10} {unit:<8} {what}")
+        lines.append(f"  {name:<14}{_sig(value, digits):>10} {unit:<8} {what}")
 
     lines.append("design wave at the wall (Goda 2000)")
     row("H1/3", n["H13"], "m", "significant height")
     row("Hmax", n["Hmax"], "m", "design (maximum) height")
-    row("L", n["L"], "m", f"wave length of T1/3 at h = {_g(float(r.inputs['depth']))} m")
+    row("L", n["L"], "m", f"wave length of T1/3 at h = {_sig(float(r.inputs['depth']))} m")
     row("eta*", n["eta_star"], "m", "elevation where the wave pressure vanishes")
     lines.append("pressures (Goda 1974, Takahashi's impulsive coefficient)")
     which = "alpha_I" if n["alpha_I"] > n["alpha2"] and n["alpha_star"] == n["alpha_I"] else "alpha2"
-    lines.append(f"  alpha1 = {_g(n['alpha1'])}   alpha2 = {_g(n['alpha2'])}   "
-                 f"alpha3 = {_g(n['alpha3'])}   alpha_I = {_g(n['alpha_I'])}   (alpha* = {which})")
+    lines.append(f"  alpha1 = {_sig(n['alpha1'])}   alpha2 = {_sig(n['alpha2'])}   "
+                 f"alpha3 = {_sig(n['alpha3'])}   alpha_I = {_sig(n['alpha_I'])}   (alpha* = {which})")
     row("p1", n["p1"], "kPa", "at the still-water level")
     row("p3", n["p3"], "kPa", "at the base of the upright section")
     row("p4", n["p4"], "kPa", "at the crest")
@@ -182,7 +163,7 @@ def format_caisson(r: CaissonReport, source: str | None = None) -> str:
     row("gamma", n["gamma"], "", "H_C / B")
     row("k", n["k"], "", "P / (m g), m g the dry weight", 6)
     side = "above" if n["kprime"] > 0 else ("below" if n["kprime"] < 0 else "at")
-    row("k'", n["kprime"], "", f"(Mp/P - H_C)/H_C: P acts {_g(abs(n['kprime']) * n['H_C'], 3)} m "
+    row("k'", n["kprime"], "", f"(Mp/P - H_C)/H_C: P acts {_sig(abs(n['kprime']) * n['H_C'], 3)} m "
         f"{side} the centre of mass", 6)
     row("buoyancy", n["buoyancy"], "", "rho_w g V_submerged / (m g)", 6)
     row("uplift ratio", n["uplift_ratio"], "", "U / P", 6)
@@ -197,19 +178,19 @@ def format_caisson(r: CaissonReport, source: str | None = None) -> str:
     lo, hi = float(p.factors[0]), float(p.factors[-1])
     lines.append(f"as the wave grows (H1/3 and Hmax times s = {lo:g} .. {hi:g}, loads recomputed, "
                  "each point on its own map):")
-    lines.append(f"  k' {_g(float(p.kprime[0]))} .. {_g(float(p.kprime[-1]))},  uplift ratio "
-                 f"{_g(float(p.uplift_ratio[0]))} .. {_g(float(p.uplift_ratio[-1]))},  "
-                 f"k {_g(float(p.k[0]))} .. {_g(float(p.k[-1]))}")
+    lines.append(f"  k' {_sig(float(p.kprime[0]))} .. {_sig(float(p.kprime[-1]))},  uplift ratio "
+                 f"{_sig(float(p.uplift_ratio[0]))} .. {_sig(float(p.uplift_ratio[-1]))},  "
+                 f"k {_sig(float(p.k[0]))} .. {_sig(float(p.k[-1]))}")
     hmax = n["Hmax"]
     if p.onset is None:
-        lines.append(f"  the caisson stays at rest up to s = {hi:g} (Hmax = {_g(hi * hmax)} m)")
+        lines.append(f"  the caisson stays at rest up to s = {hi:g} (Hmax = {_sig(hi * hmax)} m)")
     elif p.onset <= lo and p.modes[0] != 0:
         assert p.onset_mode is not None
         lines.append(f"  the caisson already moves at s = {lo:g}: {mode_label(p.onset_mode)} "
                      f"({mode_description(p.onset_mode)})")
     else:
         assert p.onset_mode is not None
-        lines.append(f"  the caisson leaves rest at s = {p.onset:.4f} (Hmax = {_g(p.onset * hmax)} m): "
+        lines.append(f"  the caisson leaves rest at s = {p.onset:.4f} (Hmax = {_sig(p.onset * hmax)} m): "
                      f"{mode_label(p.onset_mode)} ({mode_description(p.onset_mode)})")
     verdict = "both SF >= 1" if r.safe_by_goda else "an SF < 1"
     agree = "consistent" if r.consistent else "INCONSISTENT (please report it)"

@@ -23,6 +23,8 @@ from numpy.typing import NDArray
 from ..dynamics.outcome import OutcomeMap
 from ..dynamics.stepper import CATEGORY_LABELS, History, Phase, Simulation
 from ..mechanics.modes import Mode
+from ._numbers import DIGITS as SIGNIFICANT
+from ._numbers import round_sig
 from .atomic import atomic_open, atomic_path
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,18 +49,8 @@ __all__ = [
 #: Formats of a time history and of an outcome map's data, by file suffix.
 HISTORY_FORMATS: tuple[str, ...] = ("csv", "npz")
 OUTCOME_DATA_FORMATS: tuple[str, ...] = ("npz", "csv")
-#: Significant digits of the numbers of :func:`simulation_record`.
-SIGNIFICANT = 12
 
 _PHASE_BY_LABEL = {ph.label: ph for ph in Phase}
-
-
-def round_sig(x: float, digits: int = SIGNIFICANT) -> float:
-    """``x`` rounded to ``digits`` significant digits (as the shortest float of that text)."""
-    v = float(x)
-    if not math.isfinite(v) or v == 0.0:
-        return v + 0.0
-    return float(f"{v:.{digits}g}") + 0.0
 
 
 def phase_description(label: str) -> str:

@@ -64,7 +64,7 @@ def _last_change(params: Parameters, mu_top: float, k_far: float,
     p = params
     k = np.geomspace(1e-6 * mu_top, k_far, 3000)
     mu = np.linspace(0.0, mu_top, 241)[1:]
-    codes = label_grid(k, mu, p.gamma, p.kprime).astype(np.int64)
+    codes = label_grid(k, mu, p.gamma, p.kprime, **p.loads).astype(np.int64)
     if raw_mode is not None:
         kk, mm = np.meshgrid(k, mu)
         codes = codes * 2 + raw_region(raw_mode, p, kk, mm).astype(np.int64)
