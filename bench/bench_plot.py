@@ -204,7 +204,7 @@ def _table(r: dict[str, Any]) -> str:
         ("    regimemap --help, wall", f"{r['help_wall_s']:.3f} s", ""),
         (f"(c) figures --format png,svg ({r['figures_files']} files, {os.cpu_count()} cores)",
          f"{r['figures_wall_s']:.2f} s",
-         f"<= {r['figures_target_s']:.0f} s  {ok(r['figures_ok'])}"),
+         f"<= {r['figures_target_s']:g} s  {ok(r['figures_ok'])}"),
         ("    byte-identical between runs", str(r["figures_identical"]), ""),
         ("load average (1 min)", f"{r['load_average']:.2f}" if r["load_average"] is not None
          else "n/a", f"{os.cpu_count()} CPUs"),

@@ -41,6 +41,14 @@ def test_atlas_svg_has_every_panel(tmp_path):
     assert 'id="panel-2-0"' not in text and 'id="panel-0-3"' not in text
 
 
+def test_atlas_says_when_it_does_not_share(tmp_path):
+    r = run("atlas", "--gamma", "1,2,3", "--kprime", "-0.6,-0.2,0,0.4,0.9", "--dpi", "30",
+            "-o", str(tmp_path / "a.png"))
+    assert r.exit_code == 0, r.output
+    assert "each panel has its own view" in r.output
+    assert "(gamma, k') = (1, 0.9), " in r.output and "more into a corner" in r.output
+
+
 def test_atlas_png_range_syntax(tmp_path):
     out = tmp_path / "a.png"
     r = run("atlas", "--gamma", "2", "--kprime", "-1:1:3", "--share", "none", "--dpi", "40",

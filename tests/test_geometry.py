@@ -71,3 +71,17 @@ def test_final_intervals_tile_each_column():
 def test_polygons_of_absent_modes_are_empty():
     polys = region_polygons(Parameters(3.0, 0.2), 3.0, 3.0)
     assert polys[Mode.SRO_PLUS] == [] and polys[Mode.SRO_PRIME_MINUS] == []
+
+
+def test_area_in_view_clips_to_the_rectangle():
+    from regimemap.maps.geometry import area_in_view
+
+    square = np.array([[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]])
+    assert area_in_view(square, 2.0, 2.0) == pytest.approx(1.0)
+    assert area_in_view(square, 1.0, 1.0) == pytest.approx(0.25)  # one quarter inside
+    assert area_in_view(square, 1.0, 0.5) == 0.0  # touches the top edge only
+    assert area_in_view(square + 5.0, 2.0, 2.0) == 0.0
+    big = np.array([[-1.0, -1.0], [9.0, -1.0], [9.0, 9.0], [-1.0, 9.0]])  # no vertex inside
+    assert area_in_view(big, 2.0, 3.0) == pytest.approx(6.0)
+    tri = np.array([[0.0, 0.0], [2.0, 0.0], [0.0, 2.0]])  # cut by k = 1: int_0^1 (2 - k) dk
+    assert area_in_view(tri, 1.0, 2.0) == pytest.approx(1.5)

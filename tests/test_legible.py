@@ -24,7 +24,7 @@ from regimemap import Mode, Parameters  # noqa: E402
 from regimemap.drawing.atlas import atlas_figure, draw_frame, frame_figure  # noqa: E402
 from regimemap.drawing.figure import map_figure  # noqa: E402
 from regimemap.drawing.tidy import text_boxes  # noqa: E402
-from regimemap.maps import DesignPoint  # noqa: E402
+from regimemap.maps import DesignPoint, classify  # noqa: E402
 
 DPI = 50
 GAMMAS = (0.3, 1.0, 3.0, 10.0)
@@ -33,7 +33,13 @@ KPRIMES = (-1.0, -0.99, -0.5, 0.0, 0.4, 0.99, 1.0)
 CASES = [(g, kp, "all") for g in GAMMAS for kp in KPRIMES] + [
     (2.0, -0.3, "points"), (5.0, -0.99, "points"), (3.0, 0.4, "points"), (1.0, -0.5, "all"),
     (5.0, -1.0, "all"), (3.0, -0.3, "raw-RO"), (3.0, 0.85, "raw-SRO+"), (3.0, -0.6, "raw-all"),
+    (0.7, -0.018, "goda"), (3.0, 0.4, "loaded"), (1.0, -0.6, "loaded"),
 ]
+
+#: Loads of the loaded cases: Goda's caisson (lift-off in view) and two others.
+LOADS = {(0.7, -0.018): {"buoyancy": 0.318, "uplift_ratio": 0.524},
+         (3.0, 0.4): {"buoyancy": 0.4, "uplift": 0.1},
+         (1.0, -0.6): {"buoyancy": 0.5, "uplift_ratio": 0.8}}
 
 
 def _hit(a, b, tol=0.5):
@@ -115,15 +121,36 @@ def test_map_text_never_collides(gamma, kprime, what):
     elif what.startswith("raw-"):
         label = what[4:]
         kw = {"raw": True} if label == "all" else {"raw": True, "modes": [Mode.from_label(label)]}
-    fig, ax, art = map_figure(Parameters(gamma, kprime), dpi=DPI, points=points, samples=201,
-                              **kw)
+    loads = LOADS.get((gamma, kprime), {}) if what in ("goda", "loaded") else {}
+    fig, ax, art = map_figure(Parameters(gamma, kprime, **loads), dpi=DPI, points=points,
+                              samples=201, **kw)
     _check_boxes(fig, text_boxes(fig, [art]))
     _check_map(fig, art)
     if what.startswith("raw-") and what != "raw-all":
         assert "Raw region of" in art.title.get_text()
     if what == "raw-all":
         assert "Raw regions of all modes" in art.title.get_text()
+    if what == "goda":  # the designer's view keeps lift-off (k_L = 3.45) in sight
+        assert art.data.k_max >= Parameters(gamma, kprime, **loads).k_L
+        assert any(t.get_text() == "lift-off (no contact)" for t in art.legend.get_texts())
+    # every mode seen in the view has its entry in the key
+    if art.legend is not None and not kw:
+        k_max, mu_max = art.data.k_max, art.data.mu_max
+        kk, mm = np.meshgrid(np.linspace(0, k_max, 300)[1:-1], np.linspace(0, mu_max, 300)[1:-1])
+        seen = {Mode(int(c)).description for c in np.unique(classify(kk, mm, gamma, kprime, **loads))}
+        assert seen <= {t.get_text() for t in art.legend.get_texts()}
 
+
+def test_key_leaves_out_modes_beyond_the_view():
+    """At gamma = 0.3, k' = 0.99 rocking starts above A (1.68, 1.68): not in the designer's view."""
+    p = Parameters(0.3, 0.99)
+    fig, ax, art = map_figure(p, dpi=DPI, samples=201)
+    assert art.data.mu_max == 1.2 and p.mu_A > 1.2
+    keyed = {t.get_text() for t in art.legend.get_texts()}
+    assert Mode.RO.description not in keyed and Mode.SL.description in keyed
+    # the report's view shows A and rocking above it, and keys it
+    fig, ax, art = map_figure(p, dpi=DPI, samples=201, view="report")
+    assert Mode.RO.description in {t.get_text() for t in art.legend.get_texts()}
 
 def test_atlas_panels_never_collide():
     fig = atlas_figure([1.0, 3.0], [-0.6, 0.0, 0.9], dpi=DPI, samples=151)

@@ -184,9 +184,10 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
     report_written(output, f"{len(gammas)} x {len(values)} panels{across}")
     label = "k'" if sweep == "kprime" else sweep
     if crammed:
-        names = ", ".join(f"gamma = {g:g}, {label} = {v:g}" for g, v in crammed[:4])
+        names = ", ".join(f"({g:g}, {v:g})" for g, v in crammed[:4])
+        more = f" and {len(crammed) - 4} more" if len(crammed) > 4 else ""
         click.echo(f"regimemap: note: each panel has its own view; a shared view would cram "
-                   f"{names}{' ...' if len(crammed) > 4 else ''} into a corner", err=True)
+                   f"the panels (gamma, {label}) = {names}{more} into a corner", err=True)
     if used != "none" and view == "report":
         lost = [f"gamma = {g:g}, {label} = {v:g}" for i, g in enumerate(gammas)
                 for j, v in enumerate(values)

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..maps.describe import loads_text
-from ..maps.geometry import DEFAULT_SAMPLES
+from ..maps.geometry import DEFAULT_SAMPLES, area_in_view
 from ..maps.mapdata import MapData, compute_map
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
@@ -438,7 +438,11 @@ def draw_map(ax: Axes, params: Parameters, *, k_max: float | None = None,
     if legend:
         from .key import key_handles, key_legend
 
-        shown = [m for m in data.modes if any(len(p) >= 3 for p in data.polygons.get(m, []))]
+        # the key names the modes seen in the view (the polygons reach beyond it)
+        seen = 1e-9 * data.k_max * data.mu_max
+        shown = [m for m in data.modes
+                 if any(len(p) >= 3 and area_in_view(p, data.k_max, data.mu_max) > seen
+                        for p in data.polygons.get(m, []))]
         plain = [c for c in data.curves.values() if not c.dotted] if curves else []
         dotted = [c for c in data.curves.values() if c.dotted] if curves else []
         handles = key_handles(

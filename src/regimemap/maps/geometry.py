@@ -37,6 +37,7 @@ __all__ = [
     "breakpoints",
     "bisect_edge",
     "region_polygons",
+    "area_in_view",
 ]
 
 #: Samples of k across the view for polygons and curves (breakpoints are added).
@@ -340,3 +341,38 @@ def _track_polygons(p: Parameters, k: np.ndarray, mu_cap: float, modes: tuple[Mo
             out[key[0]].append(np.concatenate([np.column_stack([kk, ll]),
                                                np.column_stack([kk[::-1], hh[::-1]])]))
     return out
+
+
+def area_in_view(polygon: np.ndarray, k_max: float, mu_max: float) -> float:
+    """The area of ``polygon`` (an (n, 2) array of (k, mu)) inside the view ``[0, k_max] x [0, mu_max]``.
+
+    The polygon is clipped to the view's rectangle (Sutherland-Hodgman; the
+    regions of a map are simple polygons) and the shoelace formula gives the
+    area.  A key names a mode only where this is positive: the polygons reach
+    beyond the view so that the fills meet its edges.
+    """
+    pts = [(float(x), float(y)) for x, y in np.asarray(polygon, dtype=float)]
+    # each edge of the view as (inside test, crossing) on one coordinate
+    for axis, bound, keep_below in ((0, 0.0, False), (0, k_max, True), (1, 0.0, False),
+                                    (1, mu_max, True)):
+        if not pts:
+            return 0.0
+
+        def inside(q: tuple[float, float]) -> bool:
+            return q[axis] <= bound if keep_below else q[axis] >= bound
+
+        out: list[tuple[float, float]] = []
+        for i, cur in enumerate(pts):
+            prev = pts[i - 1]
+            if inside(cur) != inside(prev):
+                t = (bound - prev[axis]) / (cur[axis] - prev[axis])
+                cut = (prev[0] + t * (cur[0] - prev[0]), prev[1] + t * (cur[1] - prev[1]))
+                out.append((bound, cut[1]) if axis == 0 else (cut[0], bound))
+            if inside(cur):
+                out.append(cur)
+        pts = out
+    if len(pts) < 3:
+        return 0.0
+    x = np.array([q[0] for q in pts])
+    y = np.array([q[1] for q in pts])
+    return float(0.5 * abs(np.dot(x, np.roll(y, 1)) - np.dot(y, np.roll(x, 1))))
