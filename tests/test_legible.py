@@ -23,6 +23,7 @@ from matplotlib.path import Path  # noqa: E402
 from regimemap import Mode, Parameters  # noqa: E402
 from regimemap.drawing.atlas import atlas_figure, draw_frame, frame_figure  # noqa: E402
 from regimemap.drawing.figure import map_figure  # noqa: E402
+from regimemap.drawing.presets import FIGURE_IDS  # noqa: E402
 from regimemap.drawing.tidy import text_boxes  # noqa: E402
 from regimemap.maps import DesignPoint, classify  # noqa: E402
 
@@ -178,3 +179,38 @@ def test_animation_frames_never_collide(kprime):
     assert box.get_window_extent(renderer).y0 >= ax.bbox.y1
     leg = fig.legends[0].get_window_extent(renderer)
     assert leg.y1 <= ax.bbox.y0 and leg.height < 0.2 * fig.bbox.height
+
+
+@pytest.mark.parametrize("fid", FIGURE_IDS)
+def test_report_figures_never_collide(fid):
+    """The report's 24 figures keep their views and get the same tidy pass (Figs 3.8, 3.9a, 4.7b)."""
+    from regimemap.drawing.figure import preset_figure
+    from regimemap.drawing.presets import get_preset
+
+    fig, ax, art = preset_figure(fid, dpi=DPI, samples=201)
+    preset = get_preset(fid)
+    if preset.k_max is not None:  # the preset's axes win
+        assert art.data.k_max == preset.k_max
+    if preset.mu_max is not None:
+        assert art.data.mu_max == preset.mu_max
+    _check_boxes(fig, text_boxes(fig, [art]))
+    _check_map(fig, art)
+
+
+@pytest.mark.parametrize("wid", ["W.1", "W.2", "W.3", "W.4"])
+def test_worked_figures_never_collide(wid):
+    from regimemap.drawing.worked import render_worked
+
+    fig = render_worked(wid, dpi=DPI, samples=151)
+    arts = getattr(fig, "_regimemap_maps", None)
+    if arts is None:  # a single map: its artists are those of the one axes
+        from regimemap.drawing.worked import WORKED
+
+        w = WORKED[wid]
+        fig, ax, art = map_figure(w.params, dpi=DPI, k_max=w.k_max, mu_max=w.mu_max,
+                                  points=list(w.points), title=w.title, view="report",
+                                  samples=151)
+        arts = [art]
+    _check_boxes(fig, text_boxes(fig, arts))
+    for art in arts:
+        _check_map(fig, art)

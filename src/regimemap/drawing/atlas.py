@@ -322,7 +322,8 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                  dpi: float = ATLAS_DPI, curves: bool = True, labels: bool = True,
                  extents: Sequence[Sequence[tuple[float, float]]] | None = None,
                  sweep: str = "kprime", fixed: dict[str, Any] | None = None,
-                 view: str = "designer", tidy: bool = True) -> Figure:
+                 view: str = "designer", tidy: bool = True, caption: str | None = None
+                 ) -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k' (or a load).
 
     Parameters
@@ -353,8 +354,11 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         The panels' own views (:func:`regimemap.maps.designer_view.view_extent`).
     tidy : bool
         Mark the points off view and move any text that collides
-        (:func:`regimemap.drawing.tidy.tidy_figure`; default).  False draws the
-        panels as the report's figures are drawn (the worked figures).
+        (:func:`regimemap.drawing.tidy.tidy_figure`; default).  False leaves
+        every label where :func:`~regimemap.drawing.mapplot.draw_map` put it.
+    caption : str, optional
+        A first line of the title (a figure's number and caption); the top
+        margin makes room for every line of the title.
     samples : int
         Samples of k per panel.
     dpi : float
@@ -411,12 +415,30 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     else:
         handles = _legend_handles(MAP_MODES, dotted=curves and min(p.kprime for row in blocks
                                                                     for p in row) < 0.0)
+    columns = r"$k' = h/H$" if sweep == "kprime" else (
+        f"${SWEEPS[sweep][0]}$ ({SWEEPS[sweep][1]})")
+    title = caption + "\n" if caption else ""
+    title += (rf"Regime maps: rows $\gamma = H/B$, columns {columns}"
+             + ("" if share == "none" else
+                f" (axes shared {'across the figure' if share == 'all' else 'in each row'})"))
+    shared_text = _fixed_text(sweep, fixed) if loaded or sweep != "kprime" else ""
+    if shared_text:
+        title += "\n" + shared_text
+    if crammed:
+        names = "; ".join(rf"$\gamma = {_fmt(g)}$, {_sweep_text(sweep, v)}"
+                          for g, v in crammed[:3])
+        more = f" and {len(crammed) - 3} more" if len(crammed) > 3 else ""
+        title += ("\neach panel has its own view: a shared one would cram " + names + more
+                  + " into a corner")
     key_cols = min(4, max(2, nc))
     key_rows = -(-len(handles) // key_cols)
     # the key below the panels: 0.1 in from the edge, ~0.2 in a row, then the
     # bottom panels' tick labels and k
-    left, right, top, bottom = (0.62, 0.25 if tidy else 0.2, 0.7 + (0.18 if crammed else 0.0),
-                                0.62 + 0.2 * key_rows)
+    # the title's lines (and one more for a long line wrapped to fit), ~0.19 in each,
+    # below 0.15 in of margin, above the panels' titles
+    lines = title.count("\n") + 1 + (1 if crammed else 0)
+    top = max(0.7, 0.45 + 0.19 * lines)
+    left, right, bottom = 0.62, 0.25 if tidy else 0.2, 0.62 + 0.2 * key_rows
     # room between panels for the tick labels and mu of the panel on the right
     wspace, hspace = (0.3 if share == "all" else (0.72 if tidy else 0.5)), (
         0.42 if share == "all" else 0.6)
@@ -473,20 +495,6 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         key_legend(fig, handles, loc="lower center", ncols=key_cols,
                    bbox_to_anchor=(0.5, 0.1 / fh), fontsize=8, frameon=False,
                    handleheight=1.1, columnspacing=1.5)
-        columns = r"$k' = h/H$" if sweep == "kprime" else (
-            f"${SWEEPS[sweep][0]}$ ({SWEEPS[sweep][1]})")
-        title = (rf"Regime maps: rows $\gamma = H/B$, columns {columns}"
-                 + ("" if share == "none" else
-                    f" (axes shared {'across the figure' if share == 'all' else 'in each row'})"))
-        shared_text = _fixed_text(sweep, fixed) if loaded or sweep != "kprime" else ""
-        if shared_text:
-            title += "\n" + shared_text
-        if crammed:
-            names = "; ".join(rf"$\gamma = {_fmt(g)}$, {_sweep_text(sweep, v)}"
-                              for g, v in crammed[:3])
-            more = f" and {len(crammed) - 3} more" if len(crammed) > 3 else ""
-            title += ("\neach panel has its own view: a shared one would cram " + names + more
-                      + " into a corner")
         fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / fh, va="top")
         if tidy:
             from .tidy import tidy_figure

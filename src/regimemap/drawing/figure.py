@@ -26,7 +26,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..maps.points import DesignPoint
     from .presets import FigurePreset
 
-__all__ = ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "render_map", "render_preset"]
+__all__ = ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "preset_figure", "render_map",
+           "render_preset"]
 
 #: Size of a map figure in inches (width, height): fits a page width at 100 %.
 FIGSIZE: tuple[float, float] = (6.4, 5.6)
@@ -154,12 +155,13 @@ def render_map(params: Parameters, **kwargs: Any) -> Figure:
     return map_figure(params, **kwargs)[0]
 
 
-def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
+def preset_figure(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
                   samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
-                  ) -> Figure:
-    """A Figure of one of the report's figures (:mod:`regimemap.drawing.presets`).
+                  ) -> tuple[Figure, Axes, MapArtists]:
+    """One of the report's figures (:mod:`regimemap.drawing.presets`): figure, axes and artists.
 
-    Pass the previous figure as ``fig`` to reuse it (faster for many figures).
+    The preset's own view (the report's, with its explicit axes) and the tidy
+    pass of every map.  Pass the previous figure as ``fig`` to reuse it.
     """
     from .presets import get_preset
 
@@ -167,5 +169,11 @@ def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
         preset = get_preset(preset)
     return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
                       mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
-                      title=preset.title, samples=samples, hatches=hatches, view="report",
-                      tidy=False)[0]
+                      title=preset.title, samples=samples, hatches=hatches, view="report")
+
+
+def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
+                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+                  ) -> Figure:
+    """A Figure of one of the report's figures (see :func:`preset_figure`)."""
+    return preset_figure(preset, dpi=dpi, samples=samples, hatches=hatches, fig=fig)[0]

@@ -30,7 +30,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .placement import column_intervals, curve_label_anchor, label_anchor, leader_label_anchor, view_points
+from .placement import (
+    box_hits,
+    column_intervals,
+    curve_label_anchor,
+    label_anchor,
+    leader_label_anchor,
+    view_points,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
@@ -317,22 +324,44 @@ def _point_candidates(t: Any) -> list[tuple[tuple[float, float], str, str, bool]
     return out
 
 
-def _place_annotation(ax: Axes, t: Any, placer: _Placer, within: Box | None
-                      ) -> tuple[Any, bool]:
-    """Move an offset annotation (a point's name) to a free place; (artist, placed)."""
+def _line_pixels(ax: Axes, art: MapArtists) -> np.ndarray:
+    """The map's lines in view as dense points (pixels): a point's name keeps off them."""
+    k_max, mu_max = art.data.k_max, art.data.mu_max
+    parts = [view_points(c.points, k_max, mu_max) for c in art.data.curves.values()]
+    parts = [q for q in parts if len(q)]
+    if not parts:
+        return np.empty((0, 2))
+    return np.asarray(ax.transAxes.transform(np.concatenate(parts)))
+
+
+def _off_lines(b: Box, lines: np.ndarray) -> bool:
+    """Does the box (pixels, less a pixel of margin) stay clear of every line?"""
+    return not box_hits((b[0] + 1.0, b[1] + 1.0, b[2] - 1.0, b[3] - 1.0), lines)
+
+
+def _place_annotation(ax: Axes, t: Any, placer: _Placer, within: Box | None,
+                      lines: np.ndarray | None = None) -> tuple[Any, bool]:
+    """Move an offset annotation (a point's name) to a free place; (artist, placed).
+
+    With ``lines`` (pixels) the first place that is also clear of the lines
+    wins; when every place meets a line, the first free one.
+    """
     xy = t.xy
-    for offset, ha, va, leader in _point_candidates(t):
-        has_arrow = t.arrow_patch is not None
-        if leader != has_arrow:
-            new = _annotation_like(ax, t, xy, offset, "offset points", ha, va, leader)
-            t.remove()
-            t = new
-        else:
-            t.xyann = offset
-            t.set_ha(ha)
-            t.set_va(va)
-        if placer.free(placer.box(t), within):
-            return t, True
+    passes = (True, False) if lines is not None and len(lines) else (False,)
+    for clear in passes:
+        for offset, ha, va, leader in _point_candidates(t):
+            has_arrow = t.arrow_patch is not None
+            if leader != has_arrow:
+                new = _annotation_like(ax, t, xy, offset, "offset points", ha, va, leader)
+                t.remove()
+                t = new
+            else:
+                t.xyann = offset
+                t.set_ha(ha)
+                t.set_va(va)
+            b = placer.box(t)
+            if placer.free(b, within) and (not clear or _off_lines(b, lines)):
+                return t, True
     return t, False
 
 
@@ -529,6 +558,7 @@ def tidy_figure(fig: Figure, maps: Sequence[MapArtists], *, fixed: Iterable[Arti
         if ax is None:
             continue
         axes_box = _axes_box(ax)
+        lines = _line_pixels(ax, art)
         for kind, t in _movable(art):
             if not _visible_text(t):
                 continue
@@ -541,13 +571,15 @@ def tidy_figure(fig: Figure, maps: Sequence[MapArtists], *, fixed: Iterable[Arti
                 poly = _polygon_of(art, mode, (float(xy[0]), float(xy[1])))
                 ok_here = (getattr(t, "arrow_patch", None) is not None
                            or (poly is not None and inside(poly, xy)))
+            if kind == "point" and getattr(t, "arrow_patch", None) is None:
+                ok_here = _off_lines(placer.box(t), lines)  # a name written on a line reads badly
             if kind == "curve":
                 ok_here = False  # placed again below with its measured size: closer to its line
             if ok_here and placer.free(placer.box(t), within):
                 placer.take(t)
                 continue
             if kind in ("point", "design"):
-                new, ok = _place_annotation(ax, t, placer, None)
+                new, ok = _place_annotation(ax, t, placer, None, lines if kind == "point" else None)
             elif kind == "off-view":
                 new, ok = t, _place_off_view(t, placer, axes_box)
             elif kind == "curve":

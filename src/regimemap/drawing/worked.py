@@ -115,9 +115,8 @@ def render_worked(worked: WorkedFigure | str, *, dpi: float | None = None,
 
     w = WORKED[worked.upper()] if isinstance(worked, str) else worked
     dpi = DEFAULT_DPI if dpi is None else dpi
-    # drawn as the report's figures are: the report's view, no label clean-up
+    # drawn as the report's figures are: the report's view and the tidy pass of every map
     kwargs.setdefault("view", "report")
-    kwargs.setdefault("tidy", False)
     if w.sweep is not None:
         from .atlas import atlas_figure
 
@@ -125,10 +124,8 @@ def render_worked(worked: WorkedFigure | str, *, dpi: float | None = None,
         fixed: dict[str, Any] = {"kprime": p.kprime, **{k: v for k, v in load_items(p)
                                                           if k != w.sweep}}
         out = atlas_figure([p.gamma], list(w.values), sweep=w.sweep, fixed=fixed, k_max=w.k_max,
-                           mu_max=w.mu_max, dpi=dpi, **kwargs)
-        # the atlas's own first line ("Regime maps: rows ..., columns ...") gives way to the caption
-        out.suptitle(f"Fig. {w.id}  {w.caption}\n" + out.get_suptitle().split("\n", 1)[-1],
-                     fontsize=10.5, y=1.0 - 0.15 / out.get_figheight(), va="top")
+                           mu_max=w.mu_max, dpi=dpi, caption=f"Fig. {w.id}  {w.caption}",
+                           **kwargs)
         return out
     if fig is not None and len(fig.axes) != 1:
         fig = None  # an atlas before: start afresh
