@@ -347,7 +347,9 @@ def _place_annotation(ax: Axes, t: Any, placer: _Placer, within: Box | None,
     wins; when every place meets a line, the first free one.
     """
     xy = t.xy
-    passes = (True, False) if lines is not None and len(lines) else (False,)
+    if lines is None:
+        lines = np.empty((0, 2))
+    passes = (True, False) if len(lines) else (False,)
     for clear in passes:
         for offset, ha, va, leader in _point_candidates(t):
             has_arrow = t.arrow_patch is not None

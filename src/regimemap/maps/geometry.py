@@ -358,7 +358,8 @@ def area_in_view(polygon: np.ndarray, k_max: float, mu_max: float) -> float:
         if not pts:
             return 0.0
 
-        def inside(q: tuple[float, float]) -> bool:
+        def inside(q: tuple[float, float], axis: int = axis, bound: float = bound,
+                   keep_below: bool = keep_below) -> bool:
             return q[axis] <= bound if keep_below else q[axis] >= bound
 
         out: list[tuple[float, float]] = []
