@@ -8,13 +8,17 @@ parts where several modes are admissible, the region polygons, the view and
 
 from __future__ import annotations
 
-from .ambiguity import AmbiguousRegion, ambiguous_regions
-from .classify import classify, column_segments, label_grid
-from .geometry import DEFAULT_SAMPLES, region_polygons
-from .mapdata import CurveData, MapData, compute_map
-from .points import DesignPoint
-from .query import Crossing, Margin, PointResult, margin, query_point, query_points
-from .view import auto_extent
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # pragma: no cover - the names, for type checkers; imported on first use
+    from .ambiguity import AmbiguousRegion, ambiguous_regions
+    from .classify import classify, column_segments, label_grid
+    from .geometry import DEFAULT_SAMPLES, region_polygons
+    from .mapdata import CurveData, MapData, compute_map
+    from .points import DesignPoint
+    from .query import Crossing, Margin, PointResult, margin, query_point, query_points
+    from .view import auto_extent
 
 __all__ = [
     "AmbiguousRegion",
@@ -36,3 +40,38 @@ __all__ = [
     "query_points",
     "region_polygons",
 ]
+
+#: Each public name and the module that defines it: imported on first use (PEP 562), so
+#: ``import regimemap.maps.classify`` does not load the polygons, the ambiguity and the query.
+_HOME = {
+    "AmbiguousRegion": "ambiguity",
+    "ambiguous_regions": "ambiguity",
+    "classify": "classify",
+    "column_segments": "classify",
+    "label_grid": "classify",
+    "DEFAULT_SAMPLES": "geometry",
+    "region_polygons": "geometry",
+    "CurveData": "mapdata",
+    "MapData": "mapdata",
+    "compute_map": "mapdata",
+    "DesignPoint": "points",
+    "Crossing": "query",
+    "Margin": "query",
+    "PointResult": "query",
+    "margin": "query",
+    "query_point": "query",
+    "query_points": "query",
+    "auto_extent": "view",
+}
+
+
+def __getattr__(name: str) -> Any:
+    if name in _HOME:
+        value = getattr(importlib.import_module(f".{_HOME[name]}", __name__), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))
