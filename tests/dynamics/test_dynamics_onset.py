@@ -71,3 +71,11 @@ def test_loaded_block_starts_at_closed_form_thresholds(beta: float, u: float, nu
     sim = simulate(blk, Pulse.rectangular(np.array([0.99, 1.01]) * k_slide, 0.05), t_max=0.004,
                    record_phases=False)
     assert list(sim.initial_mode) == [Phase.RE, Phase.SL]
+
+
+def test_phase_codes_are_the_modes() -> None:
+    """A phase and a mode with one code name one state; flight is the map's lift-off."""
+    for ph in Phase:
+        mode = Mode(int(ph))
+        assert ph.label == ("FLIGHT" if mode is Mode.LO else mode.label)
+    assert Phase.FLIGHT == Mode.LO

@@ -91,6 +91,7 @@ from enum import IntEnum
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ..mechanics.modes import Mode
 from .block import Block
 from .pulses import Pulse
 
@@ -123,17 +124,22 @@ FREE_TIME = 60.0
 
 
 class Phase(IntEnum):
-    """A contact state of one step; codes 0-7 equal :class:`regimemap.modes.Mode`."""
+    """A contact state of one step, coded as the :class:`~regimemap.mechanics.modes.Mode` it is.
 
-    RE = 0
-    SL = 1
-    RO = 2
-    SRO_MINUS = 3
-    SRO_PLUS = 4
-    SRO_PRIME_MINUS = 5
-    RO_PRIME = 6
-    SRO_PRIME_PLUS = 7
-    FLIGHT = 8
+    Codes 0-7 are the modes of contact; ``FLIGHT`` (no corner in contact) is
+    :attr:`Mode.LO <regimemap.mechanics.modes.Mode.LO>`, the map's lift-off,
+    seen from the motion: ``Phase(c)`` and ``Mode(c)`` name the same state.
+    """
+
+    RE = Mode.RE.value
+    SL = Mode.SL.value
+    RO = Mode.RO.value
+    SRO_MINUS = Mode.SRO_MINUS.value
+    SRO_PLUS = Mode.SRO_PLUS.value
+    SRO_PRIME_MINUS = Mode.SRO_PRIME_MINUS.value
+    RO_PRIME = Mode.RO_PRIME.value
+    SRO_PRIME_PLUS = Mode.SRO_PRIME_PLUS.value
+    FLIGHT = Mode.LO.value
 
     @property
     def label(self) -> str:
