@@ -18,11 +18,16 @@ $(STAMP): pyproject.toml
 	$(BIN)/python -m pip install --quiet -e '.[test]'
 	@touch $(STAMP)
 
+# The design sheet and the motion figures are drawn while `figures` draws the maps
+# (one process per core): the three run side by side, and make fails if any fails.
 figures: $(STAMP)
-	$(BIN)/regimemap figures --out figures --format png,svg --set all
 	$(BIN)/regimemap caisson --example > $(VENV)/goda.toml
-	$(BIN)/regimemap caisson $(VENV)/goda.toml -o figures/caisson-sheet.png > /dev/null
-	$(BIN)/regimemap dynamics-figures --out figures --format png,svg --cache .cache/dynamics-figures
+	@set -e; \
+	$(BIN)/regimemap caisson $(VENV)/goda.toml -o figures/caisson-sheet.png > /dev/null & sheet=$$!; \
+	$(BIN)/regimemap dynamics-figures --out figures --format png,svg \
+	    --cache .cache/dynamics-figures & motion=$$!; \
+	$(BIN)/regimemap figures --out figures --format png,svg --set all; \
+	wait $$sheet; wait $$motion
 
 test: $(STAMP)
 	$(BIN)/python -m pytest -q

@@ -24,7 +24,7 @@ from regimemap import Mode, Parameters  # noqa: E402
 from regimemap.drawing.atlas import atlas_figure, draw_frame, frame_figure  # noqa: E402
 from regimemap.drawing.figure import map_figure  # noqa: E402
 from regimemap.drawing.presets import FIGURE_IDS  # noqa: E402
-from regimemap.drawing.tidy import text_boxes  # noqa: E402
+from regimemap.drawing.tidy import MEASURE_DPI, text_boxes  # noqa: E402
 from regimemap.maps import DesignPoint, classify  # noqa: E402
 
 DPI = 50
@@ -48,6 +48,16 @@ def _hit(a, b, tol=0.5):
 
 
 def _check_boxes(fig, boxes):
+    """``boxes`` from :func:`text_boxes` after the figure was drawn at its own resolution.
+
+    Call as ``_check_boxes(fig, lambda: text_boxes(...))``: the figure is laid
+    out first, as a file is (the axis labels take their places when drawn), at
+    the resolution the tidy pass measures with (the layout is the same at every
+    resolution; below ~100 dpi hinting may make neighbours touch).
+    """
+    fig.set_dpi(MEASURE_DPI)
+    fig.draw_without_rendering()
+    boxes = boxes()
     fb = fig.bbox
     frame = (fb.x0 - 0.5, fb.y0 - 0.5, fb.x1 + 0.5, fb.y1 + 0.5)
     texts = boxes["fixed"] + boxes["labels"]
@@ -125,7 +135,7 @@ def test_map_text_never_collides(gamma, kprime, what):
     loads = LOADS.get((gamma, kprime), {}) if what in ("goda", "loaded") else {}
     fig, ax, art = map_figure(Parameters(gamma, kprime, **loads), dpi=DPI, points=points,
                               samples=201, **kw)
-    _check_boxes(fig, text_boxes(fig, [art]))
+    _check_boxes(fig, lambda: text_boxes(fig, [art]))
     _check_map(fig, art)
     if what.startswith("raw-") and what != "raw-all":
         assert "Raw region of" in art.title.get_text()
@@ -156,14 +166,14 @@ def test_key_leaves_out_modes_beyond_the_view():
 def test_atlas_panels_never_collide():
     fig = atlas_figure([1.0, 3.0], [-0.6, 0.0, 0.9], dpi=DPI, samples=151)
     arts = fig._regimemap_maps  # the panels' MapArtists
-    _check_boxes(fig, text_boxes(fig, arts))
+    _check_boxes(fig, lambda: text_boxes(fig, arts))
     for art in arts:
         _check_map(fig, art)
 
 
 def test_one_row_atlas_leaves_room_for_mu():
     fig = atlas_figure([3.0], [-1.0, -0.5, 0.0, 0.5, 1.0], share="none", dpi=DPI, samples=151)
-    _check_boxes(fig, text_boxes(fig, fig._regimemap_maps))
+    _check_boxes(fig, lambda: text_boxes(fig, fig._regimemap_maps))
 
 
 @pytest.mark.parametrize("kprime", [-1.0, -0.5, 0.0, 0.99])
@@ -171,8 +181,7 @@ def test_animation_frames_never_collide(kprime):
     fig, ax = frame_figure(dpi=60)
     art = draw_frame(fig, ax, 3.0, kprime, 2.0, 1.2, samples=151)
     box = next(t for t in fig.texts if t.get_gid() == "frame-kprime")
-    boxes = text_boxes(fig, [art], [box])
-    _check_boxes(fig, boxes)
+    _check_boxes(fig, lambda: text_boxes(fig, [art], [box]))
     _check_map(fig, art)
     # the k' box is outside the map, the key below it
     renderer = fig.canvas.get_renderer()
@@ -193,7 +202,7 @@ def test_report_figures_never_collide(fid):
         assert art.data.k_max == preset.k_max
     if preset.mu_max is not None:
         assert art.data.mu_max == preset.mu_max
-    _check_boxes(fig, text_boxes(fig, [art]))
+    _check_boxes(fig, lambda: text_boxes(fig, [art]))
     _check_map(fig, art)
 
 
@@ -211,6 +220,18 @@ def test_worked_figures_never_collide(wid):
                                   points=list(w.points), title=w.title, view="report",
                                   samples=151)
         arts = [art]
-    _check_boxes(fig, text_boxes(fig, arts))
+    _check_boxes(fig, lambda: text_boxes(fig, arts))
     for art in arts:
         _check_map(fig, art)
+
+
+def test_the_layout_does_not_depend_on_the_resolution(tmp_path):
+    """An SVG is the same whatever --dpi was asked for (the texts are placed at MEASURE_DPI)."""
+    from regimemap.io.figures import save_figure
+
+    out = []
+    for dpi in (30, 150, 300):
+        fig, _, _ = map_figure(Parameters(3.0, -0.3), dpi=dpi, samples=201)
+        save_figure(fig, tmp_path / f"m{dpi}.svg", "svg")
+        out.append((tmp_path / f"m{dpi}.svg").read_bytes())
+    assert out[0] == out[1] == out[2]

@@ -98,3 +98,14 @@ def test_every_block_description_takes_the_load_keywords():
         for name in LOAD_KEYWORDS:
             assert params[name].kind is inspect.Parameter.KEYWORD_ONLY, (fn, name)
         assert params["buoyancy"].default == 0.0 and params["gyration"].default is None
+
+
+def test_lazy_names_are_the_objects_not_their_modules():
+    """``regimemap.maps`` imports most names on first use; none may resolve to a module."""
+    import importlib
+    import types
+
+    maps = importlib.import_module("regimemap.maps")
+    for name in maps.__all__:
+        importlib.import_module("regimemap.maps.classify")  # a submodule of the same name
+        assert not isinstance(getattr(maps, name), types.ModuleType), name

@@ -48,12 +48,16 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from .mapplot import MapArtists
 
-__all__ = ["TidyReport", "band_columns", "fit_title", "inside", "text_boxes", "tidy_figure"]
+__all__ = ["MEASURE_DPI", "TidyReport", "band_columns", "fit_title", "inside", "text_boxes",
+           "tidy_figure"]
 
 Box = tuple[float, float, float, float]
 
 #: Gap (pixels) kept between two texts, and between a text and the figure's edge.
 _GAP = 2.0
+#: Resolution at which the texts are measured and placed (dots per inch): a map is laid
+#: out the same way whatever the resolution of its file (an SVG does not depend on --dpi).
+MEASURE_DPI = 150.0
 #: Smallest font size (points) a title is shrunk to.
 _MIN_TITLE_FS = 6.0
 
@@ -539,11 +543,26 @@ def tidy_figure(fig: Figure, maps: Sequence[MapArtists], *, fixed: Iterable[Arti
     Returns
     -------
     TidyReport
+
+    Notes
+    -----
+    The texts are measured with the figure at :data:`MEASURE_DPI` (and the
+    figure's resolution restored afterwards), so the layout, and the bytes of
+    an SVG or PDF, do not depend on the resolution asked for a PNG.
     """
+    dpi = fig.dpi
+    fig.set_dpi(MEASURE_DPI)  # the same decisions at every output resolution
+    try:
+        return _tidy(fig, maps, list(fixed), fit_titles)
+    finally:
+        fig.set_dpi(dpi)
+
+
+def _tidy(fig: Figure, maps: Sequence[MapArtists], fixed: list[Artist], fit_titles: bool
+          ) -> TidyReport:
     report = TidyReport()
     renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
     fig.draw_without_rendering()  # the ticks, titles and keys in their final places
-    fixed = list(fixed)
     if fit_titles:
         fb = fig.bbox
         for art in maps:

@@ -11,9 +11,11 @@ from __future__ import annotations
 import importlib
 from typing import TYPE_CHECKING, Any
 
+# eager: every map needs it, and the function must shadow its module's name (``classify``)
+from .classify import classify, column_segments, label_grid
+
 if TYPE_CHECKING:  # pragma: no cover - the names, for type checkers; imported on first use
     from .ambiguity import AmbiguousRegion, ambiguous_regions
-    from .classify import classify, column_segments, label_grid
     from .geometry import DEFAULT_SAMPLES, region_polygons
     from .mapdata import CurveData, MapData, compute_map
     from .points import DesignPoint
@@ -46,9 +48,6 @@ __all__ = [
 _HOME = {
     "AmbiguousRegion": "ambiguity",
     "ambiguous_regions": "ambiguity",
-    "classify": "classify",
-    "column_segments": "classify",
-    "label_grid": "classify",
     "DEFAULT_SAMPLES": "geometry",
     "region_polygons": "geometry",
     "CurveData": "mapdata",
