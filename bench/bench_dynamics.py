@@ -35,8 +35,8 @@ def main(n: int = 200) -> None:
     w_ratio = np.linspace(0.5, 10.0, n)
     k_ratio = np.linspace(0.5, 8.0, n)
     k_peak, omega_p = from_dimensionless(w_ratio, k_ratio, B, gamma)
-    print(f"Makris-Roussos block: B = {B:g} m, H = {B * gamma:g} m, p = {p:.4f} rad/s, alpha = {alpha:.5f} rad, "
-          f"Housner ratio {eta:.4f}")
+    print(f"Makris-Roussos block: B = {B:g} m, H = {B * gamma:g} m, p = {p:.4f} rad/s, "
+          f"alpha = {alpha:.5f} rad, Housner ratio {eta:.4f}")
     t0 = time.perf_counter()
     m = outcome_map(block, "half-sine", ("k_peak", k_peak), ("omega_p", omega_p))
     seconds = time.perf_counter() - t0
