@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 from ..maps.points import LOAD_FIELDS, DesignPoint
 from ..mechanics.validation import GAMMA_MAX, GAMMA_MIN, LOAD_LIMITS, MAX_VALUE
-from .textfile import NUMBER, guarded_lines, open_text_file
+from .textfile import NUMBER, guarded_lines, open_text_file, read_header
 
 __all__ = ["DesignPoint", "PointsTable", "parse_point_spec", "read_points_csv", "read_points_table",
            "MAX_POINTS", "MAX_POINTS_FILE_BYTES"]
@@ -150,28 +150,8 @@ def read_points_table(path: str | os.PathLike[str]) -> PointsTable:
         reader = csv.reader(guarded_lines(fh, path, "points file", MAX_POINTS_FILE_BYTES),
                             delimiter=sep)
         try:
-            header: list[str] | None = None
-            for row in reader:
-                if row and any(c.strip() for c in row):
-                    header = row
-                    break
-            if header is None:
-                raise ValueError(f"{path}: empty file; expected a header with columns k,mu")
-            where = f"{path}, line {reader.line_num}"
-            if any("\x00" in c for c in header):
-                raise ValueError(f"{where}: not CSV text (NUL bytes; a binary file?)")
-            cols = [h.strip().lower() for h in header]
-            missing = [c for c in ("k", "mu") if c not in cols]
-            if missing:
-                raise ValueError(
-                    f"{where}: missing column(s) {', '.join(missing)}; the header must name k and mu"
-                    f" (got {', '.join(repr(h) for h in header[:6])})"
-                )
             known = ("k", "mu", "gamma", "kprime", "name", *LOAD_FIELDS)
-            twice = [c for c in known if cols.count(c) > 1]
-            if twice:
-                raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
-            idx = {c: cols.index(c) for c in known if c in cols}
+            cols, idx = read_header(reader, path, ("k", "mu"), known)
             points: list[DesignPoint] = []
             lines: list[int] = []
             for row in reader:

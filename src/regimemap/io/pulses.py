@@ -17,7 +17,7 @@ import os
 
 from ..dynamics.limits import INPUT_LIMITS
 from ..dynamics.pulses import Pulse
-from .textfile import NUMBER, guarded_lines, open_text_file
+from .textfile import NUMBER, guarded_lines, open_text_file, read_header
 
 __all__ = ["read_pulse_csv", "MAX_PULSE_SAMPLES", "MAX_PULSE_FILE_BYTES"]
 
@@ -66,25 +66,7 @@ def read_pulse_csv(path: str | os.PathLike[str]) -> Pulse:
     with fh:
         reader = csv.reader(guarded_lines(fh, path, "pulse file", MAX_PULSE_FILE_BYTES))
         try:
-            header: list[str] | None = None
-            for row in reader:
-                if row and any(c.strip() for c in row):
-                    header = row
-                    break
-            if header is None:
-                raise ValueError(f"{path}: empty file; expected a header with columns t,k")
-            where = f"{path}, line {reader.line_num}"
-            if any("\x00" in c for c in header):
-                raise ValueError(f"{where}: not CSV text (NUL bytes; a binary file?)")
-            cols = [h.strip().lower() for h in header]
-            missing = [c for c in ("t", "k") if c not in cols]
-            if missing:
-                raise ValueError(f"{where}: missing column(s) {', '.join(missing)}; the header must name "
-                                 f"t and k (got {', '.join(repr(h) for h in header[:6])})")
-            twice = [c for c in _COLUMNS if cols.count(c) > 1]
-            if twice:
-                raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
-            idx = {c: cols.index(c) for c in _COLUMNS if c in cols}
+            cols, idx = read_header(reader, path, ("t", "k"), _COLUMNS)
             has_kprime = "kprime" in idx
             for row in reader:
                 line = reader.line_num

@@ -9,10 +9,10 @@ from __future__ import annotations
 import os
 import re
 import stat
-from collections.abc import Iterator
-from typing import TextIO
+from collections.abc import Iterator, Sequence
+from typing import Any, TextIO
 
-__all__ = ["MAX_LINE", "NUMBER", "guarded_lines", "open_text_file"]
+__all__ = ["MAX_LINE", "NUMBER", "guarded_lines", "open_text_file", "read_header"]
 
 #: Longest line accepted, in characters.
 MAX_LINE = 65536
@@ -61,3 +61,50 @@ def guarded_lines(fh: TextIO, path: str, what: str, max_bytes: int) -> Iterator[
         if total > max_bytes:
             raise ValueError(f"{what} {path!r} is more than the limit of {max_bytes} bytes")
         yield line
+
+
+def read_header(reader: Any, path: str, required: Sequence[str], known: Sequence[str]
+                ) -> tuple[list[str], dict[str, int]]:
+    """Read a CSV file's header (the first non-blank row) and find its columns.
+
+    Parameters
+    ----------
+    reader : csv reader
+        Over :func:`guarded_lines`; left at the first row after the header.
+    path : str
+        The file, for messages.
+    required, known : sequence of str
+        Columns that must be there (e.g. ``("k", "mu")``), and every column the
+        caller reads (names are matched case-insensitively, blanks stripped).
+
+    Returns
+    -------
+    (cols, idx)
+        The header's names, lower case, and the position of each known column present.
+
+    Raises
+    ------
+    ValueError
+        Naming the file and the line: an empty file, NUL bytes, a missing or a
+        repeated column.
+    """
+    header: list[str] | None = None
+    for row in reader:
+        if row and any(c.strip() for c in row):
+            header = row
+            break
+    if header is None:
+        raise ValueError(f"{path}: empty file; expected a header with columns {','.join(required)}")
+    where = f"{path}, line {reader.line_num}"
+    if any("\x00" in c for c in header):
+        raise ValueError(f"{where}: not CSV text (NUL bytes; a binary file?)")
+    cols = [h.strip().lower() for h in header]
+    missing = [c for c in required if c not in cols]
+    if missing:
+        raise ValueError(
+            f"{where}: missing column(s) {', '.join(missing)}; the header must name "
+            f"{' and '.join(required)} (got {', '.join(repr(h) for h in header[:6])})")
+    twice = [c for c in known if cols.count(c) > 1]
+    if twice:
+        raise ValueError(f"{where}: column(s) {', '.join(twice)} appear more than once")
+    return cols, {c: cols.index(c) for c in known if c in cols}
