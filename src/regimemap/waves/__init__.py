@@ -36,6 +36,7 @@ from .dispersion import deep_water_wavelength, wavelength, wavenumber
 from .heights import (
     HMAX_FACTOR,
     DesignHeights,
+    breaker_height,
     design_heights,
     given_heights,
     linear_shoaling_coefficient,
@@ -46,7 +47,7 @@ from .pressure import GODA_ROTATION_DEG, GodaPressures, effective_angle, goda_pr
 __all__ = [
     "GODA_ROTATION_DEG", "HMAX_FACTOR", "CaissonAnalysis", "CaissonLoads", "CaissonSection",
     "Densities", "DesignHeights", "EquivalentBlock", "GodaPressures", "RestCheck", "Stability",
-    "analyse_caisson", "caisson_loads", "deep_water_wavelength", "design_heights",
+    "analyse_caisson", "breaker_height", "caisson_loads", "deep_water_wavelength", "design_heights",
     "effective_angle", "equivalent_block", "given_heights", "goda_pressures", "heel_pressure",
     "impulsive_coefficient", "linear_shoaling_coefficient", "section_from_densities",
     "section_from_weight", "shoaling_coefficient", "stability", "static_rest_check",

@@ -28,8 +28,8 @@ import numpy.typing as npt
 from ._types import FloatArray, G, as_float
 from .dispersion import deep_water_wavelength, wavenumber
 
-__all__ = ["DesignHeights", "design_heights", "given_heights", "linear_shoaling_coefficient",
-           "shoaling_coefficient"]
+__all__ = ["DesignHeights", "breaker_height", "design_heights", "given_heights",
+           "linear_shoaling_coefficient", "shoaling_coefficient"]
 
 HMAX_FACTOR = 1.8
 """Goda's (2000, Sect. 4.2) ratio ``Hmax / H1/3`` outside the surf zone."""
@@ -223,3 +223,33 @@ def given_heights(H13: npt.ArrayLike, Hmax: npt.ArrayLike, depth: npt.ArrayLike,
     return DesignHeights(H13=h13.copy(), Hmax=hmax.copy(),
                          hb=np.asarray(h + 5.0 * h13 * tan, dtype=np.float64), Ks=nan,
                          L0=nan.copy(), surf_zone=np.zeros(h13.shape, dtype=np.bool_))
+
+
+def breaker_height(L0: npt.ArrayLike, depth: npt.ArrayLike, slope: npt.ArrayLike) -> FloatArray:
+    """Goda's breaker limit: the highest individual wave at a depth.
+
+    Parameters
+    ----------
+    L0 : array_like
+        Deep-water wave length ``L0`` [m] of the significant period.
+    depth : array_like
+        Water depth ``h_b`` at which the wave breaks [m] (for a wave at an
+        upright wall, ``h_b = h + 5 H1/3 tan(theta)``, Goda 2000, Sect. 4.2).
+    slope : array_like
+        ``tan(theta)`` of the sea bed [-].
+
+    Returns
+    -------
+    ndarray
+        ``H_b = 0.17 L0 [1 - exp(-1.5 pi h_b/L0 (1 + 15 tan^(4/3) theta))]`` [m].
+
+    Notes
+    -----
+    Goda's breaker index (Goda 1970; Goda 2000, Sect. 3.6, the formula of
+    the breaking limit of regular waves), used as the limit of individual
+    waves in the expected-sliding-distance model (Shimosako & Takahashi 1999;
+    Goda & Takagi 2000).
+    """
+    l0, hb, tan = np.broadcast_arrays(as_float(L0), as_float(depth), as_float(slope))
+    return np.asarray(0.17 * l0 * -np.expm1(-1.5 * np.pi * hb / l0 * (1.0 + 15.0 * tan ** (4.0 / 3.0))),
+                      dtype=np.float64)

@@ -164,7 +164,8 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
                    crest: npt.ArrayLike, berm_width: npt.ArrayLike = 0.0,
                    angle_deg: npt.ArrayLike = 0.0, rotation_deg: npt.ArrayLike = 0.0,
                    impulsive: bool = True, lambdas: tuple[float, float, float] = (1.0, 1.0, 1.0),
-                   rho_w: float = RHO_SEAWATER, g: float = G) -> GodaPressures:
+                   rho_w: float = RHO_SEAWATER, g: float = G,
+                   L: npt.ArrayLike | None = None) -> GodaPressures:
     """Goda's (2000) pressures with Takahashi's (1994) impulsive coefficient.
 
     Parameters
@@ -200,6 +201,10 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
         Sea-water density [kg/m^3]; ``w0 = rho_w g``.
     g : float, optional
         Gravitational acceleration [m/s^2].
+    L : array_like, optional
+        The wave length of ``period`` at ``depth`` when the caller has it
+        already (:func:`regimemap.waves.wavelength`): the pressures of many
+        wave heights in one sea state then skip the dispersion solve.
 
     Returns
     -------
@@ -226,7 +231,7 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
     beta = effective_angle(ang, rot)
     cb = np.cos(np.radians(beta))
     w0 = rho_w * g
-    L = wavelength(t, h, g)
+    L = wavelength(t, h, g) if L is None else np.broadcast_to(as_float(L), H.shape)
     x4 = 4.0 * np.pi * h / L
     with np.errstate(over="ignore"):
         alpha1 = 0.6 + 0.5 * np.where(x4 < 700.0, x4 / np.sinh(np.minimum(x4, 700.0)), 0.0) ** 2

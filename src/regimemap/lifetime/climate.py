@@ -1,0 +1,258 @@
+"""The wave climate of a site: the distribution of storm peaks ``H0'``, fitted or given.
+
+numpy only.  A storm's peak equivalent deep-water significant height follows
+a Weibull distribution
+
+    F(H) = 1 - exp(-((H - B)/A)^k),   H >= B,
+
+or a Gumbel (Fisher-Tippett type I) distribution
+
+    F(H) = exp(-exp(-(H - B)/A)),
+
+with scale ``A``, location ``B`` and (Weibull) shape ``k``.  With one storm a
+year (the default) ``F`` is the distribution of the annual maxima and the
+``R``-year return value solves ``F(H_R) = 1 - 1/R``; with ``storms_per_year =
+lambda`` the storms are a Poisson process and ``F`` is a peaks-over-threshold
+distribution, ``F(H_R) = 1 - 1/(lambda R)`` (Goda 2000, Ch. 11), so that for
+Weibull ``H_R = B + A (ln lambda R)^(1/k)``.  See docs/lifetime.md, Sect. 2.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = ["DISTRIBUTIONS", "Climate"]
+
+FloatArray = NDArray[np.float64]
+
+#: The storm-peak distributions.
+DISTRIBUTIONS: tuple[str, ...] = ("weibull", "gumbel")
+
+
+def _reduced(distribution: str, shape: float, p_exceed: float) -> float:
+    """Reduced variate ``y = (H - B)/A`` of the non-exceedance ``1 - p_exceed``."""
+    if distribution == "weibull":
+        return float((-math.log(p_exceed)) ** (1.0 / shape))
+    return float(-math.log(-math.log1p(-p_exceed)))
+
+
+@dataclass(frozen=True)
+class Climate:
+    """Distribution of the storm peaks ``H0'`` at a site.
+
+    Attributes
+    ----------
+    distribution : str
+        ``"weibull"`` or ``"gumbel"``.
+    scale : float
+        ``A`` [m], > 0.
+    location : float
+        ``B`` [m].
+    shape : float
+        Weibull ``k`` (> 0; unused by Gumbel).
+    storms_per_year : float or None
+        ``lambda``: a Poisson number of storms a year with peaks from this
+        distribution (peaks over a threshold); None: one storm a year whose
+        peak is the annual maximum.
+
+    Examples
+    --------
+    >>> c = Climate.from_return_values(5.0, 6.3)
+    >>> round(c.return_value(10), 12), round(c.return_value(50), 12)
+    (5.0, 6.3)
+    """
+
+    distribution: str
+    scale: float
+    location: float
+    shape: float = 2.0
+    storms_per_year: float | None = None
+
+    def __post_init__(self) -> None:
+        if self.distribution not in DISTRIBUTIONS:
+            raise ValueError(f"distribution must be one of {', '.join(DISTRIBUTIONS)}, "
+                             f"got {self.distribution!r}")
+        if not (self.scale > 0.0 and math.isfinite(self.scale)):
+            raise ValueError(f"scale A must be a finite number > 0, got {self.scale!r}")
+        if not math.isfinite(self.location):
+            raise ValueError(f"location B must be finite, got {self.location!r}")
+        if not self.shape > 0.0:
+            raise ValueError(f"shape k must be > 0, got {self.shape!r}")
+        if self.storms_per_year is not None and not self.storms_per_year > 0.0:
+            raise ValueError(f"storms_per_year must be > 0, got {self.storms_per_year!r}")
+
+    @property
+    def rate(self) -> float:
+        """Mean number of storms a year (1 for annual maxima)."""
+        return 1.0 if self.storms_per_year is None else float(self.storms_per_year)
+
+    @classmethod
+    def from_return_values(cls, H0_10: float, H0_50: float, distribution: str = "weibull",
+                           shape: float = 2.0, storms_per_year: float | None = None) -> Climate:
+        """The distribution through two return values (10 and 50 years).
+
+        Parameters
+        ----------
+        H0_10, H0_50 : float
+            10- and 50-year return values of ``H0'`` [m], ``H0_50 > H0_10``.
+        distribution : str, optional
+            ``"weibull"`` (default) or ``"gumbel"``.
+        shape : float, optional
+            Weibull shape ``k`` (default 2).
+        storms_per_year : float, optional
+            ``lambda`` (None: annual maxima).
+
+        Returns
+        -------
+        Climate
+            ``A = (H0_50 - H0_10)/(y_50 - y_10)``, ``B = H0_10 - A y_10`` with
+            the reduced variates ``y_R`` of ``F(H_R) = 1 - 1/(lambda R)``.
+        """
+        if not H0_50 > H0_10:
+            raise ValueError(f"H0_50 = {H0_50!r} must exceed H0_10 = {H0_10!r}")
+        lam = 1.0 if storms_per_year is None else float(storms_per_year)
+        if distribution == "weibull" and not shape > 0.0:
+            raise ValueError(f"shape k must be > 0, got {shape!r}")
+        p10, p50 = 1.0 / (lam * 10.0), 1.0 / (lam * 50.0)
+        if p10 >= 1.0:
+            raise ValueError(f"storms_per_year = {lam!r} is too few for a 10-year return value "
+                             "(need lambda * 10 > 1)")
+        y10 = _reduced(distribution, shape, p10)
+        y50 = _reduced(distribution, shape, p50)
+        A = (H0_50 - H0_10) / (y50 - y10)
+        return cls(distribution=distribution, scale=A, location=H0_10 - A * y10, shape=shape,
+                   storms_per_year=storms_per_year)
+
+    @classmethod
+    def fit_annual_maxima(cls, maxima: ArrayLike, distribution: str = "weibull",
+                          shape: float = 2.0) -> Climate:
+        """Maximum-likelihood fit to observed annual maxima (one storm a year).
+
+        Parameters
+        ----------
+        maxima : array_like
+            At least three annual maxima of ``H0'`` [m], not all equal.
+        distribution : str, optional
+            ``"weibull"``: ``A`` and ``B`` for the given ``shape`` (> 1, where
+            the likelihood has an interior maximum); ``"gumbel"``: ``A`` and ``B``.
+        shape : float, optional
+            Weibull shape ``k`` (default 2).
+
+        Returns
+        -------
+        Climate
+
+        Notes
+        -----
+        Gumbel: ``A`` solves ``A = mean(x) - sum(x e^(-x/A)) / sum(e^(-x/A))`` and
+        ``B = -A ln mean(e^(-x/A))``.  Weibull with ``k`` given: for a location
+        ``B`` the scale is ``A^k = mean((x - B)^k)``, and ``B`` maximises the
+        profile log-likelihood ``-n ln mean((x - B)^k) + (k - 1) sum ln(x - B)``
+        over ``B < min(x)`` (a grid, then golden-section search).
+        """
+        x = np.sort(np.asarray(maxima, dtype=np.float64).ravel())
+        if x.size < 3 or not np.all(np.isfinite(x)):
+            raise ValueError("annual maxima: need at least three finite values")
+        spread = float(x[-1] - x[0])
+        if not spread > 0.0:
+            raise ValueError("annual maxima: the values are all equal")
+        if distribution == "gumbel":
+            A, B = _fit_gumbel(x)
+            return cls(distribution="gumbel", scale=A, location=B, shape=shape)
+        if distribution != "weibull":
+            raise ValueError(f"distribution must be one of {', '.join(DISTRIBUTIONS)}")
+        if not shape > 1.0:
+            raise ValueError(f"fitting annual maxima needs a Weibull shape k > 1 (got {shape!r}): "
+                             "for k <= 1 the likelihood grows without bound as B nears the "
+                             "smallest value; give H0_10 and H0_50 instead")
+        A, B = _fit_weibull(x, shape)
+        return cls(distribution="weibull", scale=A, location=B, shape=shape)
+
+    # -- the distribution ------------------------------------------------------------------------
+    def cdf(self, H: ArrayLike) -> FloatArray:
+        """``F(H)``, the non-exceedance probability of a storm peak."""
+        y = (np.asarray(H, dtype=np.float64) - self.location) / self.scale
+        if self.distribution == "weibull":
+            return np.asarray(-np.expm1(-np.maximum(y, 0.0) ** self.shape), dtype=np.float64)
+        return np.asarray(np.exp(-np.exp(-y)), dtype=np.float64)
+
+    def quantile(self, u: ArrayLike) -> FloatArray:
+        """Storm peaks from uniforms: ``F^-1(u)`` [m]."""
+        uu = np.asarray(u, dtype=np.float64)
+        with np.errstate(divide="ignore"):
+            if self.distribution == "weibull":
+                y = (-np.log1p(-uu)) ** (1.0 / self.shape)
+            else:
+                y = -np.log(-np.log(uu))
+        return np.asarray(self.location + self.scale * y, dtype=np.float64)
+
+    def return_value(self, years: float) -> float:
+        """The ``R``-year return value ``H_R`` [m]: ``F(H_R) = 1 - 1/(lambda R)``."""
+        p = 1.0 / (self.rate * float(years))
+        if not 0.0 < p < 1.0:
+            raise ValueError(f"no {years!r}-year return value with {self.rate!r} storms a year")
+        return self.location + self.scale * _reduced(self.distribution, self.shape, p)
+
+    def describe(self) -> str:
+        """One line: the distribution, its parameters and its 10/50-year values."""
+        k = f", k = {self.shape:g}" if self.distribution == "weibull" else ""
+        storms = ("one storm a year" if self.storms_per_year is None
+                  else f"{self.storms_per_year:g} storms a year (Poisson)")
+        return (f"{self.distribution.capitalize()} A = {self.scale:.4g} m, B = {self.location:.4g} m{k}; "
+                f"{storms}; H0'_10 = {self.return_value(10):.3f} m, "
+                f"H0'_50 = {self.return_value(50):.3f} m")
+
+
+def _fit_gumbel(x: FloatArray) -> tuple[float, float]:
+    mean = float(x.mean())
+    xs = x - mean
+
+    def resid(A: float) -> float:
+        w = np.exp(-(xs - xs[0]) / A)  # x is sorted: exponents <= 0, no overflow
+        return float(A - (-(w * xs).sum() / w.sum()))  # A - (mean - weighted mean) in shifted units
+
+    # A - mean(x) + sum(x w)/sum(w) is increasing in A; bracket it and bisect
+    lo, hi = 1e-6 * float(x.std() + 1e-300), 10.0 * float(x.std()) + 1e-12
+    while resid(hi) < 0.0:
+        hi *= 2.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if resid(mid) < 0.0:
+            lo = mid
+        else:
+            hi = mid
+        if hi - lo <= 4e-16 * hi:
+            break
+    A = 0.5 * (lo + hi)
+    B = mean + float(xs[0]) - A * math.log(float(np.mean(np.exp(-(xs - xs[0]) / A))))
+    return A, B
+
+
+def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
+    d = x - B
+    return float(-x.size * math.log(float(np.mean(d**k))) + (k - 1.0) * float(np.log(d).sum()))
+
+
+def _fit_weibull(x: FloatArray, k: float) -> tuple[float, float]:
+    spread = float(x[-1] - x[0])
+    x0 = float(x[0])
+    # B = x0 - exp(t): t from a thousandth of the spread to a hundred spreads below the minimum
+    ts = np.linspace(math.log(1e-6 * spread), math.log(100.0 * spread), 400)
+    vals = [_weibull_profile(x, k, x0 - math.exp(t)) for t in ts]
+    i = int(np.argmax(vals))
+    lo, hi = ts[max(i - 1, 0)], ts[min(i + 1, ts.size - 1)]
+    golden = (math.sqrt(5.0) - 1.0) / 2.0
+    for _ in range(100):
+        a = hi - golden * (hi - lo)
+        b = lo + golden * (hi - lo)
+        if _weibull_profile(x, k, x0 - math.exp(a)) >= _weibull_profile(x, k, x0 - math.exp(b)):
+            hi = b
+        else:
+            lo = a
+    B = x0 - math.exp(0.5 * (lo + hi))
+    A = float(np.mean((x - B) ** k)) ** (1.0 / k)
+    return A, B

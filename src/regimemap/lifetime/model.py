@@ -1,0 +1,221 @@
+"""What a lifetime simulation needs: the caisson at its site, the model's options, the errors.
+
+numpy only.  :class:`Caisson` is the section and its site (SI units: m, N/m,
+kg/m^3); :class:`LifetimeModel` the climate and every modelling choice, each a
+named option with the reference model of docs/lifetime.md as its default;
+:class:`ErrorFactor` one normal uncertainty factor ``ratio (1 + cov z)``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+
+from regimemap.waves import CaissonSection, Densities, section_from_densities, section_from_weight
+
+from .climate import Climate
+
+__all__ = ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "Caisson", "ErrorFactor", "Errors", "LifetimeModel",
+           "PERIOD_COEFFICIENT", "PERIOD_EXPONENT"]
+
+#: Goda's storm relation ``T1/3 = 3.3 H0'^0.63`` (Goda 2000, Sect. 4.2 and 11;
+#: docs/lifetime.md, Sect. 3).
+PERIOD_COEFFICIENT = 3.3
+PERIOD_EXPONENT = 0.63
+
+#: Lifetime slides whose exceedance probability is reported by default [m].
+DEFAULT_THRESHOLDS: tuple[float, ...] = (0.03, 0.1, 0.3, 1.0, 3.0)
+
+
+@dataclass(frozen=True)
+class ErrorFactor:
+    """A normal uncertainty factor ``ratio (1 + cov z)``, ``z`` standard normal.
+
+    Attributes
+    ----------
+    ratio : float
+        Mean of the factor (the bias of the formula it multiplies), > 0.
+    cov : float
+        Coefficient of variation, >= 0; 0 makes the factor the constant ``ratio``.
+    """
+
+    ratio: float = 1.0
+    cov: float = 0.0
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.ratio) and self.ratio > 0.0):
+            raise ValueError(f"ratio must be a finite number > 0, got {self.ratio!r}")
+        if not (math.isfinite(self.cov) and self.cov >= 0.0):
+            raise ValueError(f"cov must be a finite number >= 0, got {self.cov!r}")
+
+
+@dataclass(frozen=True)
+class Errors:
+    """The four uncertainty factors of the reference model (docs/lifetime.md, Sect. 6).
+
+    Attributes
+    ----------
+    deepwater : ErrorFactor
+        On the storm's deep-water height ``H0'`` (drawn once per lifetime: the
+        estimate of the climate is wrong the same way for 50 years).
+    transformation : ErrorFactor
+        On ``H1/3`` at the wall (Goda's surf-zone formulas), once per storm.
+    force : ErrorFactor
+        On ``P`` and ``U`` together (Goda's pressure formulas), once per storm.
+    friction : ErrorFactor
+        On the friction coefficient, once per storm.
+    """
+
+    deepwater: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.1))
+    transformation: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.1))
+    force: ErrorFactor = field(default_factory=lambda: ErrorFactor(0.9, 0.1))
+    friction: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.1))
+
+    @classmethod
+    def none(cls) -> Errors:
+        """No uncertainty: every factor the constant 1."""
+        one = ErrorFactor(1.0, 0.0)
+        return cls(one, one, one, one)
+
+    def names(self) -> tuple[str, ...]:
+        """The factors' names, in the order they are drawn."""
+        return ("deepwater", "transformation", "force", "friction")
+
+
+#: The reference model's factors (docs/lifetime.md, Sect. 6 gives their sources).
+DEFAULT_ERRORS = Errors()
+
+
+@dataclass(frozen=True)
+class Caisson:
+    """A caisson section at its site, per metre of breakwater (SI units).
+
+    Attributes
+    ----------
+    depth, armour_depth : float
+        ``h`` at the wall and ``d`` above the armour layer [m].
+    slope : float
+        ``tan(theta)`` of the sea bed.
+    width, base_depth, crest : float
+        Full width ``b`` (twice the map's half width ``B``), ``h'``, ``hc`` [m].
+    friction : float
+        ``mu`` between caisson and mound.
+    buoyant_weight : float or None
+        ``W'`` at still water [N/m]; or ``densities``.
+    densities : Densities or None
+        Concrete fraction and densities of a filled caisson.
+    berm_width : float
+        ``BM`` [m] (Takahashi's impulsive coefficient only).
+    angle_deg, rotation_deg : float
+        Wave angle from the normal and its rotation toward the normal [deg].
+    rho_w, g : float
+        Water density [kg/m^3], gravity [m/s^2].
+    """
+
+    depth: float
+    armour_depth: float
+    slope: float
+    width: float
+    base_depth: float
+    crest: float
+    friction: float
+    buoyant_weight: float | None = None
+    densities: Densities | None = None
+    berm_width: float = 0.0
+    angle_deg: float = 0.0
+    rotation_deg: float = 0.0
+    rho_w: float = 1030.0
+    g: float = 9.81
+
+    def __post_init__(self) -> None:
+        if (self.buoyant_weight is None) == (self.densities is None):
+            raise ValueError("give exactly one of buoyant_weight and densities")
+
+    def section(self) -> CaissonSection:
+        """Mass properties at still water (:mod:`regimemap.waves`, Goda 2000, Sect. 4.3)."""
+        if self.densities is not None:
+            d = self.densities
+            return section_from_densities(self.width, self.base_depth, self.crest,
+                                          concrete_fraction=d.concrete_fraction,
+                                          concrete_density=d.concrete, fill_density=d.fill,
+                                          fill_density_above=d.fill_above, rho_w=self.rho_w, g=self.g)
+        assert self.buoyant_weight is not None
+        return section_from_weight(self.buoyant_weight, self.width, self.base_depth, self.crest,
+                                   rho_w=self.rho_w, g=self.g)
+
+    @property
+    def mass(self) -> float:
+        """Dry mass per metre [kg/m]."""
+        return float(self.section().mass)
+
+    def with_width(self, width: float) -> Caisson:
+        """The same section ``width`` wide: ``W'`` in proportion to the width, or from the densities."""
+        if self.buoyant_weight is not None:
+            return replace(self, width=width, buoyant_weight=self.buoyant_weight * width / self.width)
+        return replace(self, width=width)
+
+
+@dataclass(frozen=True)
+class LifetimeModel:
+    """The climate and the modelling choices of a lifetime simulation.
+
+    Attributes
+    ----------
+    climate : Climate
+        Storm peaks ``H0'``.
+    years : int
+        Design life (50).
+    storm_hours : float
+        Duration of a storm's peak sea state [h] (2).
+    period : float or None
+        A fixed ``T1/3`` [s] for every storm; None: Goda's ``3.3 H0'^0.63``.
+    steepness : float or None
+        A fixed ``H0'/L0`` for every storm (``T1/3 = sqrt(2 pi H0'/(g s))``);
+        None: Goda's relation.  Not with ``period``.
+    tide_range : float
+        Range of the tide [m]; each storm's level is ``(range/2) sin 2 pi phi``,
+        ``phi`` uniform (0: no tide).
+    impulsive : bool
+        Takahashi's impulsive coefficient ``alpha* = max(alpha2, alpha_I)`` in
+        each wave's pressure (False, the reference model: ``alpha* = alpha2``).
+    truncate : float or None
+        Cut every normal factor's ``z`` at ``±truncate`` (a truncated
+        distribution, Kim & Takayama 2003); None: no cut.
+    errors : Errors
+        The uncertainty factors.
+    thresholds : tuple of float
+        Lifetime slides [m] whose exceedance probability is reported.
+    """
+
+    climate: Climate
+    years: int = 50
+    storm_hours: float = 2.0
+    period: float | None = None
+    steepness: float | None = None
+    tide_range: float = 0.0
+    impulsive: bool = False
+    truncate: float | None = None
+    errors: Errors = field(default_factory=Errors)
+    thresholds: tuple[float, ...] = DEFAULT_THRESHOLDS
+
+    def __post_init__(self) -> None:
+        if not (isinstance(self.years, int) and self.years >= 1):
+            raise ValueError(f"years must be a whole number >= 1, got {self.years!r}")
+        if not self.storm_hours > 0.0:
+            raise ValueError(f"storm_hours must be > 0, got {self.storm_hours!r}")
+        if self.period is not None and self.steepness is not None:
+            raise ValueError("give period or steepness, not both")
+        if self.period is not None and not self.period > 0.0:
+            raise ValueError(f"period must be > 0, got {self.period!r}")
+        if self.steepness is not None and not 0.0 < self.steepness <= 0.142:
+            raise ValueError(f"steepness must be in (0, 0.142], got {self.steepness!r}")
+        if not self.tide_range >= 0.0:
+            raise ValueError(f"tide_range must be >= 0, got {self.tide_range!r}")
+        if self.truncate is not None and not self.truncate > 0.0:
+            raise ValueError(f"truncate must be > 0, got {self.truncate!r}")
+        if any(not (x > 0.0 and math.isfinite(x)) for x in self.thresholds):
+            raise ValueError("thresholds must be finite numbers > 0")
+
+    def with_(self, **changes: object) -> LifetimeModel:
+        """A copy with some options changed."""
+        return replace(self, **changes)  # type: ignore[arg-type]

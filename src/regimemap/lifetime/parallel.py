@@ -1,0 +1,160 @@
+"""Run the blocks of a lifetime simulation: in this process, in local processes, or on Dask.
+
+Chunks are runs of consecutive blocks (:mod:`regimemap.lifetime.engine`); each
+block has its own stream spawned from the root seed, so the concatenated
+result does not depend on the chunk size, on ``jobs`` or on the cluster.
+Dask (``distributed``) is imported only when a scheduler address is given.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Callable, Iterator, Sequence
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass
+
+import numpy as np
+
+from .engine import BLOCK, BlockResult, simulate_block
+from .model import Caisson, LifetimeModel
+
+__all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
+           "root_seed"]
+
+#: Lifetimes per chunk by default: a few seconds of work, ~tens of MB.
+DEFAULT_CHUNK = 500
+
+
+class ClusterUnavailable(RuntimeError):
+    """Dask's ``distributed`` is not installed, or the scheduler cannot be reached."""
+
+
+@dataclass(frozen=True)
+class Chunk:
+    """Blocks ``first_block .. first_block + len(streams) - 1`` and how many lifetimes to keep."""
+
+    first_block: int
+    streams: tuple[np.random.SeedSequence, ...]
+    keep: int
+
+
+def root_seed(seed: int | None) -> int:
+    """The root seed: ``seed``, or fresh entropy from the operating system when None."""
+    if seed is None:
+        entropy = np.random.SeedSequence().entropy
+        assert isinstance(entropy, int)
+        return entropy
+    if seed < 0:
+        raise ValueError(f"seed must be >= 0, got {seed!r}")
+    return int(seed)
+
+
+def make_chunks(trials: int, seed: int, chunk: int = DEFAULT_CHUNK) -> list[Chunk]:
+    """Cut ``trials`` lifetimes into chunks of whole blocks (``chunk`` rounded up to blocks)."""
+    if trials < 1:
+        raise ValueError(f"trials must be >= 1, got {trials!r}")
+    n_blocks = math.ceil(trials / BLOCK)
+    streams = np.random.SeedSequence(seed).spawn(n_blocks)
+    per = max(1, math.ceil(chunk / BLOCK))
+    out = []
+    for first in range(0, n_blocks, per):
+        these = tuple(streams[first:first + per])
+        keep = min(trials - first * BLOCK, len(these) * BLOCK)
+        out.append(Chunk(first, these, keep))
+    return out
+
+
+def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk) -> BlockResult:
+    """Simulate one chunk's blocks and keep its share of the lifetimes."""
+    parts = [simulate_block(caissons, model, s) for s in chunk.streams]
+    sliding = np.concatenate([p.sliding for p in parts], axis=1)[:, :chunk.keep]
+    max_storm = np.concatenate([p.max_storm for p in parts], axis=1)[:, :chunk.keep]
+    storms = np.concatenate([p.storms for p in parts])[:chunk.keep]
+    return BlockResult(sliding=sliding, max_storm=max_storm, storms=storms,
+                       sliding_waves=sum(p.sliding_waves for p in parts))
+
+
+def available_cores() -> int:
+    """Cores this process may use."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # pragma: no cover - not Linux
+        return os.cpu_count() or 1
+
+
+def _serial(caissons: tuple[Caisson, ...], model: LifetimeModel,
+            chunks: Sequence[Chunk]) -> Iterator[BlockResult]:
+    for c in chunks:
+        yield run_chunk(caissons, model, c)
+
+
+def _processes(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
+               jobs: int) -> Iterator[BlockResult]:
+    with ProcessPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(run_chunk, caissons, model, c) for c in chunks]
+        for f in futures:  # in order: the result does not depend on which finishes first
+            yield f.result()
+
+
+def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
+          scheduler: str) -> Iterator[BlockResult]:
+    try:
+        from distributed import Client
+    except ImportError:
+        raise ClusterUnavailable(
+            "--scheduler needs Dask's distributed package: pip install 'regimemap[cluster]'") from None
+    try:
+        client = Client(scheduler, timeout="10s")
+    except (OSError, TimeoutError) as exc:
+        raise ClusterUnavailable(f"cannot reach the Dask scheduler at {scheduler!r}: {exc}") from None
+    try:
+        futures = client.map(run_chunk, [caissons] * len(chunks), [model] * len(chunks), list(chunks),
+                             pure=False)
+        for f in futures:
+            yield f.result()
+    finally:
+        client.close()
+
+
+def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk], *,
+               jobs: int = 1, scheduler: str | None = None,
+               progress: Callable[[int], None] | None = None) -> BlockResult:
+    """Run every chunk and join their results in order.
+
+    Parameters
+    ----------
+    caissons : tuple of Caisson
+        One or more widths of the same section.
+    model : LifetimeModel
+        Climate and options.
+    chunks : sequence of Chunk
+        From :func:`make_chunks`.
+    jobs : int, optional
+        Local worker processes (1: this process).
+    scheduler : str, optional
+        Address of a running Dask scheduler (``tcp://host:8786``): the chunks
+        run on its workers instead.
+    progress : callable, optional
+        Called with the number of lifetimes of each finished chunk.
+
+    Returns
+    -------
+    BlockResult
+        The lifetimes of all chunks, in order.
+    """
+    if scheduler is not None:
+        results: Iterator[BlockResult] = _dask(caissons, model, chunks, scheduler)
+    elif jobs > 1 and len(chunks) > 1:
+        results = _processes(caissons, model, chunks, min(jobs, len(chunks)))
+    else:
+        results = _serial(caissons, model, chunks)
+    parts = []
+    for r in results:
+        parts.append(r)
+        if progress is not None:
+            progress(int(r.storms.size))
+    return BlockResult(sliding=np.concatenate([p.sliding for p in parts], axis=1),
+                       max_storm=np.concatenate([p.max_storm for p in parts], axis=1),
+                       storms=np.concatenate([p.storms for p in parts]),
+                       sliding_waves=sum(p.sliding_waves for p in parts))

@@ -1,0 +1,139 @@
+"""The result of a lifetime simulation: every trial's sliding and the statistics of it.
+
+numpy only.  A :class:`LifetimeResult` holds plain arrays (the lifetime
+sliding of every trial, the largest single-storm slide of every trial, the
+number of storms) and computes the expected sliding distance with its
+standard error, quantiles and exceedance probabilities from them.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["LifetimeResult"]
+
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+
+
+@dataclass(frozen=True)
+class LifetimeResult:
+    """Sliding over the design life, trial by trial.
+
+    Attributes
+    ----------
+    sliding : ndarray
+        Total sliding of each simulated lifetime [m].
+    max_storm : ndarray
+        The largest sliding of a single storm in each lifetime [m].
+    storms : ndarray of int
+        Number of storms in each lifetime.
+    seed : int
+        The root seed: the same seed gives the same arrays, bit for bit.
+    years : int
+        Design life.
+    thresholds : tuple of float
+        Lifetime slides whose exceedance is reported by :meth:`summary` [m].
+    width : float
+        Full width of the caisson [m].
+    sliding_waves : int
+        Waves whose sliding was computed (those above their storm's threshold).
+    """
+
+    sliding: FloatArray
+    max_storm: FloatArray
+    storms: IntArray
+    seed: int
+    years: int
+    thresholds: tuple[float, ...]
+    width: float
+    sliding_waves: int = 0
+
+    @property
+    def trials(self) -> int:
+        """Number of simulated lifetimes."""
+        return int(self.sliding.size)
+
+    @property
+    def expected_sliding(self) -> float:
+        """The expected sliding distance (ESD): the mean lifetime sliding [m]."""
+        return float(np.mean(self.sliding))
+
+    @property
+    def std_error(self) -> float:
+        """Standard error of the ESD: the sample standard deviation over sqrt(trials) [m]."""
+        n = self.trials
+        if n < 2:
+            return math.nan
+        return float(np.std(self.sliding, ddof=1) / math.sqrt(n))
+
+    @property
+    def std(self) -> float:
+        """Standard deviation of the lifetime sliding [m]."""
+        return float(np.std(self.sliding, ddof=1)) if self.trials > 1 else math.nan
+
+    def quantile(self, q: float) -> float:
+        """The ``q`` quantile of the lifetime sliding [m] (linear interpolation)."""
+        return float(np.quantile(self.sliding, q))
+
+    @property
+    def median(self) -> float:
+        """Median lifetime sliding [m]."""
+        return self.quantile(0.5)
+
+    def exceedance(self, x: float) -> float:
+        """``P(S > x)``: the share of lifetimes that slide more than ``x`` metres."""
+        return float(np.mean(self.sliding > x))
+
+    def storm_exceedance(self, x: float) -> float:
+        """The share of lifetimes in which one storm alone slides the caisson more than ``x`` m.
+
+        Kim & Suh's (2013) first-passage probability of a single-storm limit
+        (0.03 m repairable, 0.1 m ultimate).
+        """
+        return float(np.mean(self.max_storm > x))
+
+    @property
+    def never_slides(self) -> float:
+        """The share of lifetimes with no sliding at all."""
+        return float(np.mean(self.sliding == 0.0))
+
+    def exceedance_curve(self) -> tuple[FloatArray, FloatArray]:
+        """``(x, P(S > x))`` at every distinct positive lifetime sliding (for a plot)."""
+        s = np.sort(self.sliding)
+        x = np.unique(s)
+        p = 1.0 - np.searchsorted(s, x, side="right") / s.size
+        keep = x > 0.0
+        return x[keep], p[keep]
+
+    def summary(self) -> dict[str, object]:
+        """The statistics as a plain dict (metres, probabilities)."""
+        return {
+            "expected_sliding": self.expected_sliding,
+            "std_error": self.std_error,
+            "std": self.std,
+            "median": self.median,
+            "quantile_90": self.quantile(0.9),
+            "quantile_99": self.quantile(0.99),
+            "exceedance": {_key(x): self.exceedance(x) for x in self.thresholds},
+            "storm_exceedance": {_key(x): self.storm_exceedance(x) for x in self.thresholds},
+            "never_slides": self.never_slides,
+            "trials": self.trials,
+            "years": self.years,
+            "seed": self.seed,
+            "width": self.width,
+            "mean_storms": float(np.mean(self.storms)),
+        }
+
+    def __repr__(self) -> str:
+        return (f"LifetimeResult(ESD={self.expected_sliding:.4g} m ± {self.std_error:.2g} m, "
+                f"trials={self.trials}, years={self.years}, width={self.width:g} m, seed={self.seed})")
+
+
+def _key(x: float) -> str:
+    """A threshold as a JSON key: ``0.1`` -> ``"0.1"`` (shortest repr)."""
+    return repr(float(x)) if float(x) != int(x) else f"{int(x)}"

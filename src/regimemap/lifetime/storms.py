@@ -1,0 +1,188 @@
+"""The sea state of each storm at the wall, the force of each wave, and the sliding threshold.
+
+numpy only, vectorised over storms (and over waves, indexed by their storm).
+Every formula is :mod:`regimemap.waves`' (Goda's heights, pressures and loads)
+or :mod:`regimemap.lifetime.sliding`'s; this module only assembles them for
+many storms and many caisson widths at once (docs/lifetime.md, Sects. 3-5).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+from regimemap.waves import breaker_height, caisson_loads, design_heights, goda_pressures, wavelength
+
+from .model import PERIOD_COEFFICIENT, PERIOD_EXPONENT, Caisson, LifetimeModel
+from .sliding import added_mass
+
+__all__ = ["SeaStates", "sea_states", "sliding_threshold", "wave_forces"]
+
+FloatArray = NDArray[np.float64]
+IntArray = NDArray[np.int64]
+
+#: Bisection steps for the sliding threshold: the bracket shrinks to 2^-48 of
+#: the breaker height (the lower end is used, so the sampling stays exact).
+_THRESHOLD_STEPS = 48
+
+
+@dataclass(frozen=True)
+class SeaStates:
+    """The storms' conditions at the wall, and what the caissons oppose (arrays over storms).
+
+    Width-dependent arrays have shape ``(n_widths, n_storms)``.
+    """
+
+    H0: FloatArray            # storm peak H0' after the deep-water factor [m]
+    period: FloatArray        # T1/3 [s]
+    depth: FloatArray         # h + tide [m]
+    base_depth: FloatArray    # h' + tide [m]
+    armour_depth: FloatArray  # d + tide [m]
+    crest: FloatArray         # hc - tide [m]
+    H13: FloatArray           # H1/3 at the wall, after the transformation factor [m]
+    hb: FloatArray            # h + 5 H1/3 tan(theta) [m]
+    L: FloatArray             # wave length of T1/3 at h [m]
+    H_cap: FloatArray         # breaker limit of an individual wave [m]
+    n_waves: IntArray         # waves in the storm
+    force_factor: FloatArray  # on P and U
+    friction: FloatArray      # mu times the friction factor
+    widths: FloatArray        # (n_widths,) full widths b [m]
+    resistance: FloatArray    # (n_widths, n_storms) R = mu W' [N/m]
+    mass: FloatArray          # (n_widths, n_storms) W/g + M_a [kg/m]
+
+
+def sea_states(caissons: tuple[Caisson, ...], model: LifetimeModel, H0: FloatArray, tide: FloatArray,
+               transformation: FloatArray, force: FloatArray, friction: FloatArray) -> SeaStates:
+    """The storms' sea states at the wall for one site and several caisson widths.
+
+    Parameters
+    ----------
+    caissons : tuple of Caisson
+        The same section at the same site, of different widths.
+    model : LifetimeModel
+        Storm period, duration.
+    H0 : ndarray
+        Storm peaks ``H0'`` after the deep-water factor [m] (<= 0: a calm).
+    tide : ndarray
+        Water level of each storm above the design level [m].
+    transformation, force, friction : ndarray
+        The storms' uncertainty factors.
+
+    Returns
+    -------
+    SeaStates
+    """
+    c = caissons[0]
+    calm = ~(H0 > 0.0)
+    h0 = np.where(calm, 1.0, H0)  # placeholder height for calm storms (no waves below)
+    if model.period is not None:
+        T = np.full_like(h0, model.period)
+    elif model.steepness is not None:
+        T = np.sqrt(2.0 * np.pi * h0 / (c.g * model.steepness))
+    else:
+        T = PERIOD_COEFFICIENT * h0**PERIOD_EXPONENT
+    h = c.depth + tide
+    hp = c.base_depth + tide
+    d = c.armour_depth + tide
+    hc = c.crest - tide
+    heights = design_heights(h0, T, h, c.slope, g=c.g)
+    H13 = np.where(calm, 0.0, heights.H13 * transformation)
+    hb = h + 5.0 * H13 * c.slope
+    n_waves = np.where(calm, 0, np.rint(model.storm_hours * 3600.0 / T)).astype(np.int64)
+    mu = c.friction * friction
+    widths = np.array([ci.width for ci in caissons], dtype=np.float64)
+    dry = np.array([ci.mass for ci in caissons], dtype=np.float64)[:, None]
+    weight = dry * c.g - c.rho_w * c.g * widths[:, None] * hp[None, :]
+    return SeaStates(H0=np.where(calm, 0.0, h0), period=T, depth=h, base_depth=hp, armour_depth=d,
+                     crest=hc, H13=H13, hb=hb, L=wavelength(T, h, c.g),
+                     H_cap=breaker_height(heights.L0, hb, c.slope), n_waves=n_waves,
+                     force_factor=np.asarray(force, dtype=np.float64), friction=mu, widths=widths,
+                     resistance=mu[None, :] * weight,
+                     mass=dry + added_mass(hp, c.rho_w)[None, :])
+
+
+def wave_forces(caisson: Caisson, model: LifetimeModel, seas: SeaStates, storm: IntArray,
+                H: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """Goda's force ``P`` and uplift per metre of width ``U/b`` of waves of height ``H``.
+
+    Parameters
+    ----------
+    caisson : Caisson
+        The site (and the wave angle, berm width).
+    model : LifetimeModel
+        ``impulsive``.
+    seas : SeaStates
+        The storms.
+    storm : ndarray of int
+        The storm of each wave.
+    H : ndarray
+        The waves' heights [m] (in place of Goda's ``Hmax``; the storm's
+        ``H1/3`` sets ``h_b``).
+
+    Returns
+    -------
+    P, U_per_width : ndarray
+        [N/m] and [N/m per m of width], both times the storm's force factor.
+    """
+    c = caisson
+    p = goda_pressures(Hmax=H, period=seas.period[storm], depth=seas.depth[storm], hb=seas.hb[storm],
+                       armour_depth=seas.armour_depth[storm], base_depth=seas.base_depth[storm],
+                       crest=seas.crest[storm], berm_width=c.berm_width, angle_deg=c.angle_deg,
+                       rotation_deg=c.rotation_deg, impulsive=model.impulsive, rho_w=c.rho_w, g=c.g,
+                       L=seas.L[storm])
+    loads = caisson_loads(p, seas.base_depth[storm], 1.0)
+    f = seas.force_factor[storm]
+    return np.asarray(loads.P * f, dtype=np.float64), np.asarray(loads.U * f, dtype=np.float64)
+
+
+def _excess(seas: SeaStates, P: FloatArray, u: FloatArray, storm: IntArray) -> FloatArray:
+    """``max over widths of F - R`` for waves of the given storms (> 0: some width slides)."""
+    mu = seas.friction[storm]
+    F = P[None, :] + mu[None, :] * u[None, :] * seas.widths[:, None]
+    return np.asarray(np.max(F - seas.resistance[:, storm], axis=0), dtype=np.float64)
+
+
+def sliding_threshold(caisson: Caisson, model: LifetimeModel, seas: SeaStates) -> FloatArray:
+    """A lower bound of the height from which a wave slides some caisson width, per storm [m].
+
+    Parameters
+    ----------
+    caisson : Caisson
+        The site.
+    model : LifetimeModel
+        ``impulsive``.
+    seas : SeaStates
+        The storms.
+
+    Returns
+    -------
+    ndarray
+        ``inf`` where no wave up to the breaker limit slides any width;
+        elsewhere the lower end of a bisection bracket of width ``2^-48 H_cap``
+        around the root of ``P(H) + mu U(H) = mu W'`` (the push grows with
+        ``H``: Goda's ``p1``, ``eta*`` and ``pu`` all do).  Waves between the
+        bound and the true threshold slide exactly 0, so sampling the waves
+        above the bound is exact.
+    """
+    n = seas.H0.size
+    out = np.full(n, np.inf)
+    live = np.flatnonzero((seas.n_waves > 0) & (seas.H13 > 0.0))
+    if live.size == 0:
+        return out
+    cap = seas.H_cap[live]
+    P, u = wave_forces(caisson, model, seas, live, cap)
+    live = live[_excess(seas, P, u, live) > 0.0]
+    if live.size == 0:
+        return out
+    lo = np.zeros(live.size)
+    hi = seas.H_cap[live].copy()
+    for _ in range(_THRESHOLD_STEPS):
+        mid = 0.5 * (lo + hi)
+        P, u = wave_forces(caisson, model, seas, live, mid)
+        slides = _excess(seas, P, u, live) > 0.0
+        hi = np.where(slides, mid, hi)
+        lo = np.where(slides, lo, mid)
+    out[live] = lo
+    return out
