@@ -3,8 +3,9 @@
 Prints points per second for label_grid (2000 x 2000 grid) and classify
 (4 million scattered points), the solver's rate for comparison, and then the
 plotting timings of bench/bench_plot.py and the outcome-map benchmark of
-bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics).  Times are the best of several runs
-(wall clock, this machine); the targets of the issues are shown beside them.
+bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics) and the lifetime benchmark of
+bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart).  Times are
+the best of several runs (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
 from __future__ import annotations
@@ -85,6 +86,14 @@ def main() -> int:
     dynamics = Path(__file__).with_name("bench_dynamics.py")
     if dynamics.exists():  # regimemap.dynamics: the 200 x 200 outcome map, thresholds, runs/s
         spec = importlib.util.spec_from_file_location("bench_dynamics", dynamics)
+        mod = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        mod.main()
+    lifetime = Path(__file__).with_name("bench_lifetime.py")
+    if lifetime.exists():  # regimemap.lifetime: 5000 lifetimes on one core, the 21-width chart
+        spec = importlib.util.spec_from_file_location("bench_lifetime", lifetime)
         mod = importlib.util.module_from_spec(spec)
         assert spec.loader is not None
         spec.loader.exec_module(mod)

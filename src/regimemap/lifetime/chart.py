@@ -8,11 +8,11 @@ section whose weight grows with its width, does not rise.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from regimemap.waves import analyse_caisson
 
@@ -67,15 +67,18 @@ class DesignChart:
 
 
 def sf_width(caisson: Caisson, model: LifetimeModel, required_sf: float = 1.2,
-             return_period: float = 50.0) -> float:
+             return_period: float = 50.0, impulsive: bool = True) -> float:
     """The width whose sliding safety factor under the ``return_period`` wave is ``required_sf``.
 
-    Goda's (2000, Sect. 4.2) deterministic check, ``SF = mu (W' - U)/P``, with the
-    design wave ``H0'`` of the climate's return value, its period from the
-    model's storm relation, heights by Goda's formulas and Takahashi's
-    impulsive coefficient as the model's ``impulsive`` says; ``W'`` scales
-    with the width as in :meth:`Caisson.with_width`.  The safety factor is
-    linear in the width for such sections; it is solved by bisection anyway.
+    The conventional (deterministic) design of Goda (2000, Sect. 4.2),
+    ``SF = mu (W' - U)/P``, as ``regimemap caisson`` computes it: the design
+    wave ``H0'`` is the climate's return value, its period the model's storm
+    relation, ``Hmax`` from Goda's formulas, the pressures Goda's with
+    Takahashi's impulsive coefficient ``alpha* = max(alpha2, alpha_I)`` when
+    ``impulsive`` (the default, as in the Japanese standards and the design
+    file's ``[caisson] impulsive``); ``W'`` scales with the width as in
+    :meth:`Caisson.with_width`.  The safety factor is linear in the width for
+    such sections; it is solved by bisection anyway.
     """
     H0 = model.climate.return_value(return_period)
     if model.period is not None:
@@ -91,7 +94,7 @@ def sf_width(caisson: Caisson, model: LifetimeModel, required_sf: float = 1.2,
                             width=c.width, base_depth=c.base_depth, crest=c.crest, friction=c.friction,
                             H0=H0, angle_deg=c.angle_deg, rotation_deg=c.rotation_deg,
                             berm_width=c.berm_width, buoyant_weight=c.buoyant_weight,
-                            densities=c.densities, impulsive=model.impulsive, rho_w=c.rho_w, g=c.g)
+                            densities=c.densities, impulsive=impulsive, rho_w=c.rho_w, g=c.g)
         return float(a.stability.sliding)
 
     lo, hi = 1e-3 * caisson.width, caisson.width
@@ -108,9 +111,10 @@ def sf_width(caisson: Caisson, model: LifetimeModel, required_sf: float = 1.2,
     return hi
 
 
-def design_chart(caisson: Caisson, model: LifetimeModel, widths: Sequence[float], trials: int = 5000,
+def design_chart(caisson: Caisson, model: LifetimeModel, widths: ArrayLike, trials: int = 5000,
                  seed: int | None = None, *, target: float = 0.1, required_sf: float = 1.2,
-                 chunk: int = DEFAULT_CHUNK, jobs: int = 1, scheduler: str | None = None,
+                 sf_impulsive: bool = True, chunk: int = DEFAULT_CHUNK, jobs: int = 1,
+                 scheduler: str | None = None,
                  progress: Callable[[int], None] | None = None) -> DesignChart:
     """ESD of the same section at several widths, on the same random numbers.
 
@@ -120,7 +124,7 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: Sequence[float]
         The section (its own width is not used unless listed).
     model : LifetimeModel
         Climate and options.
-    widths : sequence of float
+    widths : array_like
         Full widths [m], increasing.
     trials, seed, chunk, jobs, scheduler, progress
         As :func:`regimemap.lifetime.lifetime_sliding` (``progress`` counts
@@ -129,6 +133,9 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: Sequence[float]
         Tolerable ESD [m] (0.1, Goda & Takagi 2000).
     required_sf : float, optional
         Required safety factor for the deterministic width (1.2).
+    sf_impulsive : bool, optional
+        Takahashi's impulsive coefficient in the deterministic design (see
+        :func:`sf_width`).
 
     Returns
     -------
@@ -142,7 +149,7 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: Sequence[float]
     step simulates the trial width together with the narrowest chart width,
     so its waves -- and so its ESD -- are those of the chart's own curve.
     """
-    w = np.asarray(sorted(float(x) for x in widths), dtype=np.float64)
+    w = np.sort(np.asarray(widths, dtype=np.float64).ravel())
     if w.size < 2 or np.any(w <= 0.0):
         raise ValueError("need at least two widths > 0")
     seed_ = root_seed(seed)
@@ -171,4 +178,5 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: Sequence[float]
             found = hi
     return DesignChart(widths=w, expected_sliding=esd, std_error=np.asarray(se, dtype=np.float64),
                        target=target, width_for_target=found, required_sf=required_sf,
-                       sf_width=sf_width(caisson, model, required_sf), trials=trials, seed=seed_)
+                       sf_width=sf_width(caisson, model, required_sf, impulsive=sf_impulsive),
+                       trials=trials, seed=seed_)

@@ -12,7 +12,7 @@ slides only above the storm's sliding height ``H_s``, so the number of
 sliding waves of a storm of ``N`` waves is ``Binomial(N, exp(-2 (H_s/H1/3)^2))``
 and their heights are the Rayleigh tail ``sqrt(H_s^2 + H1/3^2 E/2)``, ``E``
 standard exponential, each capped at the breaker limit -- the same
-distribution as drawing all ``N`` heights (docs/lifetime.md, Sect. 7).
+distribution as drawing all ``N`` heights (docs/lifetime.md, Sect. 8).
 """
 
 from __future__ import annotations
@@ -62,9 +62,11 @@ class BlockResult:
 
 
 def _factor(f: ErrorFactor, u: FloatArray, truncate: float | None) -> FloatArray:
+    """``ratio max(1 + cov z, 0)``: a factor never turns a load or a height negative."""
     if f.cov == 0.0:
         return np.full(u.shape, f.ratio)
-    return np.asarray(f.ratio * (1.0 + f.cov * truncated_normal(u, truncate)), dtype=np.float64)
+    return np.asarray(f.ratio * np.maximum(1.0 + f.cov * truncated_normal(u, truncate), 0.0),
+                      dtype=np.float64)
 
 
 def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: np.random.SeedSequence,
@@ -130,7 +132,8 @@ def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: 
         _slide_storms(caissons, model, seas, H_s, n_sliding, rng, first, min(last, n_storms),
                       storm_slide)
         first = last
-    sliding = np.stack([np.bincount(life, weights=storm_slide[j], minlength=n) for j in range(n_w)])
+    sliding = np.stack([np.bincount(life, weights=storm_slide[j], minlength=n) for j in range(n_w)]
+                       ).astype(np.float64)
     max_storm = np.zeros((n_w, n))
     for j in range(n_w):
         np.maximum.at(max_storm[j], life, storm_slide[j])

@@ -15,13 +15,17 @@ from regimemap.waves import CaissonSection, Densities, section_from_densities, s
 
 from .climate import Climate
 
-__all__ = ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "Caisson", "ErrorFactor", "Errors", "LifetimeModel",
-           "PERIOD_COEFFICIENT", "PERIOD_EXPONENT"]
+__all__ = ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "FRICTION_SIGMAS", "Caisson", "ErrorFactor", "Errors",
+           "LifetimeModel", "PERIOD_COEFFICIENT", "PERIOD_EXPONENT"]
 
 #: Goda's storm relation ``T1/3 = 3.3 H0'^0.63`` (Goda 2000, Sect. 4.2 and 11;
 #: docs/lifetime.md, Sect. 3).
 PERIOD_COEFFICIENT = 3.3
 PERIOD_EXPONENT = 0.63
+
+#: The friction factor may not reach 0 within this many standard deviations (untruncated): a
+#: caisson without friction would slide without end (docs/lifetime.md, Sect. 7).
+FRICTION_SIGMAS = 6.0
 
 #: Lifetime slides whose exceedance probability is reported by default [m].
 DEFAULT_THRESHOLDS: tuple[float, ...] = (0.03, 0.1, 0.3, 1.0, 3.0)
@@ -51,7 +55,7 @@ class ErrorFactor:
 
 @dataclass(frozen=True)
 class Errors:
-    """The four uncertainty factors of the reference model (docs/lifetime.md, Sect. 6).
+    """The four uncertainty factors of the reference model (docs/lifetime.md, Sect. 7).
 
     Attributes
     ----------
@@ -66,10 +70,10 @@ class Errors:
         On the friction coefficient, once per storm.
     """
 
-    deepwater: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.1))
-    transformation: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.1))
-    force: ErrorFactor = field(default_factory=lambda: ErrorFactor(0.9, 0.1))
-    friction: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.1))
+    deepwater: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.0, 0.10))
+    transformation: ErrorFactor = field(default_factory=lambda: ErrorFactor(0.97, 0.04))
+    force: ErrorFactor = field(default_factory=lambda: ErrorFactor(0.91, 0.17))
+    friction: ErrorFactor = field(default_factory=lambda: ErrorFactor(1.06, 0.15))
 
     @classmethod
     def none(cls) -> Errors:
@@ -82,7 +86,9 @@ class Errors:
         return ("deepwater", "transformation", "force", "friction")
 
 
-#: The reference model's factors (docs/lifetime.md, Sect. 6 gives their sources).
+#: The reference model's factors: Takayama & Ikeda (1992) as used by Shimosako & Takahashi
+#: (1999) -- deep water (1.0, 0.10), transformation (0.97, 0.04), force (0.91, 0.17),
+#: friction (1.06, 0.15) (docs/lifetime.md, Sect. 7 gives the sources and the other sets in use).
 DEFAULT_ERRORS = Errors()
 
 
@@ -180,7 +186,10 @@ class LifetimeModel:
         each wave's pressure (False, the reference model: ``alpha* = alpha2``).
     truncate : float or None
         Cut every normal factor's ``z`` at ``±truncate`` (a truncated
-        distribution, Kim & Takayama 2003); None: no cut.
+        distribution, Kim & Takayama 2003); None: no cut.  A factor is
+        ``ratio max(1 + cov z, 0)`` (never negative); the friction factor
+        must stay above 0 within the cut (or within :data:`FRICTION_SIGMAS`
+        standard deviations when uncut).
     errors : Errors
         The uncertainty factors.
     thresholds : tuple of float
@@ -215,6 +224,16 @@ class LifetimeModel:
             raise ValueError(f"truncate must be > 0, got {self.truncate!r}")
         if any(not (x > 0.0 and math.isfinite(x)) for x in self.thresholds):
             raise ValueError("thresholds must be finite numbers > 0")
+        reach = FRICTION_SIGMAS if self.truncate is None else self.truncate
+        cov = self.errors.friction.cov
+        if cov * reach >= 1.0:
+            where = (f"within {FRICTION_SIGMAS:g} standard deviations" if self.truncate is None
+                     else f"within the truncation at {self.truncate:g}")
+            raise ValueError(
+                f"the friction factor's cov = {cov:g} lets friction reach 0 {where} "
+                f"(z = -{1.0 / cov:.3g}), and a caisson without friction slides without end; "
+                f"accepted: cov * n < 1 with n = truncate, or n = {FRICTION_SIGMAS:g} untruncated "
+                f"(cov < {1.0 / reach:.4g})")
 
     def with_(self, **changes: object) -> LifetimeModel:
         """A copy with some options changed."""

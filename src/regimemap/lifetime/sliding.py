@@ -24,7 +24,7 @@ it stops at the first root ``s2`` of ``v`` after ``s1``, and in units of
     D(s) = (F/R)[cos s1 (s - s1) - (sin s - sin s1)] - (s - s1)^2/2,
 
 ``D(s2)`` when it stops within the wave, ``D(pi) + v(pi)^2/2`` otherwise.  The
-derivation is in docs/lifetime.md, Sect. 5.
+derivation is in docs/lifetime.md, Sect. 6.
 """
 
 from __future__ import annotations
@@ -39,7 +39,7 @@ __all__ = ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_dura
 FloatArray = NDArray[np.float64]
 
 #: ``M_a / (rho h'^2)`` for both faces: ``2 (16/pi^3) sum_{n odd} 1/n^3 = (28/pi^3) zeta(3)``
-#: (incompressible potential flow against a rigid vertical wall; docs/lifetime.md, Sect. 5.2).
+#: (incompressible potential flow against a rigid vertical wall; docs/lifetime.md, Sect. 6.2).
 ADDED_MASS_COEFFICIENT = 28.0 / math.pi**3 * 1.2020569031595942853997
 
 
@@ -108,7 +108,8 @@ def half_sine_slide(force: ArrayLike, resistance: ArrayLike, mass: ArrayLike,
     Returns
     -------
     ndarray
-        The distance slid (0 where ``F <= R``), broadcast over the inputs.
+        The distance slid (0 where ``F <= R``; ``inf`` where ``R <= 0 < F``:
+        nothing stops the caisson), broadcast over the inputs.
 
     Notes
     -----
@@ -127,7 +128,9 @@ def half_sine_slide(force: ArrayLike, resistance: ArrayLike, mass: ArrayLike,
     F, R, M, tau = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64)
                                          for a in (force, resistance, mass, duration)))
     out = np.zeros(F.shape, dtype=np.float64)
-    moving = F > R
+    endless = (R <= 0.0) & (F > R)
+    out[endless] = np.inf
+    moving = (F > R) & ~endless
     if not np.any(moving):
         return out
     ratio = F[moving] / R[moving]

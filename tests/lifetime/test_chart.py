@@ -1,0 +1,80 @@
+"""The design chart: common random numbers, the width for a target, the width of SF = 1.2.
+
+The published trend (Goda & Takagi 2000, abstract: "In shallow water, a
+breakwater can be designed with the cross section smaller than that by the
+conventional design, but a larger cross section is needed in deeper water")
+is checked on two documented cases (docs/lifetime.md, Sect. 12): Goda's
+caisson section moved to an 8 m and a 20 m deep site, the climate H0'_10 =
+5.6 m, H0'_50 = 6.3 m, target 0.1 m, against the conventional design with
+Goda-Takahashi pressures (alpha* = max(alpha2, alpha_I)) and SF = 1.2.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+import pytest
+
+from regimemap.lifetime import Climate, LifetimeModel, design_chart, lifetime_sliding, sf_width
+from regimemap.waves import analyse_caisson
+
+from ._cases import GODA, MODEL
+
+
+def test_esd_does_not_rise_with_width_and_the_target_width_is_on_the_curve():
+    widths = np.linspace(11.0, 19.0, 9)
+    c = design_chart(GODA, MODEL, widths, trials=600, seed=4, target=0.1)
+    assert np.all(np.diff(c.expected_sliding) <= 0.0)
+    assert c.expected_sliding[0] > 0.1 > c.expected_sliding[-1]
+    w = c.width_for_target
+    assert w is not None
+    i = int(np.searchsorted(widths, w))
+    assert c.expected_sliding[i - 1] > 0.1 >= c.expected_sliding[i]
+    assert widths[i - 1] < w <= widths[i]
+    assert [r["width"] for r in c.rows()] == list(widths)
+
+
+def test_the_chart_at_a_width_is_a_lifetime_run_with_the_same_waves():
+    # two widths that share their narrowest one: the same waves as the chart's
+    c = design_chart(GODA, MODEL, [12.0, 16.0], trials=300, seed=9)
+    r = design_chart(GODA, MODEL, [12.0, 13.0, 16.0], trials=300, seed=9)
+    assert c.expected_sliding[0] == r.expected_sliding[0]
+    assert c.expected_sliding[1] == r.expected_sliding[2]
+
+
+def test_no_width_meets_the_target():
+    c = design_chart(GODA, MODEL, [9.0, 10.0], trials=200, seed=1, target=0.001)
+    assert c.width_for_target is None
+
+
+def test_sf_width_has_the_required_safety_factor():
+    w = sf_width(GODA, MODEL, 1.2)
+    H0 = MODEL.climate.return_value(50)
+    c = GODA.with_width(w)
+    a = analyse_caisson(depth=c.depth, armour_depth=c.armour_depth, slope=c.slope, period=3.3 * H0**0.63,
+                        width=w, base_depth=c.base_depth, crest=c.crest, friction=c.friction, H0=H0,
+                        angle_deg=c.angle_deg, berm_width=c.berm_width, buoyant_weight=c.buoyant_weight)
+    assert float(a.stability.sliding) == pytest.approx(1.2, rel=1e-9)
+    # W' in proportion to the width: the safety factor is too
+    assert sf_width(GODA, MODEL, 2.4) == pytest.approx(2.0 * w, rel=1e-9)
+
+
+def test_goda_takagi_trend_shallow_narrower_deep_wider():
+    model = LifetimeModel(Climate.from_return_values(5.6, 6.3))
+    ratios = {}
+    for depth in (8.0, 20.0):
+        c = replace(GODA, depth=depth, base_depth=depth - 3.0, armour_depth=depth - 4.5, crest=3.78,
+                    angle_deg=0.0)
+        conventional = sf_width(c, model, 1.2)
+        chart = design_chart(c, model, np.linspace(0.5, 2.0, 16) * conventional, trials=1500, seed=3,
+                             jobs=2)
+        assert chart.width_for_target is not None
+        ratios[depth] = chart.width_for_target / conventional
+    assert ratios[8.0] < 1.0 < ratios[20.0], ratios
+
+
+def test_lifetime_and_chart_agree_within_their_errors():
+    r = lifetime_sliding(GODA.with_width(12.0), MODEL, trials=1500, seed=2)
+    c = design_chart(GODA, MODEL, [12.0, 14.0], trials=1500, seed=8)
+    assert abs(r.expected_sliding - c.expected_sliding[0]) < 4.0 * np.hypot(r.std_error, c.std_error[0])
