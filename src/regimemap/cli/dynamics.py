@@ -14,7 +14,7 @@ import math
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -32,6 +32,9 @@ from ._common import (
     report_written,
 )
 from .atlas import Values
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..dynamics import Block, Pulse
 
 __all__ = ["simulate_cmd", "outcome_cmd", "dynamics_figures_cmd"]
 
@@ -105,15 +108,16 @@ def _opt(name: str, swept: bool, metavar: str, default: Any = None, required: bo
 def _block_options(swept: bool) -> Callable[[Any], Any]:
     more = " A list a,b,c or a range start:stop:count sweeps it."
     opts = [
-        (gamma_option() if not swept else
+        # simulate: --gamma, --half-width and --mu are required unless --design gives them
+        (gamma_option(required=False) if not swept else
          click.option("--gamma", "gamma", required=True, type=_values_type("gamma"), metavar="LIST",
                       help="Aspect ratio gamma = H/B (0.001 to 1000), H the height of C above the "
                            "base." + more)),
-        _opt("half_width", swept, "B", required=True, extra=more),
+        _opt("half_width", swept, "B", required=swept, extra=more),
         (kprime_option(required=False) if not swept else
          click.option("--kprime", "kprime", type=_values_type("kprime"), metavar="LIST",
                       help="Height of the push above C over H, in [-1, 1]." + more)),
-        _opt("mu", swept, "MU", required=True, extra=more),
+        _opt("mu", swept, "MU", required=swept, extra=more),
         click.option("--pulse", "pulse", type=click.Choice(SHAPES), default=None,
                      help="Shape of the force pulse (see docs/dynamics.md)."),
         _opt("k_peak", swept, "K", extra=more),
@@ -171,6 +175,13 @@ def _loads_and_gyration(gammas: Sequence[float], buoyancy: Sequence[float], upli
 @click.option("--pulse-file", "pulse_file", type=click.Path(dir_okay=False), metavar="FILE.csv",
               help="Instead of --pulse/--k-peak/--duration: a sampled force history, a CSV with "
                    "columns t (s),k and optionally kprime (then it replaces --kprime).")
+@click.option("--design", "design", type=click.Path(dir_okay=False), metavar="FILE.toml",
+              help="Instead of the block and the pulse: a caisson's design file (`regimemap caisson "
+                   "--example` prints one).  Runs the caisson's equivalent block under its design "
+                   "wave Hmax: a half-sine of peak k = P/(m g) lasting tau0 = (0.5 - Hmax/(8 h)) T1/3 "
+                   "(Shimosako & Takahashi 1999), the uplift U = nu P in phase.  The file gives "
+                   "--gamma, --half-width, --kprime, --mu, the loads, --gyration and the pulse; "
+                   "giving any of them too is an error.  No added mass of water.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
               help="Write the time history: .csv or .npz (atomically).")
@@ -178,11 +189,11 @@ def _loads_and_gyration(gammas: Sequence[float], buoyancy: Sequence[float], upli
               help="Draw k(t), the slide and theta(t) with the phases shaded: .png, .svg or .pdf.")
 @click.option("--animate", "animate", type=click.Path(dir_okay=False), metavar="FILE.gif",
               help="Draw the block moving, to scale, as a GIF.")
-def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: float, pulse: str | None,
-                 k_peak: float | None, duration: float | None, restitution: float | None,
-                 buoyancy: float, uplift: float, uplift_ratio: float, uplift_arm: float,
-                 gyration: float | None, pulse_file: str | None, as_json: bool, output: str | None,
-                 plot: str | None, animate: str | None) -> None:
+def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | None, mu: float | None,
+                 pulse: str | None, k_peak: float | None, duration: float | None,
+                 restitution: float | None, buoyancy: float, uplift: float, uplift_ratio: float,
+                 uplift_arm: float, gyration: float | None, pulse_file: str | None, design: str | None,
+                 as_json: bool, output: str | None, plot: str | None, animate: str | None) -> None:
     """Simulate one block under one force pulse, from rest, past initiation.
 
     The block (half width B, aspect ratio gamma = H/B with H the height of the
@@ -201,6 +212,14 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
     The pulse is --pulse KIND --k-peak K --duration T (k = 0 after T), or a
     CSV --pulse-file with columns t,k[,kprime].
 
+    --design FILE.toml (the design file of `regimemap caisson`) gives the
+    block and the pulse instead: the caisson's equivalent loaded block
+    under its design wave Hmax, a half-sine of peak k = P/(m g) lasting
+    tau0 = (0.5 - Hmax/(8 h)) T1/3, with the uplift in phase -- the force
+    history of the lifetime model.  The block is rigid: no added mass of
+    water (the lifetime model has it).  A line "design ..." says where the
+    numbers came from; --json adds them as "design".
+
     \b
     Examples:
       regimemap simulate --gamma 3 --half-width 0.2 --kprime 0 --mu 5 \\
@@ -211,13 +230,30 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
           --buoyancy 0.35 --uplift-ratio 0.25 --pulse breaking --k-peak 1.2 \\
           --duration 4 -o run.csv --animate caisson.gif
       regimemap simulate --gamma 3 --half-width 0.2 --mu 5 --pulse-file record.csv
+      regimemap caisson --example > goda.toml
+      regimemap simulate --design goda.toml --json
     """
+    from ..dynamics import Block, Pulse
+
+    block: Block | None = None
+    numbers: dict[str, float] | None = None
+    if design is not None:  # -- the block and the pulse from a design file -------------------
+        block, pls, values, numbers = _design_run(design)
+        gamma, half_width, kprime, mu = values["gamma"], values["half_width"], values["kprime"], values["mu"]
+        pulse, k_peak, duration = values["pulse"], values["k_peak"], values["duration"]
+        buoyancy, uplift, uplift_ratio = values["buoyancy"], values["uplift"], values["uplift_ratio"]
+        uplift_arm, gyration = values["uplift_arm"], values["gyration"]
+    missing = [n for n, v in (("--gamma", gamma), ("--half-width", half_width), ("--mu", mu)) if v is None]
+    if missing:
+        raise click.UsageError(f"missing option(s) {', '.join(missing)}: give the block (--gamma, "
+                               "--half-width, --mu, ...), or --design FILE.toml")
+    assert gamma is not None and half_width is not None and mu is not None
     if isinstance(kprime, float):  # the block of the dynamics has the crest at H (k' <= 1)
         kprime = check_kprime_crest(kprime, 1.0)
-    # -- the pulse --------------------------------------------------------------------------
+    # -- the pulse (with --design, the design wave's, above) -----------------------------------
     given = [n for n, v in (("--pulse", pulse), ("--k-peak", k_peak), ("--duration", duration))
              if v is not None]
-    if pulse_file is not None:
+    if design is None and pulse_file is not None:
         if given:
             raise click.UsageError(f"{', '.join(given)} and --pulse-file exclude each other: give a pulse "
                                    "shape or a file")
@@ -229,13 +265,11 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
             raise click.BadParameter(str(exc), param_hint="'--pulse-file'") from None
         if pls.has_kprime and kprime is not None:
             raise click.UsageError(f"--kprime and the kprime column of {pulse_file} exclude each other")
-    else:
+    elif design is None:
         missing = [n for n in ("--pulse", "--k-peak", "--duration") if n not in given]
         if missing:
             raise click.UsageError(f"missing option(s) {', '.join(missing)}: give --pulse KIND "
                                    "--k-peak K --duration T, or --pulse-file FILE.csv")
-        from ..dynamics.pulses import Pulse
-
         assert pulse is not None and k_peak is not None and duration is not None
         pls = Pulse.make(pulse, k_peak, duration)
     if kprime is None and not pls.has_kprime:
@@ -254,12 +288,13 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
     if animate is not None:
         _check_out(animate, ("gif",), "--animate", "the animation")
 
-    from ..dynamics import Block, simulate
+    from ..dynamics import simulate
     from ..dynamics.limits import estimated_steps
 
-    block = Block(B=half_width, gamma=gamma, mu=mu, kprime=kprime if kprime is not None else 0.0,
-                  i2=None if gyration is None else gyration * gyration, beta=buoyancy, u=uplift,
-                  nu=uplift_ratio, e_u=uplift_arm)
+    if block is None:
+        block = Block(B=half_width, gamma=gamma, mu=mu, kprime=kprime if kprime is not None else 0.0,
+                      i2=None if gyration is None else gyration * gyration, beta=buoyancy, u=uplift,
+                      nu=uplift_ratio, e_u=uplift_arm)
     T = float(pls.duration)
     steps = estimated_steps(block, T)
     if steps > MAX_STEPS:
@@ -274,7 +309,7 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
         "gamma": gamma, "half_width": half_width, "kprime": kprime, "mu": mu,
         "pulse": pulse if pulse_file is None else "file", "k_peak": k_peak, "duration": duration,
         "pulse_file": pulse_file, "restitution": restitution, "buoyancy": buoyancy, "uplift": uplift,
-        "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm, "gyration": gyration,
+        "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm, "gyration": gyration, "design": design,
     }
     eta = float(block.housner_ratio) if restitution is None else restitution
     derived = {"p": float(block.p), "alpha": float(block.alpha), "H": float(block.H),
@@ -283,6 +318,13 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
     from ..io.dynamics import format_simulation, simulation_record
 
     record = simulation_record(sim, inputs, derived)
+    if numbers is not None:
+        from ..dynamics.design_wave import DESIGN_UNITS, NO_ADDED_MASS, PROFILE
+        from ..io.dynamics import round_sig
+
+        record["design"] = {"file": design, **{key: round_sig(v) for key, v in numbers.items()},
+                            "profile": PROFILE, "added_mass_note": NO_ADDED_MASS,
+                            "units": dict(DESIGN_UNITS)}
 
     written: list[str] = []
     H = float(block.H)
@@ -300,7 +342,7 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
             written.append(output)
         if plot is not None or animate is not None:
             import_matplotlib()
-            title = _run_title(pulse, pulse_file, k_peak, T, gamma, half_width, mu, kprime)
+            title = _run_title(pulse, pulse_file, k_peak, T, gamma, half_width, mu, kprime, design)
         if plot is not None:
             from ..drawing.motion import motion_figure
             from ..io.dynamics import write_motion_plot
@@ -332,17 +374,54 @@ def simulate_cmd(gamma: float, half_width: float, kprime: float | None, mu: floa
         record["files"] = written
         click.echo(json.dumps(record, indent=1, allow_nan=False))
         return
+    if numbers is not None:
+        from ..dynamics.design_wave import describe_design_wave
+
+        click.echo("design     " + describe_design_wave(numbers, design))
     click.echo(format_simulation(record))
     for p in written:
         click.echo(p)
 
 
 def _run_title(pulse: str | None, pulse_file: str | None, k_peak: float | None, T: float, gamma: float,
-               B: float, mu: float, kprime: float | None) -> str:
+               B: float, mu: float, kprime: float | None, design: str | None = None) -> str:
+    if design is not None:  # the file gives the block: the title says which, and fits
+        return f"{Path(design).name}: design wave, k = {k_peak:.4g}, τ0 = {T:.4g} s; μ = {mu:.3g}"
     kp = "" if kprime is None else f", k' = {kprime:g}"
     what = (f"{pulse} pulse, k_peak = {k_peak:g}, T = {T:g} s" if pulse_file is None
             else f"pulse {Path(pulse_file).name}")
     return f"{what}; γ = {gamma:g}, B = {B:g} m, μ = {mu:g}{kp}"
+
+
+def _design_run(design: str) -> tuple[Block, Pulse, dict[str, Any], dict[str, float]]:
+    """The block, the pulse, the inputs and the numbers of a design file's design wave (--design).
+
+    Options that the file gives may not be given too; a bad file is a usage error naming the
+    file and the key, as ``regimemap caisson`` reports it.
+    """
+    from click.core import ParameterSource
+
+    from ..dynamics.design_wave import DESIGN_INPUTS, design_wave_inputs, design_wave_numbers, design_wave_run
+    from ..io.design import DesignFileError, read_design
+
+    ctx = click.get_current_context()
+    given = [name for name in (*DESIGN_INPUTS, "pulse_file")
+             if ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
+    if given:
+        flags = ", ".join("--" + n.replace("_", "-") for n in given)
+        raise click.UsageError(f"{flags} and --design exclude each other: the design file gives the block "
+                               "and the pulse (change the design file, or give the block without --design)")
+    try:
+        d = read_design(design)
+    except DesignFileError as exc:
+        raise click.BadParameter(str(exc), param_hint="'--design'") from None
+    try:
+        a = d.analyse()
+        block, pulse = design_wave_run(a, d.site.depth, d.wave.period)
+    except ValueError as exc:
+        raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
+    return (block, pulse, design_wave_inputs(a, d.site.depth, d.wave.period),
+            design_wave_numbers(a, d.site.depth, d.wave.period))
 
 
 # -- outcome -----------------------------------------------------------------------------------

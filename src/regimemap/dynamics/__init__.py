@@ -2,7 +2,8 @@
 
 numpy only.  :func:`simulate` steps a batch of runs with a Moreau-Jean scheme
 (:mod:`regimemap.dynamics.stepper`); :class:`Pulse` gives the force histories;
-:func:`outcome_map` sweeps two inputs.  See docs/dynamics.md.
+:func:`outcome_map` sweeps two inputs; :func:`design_wave_run` puts a caisson's equivalent block
+under its design wave (:mod:`regimemap.dynamics.design_wave`).  See docs/dynamics.md.
 
 Names are imported on first use (PEP 562), so that the command line can read
 the input limits (:mod:`regimemap.dynamics.limits`) without importing the stepper.
@@ -15,6 +16,16 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # pragma: no cover
     from .block import Block, G, frequency_parameter, size_R, slenderness
+    from .design_wave import (
+        DESIGN_INPUTS,
+        DESIGN_UNITS,
+        NO_ADDED_MASS,
+        PROFILE,
+        describe_design_wave,
+        design_wave_inputs,
+        design_wave_numbers,
+        design_wave_run,
+    )
     from .outcome import SWEEPABLE, OutcomeMap, from_dimensionless, outcome_map, to_dimensionless
     from .pulses import SHAPES, Pulse
     from .stepper import (
@@ -36,10 +47,14 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = [
     "Block",
     "CATEGORY_LABELS",
+    "DESIGN_INPUTS",
+    "DESIGN_UNITS",
     "FREE_STEP",
     "G",
     "History",
+    "NO_ADDED_MASS",
     "OVERTURN",
+    "PROFILE",
     "PULSE_STEPS",
     "OutcomeMap",
     "Phase",
@@ -52,6 +67,10 @@ __all__ = [
     "SWEEPABLE",
     "Simulation",
     "default_steps",
+    "describe_design_wave",
+    "design_wave_inputs",
+    "design_wave_numbers",
+    "design_wave_run",
     "from_dimensionless",
     "frequency_parameter",
     "outcome_map",
@@ -67,6 +86,9 @@ _WHERE = {
     "SWEEPABLE": "outcome", "OutcomeMap": "outcome", "from_dimensionless": "outcome",
     "outcome_map": "outcome", "to_dimensionless": "outcome",
     "SHAPES": "pulses", "Pulse": "pulses",
+    "DESIGN_INPUTS": "design_wave", "DESIGN_UNITS": "design_wave", "design_wave_inputs": "design_wave",
+    "design_wave_numbers": "design_wave", "design_wave_run": "design_wave", "NO_ADDED_MASS": "design_wave",
+    "PROFILE": "design_wave", "describe_design_wave": "design_wave",
 }
 
 

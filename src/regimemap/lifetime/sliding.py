@@ -34,6 +34,8 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from regimemap.waves import wave_duration
+
 __all__ = ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_duration"]
 
 FloatArray = NDArray[np.float64]
@@ -69,22 +71,6 @@ def added_mass(base_depth: ArrayLike, rho_w: float) -> FloatArray:
     return np.asarray(ADDED_MASS_COEFFICIENT * rho_w * hp * hp, dtype=np.float64)
 
 
-def wave_duration(H: ArrayLike, depth: ArrayLike, period: ArrayLike) -> FloatArray:
-    """Duration of a wave's push ``tau0 = (0.5 - H/(8h)) T1/3`` [s] (Shimosako & Takahashi 1999).
-
-    Parameters
-    ----------
-    H : array_like
-        Wave height [m].
-    depth : array_like
-        Water depth ``h`` at the wall [m].
-    period : array_like
-        Significant period ``T1/3`` [s].
-    """
-    return np.asarray((0.5 - np.asarray(H, dtype=np.float64) / (8.0 * np.asarray(depth, dtype=np.float64)))
-                      * np.asarray(period, dtype=np.float64), dtype=np.float64)
-
-
 def _velocity(ratio: FloatArray, s1: FloatArray, c1: FloatArray, s: FloatArray) -> FloatArray:
     return np.asarray(ratio * (c1 - np.cos(s)) - (s - s1), dtype=np.float64)
 
@@ -103,7 +89,7 @@ def half_sine_slide(force: ArrayLike, resistance: ArrayLike, mass: ArrayLike,
     mass : array_like
         ``M = W/g + M_a`` [kg/m].
     duration : array_like
-        ``tau0`` [s], > 0.
+        ``tau0`` [s]; a wave with ``tau0 <= 0`` does not push.
 
     Returns
     -------
@@ -128,6 +114,7 @@ def half_sine_slide(force: ArrayLike, resistance: ArrayLike, mass: ArrayLike,
     F, R, M, tau = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64)
                                          for a in (force, resistance, mass, duration)))
     out = np.zeros(F.shape, dtype=np.float64)
+    F = np.where(tau > 0.0, F, 0.0)  # no push without a duration (H >= 4h, docs/lifetime.md, Sect. 5.2)
     endless = (R <= 0.0) & (F > R)
     out[endless] = np.inf
     moving = (F > R) & ~endless

@@ -13,7 +13,9 @@ map (numpy only, SI units, vectorised over broadcast arrays):
   safety factors, heel pressure;
 * :func:`equivalent_block`, :func:`static_rest_check` -- the loaded block of
   the regime map and its closed-form rest check;
-* :func:`analyse_caisson` -- all of the above in one call.
+* :func:`analyse_caisson` -- all of the above in one call;
+* :func:`wave_duration` -- how long a wave pushes: the duration of Shimosako
+  & Takahashi's half-sine force profile.
 
 See ``docs/waves.md`` for every formula with its source.
 """
@@ -43,6 +45,7 @@ from .heights import (
     shoaling_coefficient,
 )
 from .pressure import GODA_ROTATION_DEG, GodaPressures, effective_angle, goda_pressures, impulsive_coefficient
+from .timing import wave_duration
 
 __all__ = [
     "GODA_ROTATION_DEG", "HMAX_FACTOR", "CaissonAnalysis", "CaissonLoads", "CaissonSection",
@@ -51,5 +54,5 @@ __all__ = [
     "effective_angle", "equivalent_block", "given_heights", "goda_pressures", "heel_pressure",
     "impulsive_coefficient", "linear_shoaling_coefficient", "section_from_densities",
     "section_from_weight", "shoaling_coefficient", "stability", "static_rest_check",
-    "wavelength", "wavenumber",
+    "wave_duration", "wavelength", "wavenumber",
 ]
