@@ -1,6 +1,6 @@
 """The layers and their import rules, read from the source (AST), so a breach fails a test.
 
-mechanics (numpy only) -> waves -> maps -> drawing -> io -> cli: a package imports
+mechanics (numpy only) -> waves, dynamics -> maps, lifetime -> drawing -> io -> cli: a package imports
 only from its own layer or the layers before it; matplotlib only under
 ``drawing/``, click only under ``cli/``; no module imports another module's
 private (underscore) name; no import cycle between modules.
@@ -16,7 +16,8 @@ import pytest
 SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
 
 #: Layer of each package: a module may import from layers <= its own.
-LAYER = {"mechanics": 0, "waves": 1, "dynamics": 1, "maps": 2, "drawing": 3, "io": 4, "cli": 5}
+LAYER = {"mechanics": 0, "waves": 1, "dynamics": 1, "maps": 2, "lifetime": 2, "drawing": 3, "io": 4,
+         "cli": 5}
 #: The top-level modules (the package's front door and its version) sit above the
 #: evaluation layer: regimemap/__init__.py re-exports maps and mechanics.
 TOP = 2.5
@@ -94,7 +95,7 @@ def test_third_party_imports_stay_in_their_layer(module):
         if root == "click":
             assert ".cli" in module, f"{module}:{line} imports click"
         if module.startswith(("regimemap.mechanics", "regimemap.maps", "regimemap.waves",
-                              "regimemap.dynamics")):
+                              "regimemap.dynamics", "regimemap.lifetime")):
             assert root not in ("matplotlib", "click", "scipy"), f"{module}:{line} imports {root}"
 
 

@@ -33,12 +33,20 @@ PUBLIC_API = {
         "render_preset", "style_context",
         # outcome maps and motions after initiation (regimemap.dynamics)
         "OUTCOME_STYLE", "draw_outcome_map", "motion_figure", "outcome_figure",
+        # a caisson's sliding over its design life (regimemap.lifetime)
+        "chart_figure", "lifetime_figure",
     ],
     "regimemap.io": [
         "atomic_open", "atomic_path", "export_map", "format_result", "parse_point_spec",
         "read_points_csv", "result_row", "save_figure", "write_animation", "write_atlas",
         # simulations after initiation: pulse files, time histories, outcome maps
         "read_pulse_csv", "write_history", "write_outcome",
+    ],
+    "regimemap.lifetime": [
+        "ADDED_MASS_COEFFICIENT", "Caisson", "Climate", "ClusterUnavailable", "DEFAULT_ERRORS",
+        "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "DesignChart", "ErrorFactor", "Errors", "LifetimeModel",
+        "LifetimeResult", "added_mass", "available_cores", "design_chart", "half_sine_slide",
+        "lifetime_sliding", "sf_width", "wave_duration",
     ],
     "regimemap.cli": ["cli", "console_main", "main"],
 }

@@ -40,6 +40,9 @@ def cli() -> None:
       regimemap export --gamma 3 --kprime 0.4 -o map.json
       regimemap atlas --gamma 1,2,3 --kprime -0.6,-0.2,0,0.4,0.9 -o atlas.svg
       regimemap animate --gamma 3 --kprime -1:1:41 -o sweep.gif
+      regimemap caisson --example > goda.toml
+      regimemap lifetime goda.toml -o life.png
+      regimemap lifetime goda.toml --width 10:25:16 -o chart.svg
     """
 
 
@@ -53,6 +56,7 @@ def _register(group: click.Group) -> None:
     from .caisson import caisson_cmd
     from .dynamics import dynamics_figures_cmd, outcome_cmd, simulate_cmd
     from .export import export_cmd
+    from .lifetime import lifetime_cmd
     from .plot import figure_command, figures_command, plot_command
     from .query import classify_cmd
 
@@ -60,6 +64,7 @@ def _register(group: click.Group) -> None:
                     atlas_cmd, animate_cmd):
         group.add_command(command)
     group.add_command(caisson_cmd)
+    group.add_command(lifetime_cmd)
     group.add_command(simulate_cmd)
     group.add_command(outcome_cmd)
     group.add_command(dynamics_figures_cmd)

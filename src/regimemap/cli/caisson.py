@@ -38,8 +38,10 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
 
     With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
     the cross-section, the pressure diagram, the loaded map with the design
-    point and its path as the wave grows, and the numbers; its path follows
-    the report on standard output (with --json, as the key "sheet").
+    point and its path as the wave grows, and the numbers -- and, when the file
+    has a [lifetime] table, the sliding over the design life (as `regimemap
+    lifetime` computes it); its path follows the report on standard output
+    (with --json, as the key "sheet").
 
     \b
     Examples:
@@ -85,7 +87,17 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
         from ..drawing.sheet import sheet_figure
         from ..io.figures import save_figure
 
-        fig = sheet_figure(report, title=Path(design).name)
+        life = None
+        if d.lifetime is not None:  # the file's [lifetime]: the sheet gains the lifetime panel
+            from ..lifetime import available_cores, lifetime_sliding
+
+            spec = d.lifetime_spec()
+            try:
+                life = lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), spec.trials, spec.seed,
+                                        jobs=available_cores())
+            except ValueError as exc:
+                raise RunError(f"{design}: {exc}") from None
+        fig = sheet_figure(report, title=Path(design).name, lifetime=life)
         try:
             save_figure(fig, output)
         except OSError as exc:

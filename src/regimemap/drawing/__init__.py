@@ -3,7 +3,8 @@
 Styles (:mod:`.style`), label placement (:mod:`.placement`), the key
 (:mod:`.key`), the map (:mod:`.mapplot`), the ambiguity overlay
 (:mod:`.ambiguity`), atlas and animation (:mod:`.atlas`), the report's figure
-presets (:mod:`.presets`) and figure bytes (:mod:`.save`).  Names are imported
+presets (:mod:`.presets`), figure bytes (:mod:`.save`) and the figures of a
+caisson's sliding over its design life (:mod:`.lifetime`).  Names are imported
 on first use, so ``import regimemap.drawing`` does not import matplotlib.
 """
 
@@ -18,12 +19,14 @@ __all__ = [
     "MapArtists",
     "OUTCOME_STYLE",
     "atlas_figure",
+    "chart_figure",
     "default_title",
     "draw_ambiguity",
     "draw_design_points",
     "draw_map",
     "draw_outcome_map",
     "fit_figure",
+    "lifetime_figure",
     "load_matplotlib",
     "map_figure",
     "motion_figure",
@@ -53,6 +56,8 @@ _WHERE = {
     "draw_outcome_map": "outcome",
     "outcome_figure": "outcome",
     "motion_figure": "motion",
+    "lifetime_figure": "lifetime",
+    "chart_figure": "lifetime",
 }
 
 

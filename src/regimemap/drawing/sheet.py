@@ -8,7 +8,9 @@ diagram on the wall (``p1``, ``p3``, ``p4``, ``eta*``) and (c) the uplift
 triangle (``pu``); (d) the loaded regime map of the design wave with the
 design point and the path it follows as the wave grows (0.5 to 1.5 times the
 design heights); (e) the safety factors along that path with the mode of
-each point on its own map; (f) the numbers.
+each point on its own map; (f) the numbers; and, when a lifetime simulation is
+given, (g) the exceedance curve of the caisson's sliding over its design life
+(:func:`regimemap.drawing.lifetime.draw_exceedance`), under (e).
 
 Everything drawn is computed beforehand (:func:`regimemap.maps.caisson.caisson_report`
 and :func:`regimemap.maps.caisson.map_view`); this module only draws.
@@ -17,6 +19,7 @@ and :func:`regimemap.maps.caisson.map_view`); this module only draws.
 from __future__ import annotations
 
 import textwrap
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -33,12 +36,17 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["SHEET_SIZE", "PANELS", "sheet_figure"]
+    from ..lifetime.results import LifetimeResult
+    from .lifetime import Placed
+
+__all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure"]
 
 #: Size of the sheet in inches: A4 portrait.
 SHEET_SIZE: tuple[float, float] = (8.27, 11.69)
 #: The panels' axes, by label (``ax.get_label()``), in drawing order.
 PANELS: tuple[str, ...] = ("section", "pressure", "uplift", "map", "path", "table")
+#: The label of the lifetime panel (g), drawn after :data:`PANELS` when a lifetime is given.
+LIFETIME_PANEL = "lifetime"
 
 #: Fill of lift-off, when the map has it (not one of the report's modes).
 LO_STYLE = ModeStyle("#BBBBBB", "oo")
@@ -452,10 +460,64 @@ def _draw_table(ax: Axes, r: CaissonReport) -> None:
             ax.text(x + 0.167, y, unit, fontsize=_FS - 0.5, va="center", ha="left", color="0.25")
 
 
+# -- (g) the lifetime ------------------------------------------------------------------------
+
+def _path_note(r: CaissonReport, short: bool) -> str:
+    """The note under (e) (``short``: under (g), in fewer words)."""
+    p = r.path
+    kp = f"{_g(float(p.kprime[0]), 3)} \u2026 {_g(float(p.kprime[-1]), 3)}"
+    up = f"{_g(float(p.uplift_ratio[0]), 3)} \u2026 {_g(float(p.uplift_ratio[-1]), 3)}"
+    if short:
+        return (f"(d): the regions of the design wave; along the path k\u2032 ({kp}) and U/P ({up}) "
+                "change: each marker and (e)'s band has the colour of the mode on its own map.  "
+                "SF \u2265 1 (both) \u21d4 rest.  (g): ESD \u00b1 1 standard error (grey); "
+                "tolerable ESD 0.1 m (Goda & Takagi 2000), 0.3 m (Shimosako & Takahashi 1999).")
+    return (f"The regions are those of the design wave.  Along the path k\u2032 ({kp}) and U/P "
+            f"({up}) change with the wave, so each marker (and the band along the bottom of (e)) "
+            "has the colour of the mode on its own map.  SF \u2265 1 (both) \u21d4 rest on the map.")
+
+
+def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
+                     rect: Callable[[float, float, float, float], tuple[float, float, float, float]]
+                     ) -> tuple[Axes, Placed]:
+    """(e) shorter, (g) the exceedance curve of the lifetime under it, and the note, shorter.
+
+    Returns (g)'s axes and its labels, to place once the rest of the sheet is drawn.
+    """
+    from .lifetime import draw_exceedance
+
+    ax_path = fig.add_axes(rect(5.55, 5.1, 2.35, 1.35), label="path")
+    _draw_path(ax_path, r)
+    ax_l = fig.add_axes(rect(5.55, 3.33, 2.35, 1.05), label=LIFETIME_PANEL)
+    placed = draw_exceedance(ax_l, lifetime, storm=False, fontsize=_FS)
+    ax_l.set_ylabel("$P(S > x)$", fontsize=_FS)
+    ax_l.set_xlabel(f"$x$ (m); $S$ = sliding in {lifetime.years} years", fontsize=_FS)
+    ax_l.tick_params(labelsize=_FS - 0.5)
+    ax_l.set_title(f"(g) over the design life: {lifetime.trials} lifetimes", fontsize=_FS + 1,
+                   loc="left")
+    fig.text(5.4 / SHEET_SIZE[0], 2.86 / SHEET_SIZE[1],
+             "\n".join(textwrap.wrap(_path_note(r, True), 54)), fontsize=_FS - 1.0, va="top",
+             ha="left", color="0.15", linespacing=1.3)
+    return ax_l, placed
+
+
+def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
+    """Place the labels of (g) clear of every text of the sheet and of (g)'s lines."""
+    from .lifetime import LabelPlacer
+
+    placer = LabelPlacer(fig)
+    try:
+        placer.avoid_lines_of(ax)
+        for t, cands, texts in placed:
+            placer.place(ax, t, cands, texts=texts)
+    finally:
+        placer.close()
+
+
 # -- the sheet -----------------------------------------------------------------------------
 
 def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float = DEFAULT_DPI,
-                 view: MapView | None = None) -> Figure:
+                 view: MapView | None = None, lifetime: LifetimeResult | None = None) -> Figure:
     """The one-page design sheet of a caisson (A4 portrait, no pyplot).
 
     Parameters
@@ -468,11 +530,16 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         Resolution of PNG output.
     view : MapView, optional
         The map's view and grid (default :func:`regimemap.maps.caisson.map_view`).
+    lifetime : LifetimeResult, optional
+        The caisson's sliding over its design life
+        (:func:`regimemap.lifetime.lifetime_sliding`): adds panel (g), its exceedance
+        curve with the ESD and the tolerable limits, under (e) (which gets shorter, and its
+        note too).  Without it the sheet is the same, byte for byte, as before the panel existed.
 
     Returns
     -------
     Figure
-        Axes labelled as :data:`PANELS`.
+        Axes labelled as :data:`PANELS`, then :data:`LIFETIME_PANEL` when ``lifetime`` is given.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
@@ -514,18 +581,17 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         ax_map = fig.add_axes(rect(0.75, 3.4, 4.1, 3.05), label="map")
         codes = _draw_map(ax_map, report, view)
         _legend(ax_map, codes)
-        ax_path = fig.add_axes(rect(5.55, 4.5, 2.35, 1.95), label="path")
-        _draw_path(ax_path, report)
-        p = report.path
-        note = (f"The regions are those of the design wave.  Along the path k\u2032 "
-                f"({_g(float(p.kprime[0]), 3)} \u2026 {_g(float(p.kprime[-1]), 3)}) and U/P "
-                f"({_g(float(p.uplift_ratio[0]), 3)} \u2026 {_g(float(p.uplift_ratio[-1]), 3)}) "
-                "change with the wave, so each marker (and the band along the bottom of (e)) has the "
-                "colour of the mode on its own map.  "
-                "SF \u2265 1 (both) \u21d4 rest on the map.")
-        fig.text(5.4 / W, 3.95 / H, "\n".join(textwrap.wrap(note, 47)), fontsize=_FS - 0.5,
-                 va="top", ha="left", color="0.15", linespacing=1.35)
+        lifetime_labels = None
+        if lifetime is None:
+            ax_path = fig.add_axes(rect(5.55, 4.5, 2.35, 1.95), label="path")
+            _draw_path(ax_path, report)
+            fig.text(5.4 / W, 3.95 / H, "\n".join(textwrap.wrap(_path_note(report, False), 47)),
+                     fontsize=_FS - 0.5, va="top", ha="left", color="0.15", linespacing=1.35)
+        else:
+            lifetime_labels = _lifetime_panels(fig, report, lifetime, rect)
 
         ax_t = fig.add_axes(rect(0.6, 0.3, 7.2, 1.95), label="table")
         _draw_table(ax_t, report)
+        if lifetime_labels is not None:  # once every other text is on the sheet
+            _place_lifetime_labels(fig, *lifetime_labels)
     return fig

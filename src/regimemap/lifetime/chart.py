@@ -19,12 +19,13 @@ from regimemap.waves import analyse_caisson
 from .model import PERIOD_COEFFICIENT, PERIOD_EXPONENT, Caisson, LifetimeModel
 from .parallel import DEFAULT_CHUNK, make_chunks, root_seed, run_chunks
 
-__all__ = ["DesignChart", "design_chart", "sf_width"]
+__all__ = ["WIDTH_STEPS", "DesignChart", "design_chart", "sf_width"]
 
 FloatArray = NDArray[np.float64]
 
-#: Bisection steps for the width of a target ESD (the bracket is one chart step wide).
-_WIDTH_STEPS = 8
+#: Bisection steps for the width of a target ESD (the bracket is one chart step wide, so the
+#: width is found to 1/256 of a chart step); each step is one simulation of ``trials`` lifetimes.
+WIDTH_STEPS = 8
 
 
 @dataclass(frozen=True)
@@ -167,7 +168,7 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: ArrayLike, tria
             found = float(w[0])
         else:
             lo, hi = float(w[i - 1]), float(w[i])
-            for _ in range(_WIDTH_STEPS):
+            for _ in range(WIDTH_STEPS):
                 mid = 0.5 * (lo + hi)
                 pair = (caissons[0], caisson.with_width(mid))
                 r = run_chunks(pair, model, chunks, jobs=jobs, scheduler=scheduler, progress=progress)

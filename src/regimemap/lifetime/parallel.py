@@ -25,6 +25,9 @@ __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run
 #: Lifetimes per chunk by default: a few seconds of work, ~tens of MB.
 DEFAULT_CHUNK = 500
 
+#: Seconds to wait for a Dask scheduler before giving up (``REGIMEMAP_DASK_TIMEOUT`` overrides).
+DASK_CONNECT_TIMEOUT = 10.0
+
 
 class ClusterUnavailable(RuntimeError):
     """Dask's ``distributed`` is not installed, or the scheduler cannot be reached."""
@@ -104,10 +107,12 @@ def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[
     except ImportError:
         raise ClusterUnavailable(
             "--scheduler needs Dask's distributed package: pip install 'regimemap[cluster]'") from None
+    timeout = float(os.environ.get("REGIMEMAP_DASK_TIMEOUT", DASK_CONNECT_TIMEOUT))
     try:
-        client = Client(scheduler, timeout="10s")
-    except (OSError, TimeoutError) as exc:
-        raise ClusterUnavailable(f"cannot reach the Dask scheduler at {scheduler!r}: {exc}") from None
+        client = Client(scheduler, timeout=f"{timeout:g}s")
+    except Exception as exc:  # noqa: BLE001 - any failure to connect: a bad address, a refusal, a timeout
+        raise ClusterUnavailable(f"cannot reach the Dask scheduler at {scheduler!r}: "
+                                 f"{str(exc) or type(exc).__name__}") from None
     try:
         futures = client.map(run_chunk, [caissons] * len(chunks), [model] * len(chunks), list(chunks),
                              pure=False)

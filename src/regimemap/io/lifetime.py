@@ -1,0 +1,382 @@
+"""The sliding of a caisson over its design life, for people (text) and programs (JSON, CSV, NPZ).
+
+:func:`lifetime_json` and :func:`format_lifetime` report a
+:class:`~regimemap.lifetime.LifetimeResult` (the expected sliding distance with
+its standard error, quantiles, exceedance probabilities, the climate);
+:func:`chart_json` and :func:`format_chart` a
+:class:`~regimemap.lifetime.DesignChart`; :func:`write_samples` writes every
+trial (CSV or NPZ, atomically).  :func:`parse_widths`, :func:`check_target` and
+:func:`check_chunk` check the options of ``regimemap lifetime`` that the design
+file does not hold.  Lengths are in metres, probabilities in [0, 1] (per cent
+in the text); JSON numbers are rounded to 12 significant digits.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ..lifetime import DesignChart, LifetimeModel, LifetimeResult
+from ._numbers import json_number
+from .atomic import atomic_open
+from .design import MAX_TRIALS
+
+__all__ = ["MAX_WIDTHS", "SAMPLE_FORMATS", "chart_json", "check_chunk", "check_scheduler", "check_target",
+           "format_chart", "format_lifetime", "lifetime_json", "parse_widths", "threshold_key",
+           "write_samples"]
+
+#: Formats of :func:`write_samples` (from the file's suffix).
+SAMPLE_FORMATS: tuple[str, ...] = ("csv", "npz")
+#: Most widths of a design chart (each one is simulated with every lifetime).
+MAX_WIDTHS = 200
+#: Quantiles of the lifetime sliding that are reported.
+_QUANTILES = (0.9, 0.99)
+
+
+# -- the options of `regimemap lifetime` ---------------------------------------------------------
+
+
+def parse_widths(text: str) -> list[float]:
+    """``A:B:N``: ``N`` widths from ``A`` to ``B`` metres, both included (a design chart).
+
+    Raises
+    ------
+    ValueError
+        Unless ``0 < A < B`` are finite numbers and ``N`` a whole number in
+        [2, :data:`MAX_WIDTHS`]; the message names what is accepted.
+    """
+    accepted = (f"A:B:N, N widths from A to B metres (0 < A < B, N a whole number from 2 to "
+                f"{MAX_WIDTHS}), e.g. 10:25:16")
+    parts = str(text).split(":")
+    if len(parts) != 3:
+        raise ValueError(f"widths must be {accepted}; got {text!r}")
+    try:
+        a, b = float(parts[0]), float(parts[1])
+    except ValueError:
+        raise ValueError(f"widths must be {accepted}; got {text!r} (A or B is not a number)") from None
+    try:
+        n = int(parts[2].strip(), 10)
+    except ValueError:
+        raise ValueError(f"widths must be {accepted}; got {text!r} (N is not a whole number)") from None
+    if not (math.isfinite(a) and math.isfinite(b) and 0.0 < a < b):
+        raise ValueError(f"widths must be {accepted}; got {text!r} (need 0 < A < B)")
+    if not 2 <= n <= MAX_WIDTHS:
+        raise ValueError(f"widths must be {accepted}; got {text!r} (N = {n})")
+    return [float(w) for w in np.linspace(a, b, n)]
+
+
+def check_target(value: Any) -> float:
+    """The tolerable expected sliding distance of a design chart: a finite number > 0 [m]."""
+    accepted = "a tolerable expected sliding distance > 0 in metres (e.g. 0.1, Goda & Takagi 2000)"
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"target must be {accepted}, got {value!r} (not a number)") from None
+    if isinstance(value, bool) or not (math.isfinite(x) and x > 0.0):
+        raise ValueError(f"target must be {accepted}, got {value!r}")
+    return x
+
+
+def check_chunk(value: Any) -> int:
+    """Lifetimes per unit of work: a whole number in [1, :data:`~regimemap.io.design.MAX_TRIALS`]."""
+    accepted = f"a whole number of lifetimes per unit of work, 1 <= chunk <= {MAX_TRIALS}"
+    try:
+        n = int(str(value).strip(), 10)
+    except ValueError:
+        raise ValueError(f"chunk must be {accepted}, got {value!r} (not a whole number)") from None
+    if isinstance(value, bool) or not 1 <= n <= MAX_TRIALS:
+        raise ValueError(f"chunk must be {accepted}, got {value!r}")
+    return n
+
+
+#: ``[scheme://]host:port`` of a Dask scheduler (tcp, tls, ws, wss; the host may be [IPv6]);
+#: Dask's other transports (``inproc://``, ``ucx://``) are passed on as they are.
+_ADDRESS = re.compile(r"^(?:(?:tcp|tls|ws|wss)://)?(?:\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):(\d{1,5})$")
+
+
+def check_scheduler(address: str) -> str:
+    """The address of a Dask scheduler, ``tcp://host:8786`` (the form only; not whether it answers).
+
+    Raises
+    ------
+    ValueError
+        For an empty address, or a tcp/tls/ws/wss address without a port in [1, 65535].
+    """
+    text = str(address).strip()
+    accepted = "the address of a Dask scheduler, [tcp://]host:port, e.g. tcp://127.0.0.1:8786"
+    if text.startswith(("inproc://", "ucx://")):
+        return text
+    m = _ADDRESS.match(text)
+    if m is None or not 1 <= int(m.group(1)) <= 65535:
+        raise ValueError(f"scheduler must be {accepted}; got {address!r}")
+    return text
+
+
+# -- JSON ---------------------------------------------------------------------------------------
+
+
+def threshold_key(x: float) -> str:
+    """A threshold in metres as a JSON key: ``0.1`` -> ``"0.1"``, ``1.0`` -> ``"1"``."""
+    v = float(x)
+    return f"{int(v)}" if v == int(v) else repr(v)
+
+
+def _model_dict(model: LifetimeModel) -> dict[str, Any]:
+    c = model.climate
+    return {
+        "years": model.years,
+        "storm_hours": json_number(model.storm_hours),
+        "period": None if model.period is None else json_number(model.period),
+        "steepness": None if model.steepness is None else json_number(model.steepness),
+        "tide_range": json_number(model.tide_range),
+        "impulsive": model.impulsive,
+        "truncate": None if model.truncate is None else json_number(model.truncate),
+        "errors": {name: {"ratio": json_number(getattr(model.errors, name).ratio),
+                          "cov": json_number(getattr(model.errors, name).cov)}
+                   for name in model.errors.names()},
+        "climate": {
+            "distribution": c.distribution, "scale": json_number(c.scale),
+            "location": json_number(c.location), "shape": json_number(c.shape),
+            "storms_per_year": None if c.storms_per_year is None else json_number(c.storms_per_year),
+            "H0_10": json_number(c.return_value(10)), "H0_50": json_number(c.return_value(50)),
+        },
+    }
+
+
+def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | None = None
+                  ) -> dict[str, Any]:
+    """One JSON-ready object: the expected sliding distance and the statistics of the lifetimes.
+
+    Parameters
+    ----------
+    result : LifetimeResult
+    model : LifetimeModel
+        The model that gave ``result`` (its climate and options are reported).
+    source : str, optional
+        The design file.
+
+    Returns
+    -------
+    dict
+        ``expected_sliding`` and ``std_error`` (m), ``std``, ``median``,
+        ``quantile_90``, ``quantile_99`` (m), ``exceedance`` and
+        ``storm_exceedance`` (threshold in metres as text -> probability),
+        ``never_slides``, ``mean_storms``, ``trials``, ``seed``, ``years``,
+        ``width`` (m), ``climate`` (one line of text), ``model`` (every option)
+        and ``units``; numbers rounded to 12 significant digits (``null`` if
+        not finite).
+    """
+    out: dict[str, Any] = {}
+    if source is not None:
+        out["source"] = source
+    out.update({
+        "expected_sliding": json_number(result.expected_sliding),
+        "std_error": json_number(result.std_error),
+        "std": json_number(result.std),
+        "median": json_number(result.median),
+        "quantile_90": json_number(result.quantile(0.9)),
+        "quantile_99": json_number(result.quantile(0.99)),
+        "exceedance": {threshold_key(x): json_number(result.exceedance(x)) for x in result.thresholds},
+        "storm_exceedance": {threshold_key(x): json_number(result.storm_exceedance(x))
+                             for x in result.thresholds},
+        "never_slides": json_number(result.never_slides),
+        "mean_storms": json_number(float(np.mean(result.storms))),
+        "trials": result.trials,
+        "seed": result.seed,
+        "years": result.years,
+        "width": json_number(result.width),
+        "climate": model.climate.describe(),
+        "model": _model_dict(model),
+        "units": {"expected_sliding": "m", "std_error": "m", "std": "m", "median": "m",
+                  "quantile_90": "m", "quantile_99": "m", "exceedance": "probability, keys in m",
+                  "storm_exceedance": "probability, keys in m", "never_slides": "probability",
+                  "width": "m", "years": "year"},
+    })
+    return out
+
+
+def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None
+               ) -> dict[str, Any]:
+    """One JSON-ready object: the design chart (ESD against width) and the widths it gives.
+
+    Returns
+    -------
+    dict
+        ``chart`` (a list of ``{width, expected_sliding, std_error}``, m),
+        ``target`` (m), ``width_for_target`` (m, ``null`` when no width of the
+        chart meets the target), ``required_sf``, ``sf_width`` (m), ``trials``,
+        ``seed``; with ``model`` also ``years``, ``climate`` and ``model``.
+    """
+    out: dict[str, Any] = {}
+    if source is not None:
+        out["source"] = source
+    out["chart"] = [{k: json_number(v) for k, v in row.items()} for row in chart.rows()]
+    out["target"] = json_number(chart.target)
+    out["width_for_target"] = (None if chart.width_for_target is None
+                               else json_number(chart.width_for_target))
+    out["required_sf"] = json_number(chart.required_sf)
+    out["sf_width"] = json_number(chart.sf_width)
+    out["trials"] = chart.trials
+    out["seed"] = chart.seed
+    if model is not None:
+        out["years"] = model.years
+        out["climate"] = model.climate.describe()
+        out["model"] = _model_dict(model)
+    out["units"] = {"width": "m", "expected_sliding": "m", "std_error": "m", "target": "m",
+                    "width_for_target": "m", "sf_width": "m"}
+    return out
+
+
+# -- text ---------------------------------------------------------------------------------------
+
+
+def _g(x: float, digits: int = 3) -> str:
+    """``x`` to ``digits`` significant digits, as short as possible (``0.053``, ``1.14``, ``2e-05``)."""
+    if not math.isfinite(x):
+        return "n/a"
+    if x == 0.0:
+        return "0"
+    return f"{x:.{digits}g}"
+
+
+def _value_pm(value: float, se: float) -> str:
+    """``value m ± se m``: the standard error to two significant digits and the value to match."""
+    if not math.isfinite(se):
+        return f"{_g(value)} m ± n/a"
+    if se <= 0.0 or value <= 0.0:
+        return f"{_g(value)} m ± {_g(se, 2)} m"
+    decimals = max(0, 1 - int(math.floor(math.log10(se))))
+    if decimals > 6:  # a tiny error: both to significant digits
+        return f"{_g(value)} m ± {_g(se, 2)} m"
+    return f"{value:.{decimals}f} m ± {se:.{decimals}f} m"
+
+
+def _percent(p: float) -> str:
+    """A share in per cent: ``89.6 %``, ``0.04 %``, ``100 %``."""
+    v = 100.0 * p
+    if v in (0.0, 100.0):
+        return f"{v:.0f} %"
+    return f"{v:.1f} %" if v >= 10.0 else f"{v:.3g} %"
+
+
+def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | None = None) -> str:
+    """The sliding over the design life for people.
+
+    The expected sliding distance with its standard error beside it, the
+    median and quantiles, the exceedance probabilities of the lifetime sliding
+    and of the largest single-storm sliding, the share of lifetimes that never
+    slide, and the climate and options.
+    """
+    n = result.trials
+    lines = []
+    if source:
+        lines.append(f"lifetime sliding: {source}")
+    lives = f"{n} lifetime{'' if n == 1 else 's'}"
+    lines.append(f"caisson {_g(result.width, 4)} m wide, design life {result.years} years, "
+                 f"{lives}, seed {result.seed}")
+    lines.append(f"  climate: {model.climate.describe()}")
+    opts = [f"storms of {_g(model.storm_hours)} h",
+            ("T1/3 = 3.3 H0'^0.63" if model.period is None and model.steepness is None else
+             f"T1/3 = {_g(model.period)} s" if model.period is not None else
+             f"H0'/L0 = {_g(model.steepness or 0.0)}")]
+    if model.tide_range > 0.0:
+        opts.append(f"tide range {_g(model.tide_range)} m")
+    opts.append("impulsive coefficient" if model.impulsive else "alpha* = alpha2")
+    if model.truncate is not None:
+        opts.append(f"errors cut at ±{_g(model.truncate)} sd")
+    lines.append(f"  model: {', '.join(opts)}")
+    lines.append("  errors [ratio, cov]: " + ", ".join(
+        f"{name} [{_g(getattr(model.errors, name).ratio)}, {_g(getattr(model.errors, name).cov)}]"
+        for name in model.errors.names()))
+    lines.append("")
+    lines.append(f"ESD {_value_pm(result.expected_sliding, result.std_error)} (standard error, {lives})")
+    qs = ", ".join(f"{100 * q:g} %: {_g(result.quantile(q))} m" for q in _QUANTILES)
+    lines.append(f"  median {_g(result.median)} m; quantiles {qs}")
+    lines.append(f"  never slides: {_percent(result.never_slides)} of the lifetimes")
+    lines.append("probability that the sliding exceeds x:")
+    lines.append(f"  {'x [m]':>8}  {'over the life':>13}  {'in one storm':>12}")
+    for x in result.thresholds:
+        lines.append(f"  {_g(x):>8}  {_percent(result.exceedance(x)):>13}  "
+                     f"{_percent(result.storm_exceedance(x)):>12}")
+    lines.append("  (in one storm: the largest single-storm sliding of the life, Kim & Suh 2013)")
+    return "\n".join(lines)
+
+
+def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None) -> str:
+    """The design chart for people: ESD with its standard error at each width, and the widths."""
+    lines = []
+    if source:
+        lines.append(f"design chart: {source}")
+    head = f"expected sliding distance against width ({chart.trials} lifetimes"
+    if model is not None:
+        head += f" of {model.years} years"
+    lines.append(head + f" at every width, the same random numbers; seed {chart.seed})")
+    if model is not None:
+        lines.append(f"  climate: {model.climate.describe()}")
+    lines.append(f"  {'width [m]':>10}  ESD with its standard error")
+    for row in chart.rows():
+        lines.append(f"  {_g(row['width'], 5):>10}  {_value_pm(row['expected_sliding'], row['std_error'])}")
+    if chart.width_for_target is None:
+        lines.append(f"width for ESD <= {_g(chart.target)} m: none of the chart's widths meets it "
+                     "(give wider widths)")
+    else:
+        lines.append(f"width for ESD <= {_g(chart.target)} m: {_g(chart.width_for_target, 4)} m")
+    sf = _g(chart.sf_width, 4) + " m" if math.isfinite(chart.sf_width) else "none up to 10 km"
+    lines.append(f"width for SF_sliding = {_g(chart.required_sf)} under the 50-year wave "
+                 f"(Goda's deterministic design): {sf}")
+    return "\n".join(lines)
+
+
+# -- every trial ---------------------------------------------------------------------------------
+
+
+def write_samples(result: LifetimeResult, path: str | os.PathLike[str]) -> str:
+    """Write every trial of ``result``, atomically; the format (csv or npz) from the suffix.
+
+    ``.csv``: ``trial,sliding_m,max_storm_m,storms``, one row per lifetime
+    (``trial`` from 0, the position in the arrays), numbers to 12 significant
+    digits.  ``.npz``: the arrays ``sliding`` and ``max_storm`` (m), ``storms``,
+    and ``seed`` (as text: a fresh seed has more digits than an int64),
+    ``years``, ``width`` (m) and ``thresholds`` (m).
+
+    Returns
+    -------
+    str
+        The format.
+
+    Raises
+    ------
+    ValueError
+        For another suffix.
+    OSError
+        If the file cannot be written (nothing is left behind).
+    """
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in SAMPLE_FORMATS:
+        raise ValueError(f"the samples are written as .csv or .npz (from the file suffix), got {str(path)!r}")
+    if fmt == "npz":
+        arrays: dict[str, np.ndarray[Any, Any]] = {
+            "sliding": np.asarray(result.sliding, dtype=np.float64),
+            "max_storm": np.asarray(result.max_storm, dtype=np.float64),
+            "storms": np.asarray(result.storms, dtype=np.int64),
+            "seed": np.array(str(result.seed)),
+            "years": np.int64(result.years),
+            "width": np.float64(result.width),
+            "thresholds": np.asarray(result.thresholds, dtype=np.float64),
+        }
+        with atomic_open(path, "wb") as fh:
+            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        return fmt
+    sliding = result.sliding.tolist()
+    storm = result.max_storm.tolist()
+    storms = result.storms.tolist()
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write("trial,sliding_m,max_storm_m,storms\n")
+        for i in range(len(sliding)):
+            fh.write(f"{i},{sliding[i] + 0.0:.12g},{storm[i] + 0.0:.12g},{storms[i]}\n")
+    return fmt

@@ -1,0 +1,326 @@
+"""``regimemap lifetime``: text and JSON, the files, the same numbers everywhere (processes, chunks,
+a Dask cluster), and clean refusals (exit 2 naming the option, exit 1 for a cluster out of reach)."""
+
+from __future__ import annotations
+
+import io
+import json
+import re
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from regimemap.io.design import example_design_text
+from regimemap.io.lifetime import check_chunk, check_scheduler, check_target, parse_widths
+from regimemap.lifetime import DEFAULT_ERRORS
+
+EXAMPLE = example_design_text()
+TRIALS = "300"
+
+#: Keys of the JSON object of one width.
+JSON_KEYS = {"expected_sliding", "std_error", "median", "quantile_90", "quantile_99", "exceedance",
+             "storm_exceedance", "never_slides", "trials", "seed", "years", "width", "climate"}
+
+
+@pytest.fixture()
+def goda(tmp_path: Path) -> Path:
+    path = tmp_path / "goda.toml"
+    path.write_text(EXAMPLE, encoding="utf-8")
+    return path
+
+
+def ok(r):
+    assert "Traceback" not in r.output, r.output
+    assert r.code == 0, r.output
+    assert "error" not in r.stderr, r.stderr
+    return r
+
+
+def failed(r, code: int, *parts: str) -> str:
+    """Exit ``code`` with one line on stderr containing every part; no traceback, nothing on stdout."""
+    assert "Traceback" not in r.output, r.output
+    assert r.code == code, (r.code, r.output)
+    lines = r.stderr.splitlines()
+    assert len(lines) == 1, r.stderr
+    for part in parts:
+        assert part in lines[0], (part, lines[0])
+    assert r.stdout == "", r.stdout
+    return lines[0]
+
+
+def files_in(folder: Path) -> list[str]:
+    return sorted(p.name for p in folder.iterdir())
+
+
+# -- a run --------------------------------------------------------------------------------------------
+
+
+def test_text_report(run_cli, goda: Path) -> None:
+    r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--jobs", "1"]))
+    out = r.stdout
+    assert re.search(r"^ESD \d\S* m ± \d\S* m \(standard error, 300 lifetimes\)$", out, re.M), out
+    assert "design life 50 years, 300 lifetimes, seed 2026" in out
+    assert "H0'_10 = 5.000 m, H0'_50 = 6.300 m" in out  # the climate
+    assert re.search(r"median \S+ m; quantiles 90 %: \S+ m, 99 %: \S+ m", out)
+    assert re.search(r"never slides: [\d.]+ % of the lifetimes", out)
+    for x in ("0.03", "0.1", "0.3", "1", "3"):  # the exceedance table: over the life, in one storm
+        assert re.search(rf"^\s+{re.escape(x)}\s+[\d.]+ %\s+[\d.]+ %$", out, re.M), x
+    # notes on stderr, and only notes
+    assert r.stderr.startswith("regimemap: 300 lifetimes of 50 years in ")
+    assert all(ln.startswith("regimemap: ") for ln in r.stderr.splitlines())
+
+
+def test_quiet_keeps_stderr_empty(run_cli, goda: Path) -> None:
+    r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--quiet"]))
+    assert r.stderr == "" and r.stdout.count("ESD ") == 1
+
+
+def test_json_is_one_object_with_the_statistics(run_cli, goda: Path) -> None:
+    r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--json", "--jobs", "1"]))
+    j = json.loads(r.stdout)
+    assert JSON_KEYS <= set(j)
+    assert j["trials"] == 300 and j["seed"] == 2026 and j["years"] == 50 and j["width"] == 15.0
+    assert set(j["exceedance"]) == {"0.03", "0.1", "0.3", "1", "3"} == set(j["storm_exceedance"])
+    assert 0.0 <= j["never_slides"] <= 1.0 and j["std_error"] >= 0.0
+    assert j["quantile_90"] <= j["quantile_99"]
+    assert "Weibull" in j["climate"] and "H0'_50 = 6.300 m" in j["climate"]
+    force = DEFAULT_ERRORS.force
+    assert j["model"]["errors"]["force"] == {"ratio": force.ratio, "cov": force.cov}
+    assert "files" not in j
+    # the numbers of the JSON are those of the text
+    t = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--jobs", "1"]))
+    assert f"{100 * j['never_slides']:.1f} %" in t.stdout
+
+
+def test_options_override_the_file(run_cli, goda: Path) -> None:
+    j = json.loads(ok(run_cli(["lifetime", str(goda), "--trials", "200", "--seed", "5", "--years", "20",
+                               "--json"])).stdout)
+    assert (j["trials"], j["seed"], j["years"], j["model"]["years"]) == (200, 5, 20, 20)
+
+
+def test_no_seed_gives_a_fresh_one_and_says_it(run_cli, tmp_path: Path) -> None:
+    path = tmp_path / "fresh.toml"
+    path.write_text(EXAMPLE.replace("\nseed = 2026", "\n# seed = 2026"), encoding="utf-8")
+    r = ok(run_cli(["lifetime", str(path), "--trials", "100", "--json"]))
+    seed = json.loads(r.stdout)["seed"]
+    assert f"this run's seed is {seed} (--seed {seed} repeats it)" in r.stderr
+    again = ok(run_cli(["lifetime", str(path), "--trials", "100", "--json", "--seed", str(seed)]))
+    assert json.loads(again.stdout)["expected_sliding"] == json.loads(r.stdout)["expected_sliding"]
+
+
+def test_files_are_written_and_reported(run_cli, goda: Path, tmp_path: Path) -> None:
+    out = tmp_path / "out"
+    out.mkdir()
+    paths = [str(out / name) for name in ("life.csv", "life.npz", "life.png")]
+    r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, *sum((["-o", p] for p in paths), [])]))
+    assert r.stdout.splitlines()[-3:] == paths  # after the report, one line each
+    assert files_in(out) == ["life.csv", "life.npz", "life.png"]
+    csv = (out / "life.csv").read_text(encoding="utf-8").splitlines()
+    assert csv[0] == "trial,sliding_m,max_storm_m,storms" and len(csv) == 301
+    assert csv[1].startswith("0,") and csv[-1].startswith("299,")
+    with np.load(out / "life.npz") as f:
+        assert f["sliding"].shape == f["max_storm"].shape == f["storms"].shape == (300,)
+        assert int(str(f["seed"])) == 2026 and int(f["years"]) == 50 and float(f["width"]) == 15.0
+        sliding = f["sliding"]
+    column = np.array([float(row.split(",")[1]) for row in csv[1:]])
+    assert np.allclose(column, sliding, rtol=1e-11, atol=0.0)
+    assert (out / "life.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_json_lists_the_written_files(run_cli, goda: Path, tmp_path: Path) -> None:
+    csv, svg = str(tmp_path / "a.csv"), str(tmp_path / "a.svg")
+    r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--json", "-o", csv, "-o", svg]))
+    j = json.loads(r.stdout)  # exactly one object: no paths after it
+    assert j["files"] == [csv, svg]
+    assert Path(svg).read_text(encoding="utf-8").lstrip().startswith("<?xml")
+
+
+# -- the same numbers everywhere ------------------------------------------------------------------------
+
+
+def _csv(run_cli, goda: Path, path: Path, *args: str) -> bytes:
+    ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--seed", "11", "-q", "-o", str(path), *args]))
+    return path.read_bytes()
+
+
+def test_the_same_seed_gives_the_same_bytes_with_any_jobs_and_chunk(run_cli, goda: Path,
+                                                                    tmp_path: Path) -> None:
+    one = _csv(run_cli, goda, tmp_path / "one.csv", "--jobs", "1")
+    assert _csv(run_cli, goda, tmp_path / "two.csv", "--jobs", "2", "--chunk", "100") == one
+    assert _csv(run_cli, goda, tmp_path / "default.csv") == one
+    assert _csv(run_cli, goda, tmp_path / "chunk.csv", "--jobs", "1", "--chunk", "200") == one
+    other = _csv(run_cli, goda, tmp_path / "other.csv", "--seed", "12")
+    assert other != one
+
+
+def test_a_dask_cluster_gives_the_same_bytes(run_cli, goda: Path, tmp_path: Path) -> None:
+    pytest.importorskip("distributed")
+    from distributed import LocalCluster
+
+    one = _csv(run_cli, goda, tmp_path / "one.csv", "--jobs", "1")
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
+                      dashboard_address=None) as cluster:
+        address = cluster.scheduler_address
+        assert _csv(run_cli, goda, tmp_path / "dask.csv", "--scheduler", address, "--chunk", "100") == one
+        r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--scheduler", address, "--json"]))
+        assert json.loads(r.stdout)["trials"] == 300 and f"on the Dask cluster at {address}" in r.stderr
+
+
+def test_an_unreachable_scheduler_is_one_line(run_cli, goda: Path, tmp_path: Path) -> None:
+    pytest.importorskip("distributed")
+    import socket
+
+    with socket.socket() as s:  # a port nobody listens on
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    out = tmp_path / "never.csv"
+    r = run_cli(["lifetime", str(goda), "--trials", TRIALS, "--scheduler", f"tcp://127.0.0.1:{port}",
+                 "-o", str(out)])
+    failed(r, 1, "regimemap: error: cannot reach the Dask scheduler", f"127.0.0.1:{port}")
+    assert not out.exists() and files_in(tmp_path) == ["goda.toml"]
+
+
+def test_without_distributed_is_one_line(run_cli, goda: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setitem(sys.modules, "distributed", None)  # import distributed -> ImportError
+    r = run_cli(["lifetime", str(goda), "--trials", TRIALS, "--scheduler", "tcp://127.0.0.1:8786"])
+    failed(r, 1, "regimemap: error: --scheduler needs Dask's distributed package",
+           "pip install 'regimemap[cluster]'")
+
+
+# -- the design chart ---------------------------------------------------------------------------------
+
+
+def test_design_chart(run_cli, goda: Path, tmp_path: Path) -> None:
+    png = str(tmp_path / "chart.png")
+    r = ok(run_cli(["lifetime", str(goda), "--trials", "200", "--width", "12:24:4", "-o", png]))
+    rows = re.findall(r"^\s+(\d+)\s+(\S+) m ± (\S+) m$", r.stdout, re.M)
+    assert [w for w, _, _ in rows] == ["12", "16", "20", "24"]
+    esd = [float(e) for _, e, _ in rows]
+    assert esd == sorted(esd, reverse=True)  # wider slides less (the same random numbers)
+    assert re.search(r"^width for ESD <= 0.1 m: \S+ m$", r.stdout, re.M)
+    assert "width for SF_sliding = 1.2 under the 50-year wave" in r.stdout
+    assert r.stdout.splitlines()[-1] == png and Path(png).read_bytes()[:4] == b"\x89PNG"
+
+    j = json.loads(ok(run_cli(["lifetime", str(goda), "--trials", "200", "--width", "12:24:4",
+                               "--target", "0.3", "--json"])).stdout)
+    assert [row["width"] for row in j["chart"]] == [12.0, 16.0, 20.0, 24.0]
+    assert set(j["chart"][0]) == {"width", "expected_sliding", "std_error"}
+    assert j["target"] == 0.3 and 16.0 <= j["width_for_target"] <= 24.0
+    assert 14.0 < j["sf_width"] < 16.0 and j["trials"] == 200 and j["seed"] == 2026
+
+
+def test_a_chart_that_never_meets_the_target(run_cli, goda: Path) -> None:
+    r = ok(run_cli(["lifetime", str(goda), "--trials", "100", "--width", "8:10:2", "--target", "1e-6"]))
+    assert "none of the chart's widths meets it" in r.stdout
+    j = json.loads(ok(run_cli(["lifetime", str(goda), "--trials", "100", "--width", "8:10:2",
+                               "--target", "1e-6", "--json"])).stdout)
+    assert j["width_for_target"] is None
+
+
+# -- refusals -----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("args", "parts"), [
+    (["--width", "25:10:5"], ["'--width'", "0 < A < B", "need 0 < A < B"]),
+    (["--width", "10:25:1"], ["'--width'", "N a whole number from 2 to 200", "(N = 1)"]),
+    (["--width", "0:25:5"], ["'--width'", "need 0 < A < B"]),
+    (["--width", "a:b:c"], ["'--width'", "A or B is not a number"]),
+    (["--width", "10:25"], ["'--width'", "A:B:N"]),
+    (["--width", "10:25:2.5"], ["'--width'", "N is not a whole number"]),
+    (["--width", "10:25:201"], ["'--width'", "(N = 201)"]),
+    (["--trials", "0"], ["'--trials'", "1 <= trials <= 10000000", "got '0'"]),
+    (["--trials", "many"], ["'--trials'", "not a whole number"]),
+    (["--trials", "nan"], ["'--trials'"]),
+    (["--seed", "-1"], ["'--seed'", "a whole number >= 0", "got '-1'"]),
+    (["--years", "0"], ["'--years'", "1 <= years <= 1000"]),
+    (["--chunk", "0"], ["'--chunk'", "1 <= chunk <= 10000000"]),
+    (["--jobs", "0"], ["'--jobs'", "1<=x<=256"]),
+    (["--target", "0.1"], ["--target is the tolerable ESD of a design chart", "--width"]),
+    (["--width", "10:20:3", "--target", "-1"], ["'--target'", "> 0 in metres"]),
+    (["--width", "10:20:3", "--target", "inf"], ["'--target'", "> 0 in metres"]),
+    (["--jobs", "2", "--scheduler", "tcp://127.0.0.1:8786"], ["--jobs and --scheduler exclude each other"]),
+    (["--scheduler", "somewhere"], ["'--scheduler'", "[tcp://]host:port", "got 'somewhere'"]),
+    (["--scheduler", "tcp://host:99999"], ["'--scheduler'", "got 'tcp://host:99999'"]),
+    (["-o", "{tmp}/life.txt"], ["'--output'", ".txt", ".png, .svg or .pdf", ".csv or .npz"]),
+    (["-o", "{tmp}/life"], ["'--output'", "no suffix"]),
+    (["--width", "10:20:3", "-o", "{tmp}/chart.csv"], ["'--output'", "not with --width"]),
+    (["-o", "{tmp}/missing/life.png"], ["'--output'", "does not exist"]),
+    (["-o", "{tmp}/a.csv", "-o", "{tmp}/a.csv"], ["the same file is given twice"]),
+])
+def test_bad_options_exit_2_naming_the_option(run_cli, goda: Path, tmp_path: Path, args: list[str],
+                                             parts: list[str]) -> None:
+    argv = ["lifetime", str(goda), "--trials", "100", *[a.replace("{tmp}", str(tmp_path)) for a in args]]
+    line = failed(run_cli(argv), 2, *parts)
+    assert line.startswith("regimemap lifetime: error: ") and "(see 'regimemap lifetime --help')" in line
+    assert files_in(tmp_path) == ["goda.toml"]
+
+
+def test_a_file_without_lifetime_is_a_usage_error(run_cli, tmp_path: Path) -> None:
+    path = tmp_path / "plain.toml"
+    path.write_text(EXAMPLE[:EXAMPLE.index("# Optional: the sliding")], encoding="utf-8")
+    failed(run_cli(["lifetime", str(path)]), 2, "'DESIGN.toml'", "no [lifetime] table",
+           "`regimemap caisson --example`")
+
+
+def test_a_bad_lifetime_table_names_the_line(run_cli, tmp_path: Path) -> None:
+    path = tmp_path / "bad.toml"
+    text = EXAMPLE.replace("\nshape = 2.0 ", "\nshape = -2 ")
+    path.write_text(text, encoding="utf-8")
+    line = 1 + text.splitlines().index(next(ln for ln in text.splitlines() if ln.startswith("shape = -2")))
+    failed(run_cli(["lifetime", str(path), "-o", str(tmp_path / "x.png")]), 2,
+           f"{path}, line {line}: [lifetime] shape = -2: out of range; accepted: a Weibull shape k > 0")
+    assert files_in(tmp_path) == ["bad.toml"]
+
+
+def test_missing_or_unreadable_design(run_cli, tmp_path: Path) -> None:
+    failed(run_cli(["lifetime"]), 2, "Missing argument 'DESIGN.toml'")
+    failed(run_cli(["lifetime", str(tmp_path / "absent.toml")]), 2, "cannot read the design file")
+    failed(run_cli(["lifetime", str(tmp_path)]), 2, "'DESIGN.toml'")
+
+
+def test_help(run_cli) -> None:
+    r = run_cli(["lifetime", "--help"])
+    assert r.code == 0 and "Examples:" in r.stdout and "regimemap lifetime goda.toml --width" in r.stdout
+    assert "regimemap lifetime goda.toml --width 10:25:16" in run_cli(["--help"]).stdout
+
+
+# -- the helpers --------------------------------------------------------------------------------------
+
+
+def test_option_checks() -> None:
+    assert parse_widths("10:25:4") == [10.0, 15.0, 20.0, 25.0]
+    assert check_target("0.1") == 0.1 and check_chunk("250") == 250
+    assert check_scheduler(" tcp://127.0.0.1:8786 ") == "tcp://127.0.0.1:8786"
+    assert check_scheduler("[::1]:8786") == "[::1]:8786" and check_scheduler("inproc://x") == "inproc://x"
+    for bad in ("", "10:25", "25:10:3", "10:25:x", "nan:25:3", "10:inf:3"):
+        with pytest.raises(ValueError, match="widths must be A:B:N"):
+            parse_widths(bad)
+
+
+class _Terminal(io.StringIO):
+    def isatty(self) -> bool:
+        return True
+
+
+def test_progress_bar_only_on_a_terminal_and_not_when_quiet(monkeypatch: pytest.MonkeyPatch) -> None:
+    import regimemap.cli._progress as progress
+
+    terminal = _Terminal()
+    monkeypatch.setattr(sys, "stderr", terminal)
+    monkeypatch.setattr(progress, "DELAY", 0.0)
+    with progress.progress_bar(300, "lifetimes", quiet=True) as step:
+        step(300)
+    assert terminal.getvalue() == ""
+    with progress.progress_bar(300, "lifetimes", unit="lifetime") as step:
+        step(100)
+        step(200)
+    drawn = terminal.getvalue()
+    assert drawn.startswith("\rlifetimes:") and "/300 [" in drawn and "lifetime/s" in drawn
+    assert drawn.endswith("\r")  # the bar is removed at the end: stderr keeps only the notes
+    plain = io.StringIO()  # not a terminal: nothing, whatever the delay
+    monkeypatch.setattr(sys, "stderr", plain)
+    with progress.progress_bar(None, "lifetimes") as step:
+        step(5)
+    assert plain.getvalue() == ""
