@@ -54,11 +54,13 @@ def _register(group: click.Group) -> None:
     """
     from .atlas import animate_cmd, atlas_cmd
     from .caisson import caisson_cmd
-    from .dynamics import dynamics_figures_cmd, outcome_cmd, simulate_cmd
+    from .dynamics_figures import dynamics_figures_cmd
     from .export import export_cmd
     from .lifetime import lifetime_cmd
+    from .outcome import outcome_cmd
     from .plot import figure_command, figures_command, plot_command
     from .query import classify_cmd
+    from .simulate import simulate_cmd
 
     for command in (plot_command, figure_command, figures_command, classify_cmd, export_cmd,
                     atlas_cmd, animate_cmd):

@@ -8,6 +8,7 @@ from pathlib import Path
 import click
 
 from ._common import RunError, import_matplotlib, output_path, report_written
+from ._writing import writing
 
 __all__ = ["caisson_cmd"]
 
@@ -98,10 +99,8 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
             except ValueError as exc:
                 raise RunError(f"{design}: {exc}") from None
         fig = sheet_figure(report, title=Path(design).name, lifetime=life)
-        try:
+        with writing(output):
             save_figure(fig, output)
-        except OSError as exc:
-            raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     if as_json:
         obj = caisson_json(report, source=design)
         if output is not None:  # the written file's path, inside the one JSON object

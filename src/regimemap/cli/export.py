@@ -7,7 +7,6 @@ from typing import Any
 import click
 
 from ._common import (
-    RunError,
     gamma_option,
     kprime_option,
     load_options,
@@ -16,6 +15,7 @@ from ._common import (
     report_written,
     resolution_type,
 )
+from ._writing import writing
 
 __all__ = ["export_cmd"]
 
@@ -76,11 +76,9 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
         raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
     output_path(output, "--output")
     p = Parameters(gamma, kprime, **loads)
-    try:
+    with writing(output):
         export_map(output, p, k_max=k_max, mu_max=mu_max, resolution=resolution, fmt=fmt,
                    view=view)
-    except OSError as exc:
-        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     from ..maps.describe import loads_text
 
     what = "vector geometry" if fmt == "json" else f"{resolution} x {resolution} grid"

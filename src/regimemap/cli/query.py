@@ -18,6 +18,7 @@ from ._common import (
     output_path,
     report_written,
 )
+from ._writing import writing
 
 __all__ = ["classify_cmd"]
 
@@ -161,9 +162,6 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
         return
     from ..io.atomic import atomic_open
 
-    try:
-        with atomic_open(output, "w", encoding="utf-8", newline="") as fh:
-            fh.write(text)
-    except OSError as exc:
-        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
+    with writing(output), atomic_open(output, "w", encoding="utf-8", newline="") as fh:
+        fh.write(text)
     report_written(output, f"{len(results)} point(s) classified")

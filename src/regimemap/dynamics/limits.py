@@ -29,6 +29,8 @@ __all__ = [
     "check_loads",
     "check_gyration",
     "estimated_steps",
+    "check_run_steps",
+    "check_map_steps",
 ]
 
 
@@ -137,3 +139,44 @@ def estimated_steps(block: Block, duration: float, dt: float | None = None) -> i
     h_free = FREE_STEP / p if dt is None else dt
     bound = min(duration / PULSE_STEPS, h_free) if dt is None else dt
     return int(math.ceil(duration / bound) + math.ceil(FREE_TIME / p / h_free))
+
+
+def check_run_steps(block: Block, duration: float) -> int:
+    """The time steps of one run of ``block`` under a pulse of ``duration`` (s) (:func:`estimated_steps`).
+
+    Raises
+    ------
+    ValueError
+        When they exceed :data:`MAX_STEPS`; the message says where they come from.
+    """
+    from .stepper import FREE_STEP, FREE_TIME
+
+    steps = estimated_steps(block, duration)
+    if steps > MAX_STEPS:
+        raise ValueError(
+            f"the run needs up to {steps} time steps (the pulse of {duration:g} s at a step of at most "
+            f"{FREE_STEP:g}/p = {FREE_STEP / float(block.p):.3g} s, then {FREE_TIME:g}/p s of free motion), "
+            f"more than the limit of {MAX_STEPS}; give a shorter pulse")
+    return steps
+
+
+def check_map_steps(blocks: Block, longest: float) -> int:
+    """The time steps of the longest run of an outcome map (:func:`estimated_steps`).
+
+    Parameters
+    ----------
+    blocks : Block
+        Every block of the map (the smallest p gives the longest run).
+    longest : float
+        The longest pulse (s).
+
+    Raises
+    ------
+    ValueError
+        When they exceed :data:`MAX_STEPS`.
+    """
+    steps = estimated_steps(blocks, longest)
+    if steps > MAX_STEPS:
+        raise ValueError(f"the longest run needs up to {steps} time steps, more than the limit of "
+                         f"{MAX_STEPS}; give shorter pulses")
+    return steps

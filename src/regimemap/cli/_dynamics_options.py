@@ -1,0 +1,154 @@
+"""Options shared by ``regimemap simulate`` and ``regimemap outcome`` (and the figure formats of
+``regimemap dynamics-figures``): the block and pulse options, their types, the output checks,
+and :class:`~regimemap.dynamics.options.OptionError` as click's usage errors."""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
+from typing import Any
+
+import click
+
+from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
+from ..dynamics.options import OptionError
+from ..dynamics.pulses import SHAPES
+from ._common import ParamType, gamma_option, kprime_option, output_path
+from .atlas import Values
+
+__all__ = [
+    "FIGURE_FORMATS",
+    "DATA_FORMATS",
+    "InputNumber",
+    "values_type",
+    "input_option",
+    "block_options",
+    "check_output_file",
+    "option_errors",
+]
+
+FIGURE_FORMATS = ("png", "svg", "pdf")
+DATA_FORMATS = ("npz", "csv")
+
+
+class InputNumber(ParamType):
+    """One number in the range of an input of :data:`regimemap.dynamics.limits.INPUT_LIMITS`."""
+
+    name = "number"
+
+    def __init__(self, what: str):
+        self.what = what
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        if isinstance(value, float):
+            return value
+        lim = INPUT_LIMITS[self.what]
+        try:
+            v = float(str(value).strip())
+        except ValueError:
+            self.fail(f"{self.what} must be {lim.text}, got {value!r} (not a number)", param, ctx)
+        if not lim.contains(v):
+            self.fail(f"{self.what} must be {lim.text}, got {value!r}", param, ctx)
+        return v + 0.0
+
+
+def values_type(what: str) -> ParamType:
+    """A list ``a,b,c`` or a range ``start:stop:count`` of input ``what``, each value checked."""
+
+    def check(v: float, what: str = what) -> float:
+        return check_input(what, v)
+
+    return Values(what, check, MAX_AXIS_VALUES)
+
+
+_HELP = {
+    "half_width": "Half width B of the block (m), > 0 up to 1000.",
+    "mu": "Friction coefficient (0 to 100), static = kinetic.",
+    "k_peak": "Peak of the pulse, F/(m g) (0 to 100); positive pushes towards O.",
+    "duration": "Whole duration of the pulse (s), 1e-4 to 100.",
+    "omega_p": "Instead of --duration: the pulse's circular frequency (rad/s): pi/duration, "
+               "2 pi/duration for one-sine and one-cosine.",
+    "restitution": "Ratio theta'+/theta'- of a rocking impact, 0 to 1 (default: Housner's plastic "
+                   "impact, 1 - 1.5 sin^2(alpha) for a uniform block).",
+    "buoyancy": "Buoyancy, upward through C, in units of m g (0 to <1). Default 0.",
+    "uplift": "Uplift on the base, in units of m g (0 to <1; buoyancy + uplift < 1). Default 0.",
+    "uplift_ratio": "Uplift proportional to the push: U = uplift m g + ratio F (0 to 10). Default 0.",
+    "uplift_arm": "Where the uplift acts, from C towards O' over B (-1 to 1). Default 1/3 "
+                  "(a triangular uplift pressure).",
+    "gyration": "Radius of gyration about C over B (default: the uniform block's, "
+                "sqrt((1 + gamma^2)/3)); at most sqrt(1 + gamma^2).",
+}
+
+_SWEEPS = " A list a,b,c or a range start:stop:count sweeps it."
+
+
+def input_option(name: str, swept: bool, metavar: str, default: Any = None, required: bool = False,
+                 extra: str = "") -> Callable[[Any], Any]:
+    """``--name`` of input ``name``: one number, or (``swept``) a list or range of them."""
+    flag = "--" + name.replace("_", "-")
+    typ = values_type(name) if swept else InputNumber(name)
+    text = _HELP[name] + (extra if swept else "")
+    return click.option(flag, name, type=typ, default=default, required=required,
+                        metavar=("LIST" if swept else metavar), help=text)
+
+
+def block_options(swept: bool) -> Callable[[Any], Any]:
+    """The block's and the pulse's options: one value each (simulate) or lists (outcome)."""
+    more = _SWEEPS
+    opts = [
+        # simulate: --gamma, --half-width and --mu are required unless --design gives them
+        (gamma_option(required=False) if not swept else
+         click.option("--gamma", "gamma", required=True, type=values_type("gamma"), metavar="LIST",
+                      help="Aspect ratio gamma = H/B (0.001 to 1000), H the height of C above the "
+                           "base." + more)),
+        input_option("half_width", swept, "B", required=swept, extra=more),
+        (kprime_option(required=False) if not swept else
+         click.option("--kprime", "kprime", type=values_type("kprime"), metavar="LIST",
+                      help="Height of the push above C over H, in [-1, 1]." + more)),
+        input_option("mu", swept, "MU", required=swept, extra=more),
+        click.option("--pulse", "pulse", type=click.Choice(SHAPES), default=None,
+                     help="Shape of the force pulse (see docs/dynamics.md)."),
+        input_option("k_peak", swept, "K", extra=more),
+        input_option("duration", swept, "T", extra=more),
+        input_option("restitution", False, "E"),
+        input_option("buoyancy", swept, "BETA", default=0.0 if not swept else None, extra=more),
+        input_option("uplift", swept, "U", default=0.0 if not swept else None, extra=more),
+        input_option("uplift_ratio", swept, "NU", default=0.0 if not swept else None, extra=more),
+        input_option("uplift_arm", swept, "E_U", default=1.0 / 3.0 if not swept else None, extra=more),
+        input_option("gyration", swept, "R", extra=more),
+    ]
+
+    def deco(f: Any) -> Any:
+        for o in reversed(opts):
+            f = o(f)
+        return f
+
+    return deco
+
+
+def check_output_file(path: str, formats: Sequence[str], param: str, what: str) -> str:
+    """The format of output ``path`` (its suffix, one of ``formats``), its folder writable.
+
+    A usage error naming ``param`` otherwise; ``what`` says what the file holds.
+    """
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in formats:
+        got = f".{fmt}" if fmt else "no suffix"
+        raise click.BadParameter(f"{what} is written as {', '.join('.' + f for f in formats)} (from the "
+                                 f"file suffix); got {got} in {path!r}", param_hint=f"'{param}'")
+    output_path(path, param)
+    return fmt
+
+
+@contextlib.contextmanager
+def option_errors() -> Iterator[None]:
+    """An :class:`~regimemap.dynamics.options.OptionError` inside becomes a usage error (exit 2):
+    ``Invalid value for '--opt'`` when it names options, the message alone when not."""
+    try:
+        yield
+    except OptionError as exc:
+        if exc.options:
+            hint = " / ".join(f"'{o}'" for o in exc.options)
+            raise click.BadParameter(str(exc), param_hint=hint) from None
+        raise click.UsageError(str(exc)) from None

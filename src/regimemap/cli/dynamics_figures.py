@@ -1,0 +1,77 @@
+"""``regimemap dynamics-figures``: the outcome-map figures D.1-D.3 of regimemap.dynamics into a folder."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+import click
+
+from ._common import import_matplotlib, output_dir, report_written
+from ._dynamics_options import FIGURE_FORMATS
+from ._writing import writing
+
+__all__ = ["dynamics_figures_cmd"]
+
+
+@click.command("dynamics-figures", short_help="Draw the outcome-map figures D.1-D.3 into a folder.")
+@click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
+              help="Existing, writable folder for the files.")
+@click.option("--format", "formats", default="png", show_default=True, metavar="FORMATS",
+              help="Comma-separated formats: png, svg, pdf.")
+@click.option("--cache", "cache", default=None, metavar="DIR",
+              help="Keep the computed maps in DIR (created if missing) and reuse them while the "
+                   "figures' definitions and regimemap.dynamics are unchanged.")
+@click.option("--list", "list_only", is_flag=True, help="List the figures; draw nothing.")
+def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_only: bool) -> None:
+    """Draw the figures of regimemap.dynamics (D.1, D.2, D.3) into a folder.
+
+    D.1 and D.2 are the overturning spectra of a half-sine and of a one-sine
+    pulse in the dimensionless axes of Makris & Roussos (2000) and Zhang &
+    Makris (2001); D.3 is a caisson under a breaking-wave pulse.  Each is an
+    outcome map computed on a grid (3 to 25 s each on one core); the files
+    are dyn-<ID>.<format>, byte-identical from run to run.  With --cache DIR
+    the maps are kept in DIR and only drawn again next time (the same bytes),
+    until the figures' definitions, regimemap.dynamics or the versions of
+    regimemap or numpy change (make figures uses .cache/dynamics-figures).
+
+    \b
+    Examples:
+      regimemap dynamics-figures --out figures --format png,svg
+      regimemap dynamics-figures --list
+    """
+    from ..drawing.dynamics_presets import DYNAMICS_FIGURES
+
+    if list_only:
+        for f in DYNAMICS_FIGURES.values():
+            click.echo(f"{f.id:4s} {f.caption}")
+        return
+    fmts = [s.strip().lower().lstrip(".") for s in formats.split(",") if s.strip()]
+    bad = [f for f in fmts if f not in FIGURE_FORMATS]
+    if not fmts or bad:
+        what = f"unknown format {bad[0]!r}" if bad else "no format given"
+        raise click.BadParameter(f"{what}; use a comma-separated list of {', '.join(FIGURE_FORMATS)}",
+                                 param_hint="'--format'")
+    folder = output_dir(out_dir, "--out")
+    if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
+        raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
+    import_matplotlib()
+    from ..io.dynamics import cached_outcome
+    from ..io.figures import save_figure
+
+    count = 0
+    for f in DYNAMICS_FIGURES.values():
+        t0 = time.perf_counter()
+        with writing(cache, f"to the cache {cache}"):
+            m, x, y, hit = cached_outcome(cache, f.id, repr(f), f.compute)
+        fig = f.render(data=(m, x, y))
+        for fmt in dict.fromkeys(fmts):
+            path = folder / f.filename(fmt)
+            with writing(path):
+                save_figure(fig, path, fmt)
+            count += 1
+            report_written(path)
+        how = "from the cache" if hit else f"{m.category.size} runs"
+        click.echo(f"{f.id}: {time.perf_counter() - t0:.1f} s ({how})", err=True)
+    click.echo(f"regimemap: {count} files ({len(DYNAMICS_FIGURES)} figures x "
+               f"{', '.join(dict.fromkeys(fmts))}) in {folder}", err=True)
