@@ -40,7 +40,7 @@ def main(n: int = 200) -> None:
     t0 = time.perf_counter()
     m = outcome_map(block, "half-sine", ("k_peak", k_peak), ("omega_p", omega_p))
     seconds = time.perf_counter() - t0
-    counts = np.bincount(m.category.ravel(), minlength=5)
+    counts = np.bincount(m.category.ravel(), minlength=len(m.labels))
     print(f"outcome map {n} x {n} = {n * n} runs: {seconds:.1f} s ({n * n / seconds:.0f} runs/s); "
           + ", ".join(f"{lab} {c}" for lab, c in zip(m.labels, counts, strict=True)))
 

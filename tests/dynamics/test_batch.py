@@ -31,6 +31,7 @@ def _batch(rows: np.ndarray) -> tuple[Block, Pulse]:
     return Block(B=B, gamma=gamma, mu=mu, kprime=kprime, beta=beta, nu=nu), Pulse.half_sine(k, T)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("restitution", [None, 0.7])
 def test_a_run_alone_and_in_a_batch_agree_bit_for_bit(restitution: float | None) -> None:
     together = simulate(*_batch(RUNS), restitution=restitution, history=4)

@@ -72,6 +72,7 @@ def test_simulate_json_keys_rounding_and_agreement_with_the_library():
     assert d["files"] == []
 
 
+@pytest.mark.slow
 def test_simulate_history_csv_and_npz(tmp_path):
     csv_path, npz_path = tmp_path / "h.csv", tmp_path / "h.npz"
     r = run("simulate", *MR, *HALF_SINE, "-o", str(csv_path))
@@ -90,6 +91,8 @@ def test_simulate_history_csv_and_npz(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["h.csv", "h.npz"]
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_simulate_plot_and_animation(tmp_path):
     png, gif = tmp_path / "run.png", tmp_path / "run.gif"
     r = run("simulate", *MR, "--mu", "0.35", "--pulse", "half-sine", "--k-peak", "0.6", "--duration", "0.5",
@@ -104,6 +107,7 @@ def test_simulate_plot_and_animation(tmp_path):
         assert im.n_frames >= 60
 
 
+@pytest.mark.slow
 def test_simulate_pulse_file(tmp_path):
     f = tmp_path / "record.csv"
     t = np.linspace(0, 0.5, 51)
@@ -250,6 +254,7 @@ def test_history_write_failing_half_way_leaves_the_old_file(tmp_path, monkeypatc
 OUT = MR[:6] + ["--mu", "0.5", "--pulse", "half-sine"]
 
 
+@pytest.mark.slow
 def test_outcome_npz_and_csv_shapes_and_names(tmp_path):
     npz, csv_path = tmp_path / "m.npz", tmp_path / "m.csv"
     r = run("outcome", *OUT, "--k-peak", "0.3:1.5:7", "--duration", "0.2,0.5,1.2", "-o", str(npz),
@@ -262,7 +267,7 @@ def test_outcome_npz_and_csv_shapes_and_names(tmp_path):
         assert z["duration"].tolist() == [0.2, 0.5, 1.2]
         for key in ("category", "overturned", "max_rotation", "residual_slide"):
             assert z[key].shape == (3, 7), key
-        assert list(z["labels"]) == ["rest", "slide only", "rock only", "slide-rock", "overturned"]
+        assert list(z["labels"]) == ["rest", "slide only", "rock only", "slide-rock", "overturned", "still moving"]
         assert float(z["mu"]) == 0.5 and str(z["pulse"]) == "half-sine"
         cat = z["category"]
         assert np.array_equal(z["overturned"], cat == 4)
@@ -276,6 +281,7 @@ def test_outcome_npz_and_csv_shapes_and_names(tmp_path):
     assert {r_["category"] for r_ in rows} <= {"rest", "rock only", "overturned", "slide only", "slide-rock"}
 
 
+@pytest.mark.slow
 def test_outcome_axes_follow_the_command_line_order(tmp_path):
     npz = tmp_path / "m.npz"
     r = run("outcome", *OUT, "--duration", "0.2,0.5", "--k-peak", "0.3:1.5:3", "-o", str(npz))
@@ -284,6 +290,7 @@ def test_outcome_axes_follow_the_command_line_order(tmp_path):
         assert z["category"].shape == (3, 2)  # rows k_peak (second), columns duration (first)
 
 
+@pytest.mark.render
 def test_outcome_dimensionless_and_figure(tmp_path):
     svg, npz = tmp_path / "s.svg", tmp_path / "s.npz"
     r = run("outcome", *MR, "--pulse", "half-sine", "--omega-p", "3:30:5", "--k-peak", "0.3:2.5:4",
@@ -344,6 +351,8 @@ def tiny_figures(monkeypatch):
     return small
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_dynamics_figures_cache_gives_the_same_bytes(tmp_path, tiny_figures):
     import dataclasses
 

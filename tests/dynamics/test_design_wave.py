@@ -150,6 +150,7 @@ def test_docstring_examples():
 
 # -- physics: a pure slide is the lifetime model's closed form without the added mass -------------------
 
+@pytest.mark.slow
 def test_pure_slide_matches_the_closed_form_without_added_mass():
     """With less friction Goda's caisson slides under its design wave and does not rock.
 
@@ -235,6 +236,7 @@ def test_simulate_design_json_k_peak_is_the_caissons_k(goda):
     assert c["mode"] == "RE" and d["category"] == "rest" and d["residual_slide"] == 0.0
 
 
+@pytest.mark.slow
 def test_simulate_design_slide_agrees_with_the_library(tmp_path):
     path = tmp_path / "slide.toml"
     path.write_text(with_friction(0.4), encoding="utf-8")

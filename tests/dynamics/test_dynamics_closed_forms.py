@@ -56,6 +56,7 @@ def _first_impact_ratio(sim_hist: object) -> float:
     return float(h.omega[j + 1] / h.omega[j])  # type: ignore[attr-defined]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("gamma", [2.0, 3.0, 5.0])
 def test_plastic_impact_gives_housner_ratio(gamma: float) -> None:
     blk = Block(B=0.3, gamma=gamma, mu=5.0)
@@ -66,6 +67,7 @@ def test_plastic_impact_gives_housner_ratio(gamma: float) -> None:
     assert ratio == pytest.approx(1 - 1.5 * np.sin(alpha) ** 2, abs=5e-4)
 
 
+@pytest.mark.slow
 def test_plastic_impact_ratio_of_a_non_uniform_block() -> None:
     blk = Block(B=0.3, gamma=3.0, mu=5.0, i2=2.0)
     sim = simulate(blk, Pulse.rectangular(0.0, 0.01), theta0=0.2, dt=4e-5, t_max=0.6, history=0)
@@ -74,6 +76,7 @@ def test_plastic_impact_ratio_of_a_non_uniform_block() -> None:
                                                              abs=5e-4)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("r", [0.5, 0.7, 0.95])
 def test_restitution_sets_the_rocking_ratio(r: float) -> None:
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
@@ -86,6 +89,7 @@ def _energy(h: object, J: float) -> np.ndarray:
     return 0.5 * (h.vx**2 + h.vy**2 + J * h.omega**2) + G * h.y  # type: ignore[attr-defined]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("restitution", [None, 0.9, 1.0])
 def test_energy_never_grows_in_free_rocking(restitution: float | None) -> None:
     blk = Block(B=0.2, gamma=3.0, mu=5.0)

@@ -86,6 +86,7 @@ def test_dimensionless_axes_round_trip() -> None:
     assert kp == pytest.approx(0.5) and om == pytest.approx(2 * np.pi)
 
 
+@pytest.mark.slow
 def test_outcome_map_shapes_and_categories() -> None:
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     kp = np.array([0.2, 0.4, 0.6, 1.5, 3.0])

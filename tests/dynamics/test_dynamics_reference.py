@@ -61,6 +61,7 @@ def test_reference_amplitudes_after_impacts_match_closed_form() -> None:
     np.testing.assert_allclose(r.impact_peaks[1:6], closed, rtol=1e-6)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("eta", [0.8, 0.9])
 def test_stepper_amplitudes_after_impacts_match_reference(eta: float) -> None:
     th0 = 0.2
@@ -75,6 +76,7 @@ def test_stepper_amplitudes_after_impacts_match_reference(eta: float) -> None:
 
 # -- Housner's rectangular pulse ------------------------------------------------------------------------
 
+@pytest.mark.slow
 @pytest.mark.parametrize("lam", [1.5, 2.0, 3.0])
 def test_reference_rectangular_pulse_matches_housner(lam: float) -> None:
     p, alpha = 2.0, 0.05
@@ -88,6 +90,7 @@ def test_reference_rectangular_pulse_matches_housner(lam: float) -> None:
     assert np.cosh(p * t1) == pytest.approx(1 + 1 / (2 * lam * (lam - 1)), rel=1e-5)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("lam", [1.5, 3.0])
 def test_stepper_rectangular_pulse_threshold_matches_reference(lam: float) -> None:
     k = lam * np.tan(A_MR)
@@ -109,6 +112,7 @@ def _mr_over(kp: float, linear: bool) -> bool:
                        linear=linear).overturned
 
 
+@pytest.mark.slow
 def test_reference_linearised_half_sine_threshold_of_makris_roussos() -> None:
     thr = ref.threshold(lambda kp: _mr_over(kp, True), 0.50, 0.60, tol=1e-6)
     # published: between 0.5535 g and 0.5545 g.  With g = 9.81 (p = 3.4108 rad/s) our linearised
@@ -116,6 +120,7 @@ def test_reference_linearised_half_sine_threshold_of_makris_roussos() -> None:
     assert 0.5535 <= thr <= 0.5545 * 1.0005
 
 
+@pytest.mark.slow
 def test_stepper_half_sine_threshold_within_one_percent_of_reference() -> None:
     thr_ref = ref.threshold(lambda kp: _mr_over(kp, False), 0.50, 0.70, tol=1e-6)
     thr = _stepper_threshold(MR, lambda kp: Pulse.half_sine(kp, 0.5), 0.5, 0.7)
@@ -124,6 +129,7 @@ def test_stepper_half_sine_threshold_within_one_percent_of_reference() -> None:
 
 # -- Zhang & Makris (2001): one-sine, non-monotone safe region -------------------------------------------
 
+@pytest.mark.slow
 def test_one_sine_non_monotone_pattern_matches_reference() -> None:
     p, alpha, eta = 2.14, 0.25, 0.9
     blk = Block.from_frequency(p, alpha, mu=10.0)

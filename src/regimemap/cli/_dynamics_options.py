@@ -24,6 +24,7 @@ __all__ = [
     "values_type",
     "input_option",
     "block_options",
+    "min_rotation_option",
     "check_output_file",
     "option_errors",
 ]
@@ -125,6 +126,17 @@ def block_options(swept: bool) -> Callable[[Any], Any]:
         return f
 
     return deco
+
+
+def min_rotation_option() -> Callable[[Any], Any]:
+    """``--min-rotation ANGLE`` (degrees, default 0): rocking counts only above it (``simulate``
+    and ``outcome`` share this one definition; the library takes radians)."""
+    return click.option(
+        "--min-rotation", "min_rotation", type=InputNumber("min_rotation"), default=0.0, show_default=True,
+        metavar="ANGLE",
+        help="Count rocking only if the largest |theta| exceeds ANGLE (degrees, 0 to 90): a run "
+             "that rocked less is 'slide only' (if it slid) or 'rest'.  Default 0: every rocking "
+             "phase counts, however small.")
 
 
 def check_output_file(path: str, formats: Sequence[str], param: str, what: str) -> str:

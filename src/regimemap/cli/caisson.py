@@ -8,6 +8,7 @@ from pathlib import Path
 import click
 
 from ._common import RunError, import_matplotlib, output_path, report_written
+from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
 __all__ = ["caisson_cmd"]
@@ -25,7 +26,8 @@ _FORMATS = ("png", "svg", "pdf")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
               help="Also write a one-page design sheet (.pdf, .svg or .png), atomically.")
-def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None) -> None:
+@click.option("--strict", is_flag=True, help=STRICT_HELP)
+def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool) -> None:
     """Goda's design procedure for a vertical-breakwater caisson, placed on the regime map.
 
     Reads DESIGN.toml (site, design wave, caisson; `regimemap caisson --example`
@@ -79,14 +81,17 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     try:
         report = caisson_report(d.analysis_inputs())
     except ValueError as exc:
+        check_plausible(d, None, strict, design)  # a unit slip may be why
         raise RunError(f"{design}: {exc}") from None
+    check_plausible(d, report.analysis, strict, design)
+    required = (d.caisson.required_sliding, d.caisson.required_overturning)
 
     from ..io.caisson import caisson_json, format_caisson
 
     if output is not None:  # the sheet first: a failure leaves no report half-printed
         import_matplotlib()
+        from ..drawing.save import save_figure
         from ..drawing.sheet import sheet_figure
-        from ..io.figures import save_figure
 
         life = None
         if d.lifetime is not None:  # the file's [lifetime]: the sheet gains the lifetime panel
@@ -98,15 +103,15 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
                                         jobs=available_cores())
             except ValueError as exc:
                 raise RunError(f"{design}: {exc}") from None
-        fig = sheet_figure(report, title=Path(design).name, lifetime=life)
+        fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required)
         with writing(output):
             save_figure(fig, output)
     if as_json:
-        obj = caisson_json(report, source=design)
+        obj = caisson_json(report, source=design, required=required)
         if output is not None:  # the written file's path, inside the one JSON object
             obj["sheet"] = output
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
         return
-    click.echo(format_caisson(report, source=design))
+    click.echo(format_caisson(report, source=design, required=required))
     if output is not None:
         report_written(output)

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
+from contextlib import AbstractContextManager
 from pathlib import Path
 
 import click
@@ -23,13 +25,15 @@ __all__ = ["dynamics_figures_cmd"]
               help="Keep the computed maps in DIR (created if missing) and reuse them while the "
                    "figures' definitions and regimemap.dynamics are unchanged.")
 @click.option("--list", "list_only", is_flag=True, help="List the figures; draw nothing.")
-def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_only: bool) -> None:
+@click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
+def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_only: bool, quiet: bool) -> None:
     """Draw the figures of regimemap.dynamics (D.1, D.2, D.3) into a folder.
 
     D.1 and D.2 are the overturning spectra of a half-sine and of a one-sine
     pulse in the dimensionless axes of Makris & Roussos (2000) and Zhang &
     Makris (2001); D.3 is a caisson under a breaking-wave pulse.  Each is an
-    outcome map computed on a grid (3 to 25 s each on one core); the files
+    outcome map computed on a grid, its boundaries refined by bisection
+    (2 to 25 s each on one core; a progress bar on a terminal); the files
     are dyn-<ID>.<format>, byte-identical from run to run.  With --cache DIR
     the maps are kept in DIR and only drawn again next time (the same bytes),
     until the figures' definitions, regimemap.dynamics or the versions of
@@ -56,14 +60,19 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
         raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
     import_matplotlib()
+    from ..drawing.save import save_figure
     from ..io.dynamics import cached_outcome
-    from ..io.figures import save_figure
+    from ._progress import progress_bar
 
     count = 0
     for f in DYNAMICS_FIGURES.values():
         t0 = time.perf_counter()
+
+        def bars(total: int, what: str, fid: str = f.id) -> AbstractContextManager[Callable[[int], None]]:
+            return progress_bar(total, f"{fid} {what}", quiet, unit=" runs")
+
         with writing(cache, f"to the cache {cache}"):
-            m, x, y, hit = cached_outcome(cache, f.id, repr(f), f.compute)
+            m, x, y, hit = cached_outcome(cache, f.id, repr(f), lambda f=f, bars=bars: f.compute(bars))
         fig = f.render(data=(m, x, y))
         for fmt in dict.fromkeys(fmts):
             path = folder / f.filename(fmt)
@@ -71,7 +80,10 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
                 save_figure(fig, path, fmt)
             count += 1
             report_written(path)
-        how = "from the cache" if hit else f"{m.category.size} runs"
-        click.echo(f"{f.id}: {time.perf_counter() - t0:.1f} s ({how})", err=True)
-    click.echo(f"regimemap: {count} files ({len(DYNAMICS_FIGURES)} figures x "
-               f"{', '.join(dict.fromkeys(fmts))}) in {folder}", err=True)
+        refine = m.crossings.runs if m.crossings is not None else 0
+        how = "from the cache" if hit else f"grid {m.category.size} runs, boundaries {refine} runs"
+        if not quiet:
+            click.echo(f"{f.id}: {time.perf_counter() - t0:.1f} s ({how})", err=True)
+    if not quiet:
+        click.echo(f"regimemap: {count} files ({len(DYNAMICS_FIGURES)} figures x "
+                   f"{', '.join(dict.fromkeys(fmts))}) in {folder}", err=True)

@@ -8,6 +8,9 @@ through :mod:`regimemap.io` or draws it (matplotlib only then).
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
+from contextlib import AbstractContextManager
 from pathlib import Path
 from typing import Any
 
@@ -20,11 +23,15 @@ from ._dynamics_options import (
     block_options,
     check_output_file,
     input_option,
+    min_rotation_option,
     option_errors,
 )
 from ._writing import writing
 
 __all__ = ["outcome_cmd"]
+
+#: The data formats of an outcome map: those of a run's history, and JSON with the boundaries.
+_DATA_FORMATS = (*DATA_FORMATS, "json")
 
 
 @click.command("outcome", short_help="Outcome map (rest, slide, rock, slide-rock, overturned) over two "
@@ -36,14 +43,19 @@ __all__ = ["outcome_cmd"]
                    "2000), for a k_peak, duration or omega_p sweep.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE",
               multiple=True, required=True,
-              help="Output file (repeatable): .png, .svg or .pdf draws the map, .npz or .csv "
-                   "writes its data (atomically).")
+              help="Output file (repeatable): .png, .svg or .pdf draws the map, .npz, .csv or .json "
+                   "writes its data (atomically; .json with the refined boundaries).")
+@min_rotation_option()
+@click.option("--no-refine", "no_refine", is_flag=True,
+              help="Do not refine the boundaries between categories: draw the cells of the grid as "
+                   "computed (a staircase at the grid's pitch), with no boundaries in .json.")
+@click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
 def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float] | None, mu: list[float],
                 pulse: str | None, k_peak: list[float] | None, duration: list[float] | None,
                 restitution: float | None, buoyancy: list[float] | None, uplift: list[float] | None,
                 uplift_ratio: list[float] | None, uplift_arm: list[float] | None,
                 gyration: list[float] | None, omega_p: list[float] | None, dimensionless: bool,
-                outputs: tuple[str, ...]) -> None:
+                outputs: tuple[str, ...], min_rotation: float, no_refine: bool, quiet: bool) -> None:
     """Simulate a grid of runs over two swept inputs and map their outcome.
 
     Give exactly two inputs as lists (0.2,0.5,1.2) or ranges start:stop:count
@@ -53,14 +65,21 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     --omega-p), --mu, --kprime, --gamma, --half-width, --gyration,
     --buoyancy, --uplift, --uplift-ratio and --uplift-arm can be swept.
 
-    Each cell gets its category: rest, slide only, rock only, slide-rock or
-    overturned.  A figure (.png, .svg, .pdf) shows them as coloured, hatched
-    regions with contours of the residual slide (m) and of the maximum
-    rotation (deg); data (.npz, .csv) has 1-D arrays named after the swept
-    options and 2-D arrays category, overturned, max_rotation (rad) and
-    residual_slide (m, positive towards O) of shape (len(second), len(first)).
-    At most 250000 runs; the time is about 1 ms per run on one core
-    (more for long free rocking).
+    Each cell gets its category: rest, slide only, rock only, slide-rock,
+    overturned, or still moving when the time limit came (--min-rotation
+    ANGLE: rocking counts only above ANGLE degrees, shown in the title and the
+    key).  Then each
+    boundary between two categories is found by bisection between
+    neighbouring cells, along the swept input that crosses it, to 1/1000 of
+    its range (a few batches more; --no-refine skips it).  A figure (.png,
+    .svg, .pdf) shows the categories as coloured, hatched regions bounded by
+    those boundaries, with contours of the residual slide (m) and of the
+    maximum rotation (deg); data (.npz, .csv) has 1-D arrays named after the
+    swept options and 2-D arrays category, overturned, max_rotation (rad) and
+    residual_slide (m, positive towards O) of shape (len(second), len(first));
+    .json has the same and the boundaries as lists of points in the swept
+    inputs' units.  At most 250000 runs; the time is about 1 ms per run on
+    one core (more for long free rocking), with a progress bar on a terminal.
 
     \b
     Examples:
@@ -85,7 +104,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     # -- outputs ----------------------------------------------------------------------------
     if len({str(Path(p).resolve()) for p in outputs}) < len(outputs):
         raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--output'")
-    kinds = [check_output_file(p, FIGURE_FORMATS + DATA_FORMATS, "--output", "an outcome map")
+    kinds = [check_output_file(p, FIGURE_FORMATS + _DATA_FORMATS, "--output", "an outcome map")
              for p in outputs]
     with option_errors():
         opts.check_steps()
@@ -94,18 +113,32 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
 
     import numpy as np
 
-    from ..dynamics import outcome_map
+    from ..dynamics.outcome import MapRuns, staged_outcome_map
+    from ._progress import progress_bar
 
     block = opts.block()
     first, second = opts.axis(0), opts.axis(1)
-    click.echo(f"simulating {opts.n_runs} runs ({len(first)} x {len(second)}) ...", err=True)
-    m = outcome_map(block, shape, opts.sweep(0), opts.sweep(1), k_peak=fixed.get("k_peak"),
-                    duration=opts.fixed_duration(), restitution=restitution)
+    (n1, v1), (n2, v2) = opts.sweep(0), opts.sweep(1)
+    runs = MapRuns(block, shape, n1, n2, k_peak=fixed.get("k_peak"), duration=opts.fixed_duration(),
+                   restitution=restitution, min_rotation=math.radians(min_rotation))
+    def note(text: str) -> None:
+        if not quiet:
+            click.echo(text, err=True)
+
+    note(f"simulating {opts.n_runs} runs ({len(first)} x {len(second)}) ...")
+
+    def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
+        return progress_bar(total, what, quiet, unit=" runs")
+
+    m = staged_outcome_map(runs, v1, v2, refine=not no_refine, bars=bars)
     m = dataclasses.replace(m, first_name=swept[0], first_values=first, second_name=swept[1],
                             second_values=second)
     counts = np.bincount(m.category.ravel().astype(np.int64), minlength=len(m.labels))
-    click.echo(f"{opts.n_runs} runs in {m.seconds:.1f} s: "
-               + ", ".join(f"{lab} {c}" for lab, c in zip(m.labels, counts.tolist()) if c), err=True)
+    note(f"{opts.n_runs} runs in {m.seconds:.1f} s: "
+         + ", ".join(f"{lab} {c}" for lab, c in zip(m.labels, counts.tolist()) if c))
+    if m.crossings is not None:
+        note(f"boundaries refined to 1/1000 of each axis: {m.crossings.runs} runs in {m.crossings.batches} "
+             f"batches, {m.refine_seconds:.1f} s")
 
     dim: dict[str, Any] = {}
     if dimensionless:
@@ -118,12 +151,14 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     fig = None
     for path, kind in zip(outputs, kinds):
         with writing(path):
-            if kind in DATA_FORMATS:
+            if kind in _DATA_FORMATS:
                 from ..io.dynamics import write_outcome
 
                 extra = {f"{n}_dimensionless": v for n, v in dim.items()}
-                write_outcome(path, m, swept[0], swept[1], inputs=_export_inputs(fixed, shape, restitution),
-                              axes=extra)
+                inputs = _export_inputs(fixed, shape, restitution)
+                if min_rotation:
+                    inputs["min_rotation"] = min_rotation  # degrees, as given
+                write_outcome(path, m, swept[0], swept[1], inputs=inputs, axes=extra)
             else:
                 if fig is None:
                     import_matplotlib()
@@ -133,8 +168,8 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
                         m, x=dim.get(swept[0]), y=dim.get(swept[1]),
                         xlabel=axis_label(swept[0], swept[0] in dim, shape),
                         ylabel=axis_label(swept[1], swept[1] in dim, shape),
-                        title=outcome_title(shape, fixed, restitution))
-                from ..io.figures import save_figure
+                        title=outcome_title(shape, fixed, restitution, m.min_rotation))
+                from ..drawing.save import save_figure
 
                 save_figure(fig, path, kind)
         written.append(path)

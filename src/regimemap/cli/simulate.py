@@ -19,6 +19,7 @@ from ._dynamics_options import (
     FIGURE_FORMATS,
     block_options,
     check_output_file,
+    min_rotation_option,
     option_errors,
 )
 from ._writing import writing
@@ -41,6 +42,7 @@ __all__ = ["simulate_cmd"]
                    "(Shimosako & Takahashi 1999), the uplift U = nu P in phase.  The file gives "
                    "--gamma, --half-width, --kprime, --mu, the loads, --gyration and the pulse; "
                    "giving any of them too is an error.  No added mass of water.")
+@min_rotation_option()
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
               help="Write the time history: .csv or .npz (atomically).")
@@ -52,7 +54,8 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
                  pulse: str | None, k_peak: float | None, duration: float | None,
                  restitution: float | None, buoyancy: float, uplift: float, uplift_ratio: float,
                  uplift_arm: float, gyration: float | None, pulse_file: str | None, design: str | None,
-                 as_json: bool, output: str | None, plot: str | None, animate: str | None) -> None:
+                 min_rotation: float, as_json: bool, output: str | None, plot: str | None,
+                 animate: str | None) -> None:
     """Simulate one block under one force pulse, from rest, past initiation.
 
     The block (half width B, aspect ratio gamma = H/B with H the height of the
@@ -67,6 +70,13 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
     rotation, the residual slide of the base (m, positive towards O), the
     number of impacts and the mode at t = 0+.  --json prints the same as one
     object (numbers to 12 significant digits) with the inputs.
+
+    The category is "slide-rock" or "rock only" when a rocking phase occurred,
+    however small; --min-rotation ANGLE (degrees) counts rocking only when the
+    largest rotation exceeds ANGLE.  A run that has not come to rest when the
+    time limit (duration + 60/p) ends is "still moving": it says so, with no
+    residuals (JSON "settled": false, "residual_*": null) and a warning on
+    stderr.
 
     The pulse is --pulse KIND --k-peak K --duration T (k = 0 after T), or a
     CSV --pulse-file with columns t,k[,kprime].
@@ -136,17 +146,24 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
         "pulse": pulse if pulse_file is None else "file", "k_peak": k_peak, "duration": duration,
         "pulse_file": pulse_file, "restitution": restitution, "buoyancy": buoyancy, "uplift": uplift,
         "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm, "gyration": gyration, "design": design,
+        "min_rotation": min_rotation,
     }
     eta = float(block.housner_ratio) if restitution is None else restitution
     derived = {"p": float(block.p), "alpha": float(block.alpha), "H": float(block.H),
                "impact_ratio": eta, "k_peak": float(pls.k_peak), "duration": T,
                "omega_p": float(pls.omega_p)}
+    import math
+
     from ..io.dynamics import format_simulation, simulation_record
 
-    record = simulation_record(sim, inputs, derived)
+    record = simulation_record(sim, inputs, derived, min_rotation=math.radians(min_rotation))
     if numbers is not None:
         record["design"] = _design_record(design, numbers)
     written = _write_outputs(sim, block, T, inputs, output, plot, animate) if want_history else []
+    if not (sim.settled[0] or sim.overturned[0]):
+        click.echo(f"regimemap: warning: the block is still moving at t = {float(sim.end_time[0]):.6g} s, "
+                   f"the time limit of the run (the pulse's {T:g} s + 60/p); its rotation and slide "
+                   "there are not residual (JSON: settled false, residual_* null)", err=True)
     if sim.unresolved:
         click.echo(f"regimemap: warning: {sim.unresolved} step(s) had no admissible contact state "
                    "(a stuck corner was assumed)", err=True)
@@ -199,14 +216,14 @@ def _write_outputs(sim: Simulation, block: Block, T: float, inputs: dict[str, An
     title = _run_title(inputs, T)
     if plot is not None:
         from ..drawing.motion import motion_figure
-        from ..io.dynamics import write_motion_plot
+        from ..drawing.save import save_figure
 
         fig = motion_figure(hist, H=H, alpha=float(block.alpha), duration=T, title=title)
         with writing(plot):
-            write_motion_plot(plot, fig)
+            save_figure(fig, plot)
         written.append(plot)
     if animate is not None:
-        from ..io.dynamics import write_block_animation
+        from ..drawing.motion import write_block_animation
 
         kprime = inputs["kprime"]
         with writing(animate):

@@ -16,7 +16,9 @@ D.3    A vertical-breakwater caisson (20 m wide, 22 m high, mu = 0.6, buoyancy
 
 Each map is computed on a grid coarser than ``bench/bench_dynamics.py``'s
 200 x 200 (the sizes below), so that ``make figures`` stays within about a
-minute; the cells are drawn as computed (a staircase at that resolution).
+minute, and its boundaries are refined by bisection to 10^-3 of each axis
+(:func:`regimemap.dynamics.outcome.refine_map`): the regions are drawn as
+polygons bounded by them, not as cells.
 """
 
 from __future__ import annotations
@@ -26,8 +28,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..dynamics import Block, OutcomeMap, from_dimensionless, outcome_map
-from ..dynamics.outcome import dimensionless_values
+from ..dynamics import Block, OutcomeMap, from_dimensionless
+from ..dynamics.outcome import Bars, MapRuns, dimensionless_values, staged_outcome_map
 from .save import DEFAULT_DPI
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -84,22 +86,33 @@ class DynamicsFigure:
     def dimensionless(self) -> bool:
         return self.first[0] == "omega_ratio"
 
-    def compute(self) -> tuple[OutcomeMap, np.ndarray, np.ndarray]:
-        """The outcome map, and the values of its columns and rows as drawn."""
+    def axes(self) -> tuple[MapRuns, np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """The runs of the map, the swept values of its columns and rows, and their values as
+        drawn."""
         blk = self.make_block()
         a = np.linspace(*self.first[1:3], self.first[3])
         b = np.linspace(*self.second[1:3], self.second[3])
+        params = self.params or None
         if self.dimensionless:
             B, gamma = float(np.asarray(blk.B)), float(np.asarray(blk.gamma))
             k, w = from_dimensionless(a, b, B, gamma, blk.g)
             # from_dimensionless assumes the uniform block's p and alpha: the figure's blocks are uniform
-            m = outcome_map(blk, self.shape, ("omega_p", w), ("k_peak", k), restitution=self.restitution,
-                            pulse_params=self.params or None)
-            return m, dimensionless_values("omega_p", w, blk, self.shape), \
-                dimensionless_values("k_peak", k, blk, self.shape)
-        m = outcome_map(blk, self.shape, (self.first[0], a), (self.second[0], b),
-                        restitution=self.restitution, pulse_params=self.params or None)
-        return m, a, b
+            runs = MapRuns(blk, self.shape, "omega_p", "k_peak", restitution=self.restitution,
+                           pulse_params=params)
+            return (runs, w, k, dimensionless_values("omega_p", w, blk, self.shape),
+                    dimensionless_values("k_peak", k, blk, self.shape))
+        runs = MapRuns(blk, self.shape, self.first[0], self.second[0], restitution=self.restitution,
+                       pulse_params=params)
+        return runs, a, b, a, b
+
+    def compute(self, bars: Bars | None = None) -> tuple[OutcomeMap, np.ndarray, np.ndarray]:
+        """The outcome map, its boundaries refined, and the values of its columns and rows as drawn.
+
+        ``bars(total, description)`` gives a progress bar to each stage
+        (:func:`regimemap.dynamics.outcome.staged_outcome_map`).
+        """
+        runs, v1, v2, x, y = self.axes()
+        return staged_outcome_map(runs, v1, v2, bars=bars), x, y
 
     def render(self, dpi: float = DEFAULT_DPI, fig: Figure | None = None,
                data: tuple[OutcomeMap, np.ndarray, np.ndarray] | None = None) -> Figure:

@@ -1,16 +1,19 @@
-"""An outcome map: what a pulse does to the block, cell by cell, over two swept inputs.
+"""An outcome map: what a pulse does to the block over two swept inputs.
 
 Draws an :class:`regimemap.dynamics.OutcomeMap` (the data; this module only
-draws): each cell's outcome category -- rest, slide only, rock only,
-slide-rock, overturned -- as a filled, hatched region in the style of the
+draws): each outcome category -- rest, slide only, rock only, slide-rock,
+overturned, still moving -- as a filled, hatched region in the style of the
 regime maps (:data:`regimemap.drawing.style.OUTCOME_STYLE`), black boundaries
 between categories, contours of the residual slide and of the maximum
-rotation outside the overturned cells, a label in every region large enough
-for one, and the key below the axes.
+rotation where they mean something, a label in every region with room for
+one, and the key below the axes.
 
-Cells are drawn as they were computed: each sample is the centre of a cell
-reaching half-way to its neighbours, so a region's edge is a staircase at the
-resolution of the map.
+A refined map (the default of :func:`regimemap.dynamics.outcome_map`) is drawn
+as polygons bounded by its refined boundaries (:meth:`OutcomeMap.geometry`),
+the contours clipped on them; a map that was not refined is drawn as its cells
+(each node the centre of a cell reaching half-way to its neighbours: a
+staircase at the grid's pitch).  The text is placed by
+:mod:`regimemap.drawing.outcome_text`.
 """
 
 from __future__ import annotations
@@ -24,9 +27,11 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..dynamics.outcome import OutcomeMap
-from ..dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK
+from ..dynamics.regions import MapGeometry
+from ..dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK, STILL_MOVING
+from .placement import cell_edges
 from .save import DEFAULT_DPI
-from .style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context, text_size
+from .style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -35,10 +40,13 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
     from matplotlib.legend import Legend
     from matplotlib.patches import PathPatch
+    from matplotlib.path import Path as MplPath
     from matplotlib.text import Text
 
+    from .outcome_text import CategoryLookup, TextReport
+
 __all__ = ["AXIS_LABELS", "OutcomeArtists", "OUTCOME_FIGSIZE", "axis_label", "cell_edges",
-           "category_rectangles", "draw_outcome_map", "outcome_figure", "outcome_title"]
+           "category_rectangles", "draw_outcome_map", "outcome_figure", "outcome_title", "rotation_text"]
 
 #: Size of an outcome-map figure in inches (width, height): the regime map's width.
 OUTCOME_FIGSIZE: tuple[float, float] = (6.4, 5.9)
@@ -57,32 +65,38 @@ class OutcomeArtists:
     Attributes
     ----------
     regions : dict
-        Category code -> the PathPatch of its cells (one per category present).
+        Category code -> the PathPatch of its region (one per category present).
     boundaries : LineCollection or None
-        The black lines between cells of different categories.
+        The black lines between categories.
+    boundary_lines : list of ndarray
+        Their polylines (data coordinates).
     contours : dict
         ``"residual_slide"`` and ``"max_rotation"`` -> their ContourSet (when drawn).
+    contour_units : dict
+        The same keys -> the unit written after a level.
     labels : list of Text
-        Region labels.
+        Region labels (those with room; :func:`place_outcome_text` removes the others).
+    contour_labels : list of Text
+        One label per contour level that has room for it.
+    title : Text or None
     legend : Legend or None
+    category_at : CategoryLookup or None
+        The category at points of the drawing.
+    report : TextReport or None
+        What the text placement did.
     """
 
     regions: dict[int, PathPatch] = field(default_factory=dict)
     boundaries: LineCollection | None = None
+    boundary_lines: list[NDArray[np.float64]] = field(default_factory=list)
     contours: dict[str, QuadContourSet] = field(default_factory=dict)
+    contour_units: dict[str, str] = field(default_factory=dict)
     labels: list[Text] = field(default_factory=list)
+    contour_labels: list[Text] = field(default_factory=list)
+    title: Text | None = None
     legend: Legend | None = None
-
-
-def cell_edges(values: Sequence[float] | NDArray[np.float64]) -> NDArray[np.float64]:
-    """Edges of the cells centred on increasing ``values``: half-way between samples, and half a
-    spacing beyond the ends."""
-    v = np.asarray(values, dtype=np.float64)
-    if v.size == 1:
-        half = 0.5 * max(abs(float(v[0])), 1.0)
-        return np.array([v[0] - half, v[0] + half])
-    mid = 0.5 * (v[1:] + v[:-1])
-    return np.concatenate(([v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]))
+    category_at: CategoryLookup | None = None
+    report: TextReport | None = None
 
 
 def category_rectangles(category: NDArray[Any], code: int) -> list[tuple[int, int, int, int]]:
@@ -128,21 +142,6 @@ def _boundary_segments(category: NDArray[Any], xe: NDArray[np.float64], ye: NDAr
     return segs
 
 
-def _depth(mask: NDArray[np.bool_]) -> NDArray[np.int64]:
-    """Number of erosions (3 x 3) each cell of ``mask`` survives; the border counts as outside."""
-    depth = np.zeros(mask.shape, dtype=np.int64)
-    cur = mask.copy()
-    while cur.any():
-        depth += cur
-        p = np.pad(cur, 1, constant_values=False)
-        nxt = cur.copy()
-        for di in (-1, 0, 1):
-            for dj in (-1, 0, 1):
-                nxt &= p[1 + di:1 + di + cur.shape[0], 1 + dj:1 + dj + cur.shape[1]]
-        cur = nxt
-    return depth
-
-
 def _nice_levels(values: NDArray[np.float64], n: int = 6, span: float = 1e-3) -> NDArray[np.float64]:
     """Round contour levels strictly inside the range of the finite non-zero ``values``.
 
@@ -176,15 +175,51 @@ def _nice_levels(values: NDArray[np.float64], n: int = 6, span: float = 1e-3) ->
     return np.asarray(levels[keep], dtype=np.float64)
 
 
-def _fmt_level(v: float, unit: str) -> str:
-    return f"{v:g}{unit}"
+def _compound(loops: Sequence[NDArray[np.float64]]) -> MplPath:
+    """One path of closed loops (a region with its holes and islands)."""
+    from matplotlib.path import Path as MplPath
+
+    verts: list[NDArray[np.float64]] = []
+    codes: list[NDArray[np.uint8]] = []
+    for p in loops:
+        if len(p) < 3:
+            continue
+        verts.append(np.vstack([p, p[:1]]))
+        c = np.full(len(p) + 1, MplPath.LINETO, dtype=np.uint8)
+        c[0], c[-1] = MplPath.MOVETO, MplPath.CLOSEPOLY
+        codes.append(c)
+    if not verts:
+        return MplPath(np.zeros((0, 2)))
+    return MplPath(np.concatenate(verts), np.concatenate(codes))
+
+
+def _extend(data: NDArray[np.float64], keep: NDArray[np.bool_], passes: int = 2
+            ) -> np.ma.MaskedArray[Any, Any]:
+    """``data`` where ``keep``, carried ``passes`` nodes beyond it (the mean of the neighbours
+    already known), masked farther: contours then run past a boundary, to be clipped on it."""
+    z = np.where(keep, data, 0.0)
+    known = keep.copy()
+    for _ in range(passes):
+        zp = np.pad(np.where(known, z, 0.0), 1)
+        kp = np.pad(known.astype(np.float64), 1)
+        total = np.zeros(z.shape)
+        count = np.zeros(z.shape)
+        for di, dj in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+            sl = (slice(1 + di, 1 + di + z.shape[0]), slice(1 + dj, 1 + dj + z.shape[1]))
+            total += zp[sl]
+            count += kp[sl]
+        grow = ~known & (count > 0)
+        z[grow] = total[grow] / count[grow]
+        known = known | grow
+    return np.ma.masked_where(~known, z)
 
 
 def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np.float64] | None = None,
                      y: Sequence[float] | NDArray[np.float64] | None = None,
                      xlabel: str | None = None, ylabel: str | None = None, title: str | None = None,
                      contours: bool = True, labels: bool = True, legend: bool = True,
-                     hatches: bool = True, slide_unit: str = " m") -> OutcomeArtists:
+                     hatches: bool = True, slide_unit: str = " m", refined: bool = True,
+                     note: str | None = None) -> OutcomeArtists:
     """Draw an outcome map on ``ax``.
 
     Parameters
@@ -195,12 +230,12 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     x, y : array_like, optional
         The horizontal and vertical coordinates of the columns and rows (default the swept
         values, ``m.first_values`` and ``m.second_values``; e.g. dimensionless values from
-        :func:`regimemap.dynamics.outcome.axis_values`).  Each must be monotonic.
+        :func:`regimemap.dynamics.outcome.dimensionless_values`).  Each must be monotonic.
     xlabel, ylabel, title : str, optional
         Axis labels (default: the swept names) and title (mathtext allowed).
     contours : bool
         Draw the contours of the residual slide (solid, labelled in metres) and of the
-        maximum rotation (dashed, labelled in degrees), outside the overturned cells.
+        maximum rotation (dashed, labelled in degrees) where they mean something.
     labels : bool
         Write the category's name inside each region that has room for it.
     legend : bool
@@ -209,12 +244,26 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
         Hatch the regions (as the regime maps do).
     slide_unit : str
         Suffix of the slide contour labels.
+    refined : bool
+        Draw a refined map's regions as the polygons bounded by its refined boundaries
+        (:meth:`OutcomeMap.geometry`); False, or a map that was not refined, draws the cells
+        as computed (a staircase at the grid's pitch).
+    note : str, optional
+        A last entry of the key, without a symbol; by default, for a map with a
+        ``min_rotation``, the smallest rotation that counts as rocking.
 
     Returns
     -------
     OutcomeArtists
+
+    Notes
+    -----
+    The labels of the regions and of the contours, and the title, are fitted once the axes
+    are drawn (:func:`regimemap.drawing.outcome_text.place_outcome_text`, with the figure's
+    layout as it is then): none overlaps another text or leaves the figure.
     """
     from matplotlib.collections import LineCollection
+    from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
     from matplotlib.patches import PathPatch, Rectangle
     from matplotlib.path import Path as MplPath
@@ -227,6 +276,9 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     if cat.shape != (ys.size, xs.size):
         raise ValueError(f"the map is {cat.shape[0]} x {cat.shape[1]} (rows x columns), the axes have "
                          f"{ys.size} and {xs.size} values")
+    geo = m.geometry(xs, ys) if refined else None  # on the drawn axes, before any flip
+    if note is None and m.min_rotation > 0.0:
+        note = f"rocking: max rotation > {rotation_text(m.min_rotation)}"
     # increasing axes (a decreasing one, e.g. omega_p from a duration sweep, is flipped)
     if xs.size > 1 and xs[0] > xs[-1]:
         xs, cat, rot, slide = xs[::-1], cat[:, ::-1], rot[:, ::-1], slide[:, ::-1]
@@ -235,16 +287,23 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     xe, ye = cell_edges(xs), cell_edges(ys)
     out = OutcomeArtists()
     with style_context():
-        ax.set_xlim(xe[0], xe[-1])
-        ax.set_ylim(ye[0], ye[-1])
+        if geo is None:
+            ax.set_xlim(xe[0], xe[-1])
+            ax.set_ylim(ye[0], ye[-1])
+        else:  # the polygons cover the nodes' span
+            ax.set_xlim(xs[0], xs[-1])
+            ax.set_ylim(ys[0], ys[-1])
         ax.set_xlabel(xlabel if xlabel is not None else m.first_name, fontsize=11)
         ax.set_ylabel(ylabel if ylabel is not None else m.second_name, fontsize=11)
         ax.tick_params(labelsize=9)
         if title:
-            ax.set_title(title, fontsize=10.5)
-        present = [c for c in sorted(OUTCOME_STYLE) if np.any(cat == c)]
+            out.title = ax.set_title(title, fontsize=10.5)
+        present = [c for c in sorted(OUTCOME_STYLE) if c < len(m.labels) and np.any(cat == c)]
+        paths: dict[int, MplPath] = {}
         for code in present:
-            st = OUTCOME_STYLE[code]
+            if geo is not None:
+                paths[code] = _compound(geo.regions.get(code, []))
+                continue
             verts: list[tuple[float, float]] = []
             codes: list[Any] = []
             for j0, j1, i0, i1 in category_rectangles(cat, code):
@@ -252,17 +311,25 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
                           (xe[j0], ye[i0])]
                 codes += [MplPath.MOVETO, MplPath.LINETO, MplPath.LINETO, MplPath.LINETO,
                           MplPath.CLOSEPOLY]
-            patch = PathPatch(MplPath(verts, codes), facecolor=st.color, edgecolor="none", linewidth=0.0,
+            paths[code] = MplPath(verts, codes)
+        for code in present:
+            st = OUTCOME_STYLE[code]
+            patch = PathPatch(paths[code], facecolor=st.color, edgecolor="none", linewidth=0.0,
                               hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
                               zorder=_Z_FILL, label=f"_{m.labels[code]}")
             patch.set_hatch_linewidth(HATCH_LW)
             ax.add_patch(patch)
             out.regions[code] = patch
-        segs = _boundary_segments(cat, xe, ye)
+        segs = [p for _, _, p in geo.boundaries] if geo is not None else _boundary_segments(cat, xe, ye)
+        out.boundary_lines = segs
         if segs:
             out.boundaries = LineCollection(segs, colors="black", linewidths=0.8 * LINE_LW,
-                                            capstyle="projecting", zorder=_Z_EDGE)
+                                            capstyle="projecting" if geo is None else "round",
+                                            joinstyle="round", zorder=_Z_EDGE)
             ax.add_collection(out.boundaries)
+        from .outcome_text import CategoryLookup
+
+        out.category_at = CategoryLookup(cat, xs, ys, paths if geo is not None else None)
 
         handles: list[Any] = []
         for code in present:
@@ -273,83 +340,64 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
             h.set_hatch_linewidth(HATCH_LW)
             handles.append(h)
         if contours and xs.size > 1 and ys.size > 1:
-            # each quantity where it means something: the slide where the base slipped, the
-            # rotation where the block rocked, neither where it overturned
-            slid = (cat == SLIDE) | (cat == SLIDE_ROCK)
-            rocked = (cat == ROCK) | (cat == SLIDE_ROCK)
-            for key, data, where, unit, style, what, span in (
-                    ("residual_slide", slide, slid, slide_unit, SLIDE_CONTOUR, "residual slide", 1e-3),
-                    ("max_rotation", np.degrees(rot), rocked, "°", ROTATION_CONTOUR, "maximum rotation",
-                     1e-2)):
-                if not where.any():
-                    continue
-                # 0 elsewhere (so that the lines run on to the boundary), masked where it overturned
-                z = np.ma.masked_where(cat == OVERTURN, np.where(where, data, 0.0))
-                levels = _nice_levels(np.asarray(data[where]), span=span)
-                if levels.size == 0:
-                    continue
-                cs = ax.contour(xs, ys, z, levels=levels, zorder=_Z_CONTOUR, **style)
-                texts = ax.clabel(cs, fontsize=7.5, inline=True, inline_spacing=3,
-                                  fmt=lambda v, unit=unit: _fmt_level(v, unit))
-                for t in texts:
-                    t.set_zorder(_Z_LABEL - 0.5)
-                out.contours[key] = cs
-                ls = style.get("linestyles", ["solid"])[0]
-                handles.append(Line2D([], [], color=style["colors"], linewidth=style["linewidths"],
-                                      linestyle=ls, label=f"{what} ({unit.strip()})"))
+            handles += _draw_contours(ax, out, cat, slide, np.degrees(rot), xs, ys, geo, slide_unit)
         if labels:
-            lines = [seg for cs in out.contours.values() for level in cs.allsegs for seg in level]
-            out.labels = _region_labels(ax, cat, xs, ys, m.labels, present, lines)
+            for code in present:
+                st = OUTCOME_STYLE[code]
+                t = ax.text(float(xs.mean()), float(ys.mean()), m.labels[code], ha="center", va="center",
+                            fontsize=8.5, color="white" if code == OVERTURN else "black", zorder=_Z_LABEL,
+                            bbox={"boxstyle": "round,pad=0.25", "fc": st.color, "ec": "none",
+                                  "alpha": 0.9})
+                t.set_gid(f"region-{code}")
+                out.labels.append(t)
+        if note:
+            handles.append(Line2D([], [], color="none", label=note))
         if legend and handles:
             out.legend = ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.13),
                                    ncols=3, fontsize=8.5, frameon=False, handlelength=2.2,
                                    handleheight=1.1, columnspacing=1.4, borderaxespad=0.0)
+        fig = ax.get_figure()
+        if isinstance(fig, Figure):
+            from .outcome_text import place_outcome_text
+
+            out.report = place_outcome_text(fig, ax, out, cat, xs, ys)
     return out
 
 
-def _region_labels(ax: Axes, cat: NDArray[Any], xs: NDArray[np.float64], ys: NDArray[np.float64],
-                   names: Sequence[str], present: Sequence[int],
-                   lines: Sequence[NDArray[np.float64]] = ()) -> list[Text]:
-    """A label in each region that has room for it: among the cells whose box fits inside the
-    region, the one farthest from the contour lines (the deepest one if there are none)."""
-    out: list[Text] = []
-    from matplotlib.figure import Figure
+def _draw_contours(ax: Axes, out: OutcomeArtists, cat: NDArray[Any], slide: NDArray[np.float64],
+                   rot_deg: NDArray[np.float64], xs: NDArray[np.float64], ys: NDArray[np.float64],
+                   geo: MapGeometry | None, slide_unit: str) -> list[Any]:
+    """The contours of the residual slide and of the largest rotation, each where it means
+    something (the slide where the base slipped, the rotation where the block rocked, neither
+    where it overturned or was still moving); their entries of the key."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import PathPatch
 
-    fig = ax.get_figure()
-    if not isinstance(fig, Figure):  # pragma: no cover - a subfigure: no labels
-        return out
-    w_in, h_in = ax.get_position().size * fig.get_size_inches()
-    cell_w = 72.0 * w_in / max(xs.size, 1)  # points per cell
-    cell_h = 72.0 * h_in / max(ys.size, 1)
-    x0, x1 = ax.get_xlim()
-    y0, y1 = ax.get_ylim()
-    pts = (np.concatenate([np.asarray(seg, dtype=np.float64) for seg in lines if len(seg)])
-           if any(len(seg) for seg in lines) else np.zeros((0, 2)))
-    pts_f = np.column_stack(((pts[:, 0] - x0) / (x1 - x0) * w_in, (pts[:, 1] - y0) / (y1 - y0) * h_in))
-    for code in present:
-        name = names[code]
-        bw, bh = text_size(name, 8.5)
-        depth = _depth(cat == code)
-        need = max(math.ceil((bw / cell_w + 1) / 2), math.ceil((bh / cell_h + 1) / 2))
-        ok = np.argwhere(depth >= need)
-        if ok.size == 0:
+    handles: list[Any] = []
+    moved = (cat != OVERTURN) & (cat != STILL_MOVING)
+    for key, data, codes, unit, style, what, span in (
+            ("residual_slide", slide, (SLIDE, SLIDE_ROCK), slide_unit, SLIDE_CONTOUR, "residual slide", 1e-3),
+            ("max_rotation", rot_deg, (ROCK, SLIDE_ROCK), "°", ROTATION_CONTOUR, "maximum rotation", 1e-2)):
+        where = np.isin(cat, codes)
+        if not where.any():
             continue
-        if len(pts_f):
-            step = max(1, len(ok) // 400)
-            cand = ok[::step]
-            cx = (xs[cand[:, 1]] - x0) / (x1 - x0) * w_in
-            cy = (ys[cand[:, 0]] - y0) / (y1 - y0) * h_in
-            d2 = ((cx[:, None] - pts_f[None, :, 0]) ** 2 + (cy[:, None] - pts_f[None, :, 1]) ** 2).min(axis=1)
-            i, j = (int(v) for v in cand[int(np.argmax(d2))])
-        else:
-            i, j = (int(v) for v in np.unravel_index(int(np.argmax(depth)), depth.shape))
-        st = OUTCOME_STYLE[code]
-        dark = code == OVERTURN
-        out.append(ax.text(xs[j], ys[i], name, ha="center", va="center", fontsize=8.5,
-                           color="white" if dark else "black", zorder=_Z_LABEL,
-                           bbox={"boxstyle": "round,pad=0.25", "fc": st.color, "ec": "none",
-                                 "alpha": 0.9}))
-    return out
+        levels = _nice_levels(np.asarray(data[where]), span=span)
+        if levels.size == 0:
+            continue
+        if geo is None:  # 0 elsewhere (the lines run on to the boundary), masked where it overturned
+            z = np.ma.masked_where(~moved, np.where(where, data, 0.0))
+        else:  # carried past the boundaries, then clipped on them
+            z = _extend(np.where(where, data, 0.0), moved)
+        cs = ax.contour(xs, ys, z, levels=levels, zorder=_Z_CONTOUR, **style)
+        if geo is not None:
+            clip = _compound([p for c in codes for p in geo.regions.get(c, [])])
+            cs.set_clip_path(PathPatch(clip, transform=ax.transData))
+        out.contours[key] = cs
+        out.contour_units[key] = unit
+        ls = style.get("linestyles", ["solid"])[0]
+        handles.append(Line2D([], [], color=style["colors"], linewidth=style["linewidths"], linestyle=ls,
+                              label=f"{what} ({unit.strip()})"))
+    return handles
 
 
 #: Axis labels by swept input: (physical, dimensionless).
@@ -386,9 +434,11 @@ _TITLE_NAMES = (("gamma", "γ", ""), ("half_width", "B", " m"), ("mu", "μ", "")
                 ("uplift_ratio", "ν", ""), ("uplift_arm", "e_u", ""))
 
 
-def outcome_title(shape: str, fixed: dict[str, Any], restitution: float | None = None) -> str:
+def outcome_title(shape: str, fixed: dict[str, Any], restitution: float | None = None,
+                  min_rotation: float = 0.0) -> str:
     """A title naming the pulse and the fixed inputs (plain text), e.g.
-    ``half-sine pulse; γ = 3, B = 0.2 m, μ = 5, k' = 0``."""
+    ``half-sine pulse; γ = 3, B = 0.2 m, μ = 5, k' = 0``; with ``min_rotation`` (rad) the
+    smallest rotation that counts as rocking."""
     parts = []
     for key, sym, unit in _TITLE_NAMES:
         v = fixed.get(key)
@@ -399,16 +449,27 @@ def outcome_title(shape: str, fixed: dict[str, Any], restitution: float | None =
         parts.append(f"{sym} = {v:.4g}{unit}")
     if restitution is not None:
         parts.append(f"restitution {restitution:g}")
+    if min_rotation > 0.0:
+        parts.append(f"rocking from {rotation_text(min_rotation)}")
     return f"{shape} pulse; " + ", ".join(parts)
+
+
+def rotation_text(angle: float) -> str:
+    """An angle (rad) in degrees for people: ``0.1°``."""
+    return f"{math.degrees(angle):.3g}°"
 
 
 def outcome_figure(m: OutcomeMap, *, dpi: float = DEFAULT_DPI, figsize: tuple[float, float] | None = None,
                    fig: Figure | None = None, **kwargs: Any) -> tuple[Figure, Axes, OutcomeArtists]:
-    """A Figure (Agg canvas, no pyplot) with one outcome map; ``kwargs`` go to :func:`draw_outcome_map`."""
+    """A Figure (Agg canvas, no pyplot) with one outcome map; ``kwargs`` go to :func:`draw_outcome_map`.
+
+    The artists are also kept as the figure's ``_regimemap_outcome`` (for the tests of its text).
+    """
     from .figure import new_figure
 
     fig, ax = new_figure(figsize or OUTCOME_FIGSIZE, dpi, fig)
     w, h = fig.get_size_inches()
     ax.set_position((0.78 / w, 1.05 / h, 5.3 / w, (h - 1.05 - 0.55) / h))
     artists = draw_outcome_map(ax, m, **kwargs)
+    setattr(fig, "_regimemap_outcome", artists)  # noqa: B010
     return fig, ax, artists

@@ -37,7 +37,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
     from ..lifetime.results import LifetimeResult
-    from .lifetime import Placed
+    from .labelplacer import Placed
 
 __all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure"]
 
@@ -336,7 +336,7 @@ def _legend(ax: Axes, codes: list[int]) -> None:
 
 # -- (e) the path: safety factors and modes --------------------------------------------------
 
-def _draw_path(ax: Axes, r: CaissonReport) -> None:
+def _draw_path(ax: Axes, r: CaissonReport, required: tuple[float, float] = (1.2, 1.2)) -> None:
     p = r.path
     st = p.analysis.stability
     s = p.factors
@@ -354,6 +354,10 @@ def _draw_path(ax: Axes, r: CaissonReport) -> None:
     for sf, name, color in ((sfs, "sliding", "#1f4e99"), (sfo, "overturning", "#b0431c")):
         _curve_label(ax, s, sf, name, color, ymax)
     ax.axhline(1.0, color="black", lw=0.7)
+    for need in sorted(set(required)):  # the safety factors the design must reach
+        ax.axhline(need, color="black", lw=0.6, dashes=(1, 1.5))
+        ax.text(float(s[-1]), need, f"required {need:g} ", fontsize=_FS - 1.0, va="bottom", ha="right",
+                color="0.2")
     ax.axvline(1.0, color="0.4", lw=0.6, dashes=(2, 2))
     ax.text(1.0, ymax * 0.97, " design", fontsize=_FS - 0.5, va="top", ha="left", color="0.3")
     if p.onset is not None and p.onset > float(s[0]):
@@ -503,7 +507,7 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
 
 def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
     """Place the labels of (g) clear of every text of the sheet and of (g)'s lines."""
-    from .lifetime import LabelPlacer
+    from .labelplacer import LabelPlacer
 
     placer = LabelPlacer(fig)
     try:
@@ -517,7 +521,8 @@ def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
 # -- the sheet -----------------------------------------------------------------------------
 
 def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float = DEFAULT_DPI,
-                 view: MapView | None = None, lifetime: LifetimeResult | None = None) -> Figure:
+                 view: MapView | None = None, lifetime: LifetimeResult | None = None,
+                 required: tuple[float, float] = (1.2, 1.2)) -> Figure:
     """The one-page design sheet of a caisson (A4 portrait, no pyplot).
 
     Parameters
@@ -534,7 +539,10 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         The caisson's sliding over its design life
         (:func:`regimemap.lifetime.lifetime_sliding`): adds panel (g), its exceedance
         curve with the ESD and the tolerable limits, under (e) (which gets shorter, and its
-        note too).  Without it the sheet is the same, byte for byte, as before the panel existed.
+        note too).
+    required : tuple of float, optional
+        The safety factors the design must reach (sliding, overturning; 1.2 and 1.2 by
+        default, the design file's ``[caisson] required_*``), drawn in (e) beside SF = 1.
 
     Returns
     -------
@@ -584,7 +592,7 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         lifetime_labels = None
         if lifetime is None:
             ax_path = fig.add_axes(rect(5.55, 4.5, 2.35, 1.95), label="path")
-            _draw_path(ax_path, report)
+            _draw_path(ax_path, report, required)
             fig.text(5.4 / W, 3.95 / H, "\n".join(textwrap.wrap(_path_note(report, False), 47)),
                      fontsize=_FS - 0.5, va="top", ha="left", color="0.15", linespacing=1.35)
         else:

@@ -76,7 +76,8 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
 #: the colour and hatch of the map's mode they are made of (rest as RE, slide only as SL, rock
 #: only as RO, slide-rock as SRO-), so a reader carries the colours from one figure to the
 #: other; overturning is Paul Tol's *muted* purple, darker than all of them (it stands out in
-#: greyscale too), with a light crossed hatch.
+#: greyscale too), with a light crossed hatch; a run still moving at the time limit is light pink
+#: with rings (a hatch no other outcome has).
 #: (The codes are written out so that drawing a regime map does not import regimemap.dynamics;
 #: tests/dynamics/test_outcome_drawing.py checks them against it.)
 OUTCOME_STYLE: dict[int, ModeStyle] = {
@@ -85,6 +86,7 @@ OUTCOME_STYLE: dict[int, ModeStyle] = {
     2: MODE_STYLE[Mode.RO],  # ROCK
     3: MODE_STYLE[Mode.SRO_MINUS],  # SLIDE_ROCK
     4: ModeStyle("#AA4499", "xx", (1.0, 1.0, 1.0, 0.5)),  # OVERTURN
+    5: ModeStyle("#FFAABB", "oo"),  # STILL_MOVING at the time limit: Tol's light pink, rings
 }
 #: Style of free flight (no corner in contact), the one phase of a motion that is no map mode.
 FLIGHT_STYLE = ModeStyle("#FFFFFF", "oo")

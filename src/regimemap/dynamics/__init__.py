@@ -37,6 +37,7 @@ if TYPE_CHECKING:  # pragma: no cover
         ROCK,
         SLIDE,
         SLIDE_ROCK,
+        STILL_MOVING,
         History,
         Phase,
         Simulation,
@@ -64,6 +65,7 @@ __all__ = [
     "SHAPES",
     "SLIDE",
     "SLIDE_ROCK",
+    "STILL_MOVING",
     "SWEEPABLE",
     "Simulation",
     "default_steps",
@@ -92,8 +94,17 @@ _WHERE = {
 }
 
 
-def __getattr__(name: str) -> Any:  # PEP 562
-    if name in __all__:
-        module = _WHERE.get(name, "stepper")
-        return getattr(importlib.import_module(f"{__name__}.{module}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+
+    def __getattr__(name: str) -> Any:  # PEP 562
+        if name in __all__:
+            module = _WHERE.get(name, "stepper")
+            value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
+            globals()[name] = value
+            return value
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The public names (imported or not yet) and the module's own: what IDEs and ``dir()`` list."""
+    return sorted(set(globals()) | set(__all__))

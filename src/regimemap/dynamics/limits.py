@@ -76,6 +76,8 @@ INPUT_LIMITS: dict[str, Limit] = {
     "uplift_ratio": Limit(0.0, 10.0),
     "uplift_arm": Limit(-1.0, 1.0),
     "gyration": Limit(0.0, 1000.0, open_lo=True),
+    # the smallest largest rotation that counts as rocking (--min-rotation), in degrees
+    "min_rotation": Limit(0.0, 90.0, unit="deg"),
     # a sampled pulse (pulse file): force and its height at each sample time
     "k": Limit(-100.0, 100.0),
     "t": Limit(0.0, 1e4, unit="s"),

@@ -229,6 +229,82 @@ class Pulse:
             shape = np.maximum(tri, self.peak_ratio * np.sin(np.pi * tau))
         return np.where(inside, kp * shape, 0.0)
 
+    def breakpoints(self, duration: ArrayLike | None = None) -> FloatArray:
+        """The breakpoints of the pulse, per run: the times between which k(t) is smooth and monotone.
+
+        Start, peak(s) and trough, kinks and end of an analytic shape (for ``breaking``: the
+        impulsive triangle's peak and end, the half-sine's peak and the kinks where the two meet),
+        or every sample of a sampled history.  The time stepper lands a step on each
+        (:mod:`regimemap.dynamics.events`).
+
+        Parameters
+        ----------
+        duration : array_like, optional
+            Per-run durations (s); default the pulse's own.
+
+        Returns
+        -------
+        ndarray, shape (n, m)
+            Increasing times (s) in [0, duration] per run (n the number of durations; the
+            samples' times, shape (1, m), for a sampled history).
+        """
+        if self.shape == "arrays":
+            assert self.t_samples is not None
+            samples: FloatArray = np.array(self.t_samples, dtype=np.float64)[None, :]
+            return samples
+        T = np.atleast_1d(np.asarray(self.duration if duration is None else duration, dtype=np.float64))
+        return T.reshape(-1)[:, None] * self._tau_breakpoints()[None, :]
+
+    def _tau_breakpoints(self) -> FloatArray:
+        """:meth:`breakpoints` in units of the duration (the same for every run of a shape)."""
+        taus: list[float] = [0.0, 1.0]
+        if self.shape == "triangular":
+            taus.append(self.peak_at)
+        elif self.shape in ("half-sine", "one-cosine"):
+            taus.append(0.5)
+        elif self.shape == "one-sine":
+            taus += [0.25, 0.75]
+        elif self.shape == "breaking":
+            taus += self._breaking_kinks()
+        return np.unique(np.clip(np.asarray(taus, dtype=np.float64), 0.0, 1.0))
+
+    def _breaking_kinks(self) -> list[float]:
+        """Breakpoints of the breaking shape max(tri(tau/f), r sin(pi tau)) in (0, 1), in tau.
+
+        The triangle's peak f/2 and end f, the half-sine's peak 1/2 and every tau where the two
+        meet.  On each linear piece of the triangle the difference tri - r sin(pi tau) is convex
+        (sin is concave on [0, 1]): its minimum is in closed form, and each side of it holds at
+        most one root, found by bisection.
+        """
+        f, r = self.impulsive_fraction, self.peak_ratio
+        out = [0.5 * f, f, 0.5]
+        if r <= 0.0:
+            return out
+        for a, b, slope, c0 in ((0.0, 0.5 * f, 2.0 / f, 0.0), (0.5 * f, f, -2.0 / f, 2.0)):
+
+            def d(tau: float, slope: float = slope, c0: float = c0) -> float:
+                return c0 + slope * tau - r * float(np.sin(np.pi * tau))
+
+            # d'(tau) = slope - r pi cos(pi tau) = 0 at the minimum
+            cosv = slope / (r * np.pi)
+            tmin = float(np.arccos(cosv)) / np.pi if -1.0 <= cosv <= 1.0 else (a if cosv > 1.0 else b)
+            tmin = min(max(tmin, a), b)
+            if d(tmin) >= 0.0:
+                continue
+            for lo, hi in ((tmin, a), (tmin, b)):  # d(lo) < 0; a root where d(hi) > 0
+                if d(hi) <= 0.0:
+                    continue
+                for _ in range(100):
+                    mid = 0.5 * (lo + hi)
+                    if mid in (lo, hi):
+                        break
+                    if d(mid) < 0.0:
+                        lo = mid
+                    else:
+                        hi = mid
+                out.append(hi)
+        return out
+
     def kprime(self, t: ArrayLike) -> FloatArray | None:
         """k'(t) of a sampled history, None when the pulse has none (the block's k' holds)."""
         if self.kprime_samples is None:

@@ -19,6 +19,7 @@ __all__ = [
     "ROCK",
     "SLIDE_ROCK",
     "OVERTURN",
+    "STILL_MOVING",
 ]
 
 FloatArray = NDArray[np.float64]
@@ -26,9 +27,10 @@ BoolArray = NDArray[np.bool_]
 IntArray = NDArray[np.int64]
 
 # Outcome categories (integer codes).
-REST, SLIDE, ROCK, SLIDE_ROCK, OVERTURN = 0, 1, 2, 3, 4
+REST, SLIDE, ROCK, SLIDE_ROCK, OVERTURN, STILL_MOVING = 0, 1, 2, 3, 4, 5
 #: Labels of the outcome categories, by code.
-CATEGORY_LABELS: tuple[str, ...] = ("rest", "slide only", "rock only", "slide-rock", "overturned")
+CATEGORY_LABELS: tuple[str, ...] = ("rest", "slide only", "rock only", "slide-rock", "overturned",
+                                    "still moving")
 
 
 @dataclass(frozen=True)
@@ -61,7 +63,7 @@ class Simulation:
     max_rotation : ndarray
         Largest |theta| (rad).
     residual_rotation : ndarray
-        Final theta (rad).
+        Final theta (rad) (at t_max for a run still moving: not residual).
     residual_slide : ndarray
         Final horizontal displacement of the middle of the base (m), positive towards O.
     impacts : ndarray of int
@@ -71,7 +73,8 @@ class Simulation:
     slid, rocked : ndarray of bool
         Whether the base ever slipped / a corner ever lifted.
     settled : ndarray of bool
-        Came to rest after the pulse (False when overturned or stopped at t_max).
+        Came to rest after the pulse (False when overturned or stopped at t_max; a run neither
+        settled nor overturned is :attr:`still_moving`, its ``residual_*`` where t_max stopped it).
     end_time : ndarray
         Time at which the run left the batch (s).
     steps : ndarray of int
@@ -101,11 +104,41 @@ class Simulation:
     history: History | None
 
     @property
+    def still_moving(self) -> BoolArray:
+        """Runs that reached the time limit neither at rest nor overturned."""
+        return ~(self.settled | self.overturned)
+
+    @property
     def category(self) -> NDArray[np.int8]:
-        """Outcome category code per run (see :data:`CATEGORY_LABELS`)."""
+        """Outcome category code per run (see :data:`CATEGORY_LABELS`); ``categories(0.0)``."""
+        return self.categories(0.0)
+
+    def categories(self, min_rotation: float = 0.0) -> NDArray[np.int8]:
+        """Outcome category code per run (see :data:`CATEGORY_LABELS`).
+
+        A run rocked when a rocking phase occurred (a corner lifted in some step, as
+        :attr:`phases` shows), slid when its base slipped in some step; there is no hidden
+        floor.  A run that reached the time limit without coming to rest or overturning is
+        :data:`STILL_MOVING`, whatever it did before.
+
+        Parameters
+        ----------
+        min_rotation : float
+            Rocking counts only if the largest |theta| exceeds this angle (rad); 0 counts
+            every rocking phase.  A run that rocked less is "slide only" if it slid,
+            otherwise "rest".
+
+        Returns
+        -------
+        ndarray of int8
+        """
+        if not min_rotation >= 0.0:
+            raise ValueError(f"min_rotation must be >= 0 (got {min_rotation})")
+        rocked = self.rocked if min_rotation == 0.0 else self.rocked & (self.max_rotation > min_rotation)
         cat = np.full(self.overturned.shape, REST, dtype=np.int8)
         cat[self.slid] = SLIDE
-        cat[self.rocked] = ROCK
-        cat[self.slid & self.rocked] = SLIDE_ROCK
+        cat[rocked] = ROCK
+        cat[self.slid & rocked] = SLIDE_ROCK
+        cat[self.still_moving] = STILL_MOVING
         cat[self.overturned] = OVERTURN
         return cat

@@ -43,14 +43,24 @@ times r/eta_H (eta_H the Housner ratio above), capped so that kinetic energy
 never grows; other impacts (flat landings, slipping impacts) stay plastic.  The
 step then proceeds from the mapped velocity.
 
+Events
+------
+The force is taken at the mid-point, so a peak or a short excursion past a threshold is seen
+only where a mid-point falls.  At every *event* of a run -- its pulse's breakpoints and its
+crossings of the initiation map of :func:`regimemap.classify` -- the regular step that holds
+it is cut and a step of EVENT_STEP h is taken with the force at the event
+(:mod:`regimemap.dynamics.events`); from rest (or sliding flat) the contact problem is
+homogeneous in h, so that step starts the onset mode at k(t_e) for any duration and any step.
+``events=False`` is the regular schedule alone.
+
 Outcome
 -------
 A run leaves the batch when it has come to rest after the pulse (state RE with
 the pulse over), when it has overturned -- |theta| > pi/2, or, once the pulse
 is over, |theta| >= alpha with outward angular velocity and the constant loads
 turning it outward about the pivot (then nothing can bring it back) -- or at
-``t_max``.  The runs still moving are a :class:`_Batch`, a struct of arrays
-that loses the runs that leave.
+``t_max`` (still moving: category STILL_MOVING).  The runs still moving are a
+:class:`_Batch`, a struct of arrays that loses the runs that leave.
 
 References
 ----------
@@ -70,6 +80,7 @@ Zhang, J. & Makris, N. (2001). J. Eng. Mech. 127(5), 473-483.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, fields
 from typing import NamedTuple
 
@@ -78,11 +89,24 @@ from numpy.typing import ArrayLike, NDArray
 
 from .block import Block
 from .contact import PIVOT_O, PIVOT_P, ROCKS, SLIDES, Arms, Contact, Phase, corner_impact
+from .events import event_times, schedule
 from .pulses import Pulse
-from .results import CATEGORY_LABELS, OVERTURN, REST, ROCK, SLIDE, SLIDE_ROCK, History, Simulation
+from .recording import RunLog
+from .results import (
+    CATEGORY_LABELS,
+    OVERTURN,
+    REST,
+    ROCK,
+    SLIDE,
+    SLIDE_ROCK,
+    STILL_MOVING,
+    History,
+    Simulation,
+)
 
 __all__ = ["Phase", "History", "Simulation", "simulate", "default_steps", "PULSE_STEPS", "FREE_STEP",
-           "CATEGORY_LABELS", "REST", "SLIDE", "ROCK", "SLIDE_ROCK", "OVERTURN"]
+           "CATEGORY_LABELS", "REST", "SLIDE", "ROCK", "SLIDE_ROCK", "OVERTURN",
+           "STILL_MOVING"]
 
 FloatArray = NDArray[np.float64]
 BoolArray = NDArray[np.bool_]
@@ -97,7 +121,6 @@ FREE_STEP = 0.004
 FREE_TIME = 60.0
 
 _HALF_PI = 0.5 * math.pi
-_HISTORY_KEYS = ("t", "x", "y", "theta", "vx", "vy", "omega", "k", "phase")
 
 
 def default_steps(block: Block, pulse: Pulse, n: int | None = None,
@@ -190,7 +213,13 @@ class _Batch:
     tmax: FloatArray
     eta: FloatArray
     alpha: FloatArray
-    # the state at the start of the step
+    # the events: the times (inf padding, sorted, a last column of inf) and the next one's index
+    ev: FloatArray
+    iev: IntArray
+    # the state at the start of the step; ``mid``: inside a regular step cut by an event, which
+    # ends at ``tgt``
+    mid: BoolArray
+    tgt: FloatArray
     x: FloatArray
     y: FloatArray
     th: FloatArray
@@ -211,10 +240,11 @@ class _Batch:
 
     @classmethod
     def start(cls, block: Block, pulse: Pulse, n: int, dt: float | None, t_max: ArrayLike | None,
-              theta0: ArrayLike, omega0: ArrayLike) -> _Batch:
+              theta0: ArrayLike, omega0: ArrayLike, events: bool = True) -> _Batch:
         """The ``n`` runs at t = 0 (see :func:`simulate` for the arguments)."""
         par = block.arrays(n)
         kp, T = pulse.arrays(n)
+        ev = event_times(block, pulse, n, kp, T) if events else np.full((n, 1), np.inf)
         hp, hf = default_steps(block, pulse, n, dt)
         p = _as_runs(block.p, n)
         tmax = T + FREE_TIME / p if t_max is None else _as_runs(t_max, n)
@@ -234,6 +264,7 @@ class _Batch:
             idx=np.arange(n), B=B, H=H, J=J, mu=par["mu"], kpr=par["kprime"], beta=par["beta"],
             u=par["u"], nu=par["nu"], eu=par["e_u"], kp=kp, T=T, hp=hp, hf=hf, tmax=tmax,
             eta=(J + H * H - B * B) / (J + H * H + B * B), alpha=np.arctan2(B, H),
+            ev=ev, iev=np.zeros(n, dtype=np.int64), mid=np.zeros(n, dtype=bool), tgt=np.zeros(n),
             x=np.zeros(n), y=y0.copy(), th=th0.copy(), vx=np.where(th0 != 0, om0 * r_y, 0.0),
             vy=np.where(th0 != 0, -om0 * r_x, 0.0), om=np.where(th0 != 0, om0, 0.0), t=np.zeros(n),
             nleft=np.rint(T / hp).astype(np.int64), prevO=np.zeros(n, dtype=bool),
@@ -280,9 +311,8 @@ class _Step(NamedTuple):
 
 def _step(b: _Batch, pulse: Pulse, g: float, restitution: float | None, loaded: bool) -> _Step:
     """Advance every run of the batch by one step of the scheme (in place)."""
-    h = np.where(b.nleft > 0, b.hp, b.hf)
+    h, tm, h_reg, t_new = schedule(b)
     hh = 0.5 * h
-    tm = b.t + hh
     k = pulse.k(tm, b.kp, b.T)
     thm = b.th + hh * b.om
     c, s = np.cos(thm), np.sin(thm)
@@ -291,11 +321,11 @@ def _step(b: _Batch, pulse: Pulse, g: float, restitution: float | None, loaded: 
     # activation on the linearised gap at the mid-point, g(q_k) + (h/2) u_N (Moreau 1988)
     gO, gP = _gaps(b.B, b.H, b.y, b.th)
     # tolerance: v_k met the constraint with the previous step's arms, an O(h^2 om^2 R) mismatch
-    gtol = 1e-6 * b.B + (h * b.om) ** 2 * (b.B + b.H)
+    gtol = 1e-6 * b.B + (h_reg * b.om) ** 2 * (b.B + b.H)
     actO = gO + hh * (b.vy + arms.xO * b.om) <= gtol
     actP = gP + hh * (b.vy + arms.xP * b.om) <= gtol
     contact = Contact(arms, actO, actP, b.mu, b.J, 1e-10 * g * h)
-    _impacts(b, contact, g * h, restitution)
+    _impacts(b, contact, g * h_reg, restitution)
     # forces per unit mass at (t_m, q_m)
     kpr_t = pulse.kprime(tm) if pulse.has_kprime else None
     kpr = b.kpr if kpr_t is None else kpr_t
@@ -322,8 +352,7 @@ def _step(b: _Batch, pulse: Pulse, g: float, restitution: float | None, loaded: 
         b.y -= np.where(pivP, gP1 - np.minimum(gP, 0.0), 0.0)
     t_start = b.t
     b.vx, b.vy, b.om = new.vx, new.vy, new.om
-    b.t = b.t + h
-    b.nleft = np.maximum(b.nleft - 1, 0)
+    b.t = t_new
     b.nsteps += 1
     b.prevO, b.prevP = actO, actP
     np.maximum(b.maxrot, np.abs(b.th), out=b.maxrot)
@@ -369,73 +398,13 @@ def _leaving(b: _Batch, code: CodeArray, loaded: bool) -> tuple[BoolArray, BoolA
     return over, after & (code == Phase.RE)
 
 
-class _Log:
-    """The phases of every run and the time history of one, recorded step by step."""
-
-    def __init__(self, b: _Batch, record_phases: bool, history: int | None) -> None:
-        self.n = b.size
-        self.record_phases = record_phases
-        self.runs: list[IntArray] = []
-        self.codes: list[CodeArray] = []
-        self.starts: list[FloatArray] = []
-        self.which = history
-        self.hist: dict[str, list[float]] | None = None
-        if history is not None:
-            if not 0 <= history < self.n:
-                raise IndexError(f"history run {history} out of range (n = {self.n})")
-            self.hist = {key: [] for key in _HISTORY_KEYS}
-            self.hist["t"].append(0.0)
-            for key, arr in (("x", b.x), ("y", b.y), ("theta", b.th), ("vx", b.vx), ("vy", b.vy),
-                             ("omega", b.om)):
-                self.hist[key].append(float(arr[history]))
-            self.hist["k"].append(0.0)
-            self.hist["phase"].append(-1.0)
-
-    def record(self, b: _Batch, step: _Step) -> None:
-        """Log a step (before ``b.prev_code`` takes the new codes)."""
-        code = step.code
-        if self.record_phases:
-            changed = code != b.prev_code
-            if changed.any():
-                self.runs.append(b.idx[changed])
-                self.codes.append(code[changed])
-                self.starts.append(step.t_start[changed])
-        if self.hist is not None:
-            where = np.flatnonzero(b.idx == self.which)
-            if where.size:
-                j = int(where[0])
-                for key, arr in (("t", b.t), ("x", b.x), ("y", b.y), ("theta", b.th), ("vx", b.vx),
-                                 ("vy", b.vy), ("omega", b.om), ("k", step.k)):
-                    self.hist[key].append(float(arr[j]))
-                self.hist["phase"].append(float(code[j]))
-
-    def phases(self) -> list[list[tuple[str, float]]] | None:
-        """Per run, its (phase label, start time) in order; None when not recorded."""
-        if not self.record_phases:
-            return None
-        phases: list[list[tuple[str, float]]] = [[] for _ in range(self.n)]
-        if self.runs:
-            runs = np.concatenate(self.runs)
-            codes = np.concatenate(self.codes)
-            starts = np.concatenate(self.starts)
-            for r_, c_, t_ in zip(runs.tolist(), codes.tolist(), starts.tolist(), strict=True):
-                phases[r_].append((Phase(c_).label, t_))
-        return phases
-
-    def history(self) -> History | None:
-        """The time history of the run asked for, if any."""
-        if self.hist is None:
-            return None
-        return History(**{key: np.asarray(val) for key, val in self.hist.items() if key != "phase"},
-                       phase=np.asarray(self.hist["phase"]).astype(np.int8))
-
-
 # -- the time stepper ----------------------------------------------------------------------------------
 
 
 def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: ArrayLike | None = None,
              restitution: float | None = None, theta0: ArrayLike = 0.0, omega0: ArrayLike = 0.0,
-             history: int | None = None, record_phases: bool = True) -> Simulation:
+             history: int | None = None, record_phases: bool = True, events: bool = True,
+             progress: Callable[[int], None] | None = None) -> Simulation:
     """Simulate a batch of runs of a block under force pulses, from rest.
 
     Parameters
@@ -462,6 +431,13 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
         Index of a run whose time history is returned.
     record_phases : bool
         Whether to return the list of phases per run.
+    events : bool
+        Whether to land a step on every event of a run -- the pulse's breakpoints and its
+        crossings of the initiation map (:mod:`regimemap.dynamics.events`).  False is the
+        regular schedule alone (the stepper before events, bit for bit).
+    progress : callable, optional
+        Called with the number of runs that have just left the batch (at rest, overturned
+        or at ``t_max``), as they leave: a progress bar's ``step`` (``regimemap outcome``).
 
     Returns
     -------
@@ -474,8 +450,8 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
                          np.asarray(block.nu), np.asarray(block.e_u),
                          np.asarray(block.gamma if block.i2 is None else block.i2),
                          pulse.k_peak, pulse.duration, np.asarray(theta0), np.asarray(omega0)).size)
-    batch = _Batch.start(block, pulse, n, dt, t_max, theta0, omega0)
-    log = _Log(batch, record_phases, history)
+    batch = _Batch.start(block, pulse, n, dt, t_max, theta0, omega0, events)
+    log = RunLog(batch, record_phases, history)
     out = _Outcome.empty(n)
     g, loaded = float(block.g), block.loaded
     unresolved = 0
@@ -492,5 +468,7 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
         done = over | rest | (batch.t >= batch.tmax)
         if done.any():
             batch.retire(done, over, rest, out)
+            if progress is not None:
+                progress(int(np.count_nonzero(done)))
     return Simulation(**{f.name: getattr(out, f.name) for f in fields(out)}, unresolved=unresolved,
                       phases=log.phases(), history=log.history())

@@ -16,7 +16,8 @@ from ..maps.describe import format_significant as _sig
 from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
 from ._numbers import json_number as round_sig
 
-__all__ = ["CONSISTENCY_NOTE", "caisson_json", "format_caisson", "round_sig"]
+__all__ = ["CONSISTENCY_NOTE", "REQUIRED_SF", "caisson_json", "design_check", "design_check_lines",
+           "format_caisson", "round_sig"]
 
 #: Why Goda's safety factors and the map agree (docs/waves.md, Sect. 7).
 CONSISTENCY_NOTE = (
@@ -73,8 +74,47 @@ UNITS = {
 }
 
 
-def caisson_json(r: CaissonReport, source: str | None = None) -> dict[str, Any]:
+#: The safety factors a design must reach by default, sliding and overturning (Goda 2000, Sect. 4.2).
+REQUIRED_SF = (1.2, 1.2)
+
+
+def design_check(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) -> dict[str, Any]:
+    """The safety factors against the required ones: ``{"sliding": {...}, "overturning": {...}}``.
+
+    Each entry holds ``value``, ``required`` and ``meets`` (``value >= required``).
+    """
+    st = r.analysis.stability
+    out: dict[str, Any] = {}
+    for name, value, need in (("sliding", _f(st.sliding), required[0]),
+                              ("overturning", _f(st.overturning), required[1])):
+        out[name] = {"value": round_sig(value), "required": need, "meets": bool(value >= need)}
+    return out
+
+
+def design_check_lines(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) -> list[str]:
+    """The design check in words: one line, and a line per failed safety factor."""
+    check = design_check(r, required)
+    failed = [k for k, v in check.items() if not v["meets"]]
+    if not failed:
+        return [f"design check: both safety factors reach the required ones (sliding "
+                f"{_sig(check['sliding']['value'], 3)} >= {required[0]:g}, overturning "
+                f"{_sig(check['overturning']['value'], 3)} >= {required[1]:g})"]
+    lines = [f"design check: the section FAILS the {' and the '.join(failed)} check"
+             f"{'s' if len(failed) > 1 else ''}"]
+    for k in failed:
+        v = check[k]
+        lines.append(f"  SF {k} {_sig(v['value'], 3)} < required {v['required']:g}"
+                     + ("  (SF >= 1: the caisson stays at rest under the design wave, but without the "
+                        "margin the design asks for)" if v["value"] >= 1.0 else ""))
+    return lines
+
+
+def caisson_json(r: CaissonReport, source: str | None = None,
+                 required: tuple[float, float] = REQUIRED_SF) -> dict[str, Any]:
     """One JSON-ready object: heights, pressures, loads, safety factors, block, mode, margins, path.
+
+    ``design_check`` compares the safety factors with the ``required`` ones
+    (sliding, overturning; 1.2 by default).
 
     Numbers are rounded to 12 significant digits (``null`` if not finite);
     ``units`` names the unit of each dimensional key.
@@ -87,6 +127,7 @@ def caisson_json(r: CaissonReport, source: str | None = None) -> dict[str, Any]:
     out["mode_description"] = mode_description(r.mode)
     out["margin"] = {"k": _margin_dict(r.margin_k), "mu": _margin_dict(r.margin_mu)}
     out["at_rest_by_goda"] = r.safe_by_goda
+    out["design_check"] = design_check(r, required)
     out["consistent"] = r.consistent
     p = r.path
     hmax = _f(r.analysis.heights.Hmax)
@@ -124,7 +165,8 @@ def _margin_line(m: Margin) -> str:
     return f"    {m.variable:<3} " + ";  ".join(parts)
 
 
-def format_caisson(r: CaissonReport, source: str | None = None) -> str:
+def format_caisson(r: CaissonReport, source: str | None = None,
+                   required: tuple[float, float] = REQUIRED_SF) -> str:
     """The report for people: heights, pressures, loads, safety factors, block, mode and margins."""
     n = _numbers(r)
     lines: list[str] = []
@@ -157,6 +199,7 @@ def format_caisson(r: CaissonReport, source: str | None = None) -> str:
     row("sliding", n["SF_sliding"], "", "mu (W' - U) / P")
     row("overturning", n["SF_overturning"], "", "(W' t - Mu) / Mp, t = B")
     row("heel pressure", n["heel_pressure"], "kPa", "bearing pressure at the heel")
+    lines.extend(design_check_lines(r, required))
     lines.append("equivalent loaded block (docs/waves.md, Sect. 7)")
     row("B", n["B"], "m", "half the width of the upright section")
     row("H_C", n["H_C"], "m", "height of the centre of mass above the base")

@@ -3,8 +3,11 @@
 * :func:`simulation_record` -- one run as a JSON-ready dict (numbers rounded to 12 significant
   digits), :func:`format_simulation` the same for people;
 * :func:`write_history` -- the time history of a run, ``.csv`` or ``.npz``;
-* :func:`write_outcome` -- an outcome map, ``.npz`` or ``.csv``;
-* :func:`write_motion_plot`, :func:`write_block_animation` -- the figures, written atomically.
+* :func:`write_outcome` -- an outcome map, ``.npz``, ``.csv`` or ``.json`` (with its refined
+  boundaries, :func:`outcome_record`);
+* :func:`cached_outcome` -- computed outcome maps kept in ``.npz`` files (``make figures``).
+
+The figures of a run (its history, its animation) are :mod:`regimemap.drawing.motion`'s.
 
 Every file is written atomically (a temporary file in the same folder, then a rename).
 """
@@ -15,7 +18,7 @@ import math
 import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -25,10 +28,7 @@ from ..dynamics.stepper import CATEGORY_LABELS, History, Phase, Simulation
 from ..mechanics.modes import Mode
 from ._numbers import DIGITS as SIGNIFICANT
 from ._numbers import round_sig
-from .atomic import atomic_open, atomic_path
-
-if TYPE_CHECKING:  # pragma: no cover
-    from matplotlib.figure import Figure
+from .atomic import atomic_open
 
 __all__ = [
     "HISTORY_FORMATS",
@@ -37,18 +37,17 @@ __all__ = [
     "SIGNIFICANT",
     "format_simulation",
     "history_arrays",
+    "outcome_record",
     "phase_description",
     "round_sig",
     "simulation_record",
-    "write_block_animation",
     "write_history",
-    "write_motion_plot",
     "write_outcome",
 ]
 
 #: Formats of a time history and of an outcome map's data, by file suffix.
 HISTORY_FORMATS: tuple[str, ...] = ("csv", "npz")
-OUTCOME_DATA_FORMATS: tuple[str, ...] = ("npz", "csv")
+OUTCOME_DATA_FORMATS: tuple[str, ...] = ("npz", "csv", "json")
 
 _PHASE_BY_LABEL = {ph.label: ph for ph in Phase}
 
@@ -72,25 +71,33 @@ def _json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
 
 
 def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mapping[str, float],
-                      run: int = 0) -> dict[str, Any]:
+                      run: int = 0, min_rotation: float = 0.0) -> dict[str, Any]:
     """One run of ``sim`` as a JSON-ready dict.
 
-    Keys: ``overturned``, ``category``, ``max_rotation`` (rad), ``max_rotation_deg``,
-    ``residual_rotation`` (rad), ``residual_rotation_deg``, ``residual_slide`` (m, positive
-    towards O), ``impacts``, ``initial_mode``, ``phases`` (list of {``mode``, ``start``} in s),
-    ``settled``, ``end_time`` (s), ``steps``, ``derived`` (``derived``: p, alpha, ...) and
-    ``inputs``.  Floats are rounded to :data:`SIGNIFICANT` significant digits.
+    Keys: ``overturned``, ``category`` (:meth:`Simulation.categories
+    <regimemap.dynamics.Simulation.categories>` with ``min_rotation``, rad), ``max_rotation``
+    (rad), ``max_rotation_deg``, ``residual_rotation`` (rad), ``residual_rotation_deg``,
+    ``residual_slide`` (m, positive towards O), ``impacts``, ``initial_mode``, ``phases`` (list
+    of {``mode``, ``start``} in s), ``settled``, ``end_time`` (s), ``steps``, ``derived``
+    (``derived``: p, alpha, ...) and ``inputs``.  Floats are rounded to :data:`SIGNIFICANT`
+    significant digits.  A run still moving at the time limit (``settled`` false, not
+    overturned; category "still moving") has no residuals: the three ``residual_*`` are None.
     """
     phases = sim.phases[run] if sim.phases is not None else []
     init = int(sim.initial_mode[run])
+    final = bool(sim.settled[run] or sim.overturned[run])
+
+    def residual(v: float) -> float | None:
+        return round_sig(v) if final else None
+
     return {
         "overturned": bool(sim.overturned[run]),
-        "category": CATEGORY_LABELS[int(sim.category[run])],
+        "category": CATEGORY_LABELS[int(sim.categories(min_rotation)[run])],
         "max_rotation": round_sig(sim.max_rotation[run]),
         "max_rotation_deg": round_sig(math.degrees(float(sim.max_rotation[run]))),
-        "residual_rotation": round_sig(sim.residual_rotation[run]),
-        "residual_rotation_deg": round_sig(math.degrees(float(sim.residual_rotation[run]))),
-        "residual_slide": round_sig(sim.residual_slide[run]),
+        "residual_rotation": residual(sim.residual_rotation[run]),
+        "residual_rotation_deg": residual(math.degrees(float(sim.residual_rotation[run]))),
+        "residual_slide": residual(sim.residual_slide[run]),
         "impacts": int(sim.impacts[run]),
         "initial_mode": Phase(init).label if init >= 0 else None,
         "phases": [{"mode": label, "start": round_sig(t)} for label, t in phases],
@@ -153,13 +160,20 @@ def format_simulation(record: Mapping[str, Any]) -> str:
     elif record["settled"]:
         end = f"came to rest at t = {_num(record['end_time'])} s"
     else:
-        end = f"still moving at t = {_num(record['end_time'])} s (given up)"
+        end = f"still moving at t = {_num(record['end_time'])} s, the time limit"
     lines.append(f"outcome    {record['category']}: {over} ({end})")
+    if inp.get("min_rotation"):
+        lines.append(f"  rocking counts above a max rotation of {_num(inp['min_rotation'])} deg "
+                     "(--min-rotation)")
     lines.append(f"  max rotation        {_num(record['max_rotation'])} rad "
                  f"({_num(record['max_rotation_deg'], 4)} deg)")
-    lines.append(f"  residual rotation   {_num(record['residual_rotation'])} rad "
-                 f"({_num(record['residual_rotation_deg'], 4)} deg)")
-    lines.append(f"  residual slide      {_num(record['residual_slide'])} m (positive towards O)")
+    if record["residual_slide"] is None:  # still moving: nothing is residual yet
+        lines.append("  residual rotation   none: still moving at the time limit")
+        lines.append("  residual slide      none: still moving at the time limit")
+    else:
+        lines.append(f"  residual rotation   {_num(record['residual_rotation'])} rad "
+                     f"({_num(record['residual_rotation_deg'], 4)} deg)")
+        lines.append(f"  residual slide      {_num(record['residual_slide'])} m (positive towards O)")
     lines.append(f"  impacts             {record['impacts']}")
     init = record["initial_mode"]
     lines.append(f"  initial mode        {init} ({phase_description(init)})" if init else
@@ -237,12 +251,21 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
     (int8 codes), ``overturned``, ``max_rotation`` (rad) and ``residual_slide`` (m, positive
     towards O) of shape (len(second), len(first)), ``labels`` (category names by code) and the
     inputs.  ``.csv``: header ``first,second,category,overturned,max_rotation,residual_slide``,
-    one row per cell (second outer, first inner), the category as its name.
+    one row per cell (second outer, first inner), the category as its name.  ``.json``: one
+    object, :func:`outcome_record`, with the refined boundaries.
     Returns the format.
     """
     fmt = _format(path, OUTCOME_DATA_FORMATS, "an outcome map's data")
     if first == second:
         raise ValueError("the two swept inputs must differ")
+    if fmt == "json":
+        import json
+
+        record = outcome_record(m, first, second, inputs, axes)
+        with atomic_open(path, "w", encoding="utf-8") as fh:
+            json.dump(record, fh, ensure_ascii=False, allow_nan=False)
+            fh.write("\n")
+        return fmt
     if fmt == "npz":
         arrays: dict[str, NDArray[Any]] = {
             first: np.asarray(m.first_values, dtype=np.float64),
@@ -276,41 +299,58 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
     return fmt
 
 
-def write_motion_plot(path: str | os.PathLike[str], fig: Figure, fmt: str | None = None,
-                      dpi: float | None = None) -> Path:
-    """Save a figure atomically (:func:`regimemap.io.figures.save_figure`)."""
-    from .figures import save_figure
+def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, Any] | None = None,
+                   axes: Mapping[str, NDArray[np.float64]] | None = None) -> dict[str, Any]:
+    """An outcome map as a JSON-ready dict (numbers rounded to :data:`SIGNIFICANT` digits).
 
-    return save_figure(fig, path, fmt, dpi)
-
-
-def write_block_animation(path: str | os.PathLike[str], history: History, **kwargs: Any
-                          ) -> tuple[int, tuple[int, int], float]:
-    """Write the GIF of :func:`regimemap.drawing.motion.render_block_animation` atomically.
-
-    Returns the number of frames, their size in pixels and the speed-up over real time.
+    Keys: ``first`` and ``second`` (the swept inputs' names: x and y), ``axes`` (their values,
+    and any ``axes`` given, e.g. dimensionless ones), ``labels`` (the categories by code),
+    ``category`` (the category of every cell by name, a list of rows: ``category[i][j]`` at
+    ``second[i]``, ``first[j]``), ``max_rotation`` (rad) and ``residual_slide`` (m) likewise,
+    ``refined`` (whether the boundaries were refined), ``boundaries`` (a list of
+    ``{"between": [category, category], "points": [[x, y], ...]}`` in the swept inputs' units,
+    x the first; empty when not refined), ``min_rotation`` (rad) and ``inputs``.
     """
-    from ..drawing.motion import render_block_animation
-
-    if Path(path).suffix.lower() != ".gif":
-        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
-    with atomic_path(path) as tmp:
-        return render_block_animation(tmp, history, **kwargs)
+    labels = list(m.labels)
+    names = np.asarray(labels, dtype=object)[np.asarray(m.category, dtype=np.int64)]
+    ax: dict[str, Any] = {first: [round_sig(v) for v in np.asarray(m.first_values).tolist()],
+                          second: [round_sig(v) for v in np.asarray(m.second_values).tolist()]}
+    for key, arr in (axes or {}).items():
+        ax[key] = [round_sig(v) for v in np.asarray(arr, dtype=np.float64).tolist()]
+    return {
+        "first": first,
+        "second": second,
+        "axes": ax,
+        "labels": labels,
+        "category": names.tolist(),
+        "max_rotation": [[round_sig(v) for v in row] for row in np.asarray(m.max_rotation).tolist()],
+        "residual_slide": [[round_sig(v) for v in row] for row in np.asarray(m.residual_slide).tolist()],
+        "refined": m.refined,
+        "boundaries": [{"between": [a, b], "points": [[round_sig(x), round_sig(y)] for x, y in p.tolist()]}
+                       for a, b, p in m.boundaries()],
+        "min_rotation": round_sig(m.min_rotation),
+        "inputs": _json_inputs(inputs or {}),
+    }
 
 
 # -- a cache of computed outcome maps (make figures) ----------------------------------------------
 
 
+#: The layout of a cached map: a new one makes every older cache file out of date (2: the
+#: refined boundaries, ``crossings_*``).
+_CACHE_FORMAT = "outcome-map 2 (refined boundaries)"
+
+
 def _cache_key(spec: str) -> str:
-    """A digest of ``spec``, regimemap's and numpy's versions and the source of regimemap.dynamics:
-    any change to the stepper makes a new key."""
+    """A digest of ``spec``, the cache's layout, regimemap's and numpy's versions and the source of
+    regimemap.dynamics: any change to the stepper makes a new key."""
     import hashlib
 
     from .. import __version__
     from ..dynamics import stepper
 
     h = hashlib.sha256()
-    h.update(f"{spec}\n{__version__}\n{np.__version__}\n".encode())
+    h.update(f"{_CACHE_FORMAT}\n{spec}\n{__version__}\n{np.__version__}\n".encode())
     for src in sorted(Path(stepper.__file__).parent.glob("*.py")):
         h.update(src.name.encode())
         h.update(src.read_bytes())
@@ -324,10 +364,11 @@ def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
                    compute: Any) -> tuple[OutcomeMap, NDArray[np.float64], NDArray[np.float64], bool]:
     """``compute()`` -> (OutcomeMap, x, y), through a cache of ``.npz`` files in ``folder``.
 
-    The file ``<name>-<key>.npz`` holds the map's arrays exactly (float64), so a figure drawn
-    from it is byte-identical to one drawn from a fresh computation.  The key
-    (:func:`_cache_key`) covers ``spec`` (the figure's definition), the versions of regimemap
-    and numpy and the source of :mod:`regimemap.dynamics`.  ``folder`` None: no cache.
+    The file ``<name>-<key>.npz`` holds the map's arrays and its refined crossings exactly
+    (float64), so a figure drawn from it is byte-identical to one drawn from a fresh
+    computation.  The key (:func:`_cache_key`) covers ``spec`` (the figure's definition), the
+    layout of the file, the versions of regimemap and numpy and the source of
+    :mod:`regimemap.dynamics`.  ``folder`` None: no cache.
     Returns the map, x, y and whether it came from the cache.
     """
     if folder is None:
@@ -340,17 +381,29 @@ def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
     if path.is_file():
         try:
             with np.load(path, allow_pickle=False) as z:
+                crossings = None
+                if bool(z["refined"]):
+                    from ..dynamics.boundaries import Crossings
+
+                    crossings = Crossings.from_arrays({k[len("crossings_"):]: z[k] for k in z.files
+                                                       if k.startswith("crossings_")})
                 m = OutcomeMap(first_name=str(z["first_name"]), second_name=str(z["second_name"]),
                                labels=tuple(str(v) for v in z["labels"]),
-                               seconds=float(z["seconds"]), **{k: z[k] for k in _CACHED})
+                               seconds=float(z["seconds"]), crossings=crossings,
+                               refine_seconds=float(z["refine_seconds"]),
+                               min_rotation=float(z["min_rotation"]), **{k: z[k] for k in _CACHED})
                 return m, z["x"], z["y"], True
         except (OSError, ValueError, KeyError):  # a damaged cache file: compute again
             pass
     m, x, y = compute()
     Path(folder).mkdir(parents=True, exist_ok=True)
     arrays = {k: np.asarray(getattr(m, k)) for k in _CACHED}
+    if m.crossings is not None:
+        arrays.update({f"crossings_{k}": v for k, v in m.crossings.arrays().items()})
     with atomic_open(path, "wb") as fh:
         np.savez_compressed(fh, first_name=np.array(m.first_name), second_name=np.array(m.second_name),
                             labels=np.array(m.labels), seconds=np.float64(m.seconds), x=np.asarray(x),
-                            y=np.asarray(y), **arrays)  # type: ignore[arg-type]
+                            y=np.asarray(y), refined=np.bool_(m.refined),
+                            refine_seconds=np.float64(m.refine_seconds),
+                            min_rotation=np.float64(m.min_rotation), **arrays)  # type: ignore[arg-type]
     return m, x, y, False

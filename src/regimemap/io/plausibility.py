@@ -1,0 +1,159 @@
+"""Values of a design file that are valid but implausible for a breakwater: likely unit slips.
+
+A design file can pass every range check and still describe no breakwater:
+``depth = 1010`` (centimetres for metres) draws a 1000-m mound, and
+``buoyant_weight = 2312000`` (N/m for kN/m) a section as dense as lead. Each
+check below names the key, the value, the range that real vertical
+breakwaters fall in, and the slip that most likely explains the value. The
+commands print these as warnings on standard error; ``--strict`` makes them
+errors. Valid inputs are never refused without ``--strict``.
+
+The ranges are generous on purpose (a warning that fires on real designs is
+noise): sea water depth at a breakwater up to 100 m (the deepest caisson
+breakwaters, Kamaishi's, stand in 63 m), significant periods 2-30 s, an
+implied unit weight of the whole section 5-30 kN/m^3 (water is 10, concrete
+24, a sand-filled caisson 19-21), heel pressure up to 5 MPa (Goda 2000,
+Sect. 4.2: about 400-500 kPa is allowed on a rubble mound), a section
+narrower or wider than 1-100 m and wave heights below 30 m.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:  # pragma: no cover
+    from regimemap.waves import CaissonAnalysis
+
+    from .design import Design
+
+__all__ = ["Implausible", "implausible_values"]
+
+#: Plausible ranges: (low, high) and the unit they are in.
+RANGES: dict[str, tuple[float, float, str]] = {
+    "depth": (0.5, 100.0, "m"),
+    "period": (2.0, 30.0, "s"),
+    "unit_weight": (5.0, 30.0, "kN/m^3"),
+    "heel_pressure": (0.0, 5000.0, "kPa"),
+    "width": (1.0, 100.0, "m"),
+    "height": (0.0, 30.0, "m"),
+}
+
+
+@dataclass(frozen=True)
+class Implausible:
+    """One implausible value: where, what, and the likely slip."""
+
+    key: str       # "[site] depth"
+    value: float
+    message: str   # the whole sentence, naming the key
+
+    def __str__(self) -> str:
+        return self.message
+
+
+def _num(x: float) -> str:
+    """A number as a person writes it: ``2312000``, ``10.1``, ``0.035`` (no exponent below 1e15)."""
+    if x == int(x) and abs(x) < 1e15:
+        return str(int(x))
+    return f"{x:.6g}" if 1e-4 <= abs(x) < 1e15 else f"{x:.4g}"
+
+
+def implausible_values(design: Design, analysis: CaissonAnalysis | None = None) -> list[Implausible]:
+    """The implausible values of a design file (empty when all are plausible).
+
+    Parameters
+    ----------
+    design : Design
+        A parsed and checked design file.
+    analysis : CaissonAnalysis, optional
+        Its Goda analysis, for the checks on computed values (heel pressure).
+
+    Returns
+    -------
+    list of Implausible
+        In file order: ``[site]``, ``[wave]``, ``[caisson]``, ``[lifetime]``,
+        then computed values.
+
+    Examples
+    --------
+    >>> from regimemap.io.design import example_design_text, parse_design
+    >>> implausible_values(parse_design(example_design_text()))
+    []
+    >>> text = example_design_text().replace("depth = 10.1", "depth = 1010")
+    >>> print(implausible_values(parse_design(text))[0])  # doctest: +ELLIPSIS
+    [site] depth = 1010: deeper than 100 m, ... centimetres for metres?
+    """
+    out: list[Implausible] = []
+    s, w, c = design.site, design.wave, design.caisson
+
+    def add(key: str, value: float, text: str) -> None:
+        out.append(Implausible(key, value, f"{key} = {_num(value)}: {text}"))
+
+    lo, hi, _ = RANGES["depth"]
+    for key, depth in (("[site] depth", s.depth), ("[site] armour_depth", s.armour_depth),
+                       ("[caisson] base_depth", c.base_depth)):
+        if depth > hi:
+            add(key, depth, f"deeper than {hi:g} m, where no caisson breakwater stands; "
+                            f"{depth / 100:.4g} m in centimetres for metres?")
+    lo, hi, _ = RANGES["period"]
+    if not lo <= w.period <= hi:
+        slip = (f"{w.period / 10:.3g} s in tenths of a second?" if w.period > hi else
+                "a frequency (1/s) or an angular frequency for a period?")
+        add("[wave] period", w.period, f"outside the {lo:g}-{hi:g} s of sea waves; {slip}")
+    lo, hi, _ = RANGES["height"]
+    heights: tuple[tuple[str, float | None], ...] = (
+        ("[wave] H0", w.H0), ("[wave] H13", w.H13), ("[wave] Hmax", w.Hmax), ("[caisson] crest", c.crest))
+    for key, height in heights:
+        if height is not None and height > hi:
+            add(key, height, f"over {hi:g} m; {height / 100:.4g} m in centimetres for metres?")
+    lo, hi, _ = RANGES["width"]
+    if not lo <= c.width <= hi:
+        slip = (f"{c.width / 100:.4g} m in centimetres for metres?" if c.width > hi
+                else "the half width B for the full width, or metres for decimetres?")
+        add("[caisson] width", c.width, f"outside the {lo:g}-{hi:g} m of caisson widths; {slip}")
+    if c.buoyant_weight is not None:
+        # the section's implied unit weight: dry weight over its area, kN/m^3
+        g = 9.81
+        dry = c.buoyant_weight + s.water_density * g * c.width * c.base_depth / 1e3
+        area = c.width * (c.base_depth + c.crest)
+        unit = dry / area if area > 0 else math.inf
+        lo, hi, _ = RANGES["unit_weight"]
+        if not lo <= unit <= hi:
+            slip = ("N/m for kN/m?" if unit > 1000 * lo and unit / 1000 <= hi * 1.5 else
+                    "kN/m expected: N/m or tonnes per metre?" if unit > hi else
+                    "tonnes per metre for kN/m, or the weight of a smaller section?")
+            add("[caisson] buoyant_weight", c.buoyant_weight,
+                f"implies a unit weight of {_num(round(unit, 1))} kN/m^3 for the section "
+                f"{_num(c.width)} m wide and {_num(c.base_depth + c.crest)} m high "
+                f"(real caissons: {lo:g}-{hi:g}); {slip}")
+    densities: tuple[tuple[str, float | None], ...] = (
+        ("[caisson] concrete_density", c.concrete_density), ("[caisson] fill_density", c.fill_density),
+        ("[caisson] fill_density_above", c.fill_density_above))
+    for key, rho in densities:
+        if rho is not None and not 800.0 <= rho <= 3500.0:
+            slip = "t/m^3 or g/cm^3 for kg/m^3?" if rho < 800.0 else "a unit weight in N/m^3 for a density?"
+            add(key, rho, f"outside 800-3500 kg/m^3; {slip}")
+    life = design.lifetime
+    if life is not None:
+        lo, hi, _ = RANGES["height"]
+        returns: tuple[tuple[str, float | None], ...] = (
+            ("[lifetime] H0_10", life.H0_10), ("[lifetime] H0_50", life.H0_50))
+        for key, height in returns:
+            if height is not None and height > hi:
+                add(key, height, f"over {hi:g} m; {height / 100:.4g} m in centimetres for metres?")
+        if life.period is not None and not RANGES["period"][0] <= life.period <= RANGES["period"][1]:
+            add("[lifetime] period", life.period, "outside the 2-30 s of sea waves")
+    if analysis is not None:
+        import numpy as np
+
+        pe = float(np.asarray(analysis.stability.heel_pressure)) / 1e3
+        hi = RANGES["heel_pressure"][1]
+        if math.isfinite(pe) and pe > hi:
+            out.append(Implausible(
+                "heel pressure", pe,
+                f"heel pressure {_num(round(pe))} kPa: over {hi / 1e3:g} MPa, far beyond what a rubble "
+                "mound bears (Goda 2000 allows about 500 kPa); check the units of [caisson] "
+                "buoyant_weight (kN/m) and the geometry"))
+    return out
