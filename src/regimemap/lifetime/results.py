@@ -133,6 +133,30 @@ class LifetimeResult:
         return (f"LifetimeResult(ESD={self.expected_sliding:.4g} m ± {self.std_error:.2g} m, "
                 f"trials={self.trials}, years={self.years}, width={self.width:g} m, seed={self.seed})")
 
+    def _repr_html_(self) -> str:
+        """The statistics of :meth:`summary` as a small table (Jupyter's rich display)."""
+        from ..mechanics.htmltable import html_table, number
+
+        rows: list[tuple[object, ...]] = [
+            ("expected sliding (ESD)", f"{number(self.expected_sliding)} m",
+             f"± {number(self.std_error, 2)} m (standard error)"),
+            ("standard deviation", f"{number(self.std)} m", ""),
+            ("median", f"{number(self.median)} m", ""),
+            ("90 % / 99 % quantile", f"{number(self.quantile(0.9))} m / "
+             f"{number(self.quantile(0.99))} m", ""),
+            ("never slides", f"{100.0 * self.never_slides:.3g} %", "of the lifetimes"),
+        ]
+        for x in self.thresholds:
+            rows.append((f"P(S > {x:g} m)", f"{100.0 * self.exceedance(x):.3g} %",
+                         f"one storm alone: {100.0 * self.storm_exceedance(x):.3g} %"))
+        rows += [
+            ("trials", self.trials, f"lifetimes of {self.years} years, seed {self.seed}"),
+            ("storms", number(float(np.mean(self.storms))), "per lifetime, on average"),
+            ("width", f"{self.width:g} m", "of the caisson"),
+        ]
+        return html_table(rows, caption=f"Lifetime sliding: ESD = {number(self.expected_sliding)} m "
+                          f"over {self.years} years", header=("", "value", ""))
+
 
 def _key(x: float) -> str:
     """A threshold as a JSON key: ``0.1`` -> ``"0.1"`` (shortest repr)."""

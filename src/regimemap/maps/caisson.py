@@ -25,9 +25,11 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ..mechanics.htmltable import html_table, number
 from ..mechanics.modes import Mode
 from ..waves import CaissonAnalysis, analyse_caisson
 from .loadedmap import LoadedMap, Margin, classify_at, margins, mode_grid, named_points
+from .query import margin_words
 
 __all__ = [
     "PATH_FACTORS",
@@ -149,6 +151,48 @@ class CaissonReport:
     def consistent(self) -> bool:
         """Goda's ``SF >= 1`` (both) agrees with rest on the loaded map."""
         return self.safe_by_goda == (self.mode == _RE)
+
+    # -- display: a readable repr and a table for Jupyter -------------------------------------
+    def _onset_words(self) -> str:
+        p = self.path
+        if p.onset is None:
+            return "rests along the whole wave path"
+        to = "" if p.onset_mode is None else f" ({Mode(p.onset_mode).label})"
+        return f"leaves rest at {p.onset:.3g} x the design wave{to}"
+
+    def __repr__(self) -> str:
+        """Two lines: the mode and its margins on the loaded map; Goda's factors and the wave path."""
+        m, st = self.map, self.analysis.stability
+        mode = Mode(self.mode)
+        return (f"CaissonReport({mode.label} ({mode.description}) at k={self.k:.4g}, "
+                f"mu={self.mu:.4g} on the loaded map gamma={m.gamma:.4g}, k'={m.kprime:.4g}, "
+                f"beta={m.buoyancy:.4g}, nu={m.uplift_ratio:.4g}; margin "
+                f"{margin_words(self.margin_k)}, {margin_words(self.margin_mu)};\n  Goda SF sliding "
+                f"{number(float(st.sliding))}, overturning {number(float(st.overturning))}: "
+                f"{'consistent' if self.consistent else 'NOT consistent'} with the map; "
+                f"{self._onset_words()})")
+
+    def _repr_html_(self) -> str:
+        """The design point on its loaded map and Goda's factors as a small table."""
+        m, st = self.map, self.analysis.stability
+        mode = Mode(self.mode)
+        rows: list[tuple[object, ...]] = [
+            ("mode", mode.label, mode.description),
+            ("k", self.k, "P / (m g), the push of the design wave"),
+            ("mu", self.mu, "friction coefficient"),
+            ("margin k", margin_words(self.margin_k, with_name=False), "mu fixed"),
+            ("margin mu", margin_words(self.margin_mu, with_name=False), "k fixed"),
+            ("gamma", m.gamma, "H_C / B"),
+            ("k'", m.kprime, "height of the wave force above C / H_C"),
+            ("beta", m.buoyancy, "buoyancy / dry weight"),
+            ("nu", m.uplift_ratio, "uplift ratio U / P"),
+            ("SF sliding", float(st.sliding), "Goda"),
+            ("SF overturning", float(st.overturning), "Goda"),
+            ("consistent", self.consistent, "Goda's SF >= 1 agrees with rest on the map"),
+            ("wave path", self._onset_words(), "H1/3 and Hmax scaled by 0.5 ... 1.5"),
+        ]
+        return html_table(rows, caption=f"Caisson on the loaded map: {mode.label} at "
+                          f"k = {self.k:.4g}, mu = {self.mu:.4g}", header=("", "value", ""))
 
 
 def _path_inputs(inputs: Mapping[str, Any], a: CaissonAnalysis, factors: NDArray[np.float64]

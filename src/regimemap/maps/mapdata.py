@@ -15,7 +15,9 @@ which the renderer draws solid and dashed respectively.
 
 from __future__ import annotations
 
+import logging
 import math
+import time
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 
@@ -23,13 +25,17 @@ import numpy as np
 
 from ..mechanics.block import Parameters
 from ..mechanics.curves import Curve, NamedPoint, map_curves, named_points
+from ..mechanics.htmltable import html_table
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.regions import raw_region
 from .classify import classify
-from .geometry import DEFAULT_SAMPLES, breakpoints, region_polygons
+from .describe import loads_text
+from .geometry import DEFAULT_SAMPLES, area_in_view, breakpoints, region_polygons
 from .view import auto_extent, simplify
 
 __all__ = ["CurveData", "MapData", "compute_map"]
+
+_log = logging.getLogger(__name__)
 
 # -- curves ------------------------------------------------------------------------------
 
@@ -294,6 +300,44 @@ class MapData:
         """``(0, k_max, 0, mu_max)``, as matplotlib's ``extent``."""
         return (0.0, self.k_max, 0.0, self.mu_max)
 
+    # -- display: a readable repr and a table for Jupyter -------------------------------------
+    def _what(self) -> str:
+        p = self.params
+        loads = loads_text(p)
+        kind = "raw regions" if self.raw else "final map"
+        return (f"gamma={p.gamma:g}, k'={p.kprime:g}" + (f"; {loads}" if loads else "")
+                + f": {kind}, view k <= {self.k_max:g}, mu <= {self.mu_max:g}")
+
+    def _view_shares(self) -> dict[Mode, float]:
+        """The share of the view that each mode's region covers (0 to 1; raw maps may overlap)."""
+        whole = self.k_max * self.mu_max
+        return {m: sum(area_in_view(poly, self.k_max, self.mu_max)
+                       for poly in self.polygons.get(m, []) if len(poly) >= 3) / whole
+                for m in self.modes}
+
+    def __repr__(self) -> str:
+        """Two lines: the block and the view; the modes in view, the curves and the points."""
+        shares = self._view_shares()
+        seen = [m.label for m in self.modes if shares[m] > 1e-9]
+        n = sum(len(v) for v in self.polygons.values())
+        return (f"MapData({self._what()};\n  modes in view {', '.join(seen) or 'none'} "
+                f"({n} polygons), curves {', '.join(self.curves) or 'none'}, "
+                f"points {', '.join(self.points) or 'none'})")
+
+    def _repr_html_(self) -> str:
+        """The map's regions, curves and points as a small table (Jupyter's rich display)."""
+        shares = self._view_shares()
+        rows: list[tuple[object, ...]] = [
+            (m.label, f"{100.0 * shares[m]:.1f} %", len(self.polygons.get(m, [])), m.description)
+            for m in self.modes]
+        if self.curves:
+            rows.append(("curves", len(self.curves), "", ", ".join(self.curves)))
+        if self.points:
+            rows.append(("points", len(self.points), "", ", ".join(
+                f"{pt.name} ({pt.k:.4g}, {pt.mu:.4g})" for pt in self.points.values())))
+        return html_table(rows, caption=f"Regime map, {self._what()}",
+                          header=("mode", "share of the view", "polygons", ""))
+
 
 def _point(xy: np.ndarray) -> tuple[float, float]:
     return (float(xy[0]), float(xy[1]))
@@ -341,6 +385,7 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
     -------
     MapData
     """
+    t0 = time.perf_counter()
     p = params
     default = LOADED_MAP_MODES if p.loaded else MAP_MODES
     modes_t = tuple(default if modes is None else (Mode(m) for m in modes))
@@ -417,5 +462,11 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
                 ends["C"] = _point(curve_data["DC"].points[-1])
             if "C'" in points and "mu_star" in curve_data:
                 ends["C''"] = _point(curve_data["mu_star"].points[-1])
+    if _log.isEnabledFor(logging.INFO):
+        _log.info("map gamma=%g, k'=%g%s: view k <= %g, mu <= %g; %d polygons (%d vertices), "
+                  "%d curves, %d points; %d samples, %.3f s", p.gamma, p.kprime,
+                  " (raw regions)" if raw else "", k_max, mu_max, sum(len(v) for v in polys.values()),
+                  sum(len(poly) for v in polys.values() for poly in v), len(curve_data), len(points),
+                  samples, time.perf_counter() - t0)
     return MapData(p, float(k_max), float(mu_max), modes_t, bool(raw), polys, curve_data,
                    points, ends)

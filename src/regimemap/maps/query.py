@@ -44,11 +44,13 @@ import numpy as np
 
 from ..mechanics import constants as C
 from ..mechanics.block import Case, Parameters
+from ..mechanics.htmltable import html_table, number
 from ..mechanics.loads import block_constants
 from ..mechanics.modes import SELECTION_ORDER, Mode
 from ..mechanics.solver import Hypothesis, solve
 from ..mechanics.validation import check_gamma, check_kprime, check_nonnegative_array
 from .classify import classify
+from .describe import loads_text
 from .margins import (
     Crossing,
     Margin,
@@ -232,6 +234,59 @@ class PointResult:
             "thresholds": {key: finite_or_none(v) for key, v in self.thresholds.items()},
             **({"loads": dict(self.loads)} if self.loads else {}),
         }
+
+    # -- display: a readable repr and a table for Jupyter -------------------------------------
+    def _block_text(self) -> str:
+        loads = loads_text(Parameters(self.gamma, self.kprime, **self.loads)) if self.loads else ""
+        return f"gamma={self.gamma:g}, k'={self.kprime:g}" + (f"; {loads}" if loads else "")
+
+    def __repr__(self) -> str:
+        """Two lines: the point, the block and the mode; the margins and the main reactions."""
+        name = f"{self.name!r}: " if self.name else ""
+        return (f"PointResult({name}k={self.k:g}, mu={self.mu:g} ({self._block_text()}) -> "
+                f"{self.mode.label} ({self.mode.description}), {self.chosen_by};\n"
+                f"  margin {margin_words(self.margin_k)}, {margin_words(self.margin_mu)}; "
+                f"fx={number(self.fx)}, fy={number(self.fy)}, thdd={number(self.thdd)})")
+
+    def _repr_html_(self) -> str:
+        """The answer as a small table (Jupyter's rich display)."""
+        name = f"{self.name}: " if self.name else ""
+        rows: list[tuple[object, ...]] = [
+            ("mode", self.mode.label, self.mode.description),
+            ("chosen by", self.chosen_by, "admissible (solver): "
+             + (", ".join(m.label for m in self.admissible) or "none")),
+            ("loads" if self.loads else "case",
+             loads_text(Parameters(self.gamma, self.kprime, **self.loads)) if self.loads
+             else self.case.value, "" if self.loads else self.case.description),
+            ("fx", self.fx, "horizontal reaction / mg (positive to the right)"),
+            ("fy", self.fy, "normal reaction / mg"),
+            ("xi", self.xi, "where f_y acts, from C / B (-1 = O, +1 = O')"),
+            ("xdd", self.xdd, "horizontal acceleration of C / g"),
+            ("ydd", self.ydd, "vertical acceleration of C / g"),
+            ("thdd", self.thdd, "angular acceleration * B/g (counter-clockwise)"),
+            ("slip", self.slip, "acceleration of the slipping contact / g (- : sticks)"),
+            ("lift", self.lift, "upward acceleration of the lifting corner / g"),
+            ("margin k", margin_words(self.margin_k, with_name=False),
+             "smallest change of k (mu fixed) that changes the mode"),
+            ("margin mu", margin_words(self.margin_mu, with_name=False),
+             "smallest change of mu (k fixed) that changes the mode"),
+        ]
+        return html_table(rows, caption=f"{name}k = {self.k:g}, mu = {self.mu:g} "
+                          f"({self._block_text()})", header=("", "value", ""))
+
+
+def margin_words(m: Margin, with_name: bool = True) -> str:
+    """The nearest change of a margin in words: ``k -52.4% -> RE``, ``mu: no change``."""
+    c = m.nearest
+    head = f"{m.variable} " if with_name else ""
+    if c is None:
+        return f"{head}no change".strip() if not with_name else f"{m.variable}: no change"
+    if c.on_boundary:
+        return f"{head}0 (on the boundary) -> {c.to.label}"
+    sign = "-" if c.direction == "down" else "+"
+    if c.relative is None:
+        return f"{head}{sign}{number(c.delta)} -> {c.to.label}"
+    return f"{head}{sign}{number(100.0 * c.relative, 3)}% -> {c.to.label}"
 
 
 # --------------------------------------------------------------------------------------

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
+from ..mechanics.htmltable import html_table, number_range
 from ._types import RHO_SEAWATER, G, as_float
 from .block import EquivalentBlock, equivalent_block
 from .caisson import (
@@ -56,6 +57,52 @@ class CaissonAnalysis:
     section: CaissonSection
     stability: Stability
     block: EquivalentBlock
+
+    # -- display: a readable repr and a table for Jupyter -------------------------------------
+    def _rows(self) -> list[tuple[str, str, str]]:
+        """(quantity, value or range, unit and meaning) of the main results."""
+        h, ld, sec, st, b = self.heights, self.loads, self.section, self.stability, self.block
+
+        def r(values: npt.ArrayLike, scale: float = 1.0) -> str:
+            return number_range((np.asarray(values, dtype=float) * scale).ravel())
+
+        return [
+            ("H1/3", r(h.H13), "m, significant wave height at the wall"),
+            ("Hmax", r(h.Hmax), "m, design wave height"),
+            ("P", r(ld.P, 1e-3), "kN/m, horizontal wave force"),
+            ("U", r(ld.U, 1e-3), "kN/m, uplift force"),
+            ("W'", r(sec.buoyant_weight, 1e-3), "kN/m, buoyant weight"),
+            ("SF sliding", r(st.sliding), "mu (W' - U) / P (Goda: >= 1.2)"),
+            ("SF overturning", r(st.overturning), "(W' t - M_U) / M_P (Goda: >= 1.2)"),
+            ("heel pressure", r(st.heel_pressure, 1e-3), "kPa"),
+            ("gamma", r(b.gamma), "H_C / B of the equivalent block"),
+            ("k", r(b.k), "P / (m g)"),
+            ("k'", r(b.kprime), "height of the wave force's resultant above C / H_C"),
+            ("beta", r(b.beta_b), "buoyancy / dry weight"),
+            ("nu", r(b.nu), "uplift ratio U / P"),
+            ("mu", r(b.mu), "friction coefficient"),
+        ]
+
+    def _count(self) -> int:
+        return int(np.asarray(self.block.k).size)
+
+    def __repr__(self) -> str:
+        """Two lines: the wave, the loads and the safety factors; the equivalent block."""
+        v = {name: value for name, value, _ in self._rows()}
+        w, kp = v["W'"], v["k'"]
+        n = self._count()
+        head = "" if n == 1 else f"{n} conditions: "
+        return (f"CaissonAnalysis({head}Hmax={v['Hmax']} m, P={v['P']} kN/m, "
+                f"U={v['U']} kN/m, W'={w} kN/m; SF sliding {v['SF sliding']}, "
+                f"overturning {v['SF overturning']};\n  block gamma={v['gamma']}, k={v['k']}, "
+                f"k'={kp}, beta={v['beta']}, nu={v['nu']}, mu={v['mu']})")
+
+    def _repr_html_(self) -> str:
+        """Goda's results and the equivalent block as a small table (Jupyter's rich display)."""
+        n = self._count()
+        return html_table(self._rows(), caption="Caisson analysis (Goda)"
+                          + ("" if n == 1 else f", {n} conditions"),
+                          header=("", "value", ""))
 
 
 def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope: npt.ArrayLike,

@@ -1,0 +1,21 @@
+r"""
+Fig. 3.1 — Rest region
+======================
+
+Rest region.
+
+The region of RE alone, as the report derives it. The block: :math:`\gamma = 3`,
+:math:`k' = 0.3`. The caption is lost from the report's source text and is reconstructed
+from the wording of its companion captions and of the paragraphs that cite it.
+
+Command line: ``regimemap figure 3.1``.
+"""
+
+from regimemap.drawing import render_preset
+from regimemap.drawing.presets import get_preset
+
+preset = get_preset("3.1")
+print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
+      f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
+
+fig = render_preset(preset)

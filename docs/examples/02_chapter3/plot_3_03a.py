@@ -1,0 +1,22 @@
+r"""
+Fig. 3.3a — Rock region, case 1 (a)
+===================================
+
+Rock region, case 1, :math:`0 \leq k' \leq (1+\gamma^2)/(3\gamma^2)`, :math:`f_x \geq
+0`, :math:`a \geq 0`.
+
+The region of RO alone, as the report derives it. The block: :math:`\gamma = 3`,
+:math:`k' = 0.2`. The caption is lost from the report's source text and is reconstructed
+from the wording of its companion captions and of the paragraphs that cite it.
+
+Command line: ``regimemap figure 3.3a``.
+"""
+
+from regimemap.drawing import render_preset
+from regimemap.drawing.presets import get_preset
+
+preset = get_preset("3.3a")
+print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
+      f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
+
+fig = render_preset(preset)

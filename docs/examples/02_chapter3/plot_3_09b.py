@@ -1,0 +1,21 @@
+r"""
+Fig. 3.9b — All modes, case 1 (b)
+=================================
+
+All modes, case 1, :math:`(1+\gamma^2)/(3\gamma^2) \leq k' \leq (4+\gamma^2)/(3\gamma^2)
+\leq 1`, :math:`f_x \geq 0`, :math:`a \geq 0`.
+
+The final map: one mode at every point of the k–μ plane. The block: :math:`\gamma = 3`,
+:math:`k' = 0.425`. The caption survives in the report.
+
+Command line: ``regimemap figure 3.9b``.
+"""
+
+from regimemap.drawing import render_preset
+from regimemap.drawing.presets import get_preset
+
+preset = get_preset("3.9b")
+print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
+      f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
+
+fig = render_preset(preset)

@@ -1,0 +1,21 @@
+r"""
+Fig. 4.2 — Rest region
+======================
+
+Rest region.
+
+The region of RE alone, as the report derives it, before Section 4.7 resolves where the
+regions overlap. The block: :math:`\gamma = 3`, :math:`k' = -0.3`. The caption survives
+in the report.
+
+Command line: ``regimemap figure 4.2``.
+"""
+
+from regimemap.drawing import render_preset
+from regimemap.drawing.presets import get_preset
+
+preset = get_preset("4.2")
+print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
+      f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
+
+fig = render_preset(preset)

@@ -1,0 +1,22 @@
+r"""
+Fig. 4.4a — Rock region, Δ ≥ 0
+==============================
+
+Rock (about :math:`O`) region, :math:`|k'| \leq (1+\gamma^2)/(4+\gamma^2)`.
+
+The region of RO alone, as the report derives it, before Section 4.7 resolves where the
+regions overlap. The block: :math:`\gamma = 3`, :math:`k' = -0.3`. The caption is lost
+from the report's source text and is reconstructed from the wording of its companion
+captions and of the paragraphs that cite it.
+
+Command line: ``regimemap figure 4.4a``.
+"""
+
+from regimemap.drawing import render_preset
+from regimemap.drawing.presets import get_preset
+
+preset = get_preset("4.4a")
+print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
+      f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
+
+fig = render_preset(preset)

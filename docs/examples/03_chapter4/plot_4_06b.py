@@ -1,0 +1,21 @@
+r"""
+Fig. 4.6b — Slide-rock about O′, Δ ≤ 0
+======================================
+
+Slide-rock (about :math:`O'`) region, :math:`|k'| \geq (1+\gamma^2)/(4+\gamma^2)`.
+
+The region of SRO'- alone, as the report derives it, before Section 4.7 resolves where
+the regions overlap. The block: :math:`\gamma = 3`, :math:`k' = -0.85`. The caption
+survives in the report.
+
+Command line: ``regimemap figure 4.6b``.
+"""
+
+from regimemap.drawing import render_preset
+from regimemap.drawing.presets import get_preset
+
+preset = get_preset("4.6b")
+print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
+      f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
+
+fig = render_preset(preset)

@@ -1,0 +1,160 @@
+"""``regimemap explore``: the regime map, live (sliders for gamma and k', a click, Save).
+
+The window is :class:`regimemap.drawing.explore.Explorer`; this module only
+parses the options, wires the explorer to the rest of the command line (the
+file names of ``regimemap plot``, and the ``plot`` command that writes the
+same file, on standard error) and opens the window.  :func:`open_explorer` does the same
+wiring for Python and Jupyter.  Importing this module does not import matplotlib.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import click
+
+from ._common import (
+    RunError,
+    gamma_option,
+    import_matplotlib,
+    kprime_option,
+    load_options,
+    output_path,
+    report_written,
+    resolution_type,
+)
+from .plot import DEFAULT_SAMPLES, plot_stem
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
+
+    from ..drawing.explore import Explorer
+    from ..mechanics.block import Parameters
+
+__all__ = ["explore_cmd", "open_explorer", "plot_command_line"]
+
+def plot_command_line(explorer: Explorer) -> str:
+    """The ``regimemap plot`` command that draws the explorer's current view."""
+    p = explorer.params
+    words = ["regimemap", "plot", "--gamma", f"{p.gamma!r}", "--kprime", f"{p.kprime!r}"]
+    for name, value in explorer.loads.items():
+        words += [f"--{name.replace('_', '-')}", f"{value!r}"]
+    if explorer.point is not None:
+        words += ["--point", f"{explorer.point.k!r},{explorer.point.mu!r}"]
+    if explorer.resolution != DEFAULT_SAMPLES:
+        words += ["--resolution", str(explorer.resolution)]
+    return " ".join(words)
+
+
+def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT_SAMPLES,
+                  fig: Figure | None = None, echo: Any = click.echo, window: bool = True
+                  ) -> Explorer:
+    """An :class:`~regimemap.drawing.explore.Explorer` wired as ``regimemap explore`` wires it.
+
+    A click shows the text of ``regimemap classify``
+    (:func:`regimemap.io.format_result`); *Save* writes atomically
+    (:func:`regimemap.drawing.save_figure`) to the file name of ``regimemap plot``
+    (``regime-g3-kp0.4.png``) in the current folder, prints its path and, on
+    standard error, the ``regimemap plot`` command that writes the same file.
+
+    In Jupyter, after ``%matplotlib widget``::
+
+        from regimemap import Parameters
+        from regimemap.cli.explore import open_explorer
+
+        ex = open_explorer(Parameters(gamma=3, kprime=0.4))
+    """
+    from ..drawing.explore import Explorer
+    from ..drawing.save import save_figure
+    from ..io.tables import format_result
+
+    holder: list[Explorer] = []
+
+    def write(figure: Figure, path: Path, fmt: str, dpi: float) -> None:
+        save_figure(figure, path, fmt, dpi=dpi)
+        if holder and echo is not None:
+            echo(f"regimemap: note: the same file as: {plot_command_line(holder[0])}"
+                 + ("" if str(path) == f"{_stem(holder[0])}.png" else f" -o {path}"), err=True)
+
+    def stem(p: Parameters) -> str:
+        return _stem(holder[0]) if holder else plot_stem(p.gamma, p.kprime)
+
+    ex = Explorer(params, resolution=resolution, fig=fig, describe=format_result, write=write,
+                  file_stem=stem, echo=echo, window=window)
+    holder.append(ex)
+    return ex
+
+
+def _stem(ex: Explorer) -> str:
+    p = ex.params
+    return plot_stem(p.gamma, p.kprime, ex.loads)
+
+
+_EXPLORE_HELP = """Open the regime map in a window, live: sliders for GAMMA and KPRIME.
+
+Drag the sliders and the map is redrawn as regimemap plot draws it; tick
+'loads' for two more sliders, the buoyancy beta and the uplift ratio nu.
+Click on the map: the mode at that point, its margins and the physics at
+initiation (what regimemap classify prints) appear beside the map and on
+standard output.  'Save' writes the current view exactly as regimemap plot
+would (the same bytes) to regime-g<GAMMA>-kp<KPRIME>.png in the current
+folder and prints its path.
+
+A window needs a display (and a GUI backend of matplotlib, e.g. TkAgg).
+Without one the command stops with exit status 1; -o FILE saves the first
+view without a window instead (for scripts and CI).  In Jupyter, use
+regimemap.cli.explore.open_explorer with %matplotlib widget (pip install
+'regimemap[notebook]').
+
+\b
+Examples:
+  regimemap explore
+  regimemap explore --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
+  regimemap explore --gamma 3 --kprime 0.4 -o start.png
+"""
+
+
+@click.command("explore", help=_EXPLORE_HELP,
+               short_help="The regime map, live: sliders for gamma and k', click for the physics.")
+@gamma_option(required=False, default=3.0, show_default=True)
+@kprime_option(required=False, default=0.4, show_default=True)
+@click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
+              help="Samples of k for the region polygons and curves (2-5000).")
+@click.option("-o", "--output", metavar="FILE",
+              help="Save the first view (as regimemap plot draws it; .png, .svg or .pdf) and "
+                   "exit without opening a window.")
+@load_options
+def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None,
+                loads: dict[str, Any]) -> None:
+    from ..drawing.save import format_from_path
+    from ..mechanics.block import Parameters
+
+    params = Parameters(gamma, kprime, **loads)
+    path: Path | None = None
+    if output is not None:
+        try:
+            format_from_path(output)
+        except ValueError as exc:
+            raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
+        path = output_path(output, "--output")
+    import_matplotlib()
+    from ..drawing.explore import window_problem
+
+    if path is not None:
+        ex = open_explorer(params, resolution=resolution, echo=None, window=False)
+        try:
+            ex.save(path)
+        except OSError as exc:
+            raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
+        report_written(path)
+        return
+    problem = window_problem()
+    if problem is not None:
+        raise RunError(f"regimemap explore needs a display to open its window: {problem}. "
+                       "Run it on a desktop (or with ssh -X), save the first view with "
+                       "-o FILE, or use open_explorer in Jupyter with %matplotlib widget")
+    ex = open_explorer(params, resolution=resolution)
+    sys.stdout.flush()
+    ex.show(f"regimemap explore ({plot_stem(gamma, kprime, loads)})")
