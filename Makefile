@@ -1,12 +1,14 @@
-# regimemap: `make figures` regenerates figures/, `make test` runs the tests,
-# `make lint` runs ruff and mypy, `make bench` the benchmarks.
+# regimemap: `make figures` regenerates figures/, `make test` runs the tests (`make test-fast`
+# the quick ones), `make lint` runs ruff and mypy, `make bench` the benchmarks, `make docs`
+# builds the documentation site into docs/_build/html.
 # Both create the virtual environment .venv when it is missing.
 PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
+DOCS_STAMP := $(VENV)/.docs-installed
 
-.PHONY: all venv figures test lint bench clean distclean
+.PHONY: all venv figures test test-fast lint bench docs clean distclean
 
 all: figures
 
@@ -34,15 +36,35 @@ figures: $(STAMP)
 	$(BIN)/regimemap figures --out figures --format png,svg --set all; \
 	wait $$sheet; wait $$motion; wait $$life
 
+# `make test`: every test and doctest, on every core (pytest-xdist; worksteal evens out the long
+# ones).  `make test-fast`: the edit loop -- engine, io, validation, layers -- without the tests
+# marked render, subprocess or slow (pyproject.toml lists the markers).
+TEST_FAST := not render and not subprocess and not slow
+
 test: $(STAMP)
-	$(BIN)/python -m pytest -q
+	$(BIN)/python -m pytest -q -n auto --dist worksteal
+
+test-fast: $(STAMP)
+	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "$(TEST_FAST)"
 
 lint: $(STAMP)
-	$(BIN)/ruff check src tests bench
+	$(BIN)/ruff check src tests bench conftest.py
 	$(BIN)/mypy
 
 bench: $(STAMP)
 	$(BIN)/python bench/bench.py
+
+# The documentation site (docs/conf.py): warnings are errors.  The html build runs the
+# gallery's scripts (docs/examples; all of them in a fresh tree, as in CI, else those that
+# changed: rm -rf docs/auto_examples runs them all) and the commands of the pages; the
+# doctest build runs every >>> example of the pages and of the docstrings the API shows.
+$(DOCS_STAMP): pyproject.toml $(STAMP)
+	$(BIN)/python -m pip install --quiet -e '.[docs]'
+	@touch $(DOCS_STAMP)
+
+docs: $(DOCS_STAMP)
+	$(BIN)/sphinx-build -b html -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
+	$(BIN)/sphinx-build -b doctest -W --keep-going -q -d docs/_build/doctrees docs docs/_build/doctest
 
 clean:
 	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build src/*.egg-info

@@ -42,3 +42,16 @@ def sample_points(gamma: float, kprime: float, n: int, seed: int = 0) -> tuple[n
     mu_hi = 2.0 * max(p.mu_Bprime, 1.0)
     rng = np.random.default_rng(seed)
     return rng.uniform(0, k_hi, n), rng.uniform(0, mu_hi, n)
+
+
+def tiered(cases: list, every: int = 4) -> list:
+    """``cases`` as pytest parameters for a long sweep: every ``every``-th case (a spread sample,
+    the first and the last included) in the fast tier, the others marked ``slow``.
+
+    ``make test`` runs the whole sweep; ``make test-fast`` (``-m "not slow ..."``) the sample.
+    """
+    import pytest
+
+    last = len(cases) - 1
+    return [case if i % every == 0 or i == last else pytest.param(*case, marks=pytest.mark.slow)
+            for i, case in enumerate(cases)]

@@ -9,7 +9,13 @@ environment, or ``pytest --hypothesis-profile=name``):
 ``ci``
     more examples, still derandomized; for the continuous-integration job.
 ``thorough``
-    many random examples, for a long local run when changing the engine.
+    many random examples, for a long local run when changing the engine
+    (``--hypothesis-seed=N`` makes it repeatable, on every xdist worker alike).
+
+``quick`` and ``ci`` keep no example database either, so ``pytest -n auto``
+runs exactly the examples a serial run does.  The tiers (``render``,
+``subprocess``, ``slow``: ``make test-fast`` leaves them out) are listed in
+pyproject.toml; ``preset_maps`` (below) shares the report's computed maps.
 """
 
 from __future__ import annotations
@@ -27,8 +33,10 @@ except ImportError:  # pragma: no cover - hypothesis is a test dependency
 else:
     _common = dict(deadline=None, suppress_health_check=[HealthCheck.too_slow],
                    print_blob=True)
-    settings.register_profile("quick", max_examples=25, derandomize=True, **_common)
-    settings.register_profile("ci", max_examples=150, derandomize=True, **_common)
+    # derandomize and no example database: every pytest-xdist worker, and every run, tries the
+    # same examples (a saved failing example would be replayed by one worker only)
+    settings.register_profile("quick", max_examples=25, derandomize=True, database=None, **_common)
+    settings.register_profile("ci", max_examples=150, derandomize=True, database=None, **_common)
     settings.register_profile("thorough", max_examples=2000, **_common)
     settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "quick"))
 
@@ -86,3 +94,26 @@ def invoke_cli(args: list[str], env: dict[str, str | None] | None = None) -> Cli
 def run_cli():
     """A function ``run_cli(args) -> CliRun`` (session-scoped, so hypothesis tests may use it)."""
     return invoke_cli
+
+
+# -- the report's figures, computed once ----------------------------------------------------------------
+
+class _PresetMaps(dict):
+    """``preset_maps[fid]``: the :class:`~regimemap.maps.MapData` of the report's figure ``fid``
+    (its preset's block, view, modes and raw flag), computed on first use and kept for the session."""
+
+    def __missing__(self, fid: str):
+        from regimemap.drawing.presets import get_preset
+        from regimemap.maps.mapdata import compute_map
+
+        pr = get_preset(fid)
+        data = compute_map(pr.params, k_max=pr.k_max, mu_max=pr.mu_max, modes=pr.modes, raw=pr.raw)
+        self[pr.id] = data
+        return data
+
+
+@pytest.fixture(scope="session")
+def preset_maps() -> _PresetMaps:
+    """The computed maps of the report's figures, shared by every test of a session (of an xdist
+    worker): ``preset_maps["3.9a"]``.  Read-only: a test that changes one must copy it."""
+    return _PresetMaps()

@@ -17,7 +17,7 @@ from regimemap.maps.ambiguity import (
 )
 from regimemap.mechanics.solver import admissible
 
-from ._sweep import sweep
+from ._sweep import sweep, tiered
 
 H = 1e-6
 
@@ -55,7 +55,7 @@ def _view(p: Parameters) -> tuple[float, float]:
     return min(3.0 * max(marks), 60.0), 2.5 * p.mu_Bprime
 
 
-@pytest.mark.parametrize("gamma,kprime", [pair for pair in sweep(9) if pair[1] < 0])
+@pytest.mark.parametrize("gamma,kprime", tiered([pair for pair in sweep(9) if pair[1] < 0], every=8))
 def test_polygons_equal_solver_non_uniqueness(gamma, kprime):
     p = Parameters(gamma, kprime)
     k_max, mu_max = _view(p)
@@ -109,6 +109,7 @@ def _near_edge(poly, k, mu, tol):
     return out
 
 
+@pytest.mark.slow
 def test_admissible_set_equals_solver_off_boundaries():
     rng = np.random.default_rng(5)
     n_checked = 0
@@ -207,6 +208,7 @@ def _map_axes(gamma, kprime, **kw):
     return fig, ax, art
 
 
+@pytest.mark.render
 def test_draw_ambiguity_outlines_and_annotates():
     from matplotlib.patches import Polygon as MplPolygon
 
@@ -230,6 +232,7 @@ def test_draw_ambiguity_outlines_and_annotates():
     fig.canvas.draw()  # renders without error
 
 
+@pytest.mark.render
 def test_draw_ambiguity_nothing_above_c_or_out_of_view():
     from regimemap.drawing.ambiguity import draw_ambiguity
 
@@ -242,6 +245,7 @@ def test_draw_ambiguity_nothing_above_c_or_out_of_view():
     assert draw_ambiguity(ax, Parameters(3.0, -0.6), 4.0, 1.2) == []
 
 
+@pytest.mark.render
 def test_draw_ambiguity_without_legend():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure

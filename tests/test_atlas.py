@@ -7,19 +7,19 @@ import pytest
 from PIL import Image
 
 from regimemap import Parameters
-from regimemap.drawing.atlas import (
-    MAX_FRAMES,
-    MAX_PANELS,
+from regimemap.drawing.animation import MAX_FRAMES, write_animation
+from regimemap.drawing.atlas import MAX_PANELS, atlas_figure, write_atlas
+from regimemap.maps.designer_view import view_extent as auto_extent  # the default view of export and atlas
+from regimemap.maps.sweeps import (
     atlas_extents,
-    atlas_figure,
     parse_values,
     points_outside,
     shared_extent,
     sweep_extent,
 )
-from regimemap.io.figures import write_animation, write_atlas
-from regimemap.maps.designer_view import view_extent as auto_extent  # the default view of export and atlas
 from regimemap.mechanics.validation import check_gamma, check_kprime
+
+pytestmark = pytest.mark.render
 
 
 def _panels(fig):
@@ -108,16 +108,16 @@ def test_animation_frames_and_size(tmp_path):
 
 def test_animation_fixed_axes(tmp_path, monkeypatch):
     """Every frame is drawn on the same view."""
-    import regimemap.drawing.mapplot as render
+    import regimemap.drawing.animation as animation
 
     seen = []
-    real = render.draw_map
+    real = animation.draw_map
 
-    def spy(ax, params, **kw):
-        seen.append((kw["k_max"], kw["mu_max"]))
-        return real(ax, params, **kw)
+    def spy(ax, data, style=None):
+        seen.append((data.k_max, data.mu_max))
+        return real(ax, data, style)
 
-    monkeypatch.setattr(render, "draw_map", spy)
+    monkeypatch.setattr(animation, "draw_map", spy)
     kps = [-0.9, -0.3, 0.0, 0.5]
     write_animation(tmp_path / "a.gif", 1.0, kps, dpi=30, samples=51)
     assert len(seen) == 4 and len(set(seen)) == 1
@@ -166,7 +166,7 @@ def test_shared_extent_and_points_outside():
 
 
 def test_atlas_gives_own_views_where_sharing_would_cram():
-    from regimemap.drawing.atlas import resolve_share
+    from regimemap.maps.sweeps import resolve_share
 
     gammas, kprimes = [1.0, 3.0], [-0.6, 0.0, 0.9]
     share, ext, crammed = resolve_share(gammas, kprimes, "all")

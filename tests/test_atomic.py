@@ -193,3 +193,35 @@ def test_check_output_path_unwritable_by_access(tmp_path, monkeypatch):
     monkeypatch.setattr(os, "access", lambda path, mode, **kw: False)
     with pytest.raises(ValueError, match=r"^-o folder '.*' is not writable$"):
         check_output_path(tmp_path / "a.svg", "-o")
+
+
+# -- every failure kind through a command, once --------------------------------------------------------
+#
+# The commands write through atomic_path/atomic_open (tests/test_cli_errors.py checks each writer
+# does, and survives one real failure); here every kind of failure -- the disk full before the first
+# byte with no old file, the disk full half-way with an old file, Ctrl-C half-way -- through two
+# writers of different kinds (zipfile's npz, matplotlib's png): the old file or none, nothing else
+# in the folder, one error line and the exit code of the failure.
+
+from ._writers import FAILURES, WriteFailure, folder_state, writer_args, writer_params  # noqa: E402
+from .conftest import invoke_cli  # noqa: E402
+
+
+@pytest.mark.parametrize("failure", sorted(FAILURES))
+@pytest.mark.parametrize("key", writer_params(["export-npz", "plot-png"]))
+def test_every_failure_kind_through_a_command(tmp_path, monkeypatch, key, failure):
+    exc, after, old_present, code = FAILURES[failure]
+    out_dir = tmp_path / "out"
+    out_dir.mkdir()
+    (out_dir / "neighbour.txt").write_bytes(b"not to be touched")
+    args, target = writer_args(key, out_dir / "result", tmp_path)
+    if old_present:
+        target.write_bytes(OLD)
+    before = folder_state(out_dir)
+    ctl = WriteFailure(out_dir, exc, after=after).install(monkeypatch)
+    r = invoke_cli(args)
+    monkeypatch.undo()
+    assert ctl.fired, f"the write never reached the failing file ({ctl.opened} opened): {r.output}"
+    assert "Traceback" not in r.output and r.code == code, (r.code, r.output)
+    assert len(r.error_lines()) == 1 and r.error_lines()[0].startswith("regimemap"), r.stderr
+    assert folder_state(out_dir) == before  # old file byte-identical (or absent), no temp file left

@@ -27,10 +27,14 @@ def test_help(cmd, example, flag):
 
 
 def test_limits_match_library():
+    from regimemap.drawing import animation
+
     assert cli_atlas.MAX_PANELS == atlas_mod.MAX_PANELS
-    assert cli_atlas.MAX_FRAMES == atlas_mod.MAX_FRAMES
+    assert cli_atlas.MAX_FRAMES == animation.MAX_FRAMES
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_atlas_svg_has_every_panel(tmp_path):
     out = tmp_path / "atlas.svg"
     r = run("atlas", "--gamma", "1,3", "--kprime", "-0.6,0,0.9", "-o", str(out))
@@ -41,6 +45,8 @@ def test_atlas_svg_has_every_panel(tmp_path):
     assert 'id="panel-2-0"' not in text and 'id="panel-0-3"' not in text
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_atlas_says_when_it_does_not_share(tmp_path):
     r = run("atlas", "--gamma", "1,2,3", "--kprime", "-0.6,-0.2,0,0.4,0.9", "--dpi", "30",
             "-o", str(tmp_path / "a.png"))
@@ -49,6 +55,7 @@ def test_atlas_says_when_it_does_not_share(tmp_path):
     assert "(gamma, k') = (1, 0.9), " in r.output and "more into a corner" in r.output
 
 
+@pytest.mark.render
 def test_atlas_png_range_syntax(tmp_path):
     out = tmp_path / "a.png"
     r = run("atlas", "--gamma", "2", "--kprime", "-1:1:3", "--share", "none", "--dpi", "40",
@@ -58,6 +65,7 @@ def test_atlas_png_range_syntax(tmp_path):
         assert im.format == "PNG" and im.size[0] > im.size[1]
 
 
+@pytest.mark.render
 def test_atlas_notes_panels_whose_point_a_is_cut(tmp_path):
     r = run("atlas", "--gamma", "3", "--kprime", "-0.95,0,0.2,0.4", "--dpi", "30",
             "--view", "report", "--k-max", "2", "--mu-max", "2", "-o", str(tmp_path / "a.png"))
@@ -87,6 +95,8 @@ def test_atlas_bad_output(tmp_path):
     assert r.exit_code == 2 and "--output" in r.output and "png, svg, pdf" in r.output
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_animate(tmp_path):
     out = tmp_path / "sweep.gif"
     r = run("animate", "--gamma", "3", "--kprime", "-1:1:6", "--dpi", "30", "--fps", "4",

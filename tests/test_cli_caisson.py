@@ -129,6 +129,8 @@ def test_usage_errors(tmp_path: Path, goda: Path) -> None:
     assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml"]
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_sheet_is_written_atomically_and_byte_stable(tmp_path: Path, goda: Path,
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     out = tmp_path / "sheet.svg"
@@ -154,6 +156,8 @@ def test_sheet_is_written_atomically_and_byte_stable(tmp_path: Path, goda: Path,
     assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml", "sheet.svg"]
 
 
+@pytest.mark.render
+@pytest.mark.slow
 @pytest.mark.parametrize("suffix", ["pdf", "png"])
 def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
     out = tmp_path / f"sheet.{suffix}"
@@ -164,6 +168,7 @@ def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
     assert head.startswith(b"%PDF" if suffix == "pdf" else b"\x89PNG")
 
 
+@pytest.mark.render
 def test_sheet_has_its_panels() -> None:
     from regimemap.drawing.sheet import PANELS, SHEET_SIZE, sheet_figure
     from regimemap.maps.caisson import caisson_report
@@ -235,6 +240,7 @@ fill_density_above = 1700
 LIGHT = EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 1300")
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("text", [EXAMPLE, DEEP, LIGHT], ids=["goda", "deep-filled", "light"])
 def test_sheet_texts_do_not_collide(text: str) -> None:
     """No two labels, titles or notes of the sheet overlap (tick labels aside), all on the page."""

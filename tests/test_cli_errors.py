@@ -17,15 +17,12 @@ from __future__ import annotations
 import builtins
 import contextlib
 import errno
-import io
 import math
 import os
 import re
 import subprocess
 import sys
-import zipfile
 from pathlib import Path
-from xml.etree import ElementTree
 
 import pytest
 from hypothesis import given, settings
@@ -33,6 +30,17 @@ from hypothesis import strategies as st
 
 from regimemap.cli import cli, main
 
+from ._writers import (
+    FAILURES,
+    OLD,
+    SINGLE_FILE_WRITERS,
+    WriteFailure,
+    WriteSpy,
+    check_complete,
+    folder_state,
+    writer_args,
+    writer_params,
+)
 from .conftest import invoke_cli
 
 # Where each command is defined (for the skip message while it is being written).
@@ -177,73 +185,22 @@ def test_help_and_version():
 
 # -- output paths --------------------------------------------------------------------------------------
 
-#: A command line for each command that writes one file; {out} is the output path.
-SINGLE_FILE_WRITERS = {
-    "plot-png": ["plot", *G, "--resolution", "40", "--dpi", "30", "-o", "{out}.png"],
-    "plot-svg": ["plot", *G, "--resolution", "40", "-o", "{out}.svg"],
-    "plot-pdf": ["plot", "--gamma", "3", "--kprime", "-0.6", "--resolution", "40", "-o", "{out}.pdf"],
-    "figure-svg": ["figure", "3.9a", "-o", "{out}.svg"],
-    "figure-png": ["figure", "4.7b", "--dpi", "30", "-o", "{out}.png"],
-    "classify-csv": ["classify", "--points", "{inputs}/good.csv", *G, "-o", "{out}.csv"],
-    "classify-json": ["classify", "--points", "{inputs}/good.csv", *G, "-o", "{out}.json"],
-    "export-npz": ["export", *G, "--resolution", "20", "-o", "{out}.npz"],
-    "export-csv": ["export", *G, "--resolution", "20", "-o", "{out}.csv"],
-    "export-json": ["export", "--gamma", "3", "--kprime", "-0.6", "-o", "{out}.json"],
-    "atlas-png": ["atlas", "--gamma", "1,3", "--kprime", "-0.5,0.4", "--dpi", "30", "-o", "{out}.png"],
-    "atlas-pdf": ["atlas", "--gamma", "2", "--kprime", "0.4", "-o", "{out}.pdf"],
-    "animate-gif": ["animate", "--gamma", "3", "--kprime", "-1:1:3", "--dpi", "30", "-o", "{out}.gif"],
-}
-SAVEFIG_WRITERS = ["plot-png", "plot-svg", "plot-pdf", "figure-svg", "atlas-png"]
-
-
-def writer_args(key: str, out: Path, inputs: Path) -> tuple[list[str], Path]:
-    args = [a.replace("{inputs}", str(inputs)) for a in SINGLE_FILE_WRITERS[key]]
-    target = None
-    for i, a in enumerate(args):
-        if "{out}" in a:
-            args[i] = a.replace("{out}", str(out))
-            target = Path(args[i])
-    assert target is not None
-    return args, target
-
-
-def check_complete(path: Path) -> None:
-    """The file is a whole file of its kind (not cut short)."""
-    data = path.read_bytes()
-    suffix = path.suffix
-    if suffix == ".png":
-        assert data.startswith(b"\x89PNG\r\n\x1a\n") and data.endswith(b"IEND\xaeB`\x82")
-    elif suffix == ".svg":
-        ElementTree.fromstring(data)
-    elif suffix == ".pdf":
-        assert data.startswith(b"%PDF") and data.rstrip().endswith(b"%%EOF")
-    elif suffix == ".gif":
-        assert data.startswith(b"GIF8") and data.endswith(b";")
-    elif suffix == ".npz":
-        with zipfile.ZipFile(io.BytesIO(data)) as z:
-            assert z.testzip() is None and "mode.npy" in z.namelist()
-    elif suffix == ".json":
-        import json
-
-        json.loads(data)
-    elif suffix == ".csv":
-        text = data.decode("utf-8")
-        assert text.endswith("\n") and len(text.splitlines()) >= 2
-    else:  # pragma: no cover
-        raise AssertionError(f"unknown kind {suffix}")
-
-
-@pytest.mark.parametrize("key", sorted(SINGLE_FILE_WRITERS))
-def test_writer_succeeds_and_leaves_only_its_file(tmp_path, inputs, key):
+@pytest.mark.parametrize("key", writer_params())
+def test_writer_goes_through_the_atomic_path_and_leaves_only_its_file(tmp_path, inputs, monkeypatch, key):
+    """Each writer's file is renamed into place from a temporary file beside it (what
+    tests/test_atomic.py proves safe against every failure), and is whole."""
     needs(SINGLE_FILE_WRITERS[key][0])
     out_dir = tmp_path / "out"
     out_dir.mkdir()
     args, target = writer_args(key, out_dir / "result", inputs)
+    spy = WriteSpy(out_dir).install(monkeypatch)
     r = invoke_cli(args)
+    monkeypatch.undo()
     assert r.code == 0, r.output
     assert "Traceback" not in r.output
     assert sorted(p.name for p in out_dir.iterdir()) == [target.name]
     check_complete(target)
+    spy.assert_atomic(target)
 
 
 BAD_OUTPUTS = [
@@ -299,8 +256,14 @@ def test_figures_bad_out_folder(tmp_path, inputs, make, pattern):
     assert_clean_failure(invoke_cli(["figures", "--out", str(make(tmp_path)), "--format", "svg"]), 2, pattern)
 
 
-def test_figures_creates_a_missing_out_folder_whose_parent_exists(tmp_path):
+@pytest.mark.render
+def test_figures_creates_a_missing_out_folder_whose_parent_exists(tmp_path, monkeypatch):
     needs("figures")
+    import regimemap.drawing.presets as figs
+
+    # two of the report's figures are enough to see the folder made and filled (test_cli_plot.py
+    # draws all of them)
+    monkeypatch.setattr(figs, "PRESETS", dict(list(figs.PRESETS.items())[:2]))
     out = tmp_path / "new"
     r = invoke_cli(["figures", "--out", str(out), "--format", "svg", "--jobs", "1"])
     assert r.code == 0, r.output
@@ -411,6 +374,7 @@ def test_main_exits_with_the_code(capsys):
     assert e.value.code == 0
 
 
+@pytest.mark.subprocess
 def test_console_script_in_a_subprocess(tmp_path):
     """The installed entry point, as a user runs it: one line on stderr, exit 2."""
     exe = Path(sys.executable).with_name("regimemap")
@@ -425,114 +389,34 @@ def test_console_script_in_a_subprocess(tmp_path):
 
 # -- no partial files -----------------------------------------------------------------------------------
 
-OLD = b"the previous, complete version of this file\n"
-
-
-class WriteFailure:
-    """Make writing to files under ``folder`` fail: the ``nth`` file opened for writing
-    takes ``after`` bytes and then its ``write`` raises ``exc()``.
-
-    Patches ``builtins.open`` and ``io.open`` (used by _atomic, matplotlib, PIL,
-    zipfile ...); the wrapper hides ``fileno`` so that C writers (PIL) go
-    through ``write`` too.
-    """
-
-    def __init__(self, folder: Path, exc, nth: int = 1, after: int = 64):
-        self.folder = str(folder.resolve())
-        self.exc = exc
-        self.nth = nth
-        self.after = after
-        self.opened = 0
-        self.fired = False
-        self._real_open = builtins.open
-
-    def install(self, monkeypatch) -> WriteFailure:
-        monkeypatch.setattr(builtins, "open", self.open)
-        monkeypatch.setattr(io, "open", self.open)
-        return self
-
-    def open(self, file, mode="r", *args, **kwargs):
-        fh = self._real_open(file, mode, *args, **kwargs)
-        if isinstance(file, (str, os.PathLike)) and any(c in mode for c in "wax+") \
-                and os.path.realpath(file).startswith(self.folder + os.sep):
-            self.opened += 1
-            if self.opened == self.nth:
-                return _FailingFile(fh, self)
-        return fh
-
-
-class _FailingFile:
-    def __init__(self, fh, ctl: WriteFailure):
-        self._fh = fh
-        self._ctl = ctl
-        self._left = ctl.after
-
-    def write(self, data):
-        if len(data) <= self._left:
-            self._left -= len(data)
-            return self._fh.write(data)
-        self._fh.write(data[:self._left])
-        self._fh.flush()
-        self._left = 0
-        self._ctl.fired = True
-        raise self._ctl.exc()
-
-    def writelines(self, lines):
-        for line in lines:
-            self.write(line)
-
-    def fileno(self):
-        raise io.UnsupportedOperation("fileno")
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return self._fh.__exit__(*exc)
-
-    def __iter__(self):
-        return iter(self._fh)
-
-    def __getattr__(self, name):
-        return getattr(self._fh, name)
-
-
-FAILURES = {
-    # name: (exception factory, bytes written before it, old file present, expected exit code)
-    "disk-full-at-once": (lambda: OSError(errno.ENOSPC, "No space left on device"), 0, False, 1),
-    "disk-full-half-way": (lambda: OSError(errno.ENOSPC, "No space left on device"), 64, True, 1),
-    "ctrl-c-half-way": (KeyboardInterrupt, 64, True, 130),
-}
-
-
-def _folder_state(folder: Path) -> dict[str, bytes]:
-    return {p.name: p.read_bytes() for p in folder.iterdir()}
-
-
-@pytest.mark.parametrize("failure", sorted(FAILURES))
-@pytest.mark.parametrize("key", sorted(SINGLE_FILE_WRITERS))
-def test_writer_failing_half_way_leaves_old_file_or_none(tmp_path, inputs, monkeypatch, key, failure):
+@pytest.mark.parametrize("key", writer_params())
+def test_writer_failing_half_way_keeps_the_old_file(tmp_path, inputs, monkeypatch, key):
+    """One real failure per writer: the disk fills up half-way through the file.  The old file is
+    byte-identical, nothing else in the folder changed, and the one error line names the file.
+    (Every kind of failure, once: tests/test_atomic.py.)"""
     needs(SINGLE_FILE_WRITERS[key][0])
-    exc, after, old_present, code = FAILURES[failure]
     out_dir = tmp_path / "out"
     out_dir.mkdir()
     (out_dir / "neighbour.txt").write_bytes(b"not to be touched")
     args, target = writer_args(key, out_dir / "result", inputs)
-    if old_present:
-        target.write_bytes(OLD)
-    before = _folder_state(out_dir)
-    ctl = WriteFailure(out_dir, exc, after=after).install(monkeypatch)
+    target.write_bytes(OLD)
+    before = folder_state(out_dir)
+    ctl = WriteFailure(out_dir, lambda: OSError(errno.ENOSPC, "No space left on device"), after=64)
+    ctl.install(monkeypatch)
     r = invoke_cli(args)
     monkeypatch.undo()
     assert ctl.fired, f"the write never reached the failing file ({ctl.opened} opened): {r.output}"
-    assert_clean_failure(r, code)
-    assert _folder_state(out_dir) == before  # old file byte-identical (or absent), no temp file left
+    line = assert_clean_failure(r, 1, "No space left on device")
+    assert target.name in line
+    assert folder_state(out_dir) == before  # old file byte-identical, no temp file left
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("exc", [lambda: OSError(errno.EIO, "Input/output error"), RuntimeError,
                                  KeyboardInterrupt], ids=["OSError", "RuntimeError", "KeyboardInterrupt"])
-@pytest.mark.parametrize("key", SAVEFIG_WRITERS)
-def test_savefig_failing_half_way(tmp_path, inputs, monkeypatch, key, exc):
+def test_savefig_failing_half_way(tmp_path, inputs, monkeypatch, exc, key="plot-png"):
+    """An exception inside matplotlib's savefig (not only in a write): old file kept, exit 1 or 130.
+    One writer for the three kinds; every savefig writer goes through the atomic path (above)."""
     needs(SINGLE_FILE_WRITERS[key][0])
     from matplotlib.figure import Figure
 
@@ -559,9 +443,10 @@ def test_savefig_failing_half_way(tmp_path, inputs, monkeypatch, key, exc):
     assert "Traceback" not in r.output
     assert r.code == (130 if exc is KeyboardInterrupt else 1), r.output
     assert len(r.error_lines()) == 1, r.stderr
-    assert _folder_state(out_dir) == {target.name: OLD}
+    assert folder_state(out_dir) == {target.name: OLD}
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("failure", sorted(FAILURES))
 def test_figures_failing_on_the_third_file(tmp_path, monkeypatch, failure):
     """'figures' writes many files: those finished before the failure are whole, the one
@@ -578,7 +463,7 @@ def test_figures_failing_on_the_third_file(tmp_path, monkeypatch, failure):
     monkeypatch.undo()
     assert ctl.fired, r.output
     assert_clean_failure(r, code)
-    state = _folder_state(out_dir)
+    state = folder_state(out_dir)
     assert sorted(state) == ["fig-2.1.svg", "fig-3.1.svg"] + (["fig-3.2.svg"] if old_present else [])
     check_complete(out_dir / "fig-2.1.svg")
     check_complete(out_dir / "fig-3.1.svg")
@@ -732,7 +617,13 @@ def _chdir(path: Path):
 _FUZZ_EXAMPLES = max(4, settings.default.max_examples // 3)
 
 
-@pytest.mark.parametrize("name", sorted(COMMAND_MODULES))
+#: The fuzzed commands that draw; 'figures' also starts worker processes (--jobs).
+_FUZZ_MARKS = {"figures": [pytest.mark.render, pytest.mark.subprocess, pytest.mark.slow],
+               "figure": [pytest.mark.render, pytest.mark.slow], "animate": [pytest.mark.render, pytest.mark.slow],
+               "atlas": [pytest.mark.render, pytest.mark.slow], "plot": [pytest.mark.render, pytest.mark.slow]}
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=_FUZZ_MARKS.get(n, ())) for n in sorted(COMMAND_MODULES)])
 def test_random_arguments_never_crash(name, tmp_path_factory, monkeypatch):
     needs(name)
     if name == "figures":  # keep a valid 'figures' run short: two figures instead of 24
@@ -814,25 +705,12 @@ def test_the_harness_catches_a_writer_that_is_not_atomic(tmp_path, inputs, monke
     assert target.read_bytes() != OLD and len(target.read_bytes()) == 64  # cut short: what we prevent
 
 
-@pytest.mark.parametrize("key", sorted(SINGLE_FILE_WRITERS))
-def test_write_error_names_the_file(tmp_path, inputs, monkeypatch, key):
-    needs(SINGLE_FILE_WRITERS[key][0])
-    out_dir = tmp_path / "out"
-    out_dir.mkdir()
-    args, target = writer_args(key, out_dir / "result", inputs)
-    WriteFailure(out_dir, lambda: OSError(errno.ENOSPC, "No space left on device")).install(monkeypatch)
-    r = invoke_cli(args)
-    monkeypatch.undo()
-    line = assert_clean_failure(r, 1, "No space left on device")
-    assert target.name in line
-
-
 @pytest.mark.parametrize("args", [
     pytest.param(["plot", "--gamma", "2", "--kprime", "0.6666666666666666", "--resolution", "40",
-                  "-o", "{out}.svg"], id="plot"),
+                  "-o", "{out}.svg"], id="plot", marks=pytest.mark.render),
     pytest.param(["export", "--gamma", "2", "--kprime", "0.6666666666666666", "-o", "{out}.json"], id="export"),
     pytest.param(["atlas", "--gamma", "2", "--kprime", "0.6666666666666666", "--dpi", "30",
-                  "-o", "{out}.png"], id="atlas"),
+                  "-o", "{out}.png"], id="atlas", marks=pytest.mark.render),
     pytest.param(["classify", "--gamma", "2", "--kprime", "0.6666666666666666", "--k", "1", "--mu", "0.1"],
                  id="classify"),
 ])

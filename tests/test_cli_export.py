@@ -89,6 +89,7 @@ def test_missing_folder(tmp_path):
     assert r.exit_code == 2 and "--output" in r.output and "does not exist" in r.output
 
 
+@pytest.mark.subprocess
 def test_export_imports_no_matplotlib(tmp_path):
     code = (
         "import sys\n"

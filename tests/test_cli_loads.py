@@ -48,6 +48,7 @@ def test_kprime_up_to_the_crest(run_cli, tmp_path):
     assert r.code == 2 and "kprime must be a number in [-1, 1], got '1.5'" in r.stderr
 
 
+@pytest.mark.render
 def test_plot_with_loads(run_cli, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     r = run_cli(["plot", *GODA, "--resolution", "201", "--dpi", "40"])
@@ -134,6 +135,7 @@ def test_export_csv_round_trip_with_loads(run_cli, tmp_path):
     assert pts[0].loads == {"buoyancy": 0.318, "uplift_ratio": 0.524, "uplift_arm": 0.333333333333}
 
 
+@pytest.mark.slow
 def test_export_json_with_loads(run_cli, tmp_path):
     out = tmp_path / "m.json"
     r = run_cli(["export", *GODA, "-o", str(out)])
@@ -156,6 +158,8 @@ def test_export_json_with_loads(run_cli, tmp_path):
                                                                                        "kprime"}
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_atlas_sweeps_a_load(run_cli, tmp_path):
     out = tmp_path / "a.svg"
     r = run_cli(["atlas", "--gamma", "0.7", "--kprime", "-0.018", "--uplift-ratio", "0.524",
@@ -176,6 +180,8 @@ def test_atlas_one_sweep_per_axis(run_cli, tmp_path):
     assert list(tmp_path.iterdir()) == []
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_animate_sweeps_the_uplift_ratio(run_cli, tmp_path):
     out = tmp_path / "nu.gif"
     r = run_cli(["animate", "--gamma", "0.7", "--kprime", "-0.018", "--buoyancy", "0.318",
@@ -185,6 +191,7 @@ def test_animate_sweeps_the_uplift_ratio(run_cli, tmp_path):
         assert im.n_frames == 3
 
 
+@pytest.mark.render
 def test_atlas_figure_panel_titles_and_key_with_loads():
     from regimemap.drawing.atlas import atlas_figure
 

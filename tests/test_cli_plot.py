@@ -40,6 +40,7 @@ def _no_partial_files(folder: Path):
 # -- plot --------------------------------------------------------------------------------------
 
 
+@pytest.mark.render
 def test_plot_default_name(runner, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     res = _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4"]))
@@ -50,6 +51,7 @@ def test_plot_default_name(runner, tmp_path, monkeypatch):
     _no_partial_files(tmp_path)
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("name,check", [
     ("map.png", lambda b: b.startswith(PNG)),
     ("map.svg", lambda b: ET.fromstring(b).tag.endswith("svg")),
@@ -62,6 +64,7 @@ def test_plot_format_from_suffix(runner, tmp_path, name, check):
     assert check(out.read_bytes())
 
 
+@pytest.mark.render
 def test_plot_format_option(runner, tmp_path):
     _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "-0.3", "--format", "pdf",
                             "-o", str(tmp_path / "below")]))
@@ -103,6 +106,7 @@ def test_plot_missing_or_unwritable_folder(runner, tmp_path):
            "--output", "not writable")
 
 
+@pytest.mark.render
 def test_plot_options(runner, tmp_path):
     out = tmp_path / "m.svg"
     _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "-o", str(out),
@@ -117,6 +121,7 @@ def test_plot_options(runner, tmp_path):
                             "RO", "-o", str(tmp_path / "raw.png"), "--dpi", "40"]))
 
 
+@pytest.mark.render
 def test_plot_points_file(runner, tmp_path):
     good = tmp_path / "pts.csv"
     good.write_text("k,mu,name,gamma,kprime\n0.45,0.6,A,3,0.4\n0.2,0.1,B,,\n0.3,0.3,C,2,0.4\n")
@@ -133,6 +138,7 @@ def test_plot_points_file(runner, tmp_path):
                                str(tmp_path / "missing.csv")]), "--points")
 
 
+@pytest.mark.render
 def test_plot_warns_about_points_outside_the_view(runner, tmp_path):
     res = _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "--k-max", "1",
                                   "--point", "5,0.1:far", "-o", str(tmp_path / "m.png"),
@@ -140,6 +146,7 @@ def test_plot_warns_about_points_outside_the_view(runner, tmp_path):
     assert "outside the view" in res.output and "far" in res.output
 
 
+@pytest.mark.render
 def test_show_ambiguity_when_available(runner, tmp_path):
     pytest.importorskip("regimemap.drawing.ambiguity")
     _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "-0.3", "--show-ambiguity",
@@ -147,6 +154,7 @@ def test_show_ambiguity_when_available(runner, tmp_path):
     assert (tmp_path / "m.png").read_bytes().startswith(PNG)
 
 
+@pytest.mark.render
 def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkeypatch):
     """The overlay rebuilds the legend; the map's MapArtists then holds the new one."""
     import regimemap.drawing.figure as render
@@ -170,6 +178,7 @@ def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkey
 # -- figure / figures ----------------------------------------------------------------------------
 
 
+@pytest.mark.render
 def test_figure_default_name_and_formats(runner, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     _ok(runner.invoke(cli, ["figure", "3.9a"]))
@@ -187,6 +196,9 @@ def test_figure_unknown_id_suggests(runner):
     _usage(res, "FIGURE_ID", "Did you mean")
 
 
+@pytest.mark.render
+@pytest.mark.subprocess
+@pytest.mark.slow
 def test_figures_all(runner, tmp_path):
     res = _ok(runner.invoke(cli, ["figures", "--out", str(tmp_path), "--format", "svg,png",
                                   "--dpi", "30"]))
@@ -234,6 +246,7 @@ def test_version(runner):
     assert "regimemap" in res.output
 
 
+@pytest.mark.subprocess
 def test_help_does_not_import_matplotlib():
     code = (
         "import sys\n"
@@ -254,6 +267,8 @@ def test_help_does_not_import_matplotlib():
     assert "MPL []" in out.stderr, out.stderr
 
 
+@pytest.mark.subprocess
+@pytest.mark.slow
 def test_main_entry_point_exit_codes(tmp_path):
     exe = [sys.executable, "-c", "from regimemap.cli import main; main()"]
     for name in ("m.svg", "m.pdf", "m.png"):
@@ -317,6 +332,7 @@ def test_gc_left_disabled_when_the_caller_disabled_it():
         gc.enable()
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("args", [["--version"], ["plot", "--gamma", "0", "--kprime", "0"],
                                   ["plot", "--gamma", "3", "--kprime", "0.4", "-o", "{tmp}/m.svg"],
                                   ["figure", "3.9a", "-o", "{tmp}/f.png"]])
@@ -330,6 +346,7 @@ def test_main_restores_the_gc(tmp_path, capsys, args):
     assert gc.isenabled() and gc.get_freeze_count() == 0
 
 
+@pytest.mark.subprocess
 def test_drawing_commands_import_matplotlib_with_the_gc_paused(tmp_path):
     """In the console script no collection runs while matplotlib is imported; drawing collects."""
     code = (
@@ -359,6 +376,7 @@ def test_drawing_commands_import_matplotlib_with_the_gc_paused(tmp_path):
     assert int(after) > 0 and enabled == "True"  # drawing collects again
 
 
+@pytest.mark.subprocess
 def test_console_script_skips_the_final_collections(tmp_path):
     """console_main freezes the heap before the interpreter exits (atexit still runs)."""
     code = (
@@ -376,6 +394,7 @@ def test_console_script_skips_the_final_collections(tmp_path):
     assert (tmp_path / "m.png").read_bytes().startswith(PNG)
 
 
+@pytest.mark.subprocess
 def test_python_dash_m_regimemap(tmp_path):
     ok = subprocess.run([sys.executable, "-m", "regimemap", "--version"], capture_output=True,
                         text=True)

@@ -164,6 +164,7 @@ def test_output_folder_missing(points_csv, tmp_path):
     assert r.exit_code == 2 and "--output" in r.output
 
 
+@pytest.mark.subprocess
 def test_no_matplotlib_at_import_or_in_classify():
     code = (
         "import sys\n"

@@ -56,6 +56,7 @@ def test_exports_round_for_people(tmp_path):
     assert "9999999" not in text and "0000000000" not in text
 
 
+@pytest.mark.render
 def test_model_figure_draws_the_block():
     pytest.importorskip("matplotlib")
     from regimemap.drawing.model import model_figure

@@ -8,7 +8,6 @@ import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters
 from regimemap.drawing.presets import FIGURE_IDS, PRESETS, get_preset, suggest_ids
-from regimemap.maps.mapdata import compute_map
 from regimemap.maps.view import auto_extent
 from regimemap.mechanics.block import Case
 
@@ -91,10 +90,8 @@ def test_b_prime_in_view_for_delta_positive(fid):
 
 
 @pytest.mark.parametrize("fid", ["4.4a", "4.5a", "4.7a"])
-def test_b_prime_drawn(fid):
-    pr = PRESETS[fid]
-    d = compute_map(pr.params, k_max=pr.k_max, mu_max=pr.mu_max, modes=pr.modes, raw=pr.raw)
-    assert "B'" in d.points
+def test_b_prime_drawn(fid, preset_maps):
+    assert "B'" in preset_maps[fid].points
 
 
 def test_case_2_figures_end_a_little_beyond_g_and_case_3_well_beyond():
@@ -112,17 +109,19 @@ def test_case_2_figures_end_a_little_beyond_g_and_case_3_well_beyond():
         assert "G" in pr.title
 
 
-def test_sro_plus_region_in_view_for_case_3():
+def test_sro_plus_region_in_view_for_case_3(preset_maps):
     pr = PRESETS["3.11"]
-    d = compute_map(pr.params, k_max=pr.k_max, mu_max=pr.mu_max)
+    assert not pr.raw  # the final map the figure draws
+    d = preset_maps["3.11"]
     assert d.polygons[Mode.SRO_PLUS]
     assert "G" in d.points
 
 
-def test_every_region_of_the_final_maps_is_drawn():
+def test_every_region_of_the_final_maps_is_drawn(preset_maps):
     for fid in ALL_MODE_IDS:
         pr = PRESETS[fid]
-        d = compute_map(pr.params, k_max=pr.k_max, mu_max=pr.mu_max, modes=pr.modes)
+        assert not pr.raw
+        d = preset_maps[fid]
         present = {m for m, polys in d.polygons.items() if polys}
         expected = {Mode.RE, Mode.SL, Mode.RO}
         if pr.params.above:

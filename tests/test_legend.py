@@ -9,6 +9,8 @@ from regimemap import MAP_MODES, Mode, Parameters
 from regimemap.drawing.figure import map_figure
 from regimemap.drawing.mapplot import MODE_STYLE
 
+pytestmark = pytest.mark.render
+
 
 def _key_parts(legend):
     """For each entry: (handle box children, label Text)."""

@@ -21,11 +21,14 @@ pytest.importorskip("matplotlib")
 from matplotlib.path import Path  # noqa: E402
 
 from regimemap import Mode, Parameters  # noqa: E402
-from regimemap.drawing.atlas import atlas_figure, draw_frame, frame_figure  # noqa: E402
+from regimemap.drawing.animation import draw_frame, frame_figure  # noqa: E402
+from regimemap.drawing.atlas import atlas_figure  # noqa: E402
 from regimemap.drawing.figure import map_figure  # noqa: E402
 from regimemap.drawing.presets import FIGURE_IDS  # noqa: E402
 from regimemap.drawing.tidy import MEASURE_DPI, text_boxes  # noqa: E402
 from regimemap.maps import DesignPoint, classify  # noqa: E402
+
+pytestmark = pytest.mark.render
 
 DPI = 50
 GAMMAS = (0.3, 1.0, 3.0, 10.0)
@@ -171,6 +174,7 @@ def test_atlas_panels_never_collide():
         _check_map(fig, art)
 
 
+@pytest.mark.slow
 def test_one_row_atlas_leaves_room_for_mu():
     fig = atlas_figure([3.0], [-1.0, -0.5, 0.0, 0.5, 1.0], share="none", dpi=DPI, samples=151)
     _check_boxes(fig, lambda: text_boxes(fig, fig._regimemap_maps))
@@ -206,6 +210,7 @@ def test_report_figures_never_collide(fid):
     _check_map(fig, art)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("wid", ["W.1", "W.2", "W.3", "W.4"])
 def test_worked_figures_never_collide(wid):
     from regimemap.drawing.worked import render_worked
@@ -227,7 +232,7 @@ def test_worked_figures_never_collide(wid):
 
 def test_the_layout_does_not_depend_on_the_resolution(tmp_path):
     """An SVG is the same whatever --dpi was asked for (the texts are placed at MEASURE_DPI)."""
-    from regimemap.io.figures import save_figure
+    from regimemap.drawing.save import save_figure
 
     out = []
     for dpi in (30, 150, 300):

@@ -27,6 +27,7 @@ def test_every_loaded_mode_has_its_own_colour_and_hatch():
     assert MODE_STYLE[Mode.LO].color.lower() == "#99ddff"  # Paul Tol's light cyan
 
 
+@pytest.mark.render
 @pytest.mark.parametrize("p", [GODA, SLENDER], ids=["goda", "slender"])
 def test_loaded_map_fills_lift_off_and_keys_it(p):
     fig, ax, art = map_figure(p, samples=301)
@@ -44,6 +45,7 @@ def test_loaded_map_fills_lift_off_and_keys_it(p):
     assert "L" in art.point_markers and "LO" in art.curves
 
 
+@pytest.mark.render
 def test_loaded_fills_are_vector_polygons_not_a_staircase():
     _, _, art = map_figure(GODA, samples=301)
     poly = art.polygons[Mode.LO][0]
@@ -52,6 +54,7 @@ def test_loaded_fills_are_vector_polygons_not_a_staircase():
     assert len(poly) < 40  # a few vertices, not one per grid column
 
 
+@pytest.mark.render
 def test_title_states_the_loads():
     _, _, art = map_figure(GODA, samples=201)
     title = art.title.get_text()
@@ -60,6 +63,7 @@ def test_title_states_the_loads():
     assert default_title(GODA).startswith("All modes, block with loads")
 
 
+@pytest.mark.render
 def test_report_block_keeps_its_title_and_key():
     p = Parameters(3.0, -0.3)
     fig, ax, art = map_figure(p, samples=201)
@@ -69,6 +73,7 @@ def test_report_block_keeps_its_title_and_key():
     assert art.data.modes == MAP_MODES
 
 
+@pytest.mark.render
 def test_overlay_names_least_constraint():
     from regimemap.drawing.ambiguity import draw_ambiguity
 
@@ -87,6 +92,9 @@ def test_loads_text():
     assert format_value(-2.0 / 3.0) == "-2/3" and format_value(0.25) == "0.25"
 
 
+@pytest.mark.render
+@pytest.mark.subprocess
+@pytest.mark.slow
 def test_worked_figures_ids_and_files(run_cli, tmp_path):
     from regimemap.drawing.presets import FIGURE_IDS
     from regimemap.drawing.worked import WORKED, WORKED_IDS

@@ -46,6 +46,7 @@ def _edge_distance(poly: np.ndarray, x: np.ndarray, y: np.ndarray, scale) -> np.
     return np.min(np.hypot(*(proj - q[:, None, :]).transpose(2, 0, 1)), axis=1)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("p", CASES, ids=repr)
 def test_polygons_of_loaded_maps_match_label_grid(p):
     k_max, mu_max = auto_extent(p)
@@ -106,6 +107,7 @@ def test_curves_points_and_view_of_loaded_maps(p):
     assert m.modes == LOADED_MAP_MODES and m.k_max == k_max
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("p", CASES, ids=repr)
 def test_query_point_and_margins_with_loads_agree_with_classify(p):
     rng = np.random.default_rng(3)

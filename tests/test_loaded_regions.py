@@ -23,6 +23,7 @@ from regimemap.mechanics.regions import RAW_REGIONS
 from regimemap.mechanics.solver import least_constraint
 
 from ._loaded_sweep import loaded_sweep, sample, view
+from ._sweep import tiered
 
 SWEEP = loaded_sweep(100, seed=0)
 
@@ -40,7 +41,7 @@ def near_boundary(k, mu, g, kp, loads, codes, adm, rel=1e-6):
     return near
 
 
-@pytest.mark.parametrize("gamma,kprime,loads", SWEEP)
+@pytest.mark.parametrize("gamma,kprime,loads", tiered(SWEEP, every=8))
 def test_raw_regions_and_classify_equal_the_solver(gamma, kprime, loads):
     k, mu = sample(gamma, kprime, loads, 1500, seed=7)
     codes, adm, _ = least_constraint(k, mu, gamma, kprime, **loads)
@@ -123,6 +124,7 @@ def test_lift_off_is_a_whole_column():
     assert seen
 
 
+@pytest.mark.slow
 def test_loads_create_new_modes_and_overlaps():
     """Which modes win and which overlaps occur with loads (least constraint decides them)."""
     won, overlaps = collections.Counter(), collections.Counter()

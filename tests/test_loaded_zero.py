@@ -111,6 +111,7 @@ def test_classify_on_big_random_sets_and_on_exact_thresholds():
         assert np.array_equal(label_grid(k, mu, g, kp), report_rule(K, M, g, kp))
 
 
+@pytest.mark.slow
 def test_least_constraint_is_section_4_7_wherever_several_modes_are_admissible():
     multi = 0
     for g, kp in sweep(9):

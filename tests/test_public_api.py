@@ -28,9 +28,11 @@ PUBLIC_API = {
         "compute_map", "label_grid", "margin", "query_point", "query_points", "region_polygons",
     ],
     "regimemap.drawing": [
-        "FIGSIZE", "MODE_STYLE", "MapArtists", "atlas_figure", "default_title", "draw_ambiguity",
+        "FIGSIZE", "MODE_STYLE", "MapArtists", "MapStyle", "atlas_figure", "default_title", "draw_ambiguity",
         "draw_design_points", "draw_map", "fit_figure", "load_matplotlib", "map_figure", "new_figure", "render_map",
         "render_preset", "style_context",
+        # figures to files, atomically (through regimemap.io.atomic, the layer below)
+        "save_figure", "write_animation", "write_atlas",
         # outcome maps and motions after initiation (regimemap.dynamics)
         "OUTCOME_STYLE", "draw_outcome_map", "motion_figure", "outcome_figure",
         # a caisson's sliding over its design life (regimemap.lifetime)
@@ -38,7 +40,7 @@ PUBLIC_API = {
     ],
     "regimemap.io": [
         "atomic_open", "atomic_path", "export_map", "format_result", "parse_point_spec",
-        "read_points_csv", "result_row", "save_figure", "write_animation", "write_atlas",
+        "read_points_csv", "result_row",
         # simulations after initiation: pulse files, time histories, outcome maps
         "read_pulse_csv", "write_history", "write_outcome",
     ],
@@ -47,6 +49,22 @@ PUBLIC_API = {
         "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "DesignChart", "ErrorFactor", "Errors", "LifetimeModel",
         "LifetimeResult", "added_mass", "available_cores", "design_chart", "half_sine_slide",
         "lifetime_sliding", "sf_width", "wave_duration",
+    ],
+    "regimemap.dynamics": [
+        "Block", "CATEGORY_LABELS", "DESIGN_INPUTS", "DESIGN_UNITS", "FREE_STEP", "G", "History",
+        "NO_ADDED_MASS", "OVERTURN", "OutcomeMap", "PROFILE", "PULSE_STEPS", "Phase", "Pulse", "REST", "ROCK",
+        "SHAPES", "SLIDE", "SLIDE_ROCK", "STILL_MOVING", "SWEEPABLE", "Simulation", "default_steps",
+        "describe_design_wave", "design_wave_inputs", "design_wave_numbers", "design_wave_run",
+        "frequency_parameter", "from_dimensionless", "outcome_map", "simulate", "size_R", "slenderness",
+        "to_dimensionless",
+    ],
+    "regimemap.waves": [
+        "CaissonAnalysis", "CaissonLoads", "CaissonSection", "Densities", "DesignHeights", "EquivalentBlock",
+        "GODA_ROTATION_DEG", "GodaPressures", "HMAX_FACTOR", "RestCheck", "Stability", "analyse_caisson",
+        "breaker_height", "caisson_loads", "deep_water_wavelength", "design_heights", "effective_angle",
+        "equivalent_block", "given_heights", "goda_pressures", "heel_pressure", "impulsive_coefficient",
+        "linear_shoaling_coefficient", "section_from_densities", "section_from_weight", "shoaling_coefficient",
+        "stability", "static_rest_check", "wave_duration", "wavelength", "wavenumber",
     ],
     "regimemap.cli": ["cli", "console_main", "main"],
 }
@@ -65,12 +83,89 @@ def test_every_public_name_resolves(package):
         assert getattr(mod, name) is not None, f"{package}.{name}"
 
 
+@pytest.mark.subprocess
+@pytest.mark.parametrize("package", ["regimemap.drawing", "regimemap.io"])
+def test_lazy_packages_list_their_names_in_dir(package):
+    """``dir()`` of a lazy package shows its public names before any of them is imported."""
+    import subprocess
+    import sys
+
+    code = (f"import {package} as m, sys\n"
+            "assert set(m.__all__) <= set(dir(m)), sorted(set(m.__all__) - set(dir(m)))\n"
+            "print('matplotlib' in sys.modules)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False"  # listing the names imports none of them
+
+
+@pytest.mark.parametrize("package", sorted(PUBLIC_API))
+def test_dir_lists_every_public_name(package):
+    """``dir(package)`` (what IDEs and tab completion show) lists the whole ``__all__``, lazy names too."""
+    mod = importlib.import_module(package)
+    missing = set(mod.__all__) - set(dir(mod))
+    assert not missing, f"{package}: not in dir(): {sorted(missing)}"
+
+
+def _typing_view(package: str) -> tuple[set[str], set[str], bool]:
+    """(names bound when the module runs, names imported under ``if TYPE_CHECKING:``, has __getattr__)."""
+    import ast
+    from pathlib import Path
+
+    path = Path(importlib.import_module(package).__file__)
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    bound: set[str] = set()
+    typed: set[str] = set()
+    lazy = False
+    for node in ast.walk(tree):
+        if isinstance(node, ast.FunctionDef) and node.name == "__getattr__":
+            lazy = True
+    for node in tree.body:
+        if isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING":
+            for n in ast.walk(node):
+                if isinstance(n, (ast.Import, ast.ImportFrom)):
+                    typed |= {a.asname or a.name for a in n.names}
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            bound |= {a.asname or a.name.split(".")[0] for a in node.names}
+        elif isinstance(node, (ast.Assign, ast.AnnAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            bound |= {t.id for t in targets if isinstance(t, ast.Name)}
+        elif isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            bound.add(node.name)
+    return bound, typed, lazy
+
+
+@pytest.mark.parametrize("package", sorted(PUBLIC_API))
+def test_type_checkers_see_every_lazy_name(package):
+    """A name that PEP 562's ``__getattr__`` imports on first use is imported under ``if TYPE_CHECKING:``,
+    so mypy and IDEs see its real type (not ``Any`` from ``__getattr__``)."""
+    bound, typed, lazy = _typing_view(package)
+    unseen = set(importlib.import_module(package).__all__) - bound - typed
+    assert not unseen, f"{package}: lazy names without a TYPE_CHECKING import: {sorted(unseen)}"
+    if not lazy:
+        assert not typed - bound, f"{package}: TYPE_CHECKING names but no __getattr__ to import them"
+
+
+@pytest.mark.parametrize("package", ["regimemap", "regimemap.maps", "regimemap.dynamics", "regimemap.drawing",
+                                     "regimemap.io"])
+def test_getattr_is_hidden_from_type_checkers(package):
+    """``__getattr__`` sits under ``if not TYPE_CHECKING:``: for mypy an unknown name is an error, not Any."""
+    import ast
+    from pathlib import Path
+
+    tree = ast.parse(Path(importlib.import_module(package).__file__).read_text(encoding="utf-8"))
+    assert not any(isinstance(n, ast.FunctionDef) and n.name == "__getattr__" for n in tree.body)
+    hidden = [n for n in tree.body if isinstance(n, ast.If) and isinstance(n.test, ast.UnaryOp)
+              and isinstance(n.test.op, ast.Not) and getattr(n.test.operand, "id", None) == "TYPE_CHECKING"]
+    assert any(isinstance(f, ast.FunctionDef) and f.name == "__getattr__" for n in hidden for f in n.body)
+
+
 def test_unknown_names_raise_attribute_error():
     import regimemap
     import regimemap.drawing
+    import regimemap.dynamics
     import regimemap.io
+    import regimemap.maps
 
-    for mod in (regimemap, regimemap.drawing, regimemap.io):
+    for mod in (regimemap, regimemap.drawing, regimemap.io, regimemap.maps, regimemap.dynamics):
         with pytest.raises(AttributeError, match="no attribute 'nope'"):
             mod.nope  # noqa: B018
 

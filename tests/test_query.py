@@ -69,6 +69,7 @@ def test_chosen_hypothesis_is_admissible(results):
         assert bool(solve(r.hypothesis, r.k, r.mu, r.gamma, r.kprime).ok)
 
 
+@pytest.mark.slow
 def test_admissible_set_equals_solver_and_contains_mode(results):
     for r in results:
         adm = admissible(r.k, r.mu, r.gamma, r.kprime)
@@ -78,6 +79,7 @@ def test_admissible_set_equals_solver_and_contains_mode(results):
         assert r.admissible[0] == r.mode
 
 
+@pytest.mark.slow
 def test_margins_are_exact(results):
     """The mode holds strictly inside the margin and differs at the boundary found."""
     checked = 0
@@ -104,6 +106,7 @@ def test_margins_are_exact(results):
     assert checked > 1000
 
 
+@pytest.mark.slow
 def test_no_change_means_none_far_away(results):
     for r in results:
         for m in (r.margin_k, r.margin_mu):

@@ -1,4 +1,10 @@
-"""Every example of README.md runs (shell blocks with the installed `regimemap`, Python blocks)."""
+"""Every example of README.md runs (shell blocks with the installed `regimemap`, Python blocks).
+
+One test per block, so that pytest-xdist spreads them over the cores.  A block
+that reads a file an earlier block writes (``np.load("map.npz")`` after
+``regimemap export ... -o map.npz``) runs in the same test, after that block,
+in the same folder: the blocks are grouped by the files they pass on.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +13,8 @@ import re
 import subprocess
 import sys
 from pathlib import Path
+
+import pytest
 
 README = Path(__file__).resolve().parents[1] / "README.md"
 BIN = str(Path(sys.executable).parent)
@@ -32,16 +40,70 @@ def _blocks() -> list[tuple[str, str]]:
 
 BLOCKS = _blocks()
 
+#: A file name in a block (``map.npz``, ``goda.toml``, ``caissons.csv`` ...).
+_FILE = r"(?<![\w.-])[\w.-]+\.(?:csv|npz|json|toml|png|svg|pdf|gif|txt)(?![\w.-])"
+#: ... that the block writes: after -o, --plot, --animate, a shell redirection, or saved by Python.
+_WRITES = re.compile(rf"(?:(?:-o|--output|--plot|--animate|>)\s+|(?:save_figure|savefig)\([^)]*?[\"'])({_FILE})")
+
+
+def _writes(body: str) -> set[str]:
+    return set(_WRITES.findall(body))
+
+
+def _reads(body: str) -> set[str]:
+    return set(re.findall(_FILE, body)) - _writes(body)
+
+
+def groups(blocks: list[tuple[str, str]]) -> list[list[int]]:
+    """Indices of the blocks, grouped: a block joins the group of the last earlier block that
+    writes a file it reads (and so all of that block's own prerequisites); groups in README order."""
+    parent = list(range(len(blocks)))
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            i = parent[i]
+        return i
+
+    for i, (_, body) in enumerate(blocks):
+        for name in _reads(body):
+            writers = [j for j in range(i) if name in _writes(blocks[j][1])]
+            if writers:
+                parent[root(i)] = root(writers[-1])
+    out: dict[int, list[int]] = {}
+    for i in range(len(blocks)):
+        out.setdefault(root(i), []).append(i)
+    return sorted(out.values())
+
+
+GROUPS = groups(BLOCKS)
+
+
+def _group_id(group: list[int]) -> str:
+    return "+".join(f"{i}-{BLOCKS[i][0]}" for i in group)
+
 
 def test_readme_has_examples():
     langs = {lang for lang, _ in BLOCKS}
     assert {"sh", "python"} <= langs and len(BLOCKS) >= 10
 
 
-def test_readme_examples_run(tmp_path):
-    """Blocks run in order in one folder (later examples use files that earlier ones write)."""
+def test_blocks_that_read_files_run_after_the_blocks_that_write_them():
+    """The grouping (checked on a made-up README): a reader joins its writer, in order; others alone."""
+    made_up = [("sh", "regimemap export -o map.npz"), ("python", "np.load('map.npz')"),
+               ("sh", "cat > c.csv <<'EOF'\nk,mu\nEOF"), ("sh", "regimemap plot -o map.svg"),
+               ("python", "read_points_csv('c.csv')"), ("sh", "regimemap outcome -o map.npz"),
+               ("python", "np.load('map.npz')")]
+    assert groups(made_up) == [[0, 1], [2, 4], [3], [5, 6]]
+
+
+@pytest.mark.subprocess  # the installed regimemap, python -c
+@pytest.mark.slow  # seconds a block
+@pytest.mark.parametrize("group", GROUPS, ids=_group_id)
+def test_readme_examples_run(group, tmp_path):
+    """The blocks of one group run in order in one folder of their own."""
     env = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")
-    for lang, body in BLOCKS:
+    for i in group:
+        lang, body = BLOCKS[i]
         cmd = [sys.executable, "-c", body] if lang == "python" else ["bash", "-e", "-c", body]
         r = subprocess.run(cmd, cwd=tmp_path, env=env, capture_output=True, text=True, timeout=300)
-        assert r.returncode == 0, f"README example failed:\n{body}\n--- stderr ---\n{r.stderr[-2000:]}"
+        assert r.returncode == 0, f"README example {i} failed:\n{body}\n--- stderr ---\n{r.stderr[-2000:]}"

@@ -14,7 +14,7 @@ from regimemap import Mode, Parameters
 from regimemap.mechanics.regions import RAW_REGIONS, raw_region
 from regimemap.mechanics.solver import admissible
 
-from ._sweep import sample_points, sweep
+from ._sweep import sample_points, sweep, tiered
 
 H = 1e-6
 
@@ -28,7 +28,7 @@ def _stable(fn, k, mu):
     return base, ok
 
 
-@pytest.mark.parametrize("gamma,kprime", sweep(17))
+@pytest.mark.parametrize("gamma,kprime", tiered(sweep(17), every=8))
 def test_raw_regions_equal_solver(gamma, kprime):
     p = Parameters(gamma, kprime)
     k, mu = sample_points(gamma, kprime, 2500, seed=int(gamma * 100 + kprime * 10) % 997)

@@ -12,13 +12,15 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
-from regimemap.drawing.figure import map_figure, new_figure, render_map, render_preset
-from regimemap.drawing.mapplot import MapArtists, draw_design_points, draw_map
+from regimemap.drawing.artists import MapArtists
+from regimemap.drawing.figure import map_data, map_figure, new_figure, render_map, render_preset
+from regimemap.drawing.mapplot import MapStyle, draw_design_points, draw_map
 from regimemap.drawing.presets import PRESETS
-from regimemap.drawing.save import FORMATS, format_from_path
+from regimemap.drawing.save import FORMATS, format_from_path, save_figure
 from regimemap.drawing.style import MODE_STYLE
-from regimemap.io.figures import save_figure
 from regimemap.io.points import DesignPoint
+
+pytestmark = pytest.mark.render
 
 ALL_MODE_IDS = ("3.9a", "3.9b", "3.10", "3.11", "4.7a", "4.7b")
 
@@ -120,7 +122,7 @@ def test_region_labels_are_in_their_regions():
 
 def test_draw_map_returns_what_it_drew():
     fig, ax = new_figure()
-    art = draw_map(ax, Parameters(3.0, 0.4))
+    art = draw_map(ax, map_data(Parameters(3.0, 0.4)))
     assert isinstance(art, MapArtists)
     assert set(art.fills) == set(MAP_MODES)
     assert art.fills[Mode.RO] and art.fills[Mode.RO][0].axes is ax
@@ -141,8 +143,8 @@ def test_draw_map_returns_what_it_drew():
 
 def test_draw_map_options():
     fig, ax = new_figure()
-    art = draw_map(ax, Parameters(3.0, 0.4), modes=[Mode.RO], curves=False, labels=False,
-                   legend=False, title="", k_max=2.0, mu_max=1.0)
+    data = map_data(Parameters(3.0, 0.4), modes=[Mode.RO], curves=False, k_max=2.0, mu_max=1.0)
+    art = draw_map(ax, data, MapStyle(curves=False, labels=False, legend=False, title=""))
     assert set(art.fills) == {Mode.RO}
     assert not art.curves and not art.region_labels and art.legend is None
     assert art.title is None and ax.get_title(loc="left") == ""
@@ -157,8 +159,8 @@ def test_draw_on_a_user_axes_with_subplots():
     fig = Figure(figsize=(10, 4))
     FigureCanvasAgg(fig)
     a1, a2 = fig.subplots(1, 2)
-    draw_map(a1, Parameters(3.0, 0.2), legend=False)
-    draw_map(a2, Parameters(3.0, -0.3), legend=False)
+    draw_map(a1, map_data(Parameters(3.0, 0.2)), MapStyle(legend=False))
+    draw_map(a2, map_data(Parameters(3.0, -0.3)), MapStyle(legend=False))
     buf = io.BytesIO()
     fig.savefig(buf, format="png")
     assert buf.getvalue().startswith(b"\x89PNG")
@@ -166,7 +168,7 @@ def test_draw_on_a_user_axes_with_subplots():
 
 def test_design_points():
     fig, ax = new_figure()
-    draw_map(ax, Parameters(3.0, 0.4))
+    draw_map(ax, map_data(Parameters(3.0, 0.4)))
     pts = [DesignPoint(0.45, 0.3, "caisson-A"), DesignPoint(0.2, 0.1, "")]
     arts = draw_design_points(ax, pts)
     assert len(arts) == 2  # one marker line + one name (the unnamed point has none)
@@ -292,6 +294,7 @@ def test_mode_styles_are_distinct_and_light():
         assert (luminance(c) + 0.05) / 0.05 >= 7.0, c
 
 
+@pytest.mark.subprocess
 def test_no_pyplot_and_no_global_rcparams():
     code = (
         "import matplotlib, sys\n"
@@ -299,7 +302,7 @@ def test_no_pyplot_and_no_global_rcparams():
         "keys = [k for k in rc if k != 'backend']  # reading 'backend' would import pyplot\n"
         "before = {k: rc[k] for k in keys}\n"
         "from regimemap import Parameters\n"
-        "from regimemap.drawing.figure import render_map\nfrom regimemap.io.figures import save_figure\n"
+        "from regimemap.drawing.figure import render_map\nfrom regimemap.drawing.save import save_figure\n"
         "import io\n"
         "fig = render_map(Parameters(3, 0.4), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"
@@ -333,7 +336,11 @@ def test_point_names_never_overlap(gamma):
 def test_point_offsets_for_crowded_axis_points():
     from types import SimpleNamespace as P
 
-    from regimemap.drawing.mapplot import _ABOVE, _LEFT_OF, _POINT_OFFSET, _RIGHT_OF, _point_offsets
+    from regimemap.drawing.labels import ABOVE as _ABOVE
+    from regimemap.drawing.labels import LEFT_OF as _LEFT_OF
+    from regimemap.drawing.labels import POINT_OFFSET as _POINT_OFFSET
+    from regimemap.drawing.labels import RIGHT_OF as _RIGHT_OF
+    from regimemap.drawing.labels import point_offsets as _point_offsets
 
     frame = P(k_max=1.0, w_pt=400.0)  # 1 unit of k = 400 points
     pts = {"O": P(k=0.0, mu=0.0), "F": P(k=0.50, mu=0.0), "E": P(k=0.51, mu=0.0),

@@ -69,6 +69,7 @@ def test_rock_about_O_prime_never_admissible():
         assert not solve(Hypothesis.ROCK_O_PRIME, k, mu, g, kp).ok.any()
 
 
+@pytest.mark.slow
 def test_admissible_set_never_empty():
     for g, kp in sweep(11):
         k, mu = sample_points(g, kp, 3000, seed=2)
@@ -76,6 +77,7 @@ def test_admissible_set_never_empty():
         assert np.stack(list(adm.values())).any(axis=0).all(), (g, kp)
 
 
+@pytest.mark.slow
 def test_slide_right_and_slide_rock_prime_plus_never_admissible():
     for g, kp in sweep(11):
         k, mu = sample_points(g, kp, 3000, seed=3)

@@ -286,6 +286,7 @@ def test_curve_label_anchor_keeps_clear_of_lines():
     assert not box_hits(b, dense[0]) and not box_hits(b, dense[1])
 
 
+@pytest.mark.subprocess
 def test_view_does_not_import_matplotlib():
     code = ("import sys, regimemap.maps.view, regimemap.drawing.presets; "
             "print(any(m.startswith('matplotlib') for m in sys.modules))")

@@ -13,13 +13,17 @@ when they are used.
 
 from __future__ import annotations
 
-from typing import Any
+import logging
+from typing import TYPE_CHECKING, Any
 
 from ._version import __version__
 from .maps.classify import PRIORITY, classify, label_grid
 from .mechanics.block import Case, Parameters
 from .mechanics.modes import LOADED_MAP_MODES, MAP_MODES, SELECTION_ORDER, Mode
 from .mechanics.solver import Hypothesis, admissible
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .maps.query import PointResult, margin, query_point, query_points
 
 __all__ = [
     "Case",
@@ -42,10 +46,23 @@ __all__ = [
 
 _LAZY = {"PointResult", "margin", "query_point", "query_points"}
 
+# Diagnostics go to logging.getLogger("regimemap") and its children (one per module), never to
+# print: silent unless the application shows them (``regimemap -v``, or logging.basicConfig).
+logging.getLogger(__name__).addHandler(logging.NullHandler())
 
-def __getattr__(name: str) -> Any:  # PEP 562: the point query is imported on first use
-    if name in _LAZY:
-        from .maps import query
 
-        return getattr(query, name)
-    raise AttributeError(f"module 'regimemap' has no attribute {name!r}")
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+
+    def __getattr__(name: str) -> Any:  # PEP 562: the point query is imported on first use
+        if name in _LAZY:
+            from .maps import query
+
+            value = getattr(query, name)
+            globals()[name] = value
+            return value
+        raise AttributeError(f"module 'regimemap' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The public names (imported or not yet) and the module's own: what IDEs and ``dir()`` list."""
+    return sorted(set(globals()) | set(__all__))

@@ -22,6 +22,7 @@ from regimemap.waves import analyse_caisson
 from ._cases import GODA, MODEL
 
 
+@pytest.mark.slow
 def test_esd_does_not_rise_with_width_and_the_target_width_is_on_the_curve():
     widths = np.linspace(11.0, 19.0, 9)
     c = design_chart(GODA, MODEL, widths, trials=600, seed=4, target=0.1)
@@ -60,6 +61,8 @@ def test_sf_width_has_the_required_safety_factor():
     assert sf_width(GODA, MODEL, 2.4) == pytest.approx(2.0 * w, rel=1e-9)
 
 
+@pytest.mark.subprocess
+@pytest.mark.slow
 def test_goda_takagi_trend_shallow_narrower_deep_wider():
     model = LifetimeModel(Climate.from_return_values(5.6, 6.3))
     ratios = {}

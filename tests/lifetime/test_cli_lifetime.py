@@ -110,6 +110,7 @@ def test_no_seed_gives_a_fresh_one_and_says_it(run_cli, tmp_path: Path) -> None:
     assert json.loads(again.stdout)["expected_sliding"] == json.loads(r.stdout)["expected_sliding"]
 
 
+@pytest.mark.render
 def test_files_are_written_and_reported(run_cli, goda: Path, tmp_path: Path) -> None:
     out = tmp_path / "out"
     out.mkdir()
@@ -129,6 +130,7 @@ def test_files_are_written_and_reported(run_cli, goda: Path, tmp_path: Path) -> 
     assert (out / "life.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
+@pytest.mark.render
 def test_json_lists_the_written_files(run_cli, goda: Path, tmp_path: Path) -> None:
     csv, svg = str(tmp_path / "a.csv"), str(tmp_path / "a.svg")
     r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--json", "-o", csv, "-o", svg]))
@@ -145,6 +147,7 @@ def _csv(run_cli, goda: Path, path: Path, *args: str) -> bytes:
     return path.read_bytes()
 
 
+@pytest.mark.subprocess
 def test_the_same_seed_gives_the_same_bytes_with_any_jobs_and_chunk(run_cli, goda: Path,
                                                                     tmp_path: Path) -> None:
     one = _csv(run_cli, goda, tmp_path / "one.csv", "--jobs", "1")
@@ -155,6 +158,8 @@ def test_the_same_seed_gives_the_same_bytes_with_any_jobs_and_chunk(run_cli, god
     assert other != one
 
 
+@pytest.mark.subprocess
+@pytest.mark.slow
 def test_a_dask_cluster_gives_the_same_bytes(run_cli, goda: Path, tmp_path: Path) -> None:
     pytest.importorskip("distributed")
     from distributed import LocalCluster
@@ -168,6 +173,7 @@ def test_a_dask_cluster_gives_the_same_bytes(run_cli, goda: Path, tmp_path: Path
         assert json.loads(r.stdout)["trials"] == 300 and f"on the Dask cluster at {address}" in r.stderr
 
 
+@pytest.mark.slow
 def test_an_unreachable_scheduler_is_one_line(run_cli, goda: Path, tmp_path: Path) -> None:
     pytest.importorskip("distributed")
     import socket
@@ -176,8 +182,9 @@ def test_an_unreachable_scheduler_is_one_line(run_cli, goda: Path, tmp_path: Pat
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     out = tmp_path / "never.csv"
+    # a refused connection is retried until the timeout: 1 s instead of the default 10 s
     r = run_cli(["lifetime", str(goda), "--trials", TRIALS, "--scheduler", f"tcp://127.0.0.1:{port}",
-                 "-o", str(out)])
+                 "-o", str(out)], env={"REGIMEMAP_DASK_TIMEOUT": "1"})
     failed(r, 1, "regimemap: error: cannot reach the Dask scheduler", f"127.0.0.1:{port}")
     assert not out.exists() and files_in(tmp_path) == ["goda.toml"]
 
@@ -192,6 +199,8 @@ def test_without_distributed_is_one_line(run_cli, goda: Path, monkeypatch: pytes
 # -- the design chart ---------------------------------------------------------------------------------
 
 
+@pytest.mark.render
+@pytest.mark.slow
 def test_design_chart(run_cli, goda: Path, tmp_path: Path) -> None:
     png = str(tmp_path / "chart.png")
     r = ok(run_cli(["lifetime", str(goda), "--trials", "200", "--width", "12:24:4", "-o", png]))

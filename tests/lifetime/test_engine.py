@@ -31,6 +31,7 @@ def _run(caisson=GODA, model=MODEL, trials=500, seed=11, **kw):
 
 # -- reproducibility -----------------------------------------------------------------------------
 
+@pytest.mark.subprocess
 def test_same_seed_same_bits_for_any_chunk_and_jobs():
     ref = _run(NARROW, trials=450, chunk=100)
     for kw in (dict(chunk=450), dict(chunk=200), dict(chunk=100, jobs=2), dict(chunk=300, jobs=2)):
@@ -54,6 +55,7 @@ def test_no_seed_draws_one_and_reports_it():
     assert np.array_equal(r.sliding, again.sliding)
 
 
+@pytest.mark.slow
 def test_standard_error_falls_like_one_over_root_n():
     # a narrow caisson slides in nearly every lifetime: the spread is tame
     se = {n: _run(NARROW, trials=n, seed=5).std_error for n in (400, 1600, 6400)}
@@ -143,6 +145,7 @@ ONE = ErrorFactor(1.0, 0.0)
 QUIET = Errors(ONE, ONE, ONE, ONE)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name,sign", [("deepwater", +1), ("transformation", +1), ("force", +1),
                                        ("friction", -1)])
 def test_a_larger_ratio_moves_the_esd(name, sign):
@@ -151,6 +154,7 @@ def test_a_larger_ratio_moves_the_esd(name, sign):
     _moves(base, up, sign)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["deepwater", "transformation", "force", "friction"])
 def test_a_larger_spread_slides_more(name):
     base = MODEL.with_(errors=replace(QUIET, **{name: ErrorFactor(1.0, 0.02)}))
@@ -171,12 +175,14 @@ def test_cov_zero_makes_the_factor_a_constant():
     assert np.allclose(c.sliding, a.sliding, rtol=1e-9, atol=1e-12)
 
 
+@pytest.mark.slow
 def test_truncating_the_factors_slides_less():
     wide = MODEL.with_(errors=Errors(ErrorFactor(1.0, 0.15), ErrorFactor(1.0, 0.1), ErrorFactor(1.0, 0.2),
                                      ErrorFactor(1.0, 0.15)))
     _moves(wide, wide.with_(truncate=1.0), -1, caisson=GODA.with_width(13.0))
 
 
+@pytest.mark.slow
 def test_a_tide_slides_more():
     model = MODEL.with_(errors=QUIET)
     _moves(model, model.with_(tide_range=3.0), +1)

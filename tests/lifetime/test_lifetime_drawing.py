@@ -17,11 +17,9 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from regimemap.drawing.lifetime import (  # noqa: E402
-    chart_figure,
-    figure_texts,
-    lifetime_figure,
-)
+from regimemap.drawing.labelplacer import figure_texts  # noqa: E402
+from regimemap.drawing.lifetime import lifetime_figure  # noqa: E402
+from regimemap.drawing.lifetime_chart import chart_figure  # noqa: E402
 from regimemap.drawing.save import print_figure  # noqa: E402
 from regimemap.drawing.tidy import MEASURE_DPI  # noqa: E402
 from regimemap.lifetime import (  # noqa: E402
@@ -34,6 +32,8 @@ from regimemap.lifetime import (  # noqa: E402
     lifetime_sliding,
 )
 from tests.test_legible import _check_boxes  # noqa: E402
+
+pytestmark = pytest.mark.render
 
 ROOT = Path(__file__).resolve().parents[2]
 

@@ -84,6 +84,7 @@ def test_wave_duration():
     assert float(wave_duration(8.0, 10.0, 12.0)) == pytest.approx((0.5 - 0.1) * 12.0)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("k_peak,duration", [(0.45, 2.0), (0.8, 1.0)])
 def test_closed_form_matches_simulate_for_a_block_that_only_slides(k_peak, duration):
     """The loaded block of `simulate` with the lifetime model's loads, no added mass.
@@ -93,9 +94,10 @@ def test_closed_form_matches_simulate_for_a_block_that_only_slides(k_peak, durat
     """
     mu, beta, nu, g = 0.5, 0.3, 0.4, 9.81
     block = Block(B=5.0, gamma=0.3, mu=mu, kprime=-0.5, beta=beta, nu=nu, g=g)
-    sim = simulate(block, Pulse.half_sine(k_peak, duration), dt=duration / 20000)
+    sim = simulate(block, Pulse.half_sine(k_peak, duration), dt=duration / 2000)
     assert not bool(sim.rocked[0]) and bool(sim.slid[0]) and bool(sim.settled[0])
     m = 1.0  # per unit mass
     expected = float(half_sine_slide(m * g * k_peak * (1.0 + mu * nu), mu * m * g * (1.0 - beta), m, duration))
-    # the stepper is first order in dt (Moreau-Jean): 1e-3 relative at 20 000 steps
+    # the stepper's error comes from the start and the stop of the slide, within a step:
+    # 1e-3 relative at 2000 steps over the pulse (measured: a few 1e-5)
     assert float(sim.residual_slide[0]) == pytest.approx(expected, rel=1e-3)

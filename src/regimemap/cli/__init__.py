@@ -16,12 +16,14 @@ import click
 
 from .. import __version__
 from ._common import CONTEXT_SETTINGS, gc_paused_at_start, run_main
+from ._logging import verbose_option
 
 __all__ = ["cli", "main", "console_main"]
 
 
 @click.group(context_settings=CONTEXT_SETTINGS)
 @click.version_option(__version__, "--version", "-V", prog_name="regimemap")
+@verbose_option
 def cli() -> None:
     """Regime maps of a freestanding rigid block pushed by a horizontal force.
 
@@ -43,6 +45,7 @@ def cli() -> None:
       regimemap caisson --example > goda.toml
       regimemap lifetime goda.toml -o life.png
       regimemap lifetime goda.toml --width 10:25:16 -o chart.svg
+      regimemap -v lifetime goda.toml -o life.png
     """
 
 
@@ -55,6 +58,7 @@ def _register(group: click.Group) -> None:
     from .atlas import animate_cmd, atlas_cmd
     from .caisson import caisson_cmd
     from .dynamics_figures import dynamics_figures_cmd
+    from .explore import explore_cmd
     from .export import export_cmd
     from .lifetime import lifetime_cmd
     from .outcome import outcome_cmd
@@ -70,6 +74,7 @@ def _register(group: click.Group) -> None:
     group.add_command(simulate_cmd)
     group.add_command(outcome_cmd)
     group.add_command(dynamics_figures_cmd)
+    group.add_command(explore_cmd)
 
 
 _register(cli)

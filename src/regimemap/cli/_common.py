@@ -219,7 +219,7 @@ class _LoadValues(ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
         if isinstance(value, list):
             return value
-        from ..drawing.atlas import parse_values
+        from ..maps.sweeps import parse_values
 
         try:
             return parse_values(str(value), self._what, lambda v: check_load_value(self._what, v),

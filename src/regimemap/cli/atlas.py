@@ -7,10 +7,11 @@ from typing import Any
 
 import click
 
+from ..drawing.animation import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
+from ..drawing.atlas import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 from ._common import (
     LOAD_OPTIONS,
     ParamType,
-    RunError,
     gamma_option,
     import_matplotlib,
     load_options,
@@ -18,18 +19,9 @@ from ._common import (
     positive_float,
     report_written,
 )
+from ._writing import writing
 
 __all__ = ["atlas_cmd", "animate_cmd"]
-
-from ..drawing.atlas import (
-    ANIMATION_DPI,
-    ANIMATION_DPI_RANGE,
-    ATLAS_DPI,
-    ATLAS_DPI_RANGE,
-    FPS_RANGE,
-    MAX_FRAMES,
-    MAX_PANELS,
-)
 
 
 class _Values(ParamType):
@@ -44,7 +36,7 @@ class _Values(ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
         if isinstance(value, list):
             return value
-        from ..drawing.atlas import parse_values
+        from ..maps.sweeps import parse_values
 
         try:
             return parse_values(str(value), self._what, self._check, self._max)
@@ -90,7 +82,7 @@ def _sweep(kprimes: list[float], loads: dict[str, list[float]], axis: str
 def _checked_blocks(gammas: list[float], sweep: str, values: list[float], fixed: dict[str, Any]
                     ) -> list[Any]:
     """The block of every panel or frame; a usage error when one cannot exist (k' above the crest)."""
-    from ..drawing.atlas import sweep_params
+    from ..maps.sweeps import sweep_params
 
     try:
         return [sweep_params(g, sweep, v, fixed) for g in gammas for v in values]
@@ -170,16 +162,14 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
     blocks = _checked_blocks(gammas, sweep, values, fixed)
     fmt = _figure_output(output)
     import_matplotlib()
-    from ..drawing.atlas import points_outside, resolve_share
-    from ..io.figures import write_atlas
+    from ..drawing.atlas import write_atlas
+    from ..maps.sweeps import points_outside, resolve_share
 
     used, ext, crammed = resolve_share(gammas, values, share, k_max, mu_max, view=view,
                                        sweep=sweep, fixed=fixed)
-    try:
+    with writing(output):
         write_atlas(output, gammas, values, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
                     view=view, dpi=dpi, sweep=sweep, fixed=fixed)
-    except OSError as exc:
-        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     across = "" if sweep == "kprime" else f", columns {sweep}"
     report_written(output, f"{len(gammas)} x {len(values)} panels{across}")
     label = "k'" if sweep == "kprime" else sweep
@@ -245,19 +235,17 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
     blocks = _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()
-    from ..drawing.atlas import points_outside, sweep_extent
-    from ..io.figures import write_animation
+    from ..drawing.animation import write_animation
+    from ..maps.sweeps import points_outside, sweep_extent
 
     if k_max is None or mu_max is None:
         ek, em = sweep_extent(gamma, values, view, sweep=sweep, fixed=fixed)
         k_max = ek if k_max is None else k_max
         mu_max = em if mu_max is None else mu_max
     view_name, frame_view = view, (k_max, mu_max)
-    try:
+    with writing(output):
         n, (w, h) = write_animation(output, gamma, values, k_max=k_max, mu_max=mu_max, fps=fps,
                                     dpi=dpi, sweep=sweep, fixed=fixed)
-    except OSError as exc:
-        raise RunError(f"cannot write {output}: {exc.strerror or exc}") from None
     report_written(output, f"{n} frames, {w} x {h} pixels, {fps:g} frames/s")
     if view_name == "report":
         label = "k'" if sweep == "kprime" else sweep

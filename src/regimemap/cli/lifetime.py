@@ -4,7 +4,7 @@ Reads the design file (its ``[lifetime]`` table), runs
 :func:`regimemap.lifetime.lifetime_sliding` -- or, with ``--width``,
 :func:`regimemap.lifetime.design_chart` -- in this process, in local worker
 processes or on a Dask cluster, and writes through :mod:`regimemap.io.lifetime`
-and :mod:`regimemap.io.figures`.  The checks of the values live in
+and :func:`regimemap.drawing.save.save_figure`.  The checks of the values live in
 :mod:`regimemap.io.design` and :mod:`regimemap.io.lifetime`.
 """
 
@@ -19,6 +19,8 @@ from typing import Any
 import click
 
 from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
+from ._plausible import STRICT_HELP, check_plausible
+from ._writing import writing
 
 __all__ = ["lifetime_cmd"]
 
@@ -109,9 +111,11 @@ def _suffix(path: str) -> str:
               help="Run on an existing Dask cluster, e.g. tcp://host:8786 (needs the 'cluster' extra: "
                    "pip install 'regimemap[cluster]'); the numbers are the same as on this machine.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
+@click.option("--strict", is_flag=True, help=STRICT_HELP)
 def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int | None,
                  widths: list[float] | None, target: float | None, as_json: bool, outputs: tuple[str, ...],
-                 jobs: int | None, chunk: int | None, scheduler: str | None, quiet: bool) -> None:
+                 jobs: int | None, chunk: int | None, scheduler: str | None, quiet: bool,
+                 strict: bool) -> None:
     """How far a caisson slides over its design life: the expected sliding distance (ESD).
 
     Reads DESIGN.toml -- the caisson and its site as for `regimemap caisson`, and
@@ -173,6 +177,11 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
         caisson = d.lifetime_caisson()
     except DesignFileError as exc:
         raise click.BadParameter(str(exc), param_hint="'DESIGN.toml'") from None
+    try:
+        analysis = d.analyse()
+    except ValueError:
+        analysis = None
+    check_plausible(d, analysis, strict, design)
     n = spec.trials if trials is None else trials
     root = spec.seed if seed is None else seed
 
@@ -223,21 +232,20 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     written: list[str] = []
     fig = None
     for path in outputs:
-        try:
+        with writing(path):
             if _suffix(path) in SAMPLE_FORMATS:
                 io_lifetime.write_samples(result, path)
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.lifetime import chart_figure, lifetime_figure
+                    from ..drawing.lifetime import lifetime_figure
+                    from ..drawing.lifetime_chart import chart_figure
 
                     title = Path(design).name
                     fig = lifetime_figure(result, title) if widths is None else chart_figure(chart, title)
-                from ..io.figures import save_figure
+                from ..drawing.save import save_figure
 
                 save_figure(fig, path)
-        except OSError as exc:
-            raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
         written.append(path)
 
     if as_json:

@@ -1,7 +1,7 @@
 """``regimemap plot``, ``regimemap figure`` and ``regimemap figures``.
 
 Importing this module does not import matplotlib (``regimemap --help`` stays
-fast); the commands import :mod:`regimemap.render` when they run.
+fast); the commands import :mod:`regimemap.drawing` when they run.
 """
 
 from __future__ import annotations
@@ -27,13 +27,14 @@ from ._common import (
     report_written,
     resolution_type,
 )
+from ._writing import writing
 
 _LO, _HI = DPI_RANGE
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..io.points import DesignPoint
 
-#: Output formats, as in :data:`regimemap.render.FORMATS` (repeated so that
+#: Output formats, as in :data:`regimemap.drawing.save.FORMATS` (repeated so that
 #: this module need not import the renderer).
 FORMATS = ("png", "svg", "pdf")
 DEFAULT_SAMPLES = 801
@@ -170,14 +171,6 @@ def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> t
 
 def _check_dir(path: str, option: str) -> Path:
     return output_dir(path, option, create=True)
-
-
-def _save(save_figure: Any, fig: Any, path: Path, fmt: str, dpi: float) -> None:
-    """Save through the renderer; a failing write names the file (exit 1)."""
-    try:
-        save_figure(fig, path, fmt, dpi=dpi)
-    except OSError as exc:
-        raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
 
 
 def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
@@ -324,13 +317,14 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     points = _read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
     from ..drawing.figure import fit_figure, map_figure
+    from ..drawing.mapplot import MapStyle
+    from ..drawing.save import save_figure
     from ..drawing.style import style_context
-    from ..io.figures import save_figure
 
+    style = MapStyle(curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title)
     fig, ax, artists = map_figure(
-        params, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
-        curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title,
-        samples=resolution, view=view)
+        params, style=style, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes,
+        raw=raw, samples=resolution, view=view)
     if show_ambiguity:
         from ..drawing.ambiguity import draw_ambiguity
         from ..drawing.tidy import tidy_figure
@@ -347,7 +341,8 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
         names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in outside[:5])
         click.echo(f"regimemap: warning: {len(outside)} point(s) outside the view "
                    f"k <= {_num(k_hi)}, mu <= {_num(mu_hi)}: {names}", err=True)
-    _save(save_figure, fig, path, fmt, dpi)
+    with writing(path):
+        save_figure(fig, path, fmt, dpi=dpi)
     _written(path)
 
 
@@ -403,7 +398,7 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
 
     import_matplotlib()
     from ..drawing.figure import render_preset
-    from ..io.figures import save_figure
+    from ..drawing.save import save_figure
 
     if preset is None:
         from ..drawing.model import model_figure
@@ -415,7 +410,8 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
         fig = render_worked(preset, dpi=dpi)
     else:
         fig = render_preset(preset, dpi=dpi)
-    _save(save_figure, fig, path, fmt, dpi)
+    with writing(path):
+        save_figure(fig, path, fmt, dpi=dpi)
     _written(path)
 
 
@@ -455,8 +451,9 @@ W.4: the uplift ratio swept); --set all draws both.
                    "(W.1, W.2 ...: submerged caissons), or both.")
 @click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
               help="Worker processes (default: one per core).")
+@click.option("--quiet", "-q", is_flag=True, help="No progress bar on standard error.")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
-                    which: str, jobs: int | None) -> None:
+                    which: str, jobs: int | None, quiet: bool) -> None:
     from ..drawing.presets import PRESETS
     from ..drawing.worked import WORKED
 
@@ -480,13 +477,16 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
-    from ..io.figures import write_figures
+    from ..drawing.batch import write_figures
 
     ids = [] if which == "worked" else [MODEL_ID, *PRESETS]
     if which != "report":
         ids += list(WORKED)
-    try:
-        written = write_figures(folder, ids, formats, dpi, jobs=jobs)
+    from ._progress import progress_bar
+
+    try:  # the file that failed is known only from the error (not writing(path))
+        with progress_bar(len(ids), "figures", quiet, unit=" figures") as step:
+            written = write_figures(folder, ids, formats, dpi, jobs=jobs, progress=step)
     except OSError as exc:
         where = f"cannot write {exc.filename}" if exc.filename else "cannot write a figure"
         raise RunError(f"{where}: {exc.strerror or exc}") from None

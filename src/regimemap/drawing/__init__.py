@@ -1,22 +1,45 @@
 """The drawing layer: the only part of regimemap that imports matplotlib.
 
-Styles (:mod:`.style`), label placement (:mod:`.placement`), the key
-(:mod:`.key`), the map (:mod:`.mapplot`), the ambiguity overlay
-(:mod:`.ambiguity`), atlas and animation (:mod:`.atlas`), the report's figure
-presets (:mod:`.presets`), figure bytes (:mod:`.save`) and the figures of a
-caisson's sliding over its design life (:mod:`.lifetime`).  Names are imported
-on first use, so ``import regimemap.drawing`` does not import matplotlib.
+Styles (:mod:`.style`), label placement (:mod:`.placement`, :mod:`.labels`,
+:mod:`.labelplacer`), the key (:mod:`.key`), the map (:mod:`.mapplot`, drawing
+what :mod:`.artists` records; :mod:`.figure`, a map on a figure of its own), its
+tidy pass (:mod:`.tidy`), the ambiguity overlay (:mod:`.ambiguity`), the atlas
+(:mod:`.atlas`) and the animation (:mod:`.animation`), the report's figure
+presets (:mod:`.presets`, :mod:`.batch` for all of them at once), figure bytes
+and files (:mod:`.save`), the motions after initiation (:mod:`.outcome`,
+:mod:`.motion`) and the figures of a caisson's sliding over its design life
+(:mod:`.lifetime`, :mod:`.lifetime_chart`).  Files are written atomically
+through :mod:`regimemap.io`, the layer below.
+
+Names are imported on first use, so ``import regimemap.drawing`` does not
+import matplotlib; the ``if TYPE_CHECKING`` block gives type checkers and IDEs
+the real names.
 """
 
 from __future__ import annotations
 
 import importlib
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .ambiguity import draw_ambiguity
+    from .animation import write_animation
+    from .artists import MapArtists
+    from .atlas import atlas_figure, write_atlas
+    from .figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
+    from .lifetime import lifetime_figure
+    from .lifetime_chart import chart_figure
+    from .mapplot import MapStyle, default_title, draw_design_points, draw_map
+    from .motion import motion_figure
+    from .outcome import draw_outcome_map, outcome_figure
+    from .save import save_figure
+    from .style import MODE_STYLE, OUTCOME_STYLE, style_context
 
 __all__ = [
     "FIGSIZE",
     "MODE_STYLE",
     "MapArtists",
+    "MapStyle",
     "OUTCOME_STYLE",
     "atlas_figure",
     "chart_figure",
@@ -34,12 +57,16 @@ __all__ = [
     "outcome_figure",
     "render_map",
     "render_preset",
+    "save_figure",
     "style_context",
+    "write_animation",
+    "write_atlas",
 ]
 
 _WHERE = {
     "FIGSIZE": "figure",
-    "MapArtists": "mapplot",
+    "MapArtists": "artists",
+    "MapStyle": "mapplot",
     "default_title": "mapplot",
     "draw_design_points": "mapplot",
     "draw_map": "mapplot",
@@ -51,13 +78,16 @@ _WHERE = {
     "MODE_STYLE": "style",
     "style_context": "style",
     "atlas_figure": "atlas",
+    "write_atlas": "atlas",
+    "write_animation": "animation",
     "draw_ambiguity": "ambiguity",
+    "save_figure": "save",
     "OUTCOME_STYLE": "style",
     "draw_outcome_map": "outcome",
     "outcome_figure": "outcome",
     "motion_figure": "motion",
     "lifetime_figure": "lifetime",
-    "chart_figure": "lifetime",
+    "chart_figure": "lifetime_chart",
 }
 
 
@@ -71,7 +101,14 @@ def load_matplotlib() -> None:
     import matplotlib.figure  # noqa: F401
 
 
-def __getattr__(name: str) -> Any:  # PEP 562: matplotlib is imported on first use
-    if name in _WHERE:
-        return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+
+    def __getattr__(name: str) -> Any:  # PEP 562: matplotlib is imported on first use
+        if name in _WHERE:
+            return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The module's names and its public names (imported on first use), for ``dir()`` and IDEs."""
+    return sorted(set(globals()) | set(__all__))

@@ -134,7 +134,7 @@ def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
     -----
     A legend cannot take a new entry in place: the axes' legend is replaced
     by a new one with the same entries, placement and handlers, plus this one.
-    A :class:`~regimemap.render.MapArtists` of the map then still holds the
+    A :class:`~regimemap.drawing.artists.MapArtists` of the map then still holds the
     old legend; set its ``legend`` to ``ax.get_legend()``.
     """
     st = AMBIGUITY_STYLE

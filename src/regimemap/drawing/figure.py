@@ -1,20 +1,25 @@
-"""A map on a figure of its own: size, layout around the key, and the report's figures.
+"""A map on a figure of its own: its data, size, layout around the key, and the report's figures.
 
-:func:`map_figure` makes a Figure (Agg canvas, no pyplot) with one map drawn by
-:func:`regimemap.drawing.mapplot.draw_map` and sized to its key;
-:func:`render_preset` draws one of the report's figures.
+:func:`map_data` computes what the map of a block shows in the designer's or
+the report's view; :func:`map_figure` makes a Figure (Agg canvas, no pyplot)
+with one map drawn by :func:`regimemap.drawing.mapplot.draw_map` and sized to
+its key; :func:`render_preset` draws one of the report's figures.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..maps.geometry import DEFAULT_SAMPLES
+from ..maps.mapdata import MapData, compute_map
 from ..mechanics.block import Parameters
-from .mapplot import MapArtists, draw_design_points, draw_map
+from ..mechanics.modes import MAP_MODES, Mode
+from .artists import MapArtists
+from .mapplot import MapStyle, draw_design_points, draw_map
 from .save import DEFAULT_DPI
 from .style import style_context
 from .tidy import tidy_figure
@@ -26,8 +31,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..maps.points import DesignPoint
     from .presets import FigurePreset
 
-__all__ = ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "preset_figure", "render_map",
-           "render_preset"]
+__all__ = ["FIGSIZE", "fit_figure", "map_data", "map_figure", "new_figure", "preset_figure",
+           "render_map", "render_preset"]
 
 #: Size of a map figure in inches (width, height): fits a page width at 100 %.
 FIGSIZE: tuple[float, float] = (6.4, 5.6)
@@ -123,35 +128,111 @@ def fit_figure(fig: Figure, ax: Axes) -> None:
     ax.set_position(rect)
 
 
-def map_figure(params: Parameters, *, figsize: tuple[float, float] | None = None,
-               dpi: float = DEFAULT_DPI, points: Sequence[DesignPoint] = (),
-               fig: Figure | None = None, **kwargs: Any
+def map_data(params: Parameters, *, view: str = "designer", k_max: float | None = None,
+             mu_max: float | None = None, modes: Iterable[Mode] | None = None, raw: bool = False,
+             samples: int = DEFAULT_SAMPLES, curves: bool = True,
+             include: Iterable[tuple[float, float]] = ()) -> MapData:
+    """What the map of ``params`` shows, in the designer's or the report's view (no matplotlib).
+
+    Parameters
+    ----------
+    params : Parameters
+    view : {"designer", "report"}
+        The default view (:func:`regimemap.maps.designer_view.view_extent`):
+        mu up to 1.2 and every boundary that crosses that band, or every
+        characteristic point of the map.  ``k_max``/``mu_max`` win over both.
+    k_max, mu_max : float, optional
+        The view ``[0, k_max] x [0, mu_max]``.
+    modes : iterable of Mode, optional
+        Modes to shade (default: every mode the block shows).
+    raw : bool
+        The report's raw region of each mode (single-mode figures) instead of the final map.
+    samples : int
+        Samples of k for polygons and curves.
+    curves : bool
+        Compute the boundary curves and the named points.
+    include : iterable of (k, mu)
+        Points to keep in the view.
+
+    Returns
+    -------
+    MapData
+        :func:`regimemap.maps.mapdata.compute_map` of that view.
+    """
+    include = list(include)
+    if k_max is None or mu_max is None:
+        from ..maps.designer_view import view_extent
+
+        modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
+        if modes is not None:  # None: every mode the block shows (LO with loads)
+            modes = modes_t
+        raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
+        k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
+                                    mu_max=mu_max)
+    return compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                       samples=samples, curves=curves, include=include)
+
+
+def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapData | None = None,
+               view: str = "designer", k_max: float | None = None, mu_max: float | None = None,
+               modes: Iterable[Mode] | None = None, raw: bool = False,
+               samples: int = DEFAULT_SAMPLES, include: Iterable[tuple[float, float]] = (),
+               figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
+               points: Sequence[DesignPoint] = (), fig: Figure | None = None, **style_fields: Any
                ) -> tuple[Figure, Axes, MapArtists]:
     """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
 
-    ``kwargs`` go to :func:`draw_map`; design ``points`` are marked with
-    :func:`draw_design_points` and kept in the automatic view.  With
-    ``tidy=True`` (the default) the title is fitted to the figure and any
-    text that collides is moved (:func:`regimemap.drawing.tidy.tidy_figure`).  Unless
-    ``figsize`` is given, the figure height is fitted to the legend and the
-    axes are 5.5 x 3.6 inches.
+    Parameters
+    ----------
+    params : Parameters
+        The block.
+    style : MapStyle, optional
+        How the map is drawn (:func:`~regimemap.drawing.mapplot.draw_map`).
+    data : MapData, optional
+        The map, computed beforehand (``view`` ... ``include`` are then ignored).
+    view, k_max, mu_max, modes, raw, samples, include
+        What the map shows: see :func:`map_data`.
+    figsize : (float, float), optional
+        Size in inches; by default the axes are 5.5 x 3.6 inches and the
+        figure's height is fitted to the key.
+    dpi : float
+    points : sequence of DesignPoint
+        Design points, marked with :func:`~regimemap.drawing.mapplot.draw_design_points`
+        and kept in the automatic view.
+    fig : Figure, optional
+        A figure to reuse (see :func:`new_figure`).
+    **style_fields
+        Fields of :class:`~regimemap.drawing.mapplot.MapStyle` (``title=``,
+        ``legend=`` ...), over those of ``style``.
+
+    Returns
+    -------
+    (Figure, Axes, MapArtists)
+
+    Notes
+    -----
+    With ``tidy`` (the default) the title is fitted to the figure and any
+    text that collides is moved (:func:`regimemap.drawing.tidy.tidy_figure`).
     """
+    style = replace(style or MapStyle(), **style_fields)
     fig, ax = new_figure(figsize, dpi, fig)
-    include = list(kwargs.pop("include", ())) + [(pt.k, pt.mu) for pt in points]
-    tidy = kwargs.get("tidy", True)
+    if data is None:
+        include = list(include) + [(pt.k, pt.mu) for pt in points]
+        data = map_data(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                        samples=samples, curves=style.curves, include=include)
     with style_context():
-        artists = draw_map(ax, params, include=include, **kwargs)
+        artists = draw_map(ax, data, style)
         if points:
-            artists.extra.extend(draw_design_points(ax, points, tagged=tidy))
+            artists.extra.extend(draw_design_points(ax, points, tagged=style.tidy))
         if figsize is None:
             fit_figure(fig, ax)
-        if tidy:
+        if style.tidy:
             tidy_figure(fig, [artists])
     return fig, ax, artists
 
 
 def render_map(params: Parameters, **kwargs: Any) -> Figure:
-    """A Figure with the map of ``params`` (see :func:`map_figure` and :func:`draw_map`)."""
+    """A Figure with the map of ``params`` (the keywords of :func:`map_figure`)."""
     return map_figure(params, **kwargs)[0]
 
 
@@ -169,7 +250,8 @@ def preset_figure(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
         preset = get_preset(preset)
     return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
                       mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
-                      title=preset.title, samples=samples, hatches=hatches, view="report")
+                      samples=samples, view="report",
+                      style=MapStyle(title=preset.title, hatches=hatches))
 
 
 def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,

@@ -11,8 +11,8 @@ descriptions are plain text.  (A whole label such as
 ``"$SRO_{-}$  slide-rock about O"`` is one more mathtext parse per entry, and
 its parts could not be aligned.)
 
-This module imports matplotlib; :mod:`regimemap.render` and
-:mod:`regimemap.atlas` import it only when they draw.
+This module imports matplotlib; :mod:`regimemap.drawing.mapplot` and
+:mod:`regimemap.drawing.atlas` import it only when they draw.
 """
 
 from __future__ import annotations

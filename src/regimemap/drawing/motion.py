@@ -5,8 +5,9 @@ rotation theta(t) one above the other, with the phases of the motion (rest,
 slide, rock, slide-rock, flight) shaded in the regime maps' colours
 (:func:`regimemap.drawing.style.phase_style`).  :func:`render_block_animation`
 draws the block, its base and the push at a series of instants and writes
-them as a GIF.  Both take a :class:`regimemap.dynamics.History` (the data);
-nothing is computed here beyond interpolating it at the frames' times.
+them as a GIF (:func:`write_block_animation`: to a file, atomically).  Both take a
+:class:`regimemap.dynamics.History` (the data); nothing is computed here beyond
+interpolating it at the frames' times.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
 __all__ = ["MOTION_FIGSIZE", "ANIMATION_FPS", "ANIMATION_MAX_FRAMES", "BLOCK_ANIMATION_DPI",
-           "phase_runs", "motion_figure", "render_block_animation"]
+           "phase_runs", "motion_figure", "render_block_animation", "write_block_animation"]
 
 #: Size of the history figure in inches.
 MOTION_FIGSIZE: tuple[float, float] = (6.4, 6.4)
@@ -276,3 +277,38 @@ def render_block_animation(path: str | os.PathLike[str] | IO[bytes], history: Hi
         frames[0].save(path, format="GIF", save_all=True, append_images=frames[1:],
                        duration=int(round(1000 / fps)), loop=0)
     return len(frames), size, speed
+
+
+def write_block_animation(path: str | os.PathLike[str], history: History, **kwargs: Any
+                          ) -> tuple[int, tuple[int, int], float]:
+    """Write the GIF of :func:`render_block_animation` to a ``.gif`` file, atomically.
+
+    Parameters
+    ----------
+    path : path-like
+        The ``.gif`` file.
+    history : History
+        The run's time history.
+    **kwargs
+        The keywords of :func:`render_block_animation` (``B``, ``H`` ...).
+
+    Returns
+    -------
+    (frames, (width, height), speed)
+        The number of frames, their size in pixels and the speed-up over real time.
+
+    Raises
+    ------
+    ValueError
+        For a file that is not ``.gif`` (nothing written).
+    OSError
+        If the file cannot be written (nothing is left behind).
+    """
+    from pathlib import Path
+
+    from ..io.atomic import atomic_path
+
+    if Path(path).suffix.lower() != ".gif":
+        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+    with atomic_path(path) as tmp:
+        return render_block_animation(tmp, history, **kwargs)

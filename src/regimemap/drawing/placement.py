@@ -2,8 +2,9 @@
 
 The one label-placement model of the drawings: every function works in
 fractions of the view (``[0, 1] x [0, 1]``), with text boxes measured by the
-caller, so the map, the ambiguity overlay, the atlas and the animation place
-their labels by the same rules.
+caller, so the map (:mod:`regimemap.drawing.labels`), its tidy pass
+(:mod:`regimemap.drawing.tidy`), the ambiguity overlay, the atlas and the
+animation place their labels by the same rules.
 """
 
 from __future__ import annotations
@@ -12,9 +13,11 @@ import math
 from collections.abc import Sequence
 
 import numpy as np
+from numpy.typing import NDArray
 
 __all__ = [
     "Box",
+    "band_columns",
     "box_hits",
     "column_intervals",
     "curve_label_anchor",
@@ -22,6 +25,7 @@ __all__ = [
     "label_anchor",
     "leader_label_anchor",
     "overlaps",
+    "point_along",
     "view_points",
 ]
 
@@ -290,3 +294,72 @@ def _column_intervals(x: np.ndarray, y: np.ndarray, xs: np.ndarray) -> tuple[np.
 def column_intervals(x: np.ndarray, y: np.ndarray, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """lo, hi of the closed polygon (x, y) along the vertical lines x = xs (empty: lo > hi)."""
     return _column_intervals(x, y, xs)
+
+
+def band_columns(polygon: np.ndarray, k_max: float, mu_max: float, columns: int = 200
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Column centres and the polygon's interval on each, in view fractions, clipped to the view.
+
+    Unlike :func:`label_anchor`'s columns, the polygon itself is not clipped
+    first (that bends its edges), only the intervals: their middles lie inside.
+
+    Parameters
+    ----------
+    polygon : ndarray, shape (n, 2)
+        A closed polygon (k, mu).
+    k_max, mu_max : float
+        The view.
+    columns : int
+        Number of columns across the view.
+
+    Returns
+    -------
+    xs, lo, hi : ndarray
+        Column centres and the bottom and top of the polygon on each (view
+        fractions; an empty column has ``lo = 1 > hi = 0``).
+    """
+    poly = np.asarray(polygon, dtype=np.float64)
+    xs = (np.arange(columns) + 0.5) / columns
+    lo, hi = column_intervals(poly[:, 0] / k_max, poly[:, 1] / mu_max, xs)
+    empty = lo > hi
+    lo, hi = np.clip(lo, 0.0, 1.0), np.clip(hi, 0.0, 1.0)
+    lo[empty], hi[empty] = 1.0, 0.0
+    return xs, lo, hi
+
+
+def point_along(pts: np.ndarray, k_max: float, mu_max: float, frac: float
+                ) -> tuple[float, float] | None:
+    """The point at ``frac`` of the visible length of a polyline (data coordinates).
+
+    Parameters
+    ----------
+    pts : ndarray, shape (n, 2)
+        The polyline (k, mu).
+    k_max, mu_max : float
+        The view.
+    frac : float
+        Fraction (0 to 1) of the length of the polyline inside the view.
+
+    Returns
+    -------
+    (k, mu) or None
+        None when less than two of its points are in view.
+    """
+    q = view_points(pts, k_max, mu_max, 0.003)
+    q = q[(q[:, 0] >= 0) & (q[:, 0] <= 1) & (q[:, 1] >= 0) & (q[:, 1] <= 1)]
+    if len(q) < 2:
+        return None
+    s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(q, axis=0).T))])
+    i = int(np.clip(np.searchsorted(s, frac * s[-1]), 0, len(q) - 1))
+    return float(q[i, 0] * k_max), float(q[i, 1] * mu_max)
+
+
+def cell_edges(values: Sequence[float] | NDArray[np.float64]) -> NDArray[np.float64]:
+    """Edges of the cells centred on increasing ``values``: half-way between samples, and half a
+    spacing beyond the ends."""
+    v = np.asarray(values, dtype=np.float64)
+    if v.size == 1:
+        half = 0.5 * max(abs(float(v[0])), 1.0)
+        return np.array([v[0] - half, v[0] + half])
+    mid = 0.5 * (v[1:] + v[:-1])
+    return np.concatenate(([v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]))

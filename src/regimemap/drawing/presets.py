@@ -12,7 +12,7 @@ Captions lost from the source text (Figs 3.1, 3.3a, 3.4, 3.8, 4.4a-b, 4.5a,
 4.6a, 4.7a-b) are reconstructed from the report's wording of their companion
 captions and of the text that cites them; :attr:`FigurePreset.caption_source`
 says which.  This module does not import matplotlib; drawing is
-:func:`regimemap.render.render_preset`.
+:func:`regimemap.drawing.figure.render_preset`.
 """
 
 from __future__ import annotations
@@ -101,7 +101,7 @@ class FigurePreset:
     cases : tuple of Case
         The :class:`~regimemap.params.Case` values the parameters must fall in.
     k_max, mu_max : float or None
-        View; None for :func:`regimemap.view.auto_extent`.
+        View; None for :func:`regimemap.maps.view.auto_extent`.
     note : str
         Added to the parameter line under the caption (mathtext).
     """

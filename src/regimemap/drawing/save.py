@@ -1,8 +1,10 @@
-"""Figures to bytes: the format of a file, its metadata, and matplotlib's writer.
+"""Figures to bytes and files: the format of a file, its metadata, matplotlib's writer.
 
 :func:`print_figure` writes a figure to a path or an open binary file, with
-byte-stable metadata (no dates) and regimemap's style; writing a *file*
-atomically is :func:`regimemap.io.figures.save_figure`'s job.
+byte-stable metadata (no dates) and regimemap's style; :func:`save_figure`
+writes it to a file atomically, through :func:`regimemap.io.atomic.atomic_path`
+(a temporary file in the same folder, then a rename): a write that fails
+half-way leaves nothing behind and never a half-written file.
 """
 
 from __future__ import annotations
@@ -18,7 +20,8 @@ from .style import style_context
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-__all__ = ["DEFAULT_DPI", "DPI_RANGE", "FORMATS", "format_from_path", "metadata", "print_figure"]
+__all__ = ["DEFAULT_DPI", "DPI_RANGE", "FORMATS", "format_from_path", "metadata", "print_figure",
+           "save_figure"]
 
 #: Output formats (file suffixes) that :func:`print_figure` writes.
 FORMATS: tuple[str, ...] = ("png", "svg", "pdf")
@@ -27,6 +30,7 @@ FORMATS: tuple[str, ...] = ("png", "svg", "pdf")
 DEFAULT_DPI = 150
 #: The resolutions (dots per inch) a map or a figure of the report may be drawn at.
 DPI_RANGE: tuple[float, float] = (20.0, 1200.0)
+
 
 def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> str:
     """The output format: ``fmt`` if given, else the file suffix (png, svg or pdf).
@@ -53,6 +57,7 @@ def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> st
 
 
 def metadata(fmt: str) -> dict[str, Any]:
+    """The metadata of a file of format ``fmt``: regimemap's name and version, and no dates."""
     from .. import __version__
 
     creator = f"regimemap {__version__}"
@@ -84,6 +89,40 @@ def print_figure(fig: Figure, target: str | os.PathLike[str] | IO[bytes], fmt: s
     with style_context(), _quiet_font_subsetting():
         fig.savefig(target, format=fmt, dpi=dpi if dpi is not None else fig.dpi,
                     metadata=metadata(fmt), **extra)
+
+
+def save_figure(fig: Figure, path: str | os.PathLike[str], fmt: str | None = None,
+                dpi: float | None = None) -> Path:
+    """Write ``fig`` to ``path`` atomically (temporary file in the same folder, then rename).
+
+    Parameters
+    ----------
+    fig : Figure
+    path : path-like
+    fmt : {"png", "svg", "pdf"}, optional
+        Default: from the file suffix.
+    dpi : float, optional
+        Resolution of PNG output (default: the figure's).
+
+    Returns
+    -------
+    Path
+        ``path``.
+
+    Raises
+    ------
+    ValueError
+        For an unknown format (message lists png, svg, pdf).
+    OSError
+        If the file cannot be written (nothing is left behind).
+    """
+    from ..io.atomic import atomic_path  # tempfile: imported when a file is written
+
+    fmt = format_from_path(path, fmt)
+    target = Path(path)
+    with atomic_path(target) as tmp:
+        print_figure(fig, tmp, fmt, dpi)
+    return target
 
 
 @contextlib.contextmanager

@@ -1,14 +1,26 @@
-"""Files in and out: atomic writes, design points from CSV, map export and figures to files.
+"""Files in and out: atomic writes, design points and pulses from CSV, map export, results.
 
 Every writer here writes atomically (a temporary file in the same folder, then
-a rename): a failed write leaves nothing behind.  Names are imported on first
-use (``csv`` and matplotlib only when they are needed).
+a rename): a failed write leaves nothing behind.  This package sits below the
+drawing layer: it reads and writes files and never draws (figures are written
+by :func:`regimemap.drawing.save_figure`, which writes through
+:func:`atomic_path`).  Names are imported on first use (``csv`` only when it
+is needed); the ``if TYPE_CHECKING`` block gives type checkers and IDEs the
+real names.
 """
 
 from __future__ import annotations
 
 import importlib
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .atomic import atomic_open, atomic_path
+    from .dynamics import write_history, write_outcome
+    from .export import export_map
+    from .points import parse_point_spec, read_points_csv
+    from .pulses import read_pulse_csv
+    from .tables import format_result, result_row
 
 __all__ = [
     "atomic_open",
@@ -19,9 +31,6 @@ __all__ = [
     "read_points_csv",
     "read_pulse_csv",
     "result_row",
-    "save_figure",
-    "write_animation",
-    "write_atlas",
     "write_history",
     "write_outcome",
 ]
@@ -34,16 +43,20 @@ _WHERE = {
     "parse_point_spec": "points",
     "read_points_csv": "points",
     "result_row": "tables",
-    "save_figure": "figures",
-    "write_animation": "figures",
-    "write_atlas": "figures",
     "read_pulse_csv": "pulses",
     "write_history": "dynamics",
     "write_outcome": "dynamics",
 }
 
 
-def __getattr__(name: str) -> Any:  # PEP 562
-    if name in _WHERE:
-        return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+
+    def __getattr__(name: str) -> Any:  # PEP 562
+        if name in _WHERE:
+            return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The module's names and its public names (imported on first use), for ``dir()`` and IDEs."""
+    return sorted(set(globals()) | set(__all__))

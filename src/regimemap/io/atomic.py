@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import logging
 import os
 import stat
 import tempfile
@@ -22,6 +23,8 @@ __all__ = ["atomic_path", "atomic_open", "check_output_path", "folder_problem"]
 #: Longest part of the target's name kept in the temporary file's name (the
 #: temporary name adds about 15 characters; most file systems allow 255).
 _TMP_NAME_CHARS = 200
+
+_log = logging.getLogger(__name__)
 
 
 def _folder_of(p: Path) -> Path:
@@ -153,6 +156,8 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
             mode = 0o666 & ~_umask()
         os.chmod(tmp_path, mode)
         os.replace(tmp_path, target)
+        if _log.isEnabledFor(logging.INFO):
+            _log.info("wrote %s (%s bytes)", target, f"{target.stat().st_size:,}")
     except BaseException:
         with contextlib.suppress(OSError):
             tmp_path.unlink()

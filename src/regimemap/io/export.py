@@ -31,6 +31,7 @@ All files are written atomically (a temporary file renamed into place).
 from __future__ import annotations
 
 import json
+import logging
 import math
 import os
 from collections.abc import Callable
@@ -133,6 +134,8 @@ def map_grid(p: Parameters, k_max: float | None = None, mu_max: float | None = N
     _resolution(resolution)  # refuse before computing anything
     k_max, mu_max = _extent(p, k_max, mu_max, view)
     k, mu = grid_axes(k_max, mu_max, resolution)
+    logging.getLogger(__name__).info("map grid gamma=%g, k'=%g: %d x %d points (k <= %g, mu <= %g)",
+                                     p.gamma, p.kprime, k.size, mu.size, k_max, mu_max)
     return k, mu, label_grid(k, mu, p.gamma, p.kprime, **_loads_of(p))
 
 
@@ -361,6 +364,9 @@ def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None
     """
     k_max, mu_max = _extent(p, k_max, mu_max, view)
     polys = region_polygons(p, k_max, mu_max, samples=samples, overshoot=1.0)
+    logging.getLogger(__name__).info("map geometry gamma=%g, k'=%g: %d polygons (%d vertices), %d samples",
+                                     p.gamma, p.kprime, sum(len(v) for v in polys.values()),
+                                     sum(len(q) for v in polys.values() for q in v), samples)
     pts = named_points(p)
     loaded = bool(_loads_of(p))
     modes = LOADED_MAP_MODES if p.loaded else MAP_MODES

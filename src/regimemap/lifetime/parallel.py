@@ -8,8 +8,10 @@ Dask (``distributed``) is imported only when a scheduler address is given.
 
 from __future__ import annotations
 
+import logging
 import math
 import os
+import time
 from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
@@ -21,6 +23,8 @@ from .model import Caisson, LifetimeModel
 
 __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
            "root_seed"]
+
+_log = logging.getLogger(__name__)
 
 #: Lifetimes per chunk by default: a few seconds of work, ~tens of MB.
 DEFAULT_CHUNK = 500
@@ -150,15 +154,29 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
     """
     if scheduler is not None:
         results: Iterator[BlockResult] = _dask(caissons, model, chunks, scheduler)
+        where = f"on the Dask scheduler at {scheduler}"
     elif jobs > 1 and len(chunks) > 1:
         results = _processes(caissons, model, chunks, min(jobs, len(chunks)))
+        where = f"in {min(jobs, len(chunks))} processes"
     else:
         results = _serial(caissons, model, chunks)
+        where = "in this process"
+    total = sum(c.keep for c in chunks)
+    _log.info("%d lifetimes of %d years x %d width%s in %d chunk%s %s", total, model.years, len(caissons),
+              "s" if len(caissons) != 1 else "", len(chunks), "s" if len(chunks) != 1 else "", where)
     parts = []
-    for r in results:
+    t0 = last = time.perf_counter()
+    for i, r in enumerate(results, start=1):
         parts.append(r)
+        now = time.perf_counter()
+        _log.debug("chunk %d/%d: %d lifetimes, %d sliding waves, %.2f s", i, len(chunks),
+                   int(r.storms.size), r.sliding_waves, now - last)
+        last = now
         if progress is not None:
             progress(int(r.storms.size))
+    seconds = time.perf_counter() - t0
+    _log.info("%d chunks done in %.2f s (%.0f lifetimes/s)", len(chunks), seconds,
+              total / seconds if seconds > 0 else float("inf"))
     return BlockResult(sliding=np.concatenate([p.sliding for p in parts], axis=1),
                        max_storm=np.concatenate([p.max_storm for p in parts], axis=1),
                        storms=np.concatenate([p.storms for p in parts]),

@@ -1,0 +1,221 @@
+"""The design chart of :mod:`regimemap.lifetime`: expected sliding distance against width.
+
+:func:`chart_figure` draws a :class:`~regimemap.lifetime.DesignChart`: the ESD of each
+width with a band of two standard errors, the tolerable limits and the target, the width
+meeting the target and the width of Goda's deterministic design (SF = 1.2 under the 50-year
+wave).  Labels are placed once the figure is laid out
+(:class:`~regimemap.drawing.labelplacer.LabelPlacer`); colours, limits and numbers are
+:mod:`regimemap.drawing.lifetime_style`'s, shared with :mod:`regimemap.drawing.lifetime`.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..lifetime.chart import DesignChart
+from .labelplacer import (
+    LabelPlacer,
+    Placed,
+    corner_candidates,
+    hline_candidates,
+    make_label,
+    vline_candidates,
+)
+from .lifetime_style import (
+    ESD_LINE,
+    FILL,
+    FS,
+    LIMIT,
+    LIMIT_DASHES,
+    SF_DASHES,
+    TARGET,
+    TARGET_TEXT,
+    TOLERABLE,
+    decade_range,
+    format_log_axis,
+    limit_text,
+    metres,
+)
+from .save import DEFAULT_DPI
+from .style import style_context
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
+
+__all__ = ["CHART_FIGSIZE", "chart_figure"]
+
+#: Size of :func:`chart_figure` in inches (a page wide, as the lifetime figure; the height
+#: without a title and with a key of three rows, as the figure grows with them).
+CHART_FIGSIZE: tuple[float, float] = (7.0, 4.14)
+
+
+def _chart_range(chart: DesignChart) -> tuple[float, float]:
+    esd = np.asarray(chart.expected_sliding, dtype=np.float64)
+    se = np.asarray(chart.std_error, dtype=np.float64)
+    pos = esd > 0.0
+    marks = [lim for lim, _ in TOLERABLE] + [chart.target]
+    if not np.any(pos):
+        return decade_range(min(marks) / 10.0, max(marks) * 3.0)
+    upper = esd + 2.0 * np.where(np.isfinite(se), se, 0.0)
+    lo = min(float(np.min(esd[pos])), *marks)
+    hi = max(float(np.max(upper[pos])), *marks)
+    return decade_range(lo / 1.5, hi * 1.5)
+
+
+def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = DEFAULT_DPI
+                 ) -> Figure:
+    """The design chart: expected sliding distance against the caisson's width.
+
+    The ESD of each width (log axis) with a band of two standard errors; the tolerable limits
+    of :data:`TOLERABLE` and the target as horizontal lines; the narrowest width meeting the
+    target (solid) and the width of Goda's deterministic design, SF = ``required_sf`` under the
+    50-year wave (dash-dot-dotted), as vertical lines labelled with their widths.  Widths whose
+    ESD is 0 (no lifetime slid) cannot be drawn on a log axis: the curve stops there and they
+    are marked with open triangles along the bottom of the axes.  The key, below the axes,
+    names every line and the sources; what is not on the chart (no width meets the target, the
+    SF width outside the widths) is said in a note in the axes.
+
+    Parameters
+    ----------
+    chart : DesignChart
+        From :func:`regimemap.lifetime.design_chart`.
+    title : str, optional
+        Written above the axes.
+    dpi : float
+        Resolution of PNG output.
+
+    Returns
+    -------
+    Figure
+        One axes labelled ``chart`` (Agg canvas, no pyplot).
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    widths = np.asarray(chart.widths, dtype=np.float64)
+    esd = np.asarray(chart.expected_sliding, dtype=np.float64)
+    se = np.asarray(chart.std_error, dtype=np.float64)
+    se0 = np.where(np.isfinite(se), se, 0.0)
+    pos = esd > 0.0
+    y0, y1 = _chart_range(chart)
+    lo_w, hi_w = float(widths[0]), float(widths[-1])
+    pad = 0.02 * (hi_w - lo_w)
+    wt, sfw = chart.width_for_target, chart.sf_width
+    sf_in = math.isfinite(sfw) and lo_w <= sfw <= hi_w
+    sf = f"SF = {chart.required_sf:g}"
+    # the key, (handle, text): the chart's own lines, then the limits and the target
+    key: list[tuple[Any, str]] = [
+        ((Patch(facecolor=FILL, edgecolor="none"),
+          Line2D([], [], color=ESD_LINE, lw=1.4, marker="o", markersize=2.6)),
+         f"ESD \u00b1 2 standard errors ({chart.trials} lifetimes per width)")]
+    if not np.all(pos):
+        key.append((Line2D([], [], ls="none", marker="v", markersize=4.5, markerfacecolor="white",
+                           markeredgecolor=ESD_LINE, markeredgewidth=1.0),
+                    "ESD = 0 (no lifetime slid)"))
+    if wt is not None:
+        key.append((Line2D([], [], color=TARGET, lw=1.0),
+                    f"narrowest width with ESD \u2264 {chart.target:g} m"))
+    if sf_in:
+        key.append((Line2D([], [], color="black", lw=1.0, dashes=SF_DASHES),
+                    f"{sf} under the 50-year wave (Goda 2000)"))
+    on_limit = [math.isclose(lim, chart.target, rel_tol=1e-9) for lim, _ in TOLERABLE]
+    for (lim, source), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
+        key.append((Line2D([], [], color=TARGET if is_target else LIMIT,
+                           lw=1.0 if is_target else 0.8, dashes=dashes),
+                    f"tolerable ESD {limit_text(lim, source)}" + (", the target" if is_target else "")))
+    if not any(on_limit):
+        key.append((Line2D([], [], color=TARGET, lw=1.0), f"target ESD {chart.target:g} m"))
+    rows = (len(key) + 1) // 2
+    w = CHART_FIGSIZE[0]
+    top = 0.15 + (0.32 if title else 0.0)
+    left, right, ah = 0.66, 0.2, 2.9
+    bottom = 0.5 + 0.08 + 0.17 * rows
+    h = top + ah + bottom
+    with style_context():
+        fig = Figure(figsize=(w, h), dpi=dpi)
+        FigureCanvasAgg(fig)
+        ax = fig.add_axes((left / w, bottom / h, (w - left - right) / w, ah / h), label="chart")
+        ax.set_yscale("log")
+        ax.set_xlim(lo_w - pad, hi_w + pad)
+        ax.set_ylim(y0, y1)
+        # the band of +-2 SE; where its lower edge reaches 0 it runs out of the axes
+        lower = np.where(esd - 2.0 * se0 > 0.0, esd - 2.0 * se0, y0 * 1e-3)
+        ax.fill_between(widths, lower, esd + 2.0 * se0, where=pos, facecolor=FILL,
+                        edgecolor="none", zorder=1)
+        ax.plot(widths, np.where(pos, esd, np.nan), color=ESD_LINE, lw=1.4, marker="o",
+                markersize=2.6, zorder=4)
+        if not np.all(pos):
+            zw = widths[~pos]
+            ax.plot(zw, np.full(zw.shape, 0.035), transform=ax.get_xaxis_transform(), ls="none",
+                    marker="v", markersize=4.5, markerfacecolor="white", markeredgecolor=ESD_LINE,
+                    markeredgewidth=1.0, zorder=5)
+        vertical: Placed = []
+        horizontal: Placed = []
+        for (lim, _), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
+            ax.axhline(lim, color=TARGET if is_target else LIMIT, lw=1.0 if is_target else 0.8,
+                       dashes=dashes, zorder=2)
+            t = make_label(ax, f"{lim:g} m" + (": target" if is_target else ""),
+                       xycoords=ax.get_yaxis_transform(), fontsize=FS - 0.5,
+                       color=TARGET_TEXT if is_target else "0.15")
+            horizontal.append((t, hline_candidates(lim), []))
+        if not any(on_limit):
+            ax.axhline(chart.target, color=TARGET, lw=1.0, zorder=2)
+            t = make_label(ax, f"target {chart.target:g} m", xycoords=ax.get_yaxis_transform(),
+                       fontsize=FS - 0.5, color=TARGET_TEXT)
+            horizontal.append((t, hline_candidates(chart.target), []))
+        notes: list[str] = []
+        if wt is not None:
+            ax.axvline(wt, color=TARGET, lw=1.0, zorder=3)
+            every = math.isclose(wt, lo_w, rel_tol=1e-12) and bool(esd[0] <= chart.target)
+            text = (f"b = {metres(wt)} m: every width meets it" if every
+                    else f"b = {metres(wt)} m")
+            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
+                       fontsize=FS - 0.5, color=TARGET_TEXT)
+            vertical.append((t, vline_candidates(wt, side_first=1),
+                             [text.replace(": ", ":\n")] if every else []))
+        else:
+            notes.append(f"no width of {lo_w:.4g}\u2013{hi_w:.4g} m\n"
+                         f"has ESD \u2264 {chart.target:g} m")
+        if sf_in:
+            ax.axvline(sfw, color="black", lw=1.0, dashes=SF_DASHES, zorder=3)
+            t = make_label(ax, f"b = {metres(sfw)} m", xycoords=ax.get_xaxis_transform(),
+                       rotation=90.0, fontsize=FS - 0.5)
+            vertical.append((t, vline_candidates(sfw, side_first=-1), []))
+        elif math.isfinite(sfw):
+            notes.append(f"{sf} under the 50-year wave:\nb = {metres(sfw)} m, off the chart")
+        else:
+            notes.append(f"{sf} under the 50-year wave:\nno width")
+        format_log_axis(ax, "y")
+        ax.set_xlabel("caisson width $b$ (m)", fontsize=FS)
+        ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
+        ax.tick_params(labelsize=FS - 0.5)
+        if title:
+            fig.text(0.5, 1.0 - 0.1 / h, title, fontsize=FS + 1.5, ha="center", va="top")
+        fig.legend([k for k, _ in key], [v for _, v in key], loc="lower center",
+                   bbox_to_anchor=(0.5, 0.06 / h), ncols=2, fontsize=FS - 0.5, frameon=False,
+                   handlelength=2.6, columnspacing=1.2, borderaxespad=0.0)
+        note = None
+        if notes:
+            note = make_label(ax, "\n".join(notes), xycoords="axes fraction", fontsize=FS - 0.5)
+        placer = LabelPlacer(fig)
+        try:
+            placer.avoid_lines_of(ax)
+            ub = np.where(pos, esd + 2.0 * se0, np.nan)
+            lb = np.where(pos, np.maximum(lower, y0), np.nan)
+            placer.avoid_line(ax, widths, ub)
+            placer.avoid_line(ax, widths, lb)
+            for x, a, b in zip(widths, lb, ub):  # the band between its edges
+                if np.isfinite(a) and np.isfinite(b):
+                    placer.avoid_line(ax, [x, x], [a, b])
+            if note is not None:  # a corner first; then the lines' labels, the vertical ones first
+                placer.place(ax, note, corner_candidates())
+            for t, cands, texts in vertical + horizontal:
+                placer.place(ax, t, cands, texts=texts)
+        finally:
+            placer.close()
+    return fig
