@@ -356,8 +356,8 @@ def _draw_path(ax: Axes, r: CaissonReport, required: tuple[float, float] = (1.2,
     ax.axhline(1.0, color="black", lw=0.7)
     for need in sorted(set(required)):  # the safety factors the design must reach
         ax.axhline(need, color="black", lw=0.6, dashes=(1, 1.5))
-        ax.text(float(s[-1]), need, f"required {need:g} ", fontsize=_FS - 1.0, va="bottom", ha="right",
-                color="0.2")
+        ax.text(float(s[0]), need, f" required {need:g}", fontsize=_FS - 1.0, va="bottom", ha="left",
+                color="0.2")  # at the left end: clear of the curves, which fall from the top left
     ax.axvline(1.0, color="0.4", lw=0.6, dashes=(2, 2))
     ax.text(1.0, ymax * 0.97, " design", fontsize=_FS - 0.5, va="top", ha="left", color="0.3")
     if p.onset is not None and p.onset > float(s[0]):
