@@ -14,13 +14,17 @@ import json
 import time
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
 from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
+
+if TYPE_CHECKING:
+    from ..io.design import Design, LifetimeSpec
+    from ..lifetime import Caisson, DesignChart, LifetimeModel, LifetimeResult
 
 __all__ = ["lifetime_cmd"]
 
@@ -151,7 +155,66 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     if scheduler is not None and jobs is not None:
         raise click.UsageError("--jobs and --scheduler exclude each other: the cluster's workers run "
                                "the lifetimes", ctx=ctx)
-    # -- the outputs, checked before any work --------------------------------------------------
+    _check_outputs(outputs, widths)
+    d, spec, model, caisson = _read_design(design, years, strict)
+    n = spec.trials if trials is None else trials
+    root = spec.seed if seed is None else seed
+
+    # -- the run ------------------------------------------------------------------------------
+    from ..lifetime import (
+        ClusterUnavailable,
+        LifetimeResult,
+        available_cores,
+        design_chart,
+        lifetime_sliding,
+    )
+    from ..lifetime.parallel import DEFAULT_CHUNK
+    from ._progress import progress_bar
+
+    workers = 1 if scheduler is not None else (jobs if jobs is not None else available_cores())
+    run: dict[str, Any] = dict(chunk=DEFAULT_CHUNK if chunk is None else chunk, jobs=workers,
+                               scheduler=scheduler)
+    t0 = time.perf_counter()
+    result: LifetimeResult | DesignChart
+    try:
+        if widths is None:
+            with progress_bar(n, "lifetimes", quiet, unit=" lifetimes") as step:
+                result = lifetime_sliding(caisson, model, n, root, progress=step, **run)
+        else:
+            # the chart, then at most WIDTH_STEPS bisection runs for the target's width
+            from ..lifetime.chart import WIDTH_STEPS
+
+            with progress_bar(n * (1 + WIDTH_STEPS), "design chart", quiet, unit=" lifetimes") as step:
+                result = design_chart(caisson, model, widths, n, root, progress=step,
+                                      target=0.1 if target is None else target,
+                                      sf_impulsive=d.caisson.impulsive, **run)
+    except ClusterUnavailable as exc:
+        raise RunError(str(exc)) from None
+    except ValueError as exc:
+        raise RunError(f"{design}: {exc}") from None
+    seconds = time.perf_counter() - t0
+    if not quiet:
+        _note_run(n, model.years, widths, seconds, workers, run["chunk"], scheduler, root, result.seed)
+
+    # -- the files, then the report ----------------------------------------------------------
+    from ..io import lifetime as io_lifetime
+
+    written = _write_outputs(outputs, result, Path(design).name)
+    if as_json:
+        obj = (io_lifetime.lifetime_json(result, model, source=design) if isinstance(result, LifetimeResult)
+               else io_lifetime.chart_json(result, model, source=design))
+        if outputs:
+            obj["files"] = written
+        click.echo(json.dumps(obj, indent=2, allow_nan=False))
+        return
+    click.echo(io_lifetime.format_lifetime(result, model, source=design) if isinstance(result, LifetimeResult)
+               else io_lifetime.format_chart(result, model, source=design))
+    for path in written:
+        report_written(path)
+
+
+def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None:
+    """The ``-o`` files, checked before any work: distinct, of a known suffix, writable."""
     if len({str(Path(p).resolve()) for p in outputs}) < len(outputs):
         raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--output'")
     for path in outputs:
@@ -167,7 +230,11 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
                                      param_hint="'--output'")
         output_path(path, "--output")
 
-    # -- the design file -----------------------------------------------------------------------
+
+def _read_design(design: str, years: int | None, strict: bool
+                 ) -> tuple[Design, LifetimeSpec, LifetimeModel, Caisson]:
+    """The design file: its ``[lifetime]`` spec, the model over ``years`` and the caisson;
+    the plausibility of the values checked (``--strict``)."""
     from ..io.design import DesignFileError, read_design
 
     try:
@@ -182,58 +249,37 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     except ValueError:
         analysis = None
     check_plausible(d, analysis, strict, design)
-    n = spec.trials if trials is None else trials
-    root = spec.seed if seed is None else seed
+    return d, spec, model, caisson
 
-    # -- the run ------------------------------------------------------------------------------
-    from ..lifetime import ClusterUnavailable, available_cores, design_chart, lifetime_sliding
-    from ..lifetime.parallel import DEFAULT_CHUNK
-    from ._progress import progress_bar
 
-    workers = 1 if scheduler is not None else (jobs if jobs is not None else available_cores())
-    run: dict[str, Any] = dict(chunk=DEFAULT_CHUNK if chunk is None else chunk, jobs=workers,
-                               scheduler=scheduler)
-    t0 = time.perf_counter()
-    try:
-        if widths is None:
-            with progress_bar(n, "lifetimes", quiet, unit=" lifetimes") as step:
-                result = lifetime_sliding(caisson, model, n, root, progress=step, **run)
-            used = result.seed
-        else:
-            # the chart, then at most WIDTH_STEPS bisection runs for the target's width
-            from ..lifetime.chart import WIDTH_STEPS
+def _note_run(n: int, years: int, widths: list[float] | None, seconds: float, workers: int,
+              chunk: int, scheduler: str | None, root: int | None, used: int) -> None:
+    """The note on standard error: how many lifetimes, how long, where; the seed if none was given."""
+    from ..lifetime.parallel import make_chunks
 
-            with progress_bar(n * (1 + WIDTH_STEPS), "design chart", quiet, unit=" lifetimes") as step:
-                chart = design_chart(caisson, model, widths, n, root, progress=step,
-                                     target=0.1 if target is None else target,
-                                     sf_impulsive=d.caisson.impulsive, **run)
-            used = chart.seed
-    except ClusterUnavailable as exc:
-        raise RunError(str(exc)) from None
-    except ValueError as exc:
-        raise RunError(f"{design}: {exc}") from None
-    seconds = time.perf_counter() - t0
-    if not quiet:
-        from ..lifetime.parallel import make_chunks
+    processes = min(workers, len(make_chunks(n, 0, chunk)))
+    where = (f"on the Dask cluster at {scheduler}" if scheduler is not None else
+             "in this process" if processes == 1 else f"on {processes} processes")
+    lives = f"{n} lifetime{'' if n == 1 else 's'}"
+    what = lives if widths is None else f"{len(widths)} widths x {lives}"
+    click.echo(f"regimemap: {what} of {years} years in {seconds:.1f} s {where}", err=True)
+    if root is None:
+        click.echo(f"regimemap: no seed given: this run's seed is {used} (--seed {used} repeats it)",
+                   err=True)
 
-        processes = min(workers, len(make_chunks(n, 0, run["chunk"])))
-        where = (f"on the Dask cluster at {scheduler}" if scheduler is not None else
-                 "in this process" if processes == 1 else f"on {processes} processes")
-        lives = f"{n} lifetime{'' if n == 1 else 's'}"
-        what = lives if widths is None else f"{len(widths)} widths x {lives}"
-        click.echo(f"regimemap: {what} of {model.years} years in {seconds:.1f} s {where}", err=True)
-        if root is None:
-            click.echo(f"regimemap: no seed given: this run's seed is {used} (--seed {used} repeats it)",
-                       err=True)
 
-    # -- the files, then the report ----------------------------------------------------------
+def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChart,
+                   title: str) -> list[str]:
+    """Write the lifetimes (.csv, .npz) or the figure (.png, .svg, .pdf, drawn once) to each file."""
     from ..io import lifetime as io_lifetime
+    from ..lifetime import LifetimeResult
 
     written: list[str] = []
     fig = None
     for path in outputs:
         with writing(path):
             if _suffix(path) in SAMPLE_FORMATS:
+                assert isinstance(result, LifetimeResult)  # checked by _check_outputs
                 io_lifetime.write_samples(result, path)
             else:
                 if fig is None:
@@ -241,21 +287,10 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
                     from ..drawing.lifetime import lifetime_figure
                     from ..drawing.lifetime_chart import chart_figure
 
-                    title = Path(design).name
-                    fig = lifetime_figure(result, title) if widths is None else chart_figure(chart, title)
+                    fig = (lifetime_figure(result, title) if isinstance(result, LifetimeResult)
+                           else chart_figure(result, title))
                 from ..drawing.save import save_figure
 
                 save_figure(fig, path)
         written.append(path)
-
-    if as_json:
-        obj = (io_lifetime.lifetime_json(result, model, source=design) if widths is None
-               else io_lifetime.chart_json(chart, model, source=design))
-        if outputs:
-            obj["files"] = written
-        click.echo(json.dumps(obj, indent=2, allow_nan=False))
-        return
-    click.echo(io_lifetime.format_lifetime(result, model, source=design) if widths is None
-               else io_lifetime.format_chart(chart, model, source=design))
-    for path in written:
-        report_written(path)
+    return written

@@ -5,7 +5,7 @@ from __future__ import annotations
 import io
 import json
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -19,6 +19,9 @@ from ._common import (
     report_written,
 )
 from ._writing import writing
+
+if TYPE_CHECKING:
+    from ..maps.query import PointResult
 
 __all__ = ["classify_cmd"]
 
@@ -95,34 +98,47 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
       regimemap classify --points caissons.csv -o results.json
       regimemap classify --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52 --k 0.28 --mu 0.6
     """
-    from ..io.points import DesignPoint, read_points_table
-    from ..io.tables import columns_for, format_result, result_json, result_row
+    if points_file is None:
+        _classify_point(gamma, kprime, k, mu, as_json, output, loads)
+    else:
+        if k is not None or mu is not None:
+            raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
+        _classify_file(points_file, gamma, kprime, as_json, output, loads)
+
+
+def _classify_point(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
+                    as_json: bool, output: str | None, loads: dict[str, Any]) -> None:
+    """``classify`` of one point: its answer as text (or JSON) on standard output."""
+    from ..io.points import DesignPoint
+    from ..io.tables import format_result, result_json
     from ..maps.query import query_points
 
-    if points_file is None:
-        if output is not None:
-            raise click.UsageError("-o/--output is for --points; one point prints to standard "
-                                   "output", ctx=click.get_current_context())
-        missing = [n for n, v in (("--gamma", gamma), ("--kprime", kprime), ("--k", k),
-                                  ("--mu", mu)) if v is None]
-        if missing:
-            raise click.UsageError(
-                f"missing option(s) {', '.join(missing)}: give --gamma (> 0), --kprime (in [-1, 1]), "
-                "--k (>= 0) and --mu (>= 0), or --points FILE.csv")
-        assert k is not None and mu is not None
-        try:
-            res = query_points([DesignPoint(k, mu)], gamma=gamma, kprime=kprime, **loads)[0]
-        except ValueError as exc:  # pragma: no cover - inputs are validated above
-            raise RunError(str(exc)) from None
-        if as_json:
-            click.echo(json.dumps(result_json(res), indent=2, allow_nan=False))
-        else:
-            click.echo(format_result(res))
-        return
+    if output is not None:
+        raise click.UsageError("-o/--output is for --points; one point prints to standard "
+                               "output", ctx=click.get_current_context())
+    missing = [n for n, v in (("--gamma", gamma), ("--kprime", kprime), ("--k", k),
+                              ("--mu", mu)) if v is None]
+    if missing:
+        raise click.UsageError(
+            f"missing option(s) {', '.join(missing)}: give --gamma (> 0), --kprime (in [-1, 1]), "
+            "--k (>= 0) and --mu (>= 0), or --points FILE.csv")
+    assert k is not None and mu is not None
+    try:
+        res = query_points([DesignPoint(k, mu)], gamma=gamma, kprime=kprime, **loads)[0]
+    except ValueError as exc:  # pragma: no cover - inputs are validated above
+        raise RunError(str(exc)) from None
+    if as_json:
+        click.echo(json.dumps(result_json(res), indent=2, allow_nan=False))
+    else:
+        click.echo(format_result(res))
 
-    # -- many points ------------------------------------------------------------------
-    if k is not None or mu is not None:
-        raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
+
+def _classify_file(points_file: str, gamma: float | None, kprime: float | None, as_json: bool,
+                   output: str | None, loads: dict[str, Any]) -> None:
+    """``classify --points``: every row of the CSV, as CSV or JSON, to ``output`` or stdout."""
+    from ..io.points import read_points_table
+    from ..maps.query import query_points
+
     try:
         table = read_points_table(points_file)
     except ValueError as exc:
@@ -145,18 +161,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
         results = query_points(pts, gamma=gamma, kprime=kprime, **loads)
     except ValueError as exc:
         raise RunError(str(exc)) from None
-    if to_json:
-        text = json.dumps({"count": len(results), "points": [result_json(r) for r in results]},
-                          indent=1, allow_nan=False) + "\n"
-    else:
-        buf = io.StringIO()
-        import csv  # only when writing CSV: keeps start-up light
-
-        w = csv.DictWriter(buf, fieldnames=list(columns_for(results)), lineterminator="\n")
-        w.writeheader()
-        for r in results:
-            w.writerow(result_row(r))
-        text = buf.getvalue()
+    text = _results_text(results, to_json)
     if output is None:
         click.echo(text, nl=False)
         return
@@ -165,3 +170,20 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     with writing(output), atomic_open(output, "w", encoding="utf-8", newline="") as fh:
         fh.write(text)
     report_written(output, f"{len(results)} point(s) classified")
+
+
+def _results_text(results: list[PointResult], to_json: bool) -> str:
+    """The classified points as one JSON object or as CSV (a header and a row per point)."""
+    from ..io.tables import columns_for, result_json, result_row
+
+    if to_json:
+        return json.dumps({"count": len(results), "points": [result_json(r) for r in results]},
+                          indent=1, allow_nan=False) + "\n"
+    buf = io.StringIO()
+    import csv  # only when writing CSV: keeps start-up light
+
+    w = csv.DictWriter(buf, fieldnames=list(columns_for(results)), lineterminator="\n")
+    w.writeheader()
+    for r in results:
+        w.writerow(result_row(r))
+    return buf.getvalue()

@@ -179,44 +179,17 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     already written; an outside label avoids them.
     """
     from .placement import label_anchor
-    from .style import text_size
 
     st = AMBIGUITY_STYLE
     text = r.tex
     fs = st["text_size"]
-    # size of the label as a fraction of the axes (approximate text metrics)
-    fig = ax.figure
-    if not isinstance(fig, Figure):  # a SubFigure has no size of its own
-        raise TypeError("regimemap draws maps on the axes of a Figure, not of a SubFigure")
-    pos = ax.get_position()
-    w_in = max(pos.width * fig.get_figwidth(), 1e-6)
-    h_in = max(pos.height * fig.get_figheight(), 1e-6)
-    longest = max(r.label.replace(" (Section 4.7)", " (§4.7)").split(" -> "), key=len)
-    w_pt, h_pt = text_size(longest, fs, lines=2)
-    box = (w_pt / 72.0 / w_in + 0.02, h_pt / 72.0 / h_in + 0.02)
+    box = _label_size(ax, r, fs)
     poly = _clip_poly(r.polygon, k_max, mu_max)
     inside = label_anchor(poly, k_max, mu_max, box)
     bbox = dict(boxstyle="round,pad=0.25", facecolor="white", edgecolor="0.3",
                 linewidth=0.6, alpha=0.9)
-
-    def frac_box(cx: float, cy: float) -> tuple[float, float, float, float]:
-        return (cx - box[0] / 2, cy - box[1] / 2, cx + box[0] / 2, cy + box[1] / 2)
-
-    def free(b: tuple[float, float, float, float]) -> bool:
-        boxes = [q for q in placed if len(q) == 4]
-        if not all(b[2] < q[0] or q[2] < b[0] or b[3] < q[1] or q[3] < b[1] for q in boxes):
-            return False
-        # nor on an arrow drawn before (stored as 5-tuples: x0, y0, x1, y1, "arrow")
-        t = np.linspace(0.0, 1.0, 24)
-        for q in placed:
-            if len(q) == 5:
-                xs, ys = q[0] + (q[2] - q[0]) * t, q[1] + (q[3] - q[1]) * t
-                if ((xs > b[0]) & (xs < b[2]) & (ys > b[1]) & (ys < b[3])).any():
-                    return False
-        return True
-
-    if inside is not None and free(frac_box(inside[0] / k_max, inside[1] / mu_max)):
-        placed.append(frac_box(inside[0] / k_max, inside[1] / mu_max))
+    if inside is not None and _free(_frac_box(inside[0] / k_max, inside[1] / mu_max, box), placed):
+        placed.append(_frac_box(inside[0] / k_max, inside[1] / mu_max, box))
         t = ax.text(inside[0], inside[1], text, fontsize=fs, ha="center", va="center",
                     multialignment="center", bbox=bbox, zorder=6, clip_on=True)
         t.set_gid(GID)
@@ -224,35 +197,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     target = r.anchor(k_max, mu_max)
     assert target is not None
     tx0, ty0 = target[0] / k_max, target[1] / mu_max
-    # candidate spots for the label (axes fractions), nearest first, inside the view,
-    # not on another label and not on the part itself
-    cands = []
-    for dx in (-0.3, -0.2, 0.0, 0.2, -0.4, 0.3):
-        for dy in (-0.22, 0.2, -0.35, 0.32, 0.0, -0.5):
-            cx, cy = tx0 + dx, ty0 + dy
-            b = frac_box(cx, cy)
-            if b[0] < 0.01 or b[2] > 0.99 or b[1] < 0.01 or b[3] > 0.99:
-                continue
-            cands.append((dx * dx + dy * dy, cx, cy, b))
-    cands.sort(key=lambda c: c[0])
-    def clear_path(cx: float, cy: float) -> bool:
-        """The arrow from the label to the part crosses no other label."""
-        t = np.linspace(0.0, 1.0, 24)
-        xs, ys = cx + (tx0 - cx) * t, cy + (ty0 - cy) * t
-        return not any(((xs > q[0]) & (xs < q[2]) & (ys > q[1]) & (ys < q[3])).any()
-                       for q in placed if len(q) == 4)
-
-    choice = next((c for c in cands if free(c[3]) and clear_path(c[1], c[2])
-                   and not _hits(poly, c[3], k_max, mu_max)), None)
-    if choice is None:
-        choice = next((c for c in cands if free(c[3]) and clear_path(c[1], c[2])), None)
-    if choice is None:
-        choice = next((c for c in cands if free(c[3])), None)
-    if choice is None:
-        cx, cy = min(max(tx0 - 0.3, box[0] / 2 + 0.01), 1 - box[0] / 2 - 0.01), 0.5
-        b = frac_box(cx, cy)
-    else:
-        _, cx, cy, b = choice
+    cx, cy, b = _outside_spot(poly, (tx0, ty0), box, k_max, mu_max, placed)
     placed.append(b)
     placed.append((cx, cy, tx0, ty0, "arrow"))
     t = ax.annotate(text, xy=target, xytext=(cx * k_max, cy * mu_max), fontsize=fs,
@@ -261,6 +206,81 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
                                     shrinkA=0, shrinkB=1))
     t.set_gid(GID)
     return t
+
+
+def _label_size(ax: Axes, r: AmbiguousRegion, fs: float) -> tuple[float, float]:
+    """The size of the region's label (two lines, with a margin) as fractions of the axes
+    (approximate text metrics)."""
+    from .style import text_size
+
+    fig = ax.figure
+    if not isinstance(fig, Figure):  # a SubFigure has no size of its own
+        raise TypeError("regimemap draws maps on the axes of a Figure, not of a SubFigure")
+    pos = ax.get_position()
+    w_in = max(pos.width * fig.get_figwidth(), 1e-6)
+    h_in = max(pos.height * fig.get_figheight(), 1e-6)
+    longest = max(r.label.replace(" (Section 4.7)", " (§4.7)").split(" -> "), key=len)
+    w_pt, h_pt = text_size(longest, fs, lines=2)
+    return (w_pt / 72.0 / w_in + 0.02, h_pt / 72.0 / h_in + 0.02)
+
+
+def _frac_box(cx: float, cy: float, box: tuple[float, float]) -> tuple[float, float, float, float]:
+    """The box of size ``box`` centred at (cx, cy) (axes fractions)."""
+    return (cx - box[0] / 2, cy - box[1] / 2, cx + box[0] / 2, cy + box[1] / 2)
+
+
+def _free(b: tuple[float, float, float, float], placed: list[tuple[Any, ...]]) -> bool:
+    """``b`` overlaps no label placed before, nor an arrow drawn before."""
+    boxes = [q for q in placed if len(q) == 4]
+    if not all(b[2] < q[0] or q[2] < b[0] or b[3] < q[1] or q[3] < b[1] for q in boxes):
+        return False
+    # nor on an arrow drawn before (stored as 5-tuples: x0, y0, x1, y1, "arrow")
+    t = np.linspace(0.0, 1.0, 24)
+    for q in placed:
+        if len(q) == 5:
+            xs, ys = q[0] + (q[2] - q[0]) * t, q[1] + (q[3] - q[1]) * t
+            if ((xs > b[0]) & (xs < b[2]) & (ys > b[1]) & (ys < b[3])).any():
+                return False
+    return True
+
+
+def _outside_spot(poly: np.ndarray, target: tuple[float, float], box: tuple[float, float], k_max: float,
+                  mu_max: float, placed: list[tuple[Any, ...]]
+                  ) -> tuple[float, float, tuple[float, float, float, float]]:
+    """Where a label beside its part goes (centre and box, axes fractions): the nearest free
+    candidate whose arrow crosses no label and which is off the part, else the nearest with
+    less of that, else left of the part at mid height."""
+    tx0, ty0 = target
+    # candidate spots for the label (axes fractions), nearest first, inside the view,
+    # not on another label and not on the part itself
+    cands = []
+    for dx in (-0.3, -0.2, 0.0, 0.2, -0.4, 0.3):
+        for dy in (-0.22, 0.2, -0.35, 0.32, 0.0, -0.5):
+            cx, cy = tx0 + dx, ty0 + dy
+            b = _frac_box(cx, cy, box)
+            if b[0] < 0.01 or b[2] > 0.99 or b[1] < 0.01 or b[3] > 0.99:
+                continue
+            cands.append((dx * dx + dy * dy, cx, cy, b))
+    cands.sort(key=lambda c: c[0])
+
+    def clear_path(cx: float, cy: float) -> bool:
+        """The arrow from the label to the part crosses no other label."""
+        t = np.linspace(0.0, 1.0, 24)
+        xs, ys = cx + (tx0 - cx) * t, cy + (ty0 - cy) * t
+        return not any(((xs > q[0]) & (xs < q[2]) & (ys > q[1]) & (ys < q[3])).any()
+                       for q in placed if len(q) == 4)
+
+    choice = next((c for c in cands if _free(c[3], placed) and clear_path(c[1], c[2])
+                   and not _hits(poly, c[3], k_max, mu_max)), None)
+    if choice is None:
+        choice = next((c for c in cands if _free(c[3], placed) and clear_path(c[1], c[2])), None)
+    if choice is None:
+        choice = next((c for c in cands if _free(c[3], placed)), None)
+    if choice is None:
+        cx = min(max(tx0 - 0.3, box[0] / 2 + 0.01), 1 - box[0] / 2 - 0.01)
+        return cx, 0.5, _frac_box(cx, 0.5, box)
+    _, cx, cy, b = choice
+    return cx, cy, b
 
 
 def _legend_box(ax: Axes) -> list[tuple[float, float, float, float]]:

@@ -12,7 +12,7 @@ lifetime figures and the design sheet; the maps have their own tidy pass
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -50,38 +50,46 @@ def figure_texts(fig: Figure) -> list[Text]:
 
     for t in fig.texts:
         add(t)
-    sup = getattr(fig, "_suptitle", None)
-    add(sup)
+    add(getattr(fig, "_suptitle", None))
     for leg in fig.legends:
         if leg.get_visible():
             for t in leg.get_texts():
                 add(t)
     for ax in fig.axes:
-        if not ax.get_visible():
-            continue
-        if ax.axison:
-            for axis, lim in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
-                lo, hi = min(lim), max(lim)
-                tol = 1e-9 * (hi - lo)
-                for tick in axis.get_major_ticks() + axis.get_minor_ticks():
-                    loc = tick.get_loc()
-                    if loc is None or not (lo - tol <= loc <= hi + tol):
-                        continue
-                    if axis.get_scale() == "log" and not lo * (1 - 1e-9) <= loc <= hi * (1 + 1e-9):
-                        continue
-                    add(tick.label1)
-                    add(tick.label2)
-            add(ax.xaxis.label)
-            add(ax.yaxis.label)
-        for name in ("title", "_left_title", "_right_title"):
-            add(getattr(ax, name, None))
-        for t in ax.texts:
-            add(t)
-        ax_leg = ax.get_legend()
-        if ax_leg is not None and ax_leg.get_visible():
-            for t in ax_leg.get_texts():
+        if ax.get_visible():
+            for t in _axes_texts(ax):
                 add(t)
     return out
+
+
+def _axes_texts(ax: Axes) -> Iterator[Any]:
+    """The texts of one axes, in drawing order: tick labels in view and axis labels (when the
+    axis is on), titles, free texts, legend (None where a title is missing)."""
+    if ax.axison:
+        yield from _tick_labels_in_view(ax)
+        yield ax.xaxis.label
+        yield ax.yaxis.label
+    for name in ("title", "_left_title", "_right_title"):
+        yield getattr(ax, name, None)
+    yield from ax.texts
+    ax_leg = ax.get_legend()
+    if ax_leg is not None and ax_leg.get_visible():
+        yield from ax_leg.get_texts()
+
+
+def _tick_labels_in_view(ax: Axes) -> Iterator[Any]:
+    """The labels of the major and minor ticks of both axes that lie within the limits."""
+    for axis, lim in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        lo, hi = min(lim), max(lim)
+        tol = 1e-9 * (hi - lo)
+        for tick in axis.get_major_ticks() + axis.get_minor_ticks():
+            loc = tick.get_loc()
+            if loc is None or not (lo - tol <= loc <= hi + tol):
+                continue
+            if axis.get_scale() == "log" and not lo * (1 - 1e-9) <= loc <= hi * (1 + 1e-9):
+                continue
+            yield tick.label1
+            yield tick.label2
 
 
 def _dense(xy: FloatArray, step: float = 1.0) -> FloatArray:

@@ -43,7 +43,11 @@ from .save import DEFAULT_DPI
 from .style import style_context
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
+    from numpy.typing import NDArray
+
+    FloatArray = NDArray[np.float64]
 
 __all__ = ["CHART_FIGSIZE", "chart_figure"]
 
@@ -94,8 +98,6 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import Patch
 
     widths = np.asarray(chart.widths, dtype=np.float64)
     esd = np.asarray(chart.expected_sliding, dtype=np.float64)
@@ -105,31 +107,8 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     y0, y1 = _chart_range(chart)
     lo_w, hi_w = float(widths[0]), float(widths[-1])
     pad = 0.02 * (hi_w - lo_w)
-    wt, sfw = chart.width_for_target, chart.sf_width
-    sf_in = math.isfinite(sfw) and lo_w <= sfw <= hi_w
-    sf = f"SF = {chart.required_sf:g}"
-    # the key, (handle, text): the chart's own lines, then the limits and the target
-    key: list[tuple[Any, str]] = [
-        ((Patch(facecolor=FILL, edgecolor="none"),
-          Line2D([], [], color=ESD_LINE, lw=1.4, marker="o", markersize=2.6)),
-         f"ESD \u00b1 2 standard errors ({chart.trials} lifetimes per width)")]
-    if not np.all(pos):
-        key.append((Line2D([], [], ls="none", marker="v", markersize=4.5, markerfacecolor="white",
-                           markeredgecolor=ESD_LINE, markeredgewidth=1.0),
-                    "ESD = 0 (no lifetime slid)"))
-    if wt is not None:
-        key.append((Line2D([], [], color=TARGET, lw=1.0),
-                    f"narrowest width with ESD \u2264 {chart.target:g} m"))
-    if sf_in:
-        key.append((Line2D([], [], color="black", lw=1.0, dashes=SF_DASHES),
-                    f"{sf} under the 50-year wave (Goda 2000)"))
     on_limit = [math.isclose(lim, chart.target, rel_tol=1e-9) for lim, _ in TOLERABLE]
-    for (lim, source), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
-        key.append((Line2D([], [], color=TARGET if is_target else LIMIT,
-                           lw=1.0 if is_target else 0.8, dashes=dashes),
-                    f"tolerable ESD {limit_text(lim, source)}" + (", the target" if is_target else "")))
-    if not any(on_limit):
-        key.append((Line2D([], [], color=TARGET, lw=1.0), f"target ESD {chart.target:g} m"))
+    key = _chart_key(chart, bool(np.all(pos)), on_limit)
     rows = (len(key) + 1) // 2
     w = CHART_FIGSIZE[0]
     top = 0.15 + (0.32 if title else 0.0)
@@ -154,42 +133,8 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
             ax.plot(zw, np.full(zw.shape, 0.035), transform=ax.get_xaxis_transform(), ls="none",
                     marker="v", markersize=4.5, markerfacecolor="white", markeredgecolor=ESD_LINE,
                     markeredgewidth=1.0, zorder=5)
-        vertical: Placed = []
-        horizontal: Placed = []
-        for (lim, _), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
-            ax.axhline(lim, color=TARGET if is_target else LIMIT, lw=1.0 if is_target else 0.8,
-                       dashes=dashes, zorder=2)
-            t = make_label(ax, f"{lim:g} m" + (": target" if is_target else ""),
-                       xycoords=ax.get_yaxis_transform(), fontsize=FS - 0.5,
-                       color=TARGET_TEXT if is_target else "0.15")
-            horizontal.append((t, hline_candidates(lim), []))
-        if not any(on_limit):
-            ax.axhline(chart.target, color=TARGET, lw=1.0, zorder=2)
-            t = make_label(ax, f"target {chart.target:g} m", xycoords=ax.get_yaxis_transform(),
-                       fontsize=FS - 0.5, color=TARGET_TEXT)
-            horizontal.append((t, hline_candidates(chart.target), []))
-        notes: list[str] = []
-        if wt is not None:
-            ax.axvline(wt, color=TARGET, lw=1.0, zorder=3)
-            every = math.isclose(wt, lo_w, rel_tol=1e-12) and bool(esd[0] <= chart.target)
-            text = (f"b = {metres(wt)} m: every width meets it" if every
-                    else f"b = {metres(wt)} m")
-            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                       fontsize=FS - 0.5, color=TARGET_TEXT)
-            vertical.append((t, vline_candidates(wt, side_first=1),
-                             [text.replace(": ", ":\n")] if every else []))
-        else:
-            notes.append(f"no width of {lo_w:.4g}\u2013{hi_w:.4g} m\n"
-                         f"has ESD \u2264 {chart.target:g} m")
-        if sf_in:
-            ax.axvline(sfw, color="black", lw=1.0, dashes=SF_DASHES, zorder=3)
-            t = make_label(ax, f"b = {metres(sfw)} m", xycoords=ax.get_xaxis_transform(),
-                       rotation=90.0, fontsize=FS - 0.5)
-            vertical.append((t, vline_candidates(sfw, side_first=-1), []))
-        elif math.isfinite(sfw):
-            notes.append(f"{sf} under the 50-year wave:\nb = {metres(sfw)} m, off the chart")
-        else:
-            notes.append(f"{sf} under the 50-year wave:\nno width")
+        horizontal = _draw_limits(ax, chart, on_limit)
+        vertical, notes = _draw_widths(ax, chart, lo_w, hi_w)
         format_log_axis(ax, "y")
         ax.set_xlabel("caisson width $b$ (m)", fontsize=FS)
         ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
@@ -202,20 +147,107 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
         note = None
         if notes:
             note = make_label(ax, "\n".join(notes), xycoords="axes fraction", fontsize=FS - 0.5)
-        placer = LabelPlacer(fig)
-        try:
-            placer.avoid_lines_of(ax)
-            ub = np.where(pos, esd + 2.0 * se0, np.nan)
-            lb = np.where(pos, np.maximum(lower, y0), np.nan)
-            placer.avoid_line(ax, widths, ub)
-            placer.avoid_line(ax, widths, lb)
-            for x, a, b in zip(widths, lb, ub):  # the band between its edges
-                if np.isfinite(a) and np.isfinite(b):
-                    placer.avoid_line(ax, [x, x], [a, b])
-            if note is not None:  # a corner first; then the lines' labels, the vertical ones first
-                placer.place(ax, note, corner_candidates())
-            for t, cands, texts in vertical + horizontal:
-                placer.place(ax, t, cands, texts=texts)
-        finally:
-            placer.close()
+        band = (np.where(pos, np.maximum(lower, y0), np.nan), np.where(pos, esd + 2.0 * se0, np.nan))
+        _place_labels(fig, ax, widths, band, note, vertical + horizontal)
     return fig
+
+
+def _chart_key(chart: DesignChart, all_slid: bool, on_limit: list[bool]) -> list[tuple[Any, str]]:
+    """The key, (handle, text): the chart's own lines, then the limits and the target."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    sfw = chart.sf_width
+    sf_in = math.isfinite(sfw) and float(chart.widths[0]) <= sfw <= float(chart.widths[-1])
+    key: list[tuple[Any, str]] = [
+        ((Patch(facecolor=FILL, edgecolor="none"),
+          Line2D([], [], color=ESD_LINE, lw=1.4, marker="o", markersize=2.6)),
+         f"ESD \u00b1 2 standard errors ({chart.trials} lifetimes per width)")]
+    if not all_slid:
+        key.append((Line2D([], [], ls="none", marker="v", markersize=4.5, markerfacecolor="white",
+                           markeredgecolor=ESD_LINE, markeredgewidth=1.0),
+                    "ESD = 0 (no lifetime slid)"))
+    if chart.width_for_target is not None:
+        key.append((Line2D([], [], color=TARGET, lw=1.0),
+                    f"narrowest width with ESD \u2264 {chart.target:g} m"))
+    if sf_in:
+        key.append((Line2D([], [], color="black", lw=1.0, dashes=SF_DASHES),
+                    f"SF = {chart.required_sf:g} under the 50-year wave (Goda 2000)"))
+    for (lim, source), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
+        key.append((Line2D([], [], color=TARGET if is_target else LIMIT,
+                           lw=1.0 if is_target else 0.8, dashes=dashes),
+                    f"tolerable ESD {limit_text(lim, source)}" + (", the target" if is_target else "")))
+    if not any(on_limit):
+        key.append((Line2D([], [], color=TARGET, lw=1.0), f"target ESD {chart.target:g} m"))
+    return key
+
+
+def _draw_limits(ax: Axes, chart: DesignChart, on_limit: list[bool]) -> Placed:
+    """The tolerable limits and the target as horizontal lines; their labels, to be placed."""
+    horizontal: Placed = []
+    for (lim, _), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
+        ax.axhline(lim, color=TARGET if is_target else LIMIT, lw=1.0 if is_target else 0.8,
+                   dashes=dashes, zorder=2)
+        t = make_label(ax, f"{lim:g} m" + (": target" if is_target else ""),
+                       xycoords=ax.get_yaxis_transform(), fontsize=FS - 0.5,
+                       color=TARGET_TEXT if is_target else "0.15")
+        horizontal.append((t, hline_candidates(lim), []))
+    if not any(on_limit):
+        ax.axhline(chart.target, color=TARGET, lw=1.0, zorder=2)
+        t = make_label(ax, f"target {chart.target:g} m", xycoords=ax.get_yaxis_transform(),
+                       fontsize=FS - 0.5, color=TARGET_TEXT)
+        horizontal.append((t, hline_candidates(chart.target), []))
+    return horizontal
+
+
+def _draw_widths(ax: Axes, chart: DesignChart, lo_w: float, hi_w: float) -> tuple[Placed, list[str]]:
+    """The width meeting the target and the width of Goda's SF as vertical lines, their labels
+    to be placed; the notes on what is not on the chart."""
+    wt, sfw = chart.width_for_target, chart.sf_width
+    sf = f"SF = {chart.required_sf:g}"
+    vertical: Placed = []
+    notes: list[str] = []
+    if wt is not None:
+        ax.axvline(wt, color=TARGET, lw=1.0, zorder=3)
+        every = (math.isclose(wt, lo_w, rel_tol=1e-12)
+                 and bool(np.asarray(chart.expected_sliding, dtype=np.float64)[0] <= chart.target))
+        text = (f"b = {metres(wt)} m: every width meets it" if every
+                else f"b = {metres(wt)} m")
+        t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
+                       fontsize=FS - 0.5, color=TARGET_TEXT)
+        vertical.append((t, vline_candidates(wt, side_first=1),
+                         [text.replace(": ", ":\n")] if every else []))
+    else:
+        notes.append(f"no width of {lo_w:.4g}\u2013{hi_w:.4g} m\n"
+                     f"has ESD \u2264 {chart.target:g} m")
+    if math.isfinite(sfw) and lo_w <= sfw <= hi_w:
+        ax.axvline(sfw, color="black", lw=1.0, dashes=SF_DASHES, zorder=3)
+        t = make_label(ax, f"b = {metres(sfw)} m", xycoords=ax.get_xaxis_transform(),
+                       rotation=90.0, fontsize=FS - 0.5)
+        vertical.append((t, vline_candidates(sfw, side_first=-1), []))
+    elif math.isfinite(sfw):
+        notes.append(f"{sf} under the 50-year wave:\nb = {metres(sfw)} m, off the chart")
+    else:
+        notes.append(f"{sf} under the 50-year wave:\nno width")
+    return vertical, notes
+
+
+def _place_labels(fig: Figure, ax: Axes, widths: FloatArray, band: tuple[FloatArray, FloatArray],
+                  note: Any, labels: Placed) -> None:
+    """Place the note (a corner first), then the lines' labels in order, clear of the lines and of
+    the band (its lower and upper edges, NaN where not drawn)."""
+    lb, ub = band
+    placer = LabelPlacer(fig)
+    try:
+        placer.avoid_lines_of(ax)
+        placer.avoid_line(ax, widths, ub)
+        placer.avoid_line(ax, widths, lb)
+        for x, a, b in zip(widths, lb, ub):  # the band between its edges
+            if np.isfinite(a) and np.isfinite(b):
+                placer.avoid_line(ax, [x, x], [a, b])
+        if note is not None:  # a corner first; then the lines' labels, the vertical ones first
+            placer.place(ax, note, corner_candidates())
+        for t, cands, texts in labels:
+            placer.place(ax, t, cands, texts=texts)
+    finally:
+        placer.close()

@@ -13,14 +13,15 @@ as polygons bounded by its refined boundaries (:meth:`OutcomeMap.geometry`),
 the contours clipped on them; a map that was not refined is drawn as its cells
 (each node the centre of a cell reaching half-way to its neighbours: a
 staircase at the grid's pitch).  The text is placed by
-:mod:`regimemap.drawing.outcome_text`.
+:mod:`regimemap.drawing.outcome_text`; the words (axis labels, title) are
+:mod:`regimemap.drawing.outcome_words`'s.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -29,6 +30,7 @@ from numpy.typing import NDArray
 from ..dynamics.outcome import OutcomeMap
 from ..dynamics.regions import MapGeometry
 from ..dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK, STILL_MOVING
+from .outcome_words import AXIS_LABELS, axis_label, outcome_title, rotation_text
 from .placement import cell_edges
 from .save import DEFAULT_DPI
 from .style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context
@@ -45,7 +47,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from .outcome_text import CategoryLookup, TextReport
 
-__all__ = ["AXIS_LABELS", "OutcomeArtists", "OUTCOME_FIGSIZE", "axis_label", "cell_edges",
+__all__ = ["AXIS_LABELS", "OutcomeArtists", "OUTCOME_FIGSIZE", "OutcomeStyle", "axis_label", "cell_edges",
            "category_rectangles", "draw_outcome_map", "outcome_figure", "outcome_title", "rotation_text"]
 
 #: Size of an outcome-map figure in inches (width, height): the regime map's width.
@@ -214,25 +216,12 @@ def _extend(data: NDArray[np.float64], keep: NDArray[np.bool_], passes: int = 2
     return np.ma.masked_where(~known, z)
 
 
-def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np.float64] | None = None,
-                     y: Sequence[float] | NDArray[np.float64] | None = None,
-                     xlabel: str | None = None, ylabel: str | None = None, title: str | None = None,
-                     contours: bool = True, labels: bool = True, legend: bool = True,
-                     hatches: bool = True, slide_unit: str = " m", refined: bool = True,
-                     note: str | None = None) -> OutcomeArtists:
-    """Draw an outcome map on ``ax``.
+@dataclass(frozen=True)
+class OutcomeStyle:
+    """How :func:`draw_outcome_map` draws a map (what it shows, not where).
 
-    Parameters
+    Attributes
     ----------
-    ax : Axes
-    m : OutcomeMap
-        The data (:func:`regimemap.dynamics.outcome_map`).
-    x, y : array_like, optional
-        The horizontal and vertical coordinates of the columns and rows (default the swept
-        values, ``m.first_values`` and ``m.second_values``; e.g. dimensionless values from
-        :func:`regimemap.dynamics.outcome.dimensionless_values`).  Each must be monotonic.
-    xlabel, ylabel, title : str, optional
-        Axis labels (default: the swept names) and title (mathtext allowed).
     contours : bool
         Draw the contours of the residual slide (solid, labelled in metres) and of the
         maximum rotation (dashed, labelled in degrees) where they mean something.
@@ -251,6 +240,40 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     note : str, optional
         A last entry of the key, without a symbol; by default, for a map with a
         ``min_rotation``, the smallest rotation that counts as rocking.
+    """
+
+    contours: bool = True
+    labels: bool = True
+    legend: bool = True
+    hatches: bool = True
+    slide_unit: str = " m"
+    refined: bool = True
+    note: str | None = None
+
+
+def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np.float64] | None = None,
+                     y: Sequence[float] | NDArray[np.float64] | None = None,
+                     xlabel: str | None = None, ylabel: str | None = None, title: str | None = None,
+                     style: OutcomeStyle | None = None, **style_fields: Any) -> OutcomeArtists:
+    """Draw an outcome map on ``ax``.
+
+    Parameters
+    ----------
+    ax : Axes
+    m : OutcomeMap
+        The data (:func:`regimemap.dynamics.outcome_map`).
+    x, y : array_like, optional
+        The horizontal and vertical coordinates of the columns and rows (default the swept
+        values, ``m.first_values`` and ``m.second_values``; e.g. dimensionless values from
+        :func:`regimemap.dynamics.outcome.dimensionless_values`).  Each must be monotonic.
+    xlabel, ylabel, title : str, optional
+        Axis labels (default: the swept names) and title (mathtext allowed).
+    style : OutcomeStyle, optional
+        What is drawn: contours, labels, key, hatches, the slide's unit, refined regions, a
+        note in the key.
+    **style_fields
+        Fields of :class:`OutcomeStyle` (``contours=``, ``legend=`` ...), over those of
+        ``style``.
 
     Returns
     -------
@@ -264,10 +287,8 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     """
     from matplotlib.collections import LineCollection
     from matplotlib.figure import Figure
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import PathPatch, Rectangle
-    from matplotlib.path import Path as MplPath
 
+    st = replace(style or OutcomeStyle(), **style_fields)
     xs = np.asarray(m.first_values if x is None else x, dtype=np.float64)
     ys = np.asarray(m.second_values if y is None else y, dtype=np.float64)
     cat = np.asarray(m.category)
@@ -276,7 +297,8 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     if cat.shape != (ys.size, xs.size):
         raise ValueError(f"the map is {cat.shape[0]} x {cat.shape[1]} (rows x columns), the axes have "
                          f"{ys.size} and {xs.size} values")
-    geo = m.geometry(xs, ys) if refined else None  # on the drawn axes, before any flip
+    geo = m.geometry(xs, ys) if st.refined else None  # on the drawn axes, before any flip
+    note = st.note
     if note is None and m.min_rotation > 0.0:
         note = f"rocking: max rotation > {rotation_text(m.min_rotation)}"
     # increasing axes (a decreasing one, e.g. omega_p from a duration sweep, is flipped)
@@ -299,27 +321,8 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
         if title:
             out.title = ax.set_title(title, fontsize=10.5)
         present = [c for c in sorted(OUTCOME_STYLE) if c < len(m.labels) and np.any(cat == c)]
-        paths: dict[int, MplPath] = {}
-        for code in present:
-            if geo is not None:
-                paths[code] = _compound(geo.regions.get(code, []))
-                continue
-            verts: list[tuple[float, float]] = []
-            codes: list[Any] = []
-            for j0, j1, i0, i1 in category_rectangles(cat, code):
-                verts += [(xe[j0], ye[i0]), (xe[j1], ye[i0]), (xe[j1], ye[i1]), (xe[j0], ye[i1]),
-                          (xe[j0], ye[i0])]
-                codes += [MplPath.MOVETO, MplPath.LINETO, MplPath.LINETO, MplPath.LINETO,
-                          MplPath.CLOSEPOLY]
-            paths[code] = MplPath(verts, codes)
-        for code in present:
-            st = OUTCOME_STYLE[code]
-            patch = PathPatch(paths[code], facecolor=st.color, edgecolor="none", linewidth=0.0,
-                              hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
-                              zorder=_Z_FILL, label=f"_{m.labels[code]}")
-            patch.set_hatch_linewidth(HATCH_LW)
-            ax.add_patch(patch)
-            out.regions[code] = patch
+        paths = _region_paths(cat, present, geo, xe, ye)
+        _draw_regions(ax, out, m.labels, paths, st.hatches)
         segs = [p for _, _, p in geo.boundaries] if geo is not None else _boundary_segments(cat, xe, ye)
         out.boundary_lines = segs
         if segs:
@@ -331,28 +334,16 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
 
         out.category_at = CategoryLookup(cat, xs, ys, paths if geo is not None else None)
 
-        handles: list[Any] = []
-        for code in present:
-            st = OUTCOME_STYLE[code]
-            h = Rectangle((0, 0), 1, 1, facecolor=st.color, edgecolor="0.4", linewidth=0.4,
-                          hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
-                          label=m.labels[code])
-            h.set_hatch_linewidth(HATCH_LW)
-            handles.append(h)
-        if contours and xs.size > 1 and ys.size > 1:
-            handles += _draw_contours(ax, out, cat, slide, np.degrees(rot), xs, ys, geo, slide_unit)
-        if labels:
-            for code in present:
-                st = OUTCOME_STYLE[code]
-                t = ax.text(float(xs.mean()), float(ys.mean()), m.labels[code], ha="center", va="center",
-                            fontsize=8.5, color="white" if code == OVERTURN else "black", zorder=_Z_LABEL,
-                            bbox={"boxstyle": "round,pad=0.25", "fc": st.color, "ec": "none",
-                                  "alpha": 0.9})
-                t.set_gid(f"region-{code}")
-                out.labels.append(t)
+        handles = _region_handles(m.labels, present, st.hatches)
+        if st.contours and xs.size > 1 and ys.size > 1:
+            handles += _draw_contours(ax, out, cat, slide, np.degrees(rot), xs, ys, geo, st.slide_unit)
+        if st.labels:
+            _draw_region_labels(ax, out, m.labels, present, float(xs.mean()), float(ys.mean()))
         if note:
+            from matplotlib.lines import Line2D
+
             handles.append(Line2D([], [], color="none", label=note))
-        if legend and handles:
+        if st.legend and handles:
             out.legend = ax.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, -0.13),
                                    ncols=3, fontsize=8.5, frameon=False, handlelength=2.2,
                                    handleheight=1.1, columnspacing=1.4, borderaxespad=0.0)
@@ -362,6 +353,70 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
 
             out.report = place_outcome_text(fig, ax, out, cat, xs, ys)
     return out
+
+
+def _region_paths(cat: NDArray[Any], present: list[int], geo: MapGeometry | None,
+                  xe: NDArray[np.float64], ye: NDArray[np.float64]) -> dict[int, MplPath]:
+    """The outline of each category present: the refined polygons, or its cells (rectangles)."""
+    from matplotlib.path import Path as MplPath
+
+    paths: dict[int, MplPath] = {}
+    for code in present:
+        if geo is not None:
+            paths[code] = _compound(geo.regions.get(code, []))
+            continue
+        verts: list[tuple[float, float]] = []
+        codes: list[Any] = []
+        for j0, j1, i0, i1 in category_rectangles(cat, code):
+            verts += [(xe[j0], ye[i0]), (xe[j1], ye[i0]), (xe[j1], ye[i1]), (xe[j0], ye[i1]),
+                      (xe[j0], ye[i0])]
+            codes += [MplPath.MOVETO, MplPath.LINETO, MplPath.LINETO, MplPath.LINETO,
+                      MplPath.CLOSEPOLY]
+        paths[code] = MplPath(verts, codes)
+    return paths
+
+
+def _draw_regions(ax: Axes, out: OutcomeArtists, labels: Sequence[str], paths: dict[int, MplPath],
+                  hatches: bool) -> None:
+    """Fill (and hatch) each category's region."""
+    from matplotlib.patches import PathPatch
+
+    for code, path in paths.items():
+        st = OUTCOME_STYLE[code]
+        patch = PathPatch(path, facecolor=st.color, edgecolor="none", linewidth=0.0,
+                          hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
+                          zorder=_Z_FILL, label=f"_{labels[code]}")
+        patch.set_hatch_linewidth(HATCH_LW)
+        ax.add_patch(patch)
+        out.regions[code] = patch
+
+
+def _region_handles(labels: Sequence[str], present: list[int], hatches: bool) -> list[Any]:
+    """The key's entries of the categories present."""
+    from matplotlib.patches import Rectangle
+
+    handles: list[Any] = []
+    for code in present:
+        st = OUTCOME_STYLE[code]
+        h = Rectangle((0, 0), 1, 1, facecolor=st.color, edgecolor="0.4", linewidth=0.4,
+                      hatch=st.hatch if hatches else None, hatchcolor=st.hatch_color,
+                      label=labels[code])
+        h.set_hatch_linewidth(HATCH_LW)
+        handles.append(h)
+    return handles
+
+
+def _draw_region_labels(ax: Axes, out: OutcomeArtists, labels: Sequence[str], present: list[int],
+                        x: float, y: float) -> None:
+    """A label per category present, at (x, y) until :func:`place_outcome_text` places it."""
+    for code in present:
+        st = OUTCOME_STYLE[code]
+        t = ax.text(x, y, labels[code], ha="center", va="center",
+                    fontsize=8.5, color="white" if code == OVERTURN else "black", zorder=_Z_LABEL,
+                    bbox={"boxstyle": "round,pad=0.25", "fc": st.color, "ec": "none",
+                          "alpha": 0.9})
+        t.set_gid(f"region-{code}")
+        out.labels.append(t)
 
 
 def _draw_contours(ax: Axes, out: OutcomeArtists, cat: NDArray[Any], slide: NDArray[np.float64],
@@ -398,65 +453,6 @@ def _draw_contours(ax: Axes, out: OutcomeArtists, cat: NDArray[Any], slide: NDAr
         handles.append(Line2D([], [], color=style["colors"], linewidth=style["linewidths"], linestyle=ls,
                               label=f"{what} ({unit.strip()})"))
     return handles
-
-
-#: Axis labels by swept input: (physical, dimensionless).
-AXIS_LABELS: dict[str, tuple[str, str | None]] = {
-    "k_peak": (r"peak force $k_p = F_{max}/(mg)$", r"$k_p\,/\tan\alpha$"),
-    "duration": (r"pulse duration $T$ (s)", r"$\omega_p\,/\,p$"),
-    "omega_p": (r"pulse frequency $\omega_p$ (rad/s)", r"$\omega_p\,/\,p$"),
-    "mu": (r"friction $\mu$", None),
-    "kprime": (r"height of the push $k'$", None),
-    "gamma": (r"aspect ratio $\gamma = H/B$", None),
-    "half_width": (r"half width $B$ (m)", None),
-    "gyration": (r"radius of gyration / $B$", None),
-    "buoyancy": (r"buoyancy $\beta$ (× $mg$)", None),
-    "uplift": (r"uplift $u$ (× $mg$)", None),
-    "uplift_ratio": (r"uplift ratio $\nu$ (× $F$)", None),
-    "uplift_arm": (r"uplift arm $e_u$ (× $B$)", None),
-}
-
-
-def axis_label(name: str, dimensionless: bool = False, shape: str | None = None) -> str:
-    """The axis label of a swept input (mathtext), physical or dimensionless."""
-    phys, dim = AXIS_LABELS.get(name, (name, None))
-    if dimensionless and dim is not None:
-        if name == "duration" and shape is not None:
-            cycles = "2\\pi" if shape in ("one-sine", "one-cosine") else "\\pi"
-            return dim + rf"  ($\omega_p = {cycles}/T$)"
-        return dim
-    return phys
-
-
-_TITLE_NAMES = (("gamma", "γ", ""), ("half_width", "B", " m"), ("mu", "μ", ""), ("kprime", "k'", ""),
-                ("k_peak", "k_p", ""), ("duration", "T", " s"), ("omega_p", "ω_p", " rad/s"),
-                ("gyration", "r/B", ""), ("buoyancy", "β", ""), ("uplift", "u", ""),
-                ("uplift_ratio", "ν", ""), ("uplift_arm", "e_u", ""))
-
-
-def outcome_title(shape: str, fixed: dict[str, Any], restitution: float | None = None,
-                  min_rotation: float = 0.0) -> str:
-    """A title naming the pulse and the fixed inputs (plain text), e.g.
-    ``half-sine pulse; γ = 3, B = 0.2 m, μ = 5, k' = 0``; with ``min_rotation`` (rad) the
-    smallest rotation that counts as rocking."""
-    parts = []
-    for key, sym, unit in _TITLE_NAMES:
-        v = fixed.get(key)
-        if v is None or (key in ("buoyancy", "uplift", "uplift_ratio") and v == 0.0):
-            continue
-        if key == "uplift_arm" and not (fixed.get("uplift") or fixed.get("uplift_ratio")):
-            continue
-        parts.append(f"{sym} = {v:.4g}{unit}")
-    if restitution is not None:
-        parts.append(f"restitution {restitution:g}")
-    if min_rotation > 0.0:
-        parts.append(f"rocking from {rotation_text(min_rotation)}")
-    return f"{shape} pulse; " + ", ".join(parts)
-
-
-def rotation_text(angle: float) -> str:
-    """An angle (rad) in degrees for people: ``0.1°``."""
-    return f"{math.degrees(angle):.3g}°"
 
 
 def outcome_figure(m: OutcomeMap, *, dpi: float = DEFAULT_DPI, figsize: tuple[float, float] | None = None,

@@ -366,6 +366,7 @@ def _place_contour(t: Any, renderer: RendererBase, fig: Figure, segs: list[Float
         stretches += _runs(d, inside)
     stretches.sort(key=lambda r: -float(np.hypot(*np.diff(r, axis=0).T).sum()))
     text_h = b0[3] - b0[1]
+    search = _ContourSearch(renderer, frame, taken, to_data, lookup, allowed, pad)
     # first clear of every line under the patch, then of the other contours under the letters
     for near, clear in ((np.vstack([others, boundary]), (w, h)), (others, (w - 2 * pad, text_h))):
         for r in stretches:
@@ -379,17 +380,32 @@ def _place_contour(t: Any, renderer: RendererBase, fig: Figure, segs: list[Float
             offsets = sorted(np.arange(-mid + half + _GAP, mid - half - _GAP + 1e-9, step).tolist(), key=abs)
             for off in offsets:
                 at = mid + off
-                if _try_contour(t, renderer, r, s, at, (w, h), pad, frame, taken, near, clear, to_data,
-                                lookup, allowed):
+                if _try_contour(t, search, r, s, at, (w, h), near, clear):
                     return True
     return False
 
 
-def _try_contour(t: Any, renderer: RendererBase, r: FloatArray, s: FloatArray, at: float,
-                 size: tuple[float, float], pad: float, frame: Box, taken: list[Box], near: FloatArray,
-                 clear: tuple[float, float], to_data: Any, lookup: Any, allowed: tuple[int, ...]) -> bool:
+@dataclass(frozen=True)
+class _ContourSearch:
+    """What stays the same while a contour label tries its places: the renderer, the figure's
+    frame and the boxes taken (pixels), pixels -> data, the category lookup and the categories
+    where the contour means something, the label's patch padding."""
+
+    renderer: RendererBase
+    frame: Box
+    taken: list[Box]
+    to_data: Any
+    lookup: Any
+    allowed: tuple[int, ...]
+    pad: float
+
+
+def _try_contour(t: Any, search: _ContourSearch, r: FloatArray, s: FloatArray, at: float,
+                 size: tuple[float, float], near: FloatArray, clear: tuple[float, float]) -> bool:
     """Try a contour label of ``size`` (with its patch) centred at arc length ``at`` of stretch
     ``r``, no point of ``near`` within ``clear`` (a box along the line) of its centre."""
+    renderer, frame, taken, pad = search.renderer, search.frame, search.taken, search.pad
+    to_data, lookup, allowed = search.to_data, search.lookup, search.allowed
     w, h = size
     p = np.array([np.interp(at, s, r[:, 0]), np.interp(at, s, r[:, 1])])
     a = np.array([np.interp(at - w / 2, s, r[:, 0]), np.interp(at - w / 2, s, r[:, 1])])

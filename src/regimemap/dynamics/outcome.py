@@ -317,7 +317,9 @@ def refine_map(m: OutcomeMap, runs: MapRuns, *, tol: float = TOLERANCE,
     return replace(m, crossings=crossings, refine_seconds=time.perf_counter() - t0)
 
 
-def outcome_map(block: Block, shape: str, first: tuple[str, ArrayLike], second: tuple[str, ArrayLike],
+# One call for MapRuns (block, pulse and run keywords), grid_map and refine_map: its keywords
+# are theirs, one each, as documented in docs/dynamics.md (PLR0913 accepted here).
+def outcome_map(block: Block, shape: str, first: tuple[str, ArrayLike], second: tuple[str, ArrayLike],  # noqa: PLR0913
                 *, k_peak: ArrayLike | None = None, duration: ArrayLike | None = None,
                 restitution: float | None = None, dt: float | None = None,
                 pulse_params: dict[str, float] | None = None, min_rotation: float = 0.0,

@@ -213,46 +213,61 @@ class _LifetimeReader:
         """The checked value of ``key`` (None when absent)."""
         if key not in data:
             return None
-        spec = LIFETIME_TABLES[table][key]
+        kind = LIFETIME_TABLES[table][key].kind
+        if kind == "number":
+            return self.number(table, data, key, data[key])
+        read = {"int": self._int, "text": self._text, "bool": self._bool, "numbers": self._numbers,
+                "pair": self._pair}.get(kind, self._table)
+        return read(table, data, key)
+
+    def _int(self, table: str, data: Mapping[str, Any], key: str) -> int:
         v = data[key]
-        if spec.kind == "int":
-            if isinstance(v, bool) or not isinstance(v, int):
-                raise self.bad(table, key, v, f"expected a whole number, found {_toml_type(v)}")
-            if not spec.check(v):
-                raise self.bad(table, key, v, "out of range")
-            return v
-        if spec.kind == "number":
-            return self.number(table, data, key, v)
-        if spec.kind == "text":
-            if not isinstance(v, str):
-                raise self.bad(table, key, v, f"expected a string, found {_toml_type(v)}")
-            if not spec.check(v):
-                raise self.bad(table, key, v, "not one of the accepted values")
-            return v
-        if spec.kind == "bool":
-            if not isinstance(v, bool):
-                raise self.bad(table, key, v, f"expected true or false, found {_toml_type(v)}")
-            return v
-        if spec.kind == "numbers":
-            if not isinstance(v, list):
-                raise self.bad(table, key, v, f"expected a list of numbers, found {_toml_type(v)}")
-            if not v:
-                raise self.bad(table, key, v, "the list is empty")
-            return tuple(self.number(table, data, key, x, item=True) for x in v)
-        if spec.kind == "pair":
-            if not isinstance(v, list) or len(v) != 2:
-                found = f"a list of {len(v)}" if isinstance(v, list) else _toml_type(v)
-                raise self.bad(table, key, v, f"expected [ratio, cov], found {found}")
-            for x in v:
-                if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
-                    raise self.bad(table, key, v, f"{x!r} is not a finite number")
-            ratio, cov = float(v[0]), float(v[1])
-            if not ratio > 0.0:
-                raise self.bad(table, key, v, f"the ratio {v[0]!r} is not > 0")
-            if not cov >= 0.0:
-                raise self.bad(table, key, v, f"the cov {v[1]!r} is < 0")
-            return ratio, cov
-        if not isinstance(v, dict):  # "table"
+        if isinstance(v, bool) or not isinstance(v, int):
+            raise self.bad(table, key, v, f"expected a whole number, found {_toml_type(v)}")
+        if not LIFETIME_TABLES[table][key].check(v):
+            raise self.bad(table, key, v, "out of range")
+        return v
+
+    def _text(self, table: str, data: Mapping[str, Any], key: str) -> str:
+        v = data[key]
+        if not isinstance(v, str):
+            raise self.bad(table, key, v, f"expected a string, found {_toml_type(v)}")
+        if not LIFETIME_TABLES[table][key].check(v):
+            raise self.bad(table, key, v, "not one of the accepted values")
+        return v
+
+    def _bool(self, table: str, data: Mapping[str, Any], key: str) -> bool:
+        v = data[key]
+        if not isinstance(v, bool):
+            raise self.bad(table, key, v, f"expected true or false, found {_toml_type(v)}")
+        return v
+
+    def _numbers(self, table: str, data: Mapping[str, Any], key: str) -> tuple[float, ...]:
+        v = data[key]
+        if not isinstance(v, list):
+            raise self.bad(table, key, v, f"expected a list of numbers, found {_toml_type(v)}")
+        if not v:
+            raise self.bad(table, key, v, "the list is empty")
+        return tuple(self.number(table, data, key, x, item=True) for x in v)
+
+    def _pair(self, table: str, data: Mapping[str, Any], key: str) -> tuple[float, float]:
+        v = data[key]
+        if not isinstance(v, list) or len(v) != 2:
+            found = f"a list of {len(v)}" if isinstance(v, list) else _toml_type(v)
+            raise self.bad(table, key, v, f"expected [ratio, cov], found {found}")
+        for x in v:
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or not math.isfinite(x):
+                raise self.bad(table, key, v, f"{x!r} is not a finite number")
+        ratio, cov = float(v[0]), float(v[1])
+        if not ratio > 0.0:
+            raise self.bad(table, key, v, f"the ratio {v[0]!r} is not > 0")
+        if not cov >= 0.0:
+            raise self.bad(table, key, v, f"the cov {v[1]!r} is < 0")
+        return ratio, cov
+
+    def _table(self, table: str, data: Mapping[str, Any], key: str) -> dict[str, Any]:
+        v = data[key]
+        if not isinstance(v, dict):
             raise self.bad(table, key, v, f"expected a table, found {_toml_type(v)}")
         return v
 

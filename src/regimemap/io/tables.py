@@ -6,7 +6,7 @@ import math
 import textwrap
 
 from ..maps.margins import Crossing
-from ..maps.query import PointResult
+from ..maps.point_result import INITIATION_FIELDS, PointResult
 from ._numbers import rounded, text
 
 __all__ = ["CSV_COLUMNS", "LOAD_COLUMNS", "columns_for", "format_result", "result_json", "result_row"]
@@ -76,11 +76,21 @@ def _pct(c: Crossing) -> str:
 
 def format_result(r: PointResult) -> str:
     """A plain-text report of one result, for people."""
+    lines = [*_point_lines(r), *_initiation_lines(r), *_margin_lines(r)]
+    adm = ", ".join(m.label for m in r.admissible) or "(none)"
+    lines.append(f"admissible (solver): {adm}")
+    for note in (_unsolvable_note(r), _choice_note(r)):
+        if note:
+            lines += textwrap.wrap(note, width=88, initial_indent="  ", subsequent_indent="  ")
+    return "\n".join(lines)
+
+
+def _point_lines(r: PointResult) -> list[str]:
+    """The point and its block, the loads (or the report's case) and the mode."""
     p_side = "above" if r.kprime > 0 else ("below" if r.kprime < 0 else "at")
-    lines = []
     title = f"point {r.name!r}: " if r.name else ""
-    lines.append(f"{title}k = {r.k:g}, mu = {r.mu:g}   (gamma = {r.gamma:g}, k' = {r.kprime:g}: "
-                 f"force {p_side} the centre of mass)")
+    lines = [f"{title}k = {r.k:g}, mu = {r.mu:g}   (gamma = {r.gamma:g}, k' = {r.kprime:g}: "
+             f"force {p_side} the centre of mass)"]
     if r.loads:
         from ..maps.describe import format_value
 
@@ -93,19 +103,16 @@ def format_result(r: PointResult) -> str:
     else:
         lines.append(f"case      {r.case.value}: {r.case.description}")
     lines.append(f"mode      {r.mode.label}  ({r.mode.description})")
-    lines.append(f"at initiation (solver, hypothesis {r.hypothesis.name}"
-                 + ("" if r.hypothesis_admissible or not r.solvable else ", NOT admissible")
-                 + "):")
-    rows = [
-        ("fx", r.fx, "horizontal reaction / mg (positive to the right)"),
-        ("fy", r.fy, "normal reaction / mg"),
-        ("xi", r.xi, "where f_y acts, from C / B (-1 = O, +1 = O')"),
-        ("xdd", r.xdd, "horizontal acceleration of C / g (negative = to the left)"),
-        ("ydd", r.ydd, "vertical acceleration of C / g"),
-        ("thdd", r.thdd, "angular acceleration * B/g (positive = counter-clockwise)"),
-    ]
-    for key, v, what in rows:
-        lines.append(f"  {key:<5} = {_val(v):>11}   {what}")
+    return lines
+
+
+def _initiation_lines(r: PointResult) -> list[str]:
+    """The reactions and accelerations at initiation (:data:`INITIATION_FIELDS`), slip and lift."""
+    lines = [f"at initiation (solver, hypothesis {r.hypothesis.name}"
+             + ("" if r.hypothesis_admissible or not r.solvable else ", NOT admissible")
+             + "):"]
+    for key, what in INITIATION_FIELDS:
+        lines.append(f"  {key:<5} = {_val(getattr(r, key)):>11}   {what}")
     if r.slip is None and not r.solvable and r.hypothesis.sigma != 0:
         lines.append(f"  {'slip':<5} = {'n/a':>11}")
     elif r.slip is None and r.hypothesis.contact == "none":
@@ -119,7 +126,12 @@ def format_result(r: PointResult) -> str:
     if r.lift is not None:
         lines.append(f"  {'lift':<5} = {_val(r.lift):>11}   upward acceleration of the "
                      f"lifting corner / g")
-    lines.append("margin    (smallest change that changes the mode, the other variable fixed)")
+    return lines
+
+
+def _margin_lines(r: PointResult) -> list[str]:
+    """The margins along k and along mu, down and up."""
+    lines = ["margin    (smallest change that changes the mode, the other variable fixed)"]
     for m in (r.margin_k, r.margin_mu):
         parts = []
         for direction, c in (("down", m.down), ("up", m.up)):
@@ -136,30 +148,33 @@ def format_result(r: PointResult) -> str:
             parts.append(f"{c.direction}: {sign}{_pct(c)} to {m.variable} = {c.at:.6g} -> "
                          f"{c.to.label}")
         lines.append(f"  {m.variable:<3} {';  '.join(parts)}")
-    adm = ", ".join(m.label for m in r.admissible) or "(none)"
-    lines.append(f"admissible (solver): {adm}")
-    note = ""
-    if not r.solvable:
-        note = ("the equations-of-motion solver reports this system as singular (at mu = mu_B', "
-                "or a known limitation of its singularity test at large gamma or mu), so the "
-                "physics and the admissible set are not available; the mode and the margin come "
-                "from the closed-form map and stand")
-        lines += textwrap.wrap(note, width=88, initial_indent="  ", subsequent_indent="  ")
-        note = ""
+    return lines
+
+
+def _unsolvable_note(r: PointResult) -> str:
+    """Why the physics is missing where the solver cannot solve ("" where it can)."""
+    if r.solvable:
+        return ""
+    return ("the equations-of-motion solver reports this system as singular (at mu = mu_B', "
+            "or a known limitation of its singularity test at large gamma or mu), so the "
+            "physics and the admissible set are not available; the mode and the margin come "
+            "from the closed-form map and stand")
+
+
+def _choice_note(r: PointResult) -> str:
+    """How the mode was chosen where several are admissible ("" where one is)."""
     if r.chosen_by == "Section 4.7":
-        note = (f"several modes satisfy the equations of motion here (non-uniqueness of rigid "
+        return (f"several modes satisfy the equations of motion here (non-uniqueness of rigid "
                 f"contact with friction, below C and mu > mu_B' = {r.thresholds['mu_Bprime']:.4g}); "
                 f"Section 4.7 of the report keeps {r.mode.label}")
-    elif r.chosen_by == "least constraint":
-        note = (f"several modes satisfy the equations of motion here; chosen by least "
+    if r.chosen_by == "least constraint":
+        return (f"several modes satisfy the equations of motion here; chosen by least "
                 f"constraint (Gauss): {r.mode.label}, the motion closest to free fall "
                 f"(a convention of rigid contact)")
-    elif r.chosen_by == "boundary":
-        note = (f"the point is on a boundary, where the modes of both sides are admissible; "
+    if r.chosen_by == "boundary":
+        return (f"the point is on a boundary, where the modes of both sides are admissible; "
                 f"the map gives it {r.mode.label}")
-    if note:
-        lines += textwrap.wrap(note, width=88, initial_indent="  ", subsequent_indent="  ")
-    return "\n".join(lines)
+    return ""
 
 
 def _val(v: float) -> str:

@@ -6,255 +6,31 @@ pycalphad's ``mapping`` package (strategies compute, ``plotting.py`` draws).
 (:mod:`regimemap.drawing.mapplot`) only turns it into artists, so the numbers
 behind every line and fill of a figure stay reachable.
 
-The curves are those of the catalogue :func:`regimemap.mechanics.curves.map_curves`,
-sampled within the view.  Each is split into runs that *bound* a region of the
-map (the mode, or the membership of the raw region, differs on its two sides)
-and runs that are only *construction* lines (the same region on both sides),
-which the renderer draws solid and dashed respectively.
+The curves and named points (sampled in the view, split into boundary and
+construction runs) are found by :mod:`regimemap.maps.mapcurves`.
 """
 
 from __future__ import annotations
 
 import logging
-import math
 import time
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from ..mechanics.block import Parameters
-from ..mechanics.curves import Curve, NamedPoint, map_curves, named_points
+from ..mechanics.curves import NamedPoint
 from ..mechanics.htmltable import html_table
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
-from ..mechanics.regions import raw_region
-from .classify import classify
 from .describe import loads_text
-from .geometry import DEFAULT_SAMPLES, area_in_view, breakpoints, region_polygons
+from .geometry import DEFAULT_SAMPLES, area_in_view, region_polygons
+from .mapcurves import CurveData, curve_data, drawn_points, line_ends
 from .view import auto_extent, simplify
 
 __all__ = ["CurveData", "MapData", "compute_map"]
 
 _log = logging.getLogger(__name__)
-
-# -- curves ------------------------------------------------------------------------------
-
-
-@dataclass(frozen=True)
-class CurveData:
-    """One boundary curve of a map, sampled within the view.
-
-    Attributes
-    ----------
-    name : str
-        Key: ``OA``, ``AB``, ``CD``, ``DC``, ``AE``, ``dotted``, ``mu_star``,
-        ``mu_star_star``.
-    label : str
-        Mathtext label drawn next to the curve, or ``""`` (lines named by
-        their end points).
-    points : ndarray, shape (n, 2)
-        Vertices (k, mu).
-    boundary : ndarray of bool, shape (n - 1,)
-        Whether each segment separates two regions (else a construction line).
-    dotted : bool
-        True for the report's dotted lines ((3.44) and (4.22)).
-    equation : str
-        Where the curve comes from in the report.
-    """
-
-    name: str
-    label: str
-    points: np.ndarray
-    boundary: np.ndarray
-    dotted: bool = False
-    equation: str = ""
-
-    def runs(self) -> list[tuple[np.ndarray, bool]]:
-        """Consecutive pieces ``(vertices, is_boundary)`` of the curve."""
-        if len(self.points) < 2:
-            return []
-        b = self.boundary
-        cuts = np.flatnonzero(b[1:] != b[:-1]) + 1
-        starts = np.concatenate([[0], cuts])
-        ends = np.concatenate([cuts, [b.size]])
-        return [(self.points[s:e + 1], bool(b[s])) for s, e in zip(starts, ends)]
-
-    @property
-    def is_boundary(self) -> bool:
-        """True when some part of the curve bounds a region."""
-        return bool(self.boundary.any())
-
-
-def _side_key(p: Parameters, k: np.ndarray, mu: np.ndarray, raw: bool,
-              modes: Sequence[Mode]) -> np.ndarray:
-    """A code of 'which region' at each point: the mode (final map) or raw memberships."""
-    k = np.maximum(k, 0.0)
-    mu = np.maximum(mu, 0.0)
-    if not raw:
-        return classify(k, mu, p.gamma, p.kprime, **p.loads).astype(np.int64)
-    key = np.zeros(k.shape, dtype=np.int64)
-    for i, m in enumerate(modes):
-        key |= raw_region(m, p, k, mu).astype(np.int64) << i
-    return key
-
-
-def _boundary_flags(p: Parameters, pts: np.ndarray, vertical: bool, raw: bool,
-                    modes: Sequence[Mode], k_max: float, mu_max: float,
-                    func: Callable[[np.ndarray], np.ndarray] | None = None) -> np.ndarray:
-    """For each segment: do its two sides belong to different regions?
-
-    The sides are probed at the middle of the segment, 1e-6 of the view away
-    from the curve, so that only the segments that touch another curve within
-    that distance can be misjudged; :func:`_drop_short_runs` removes those.
-    """
-    mid = 0.5 * (pts[1:] + pts[:-1])
-    if func is not None:  # a curved graph: probe on the curve, not on its chord
-        with np.errstate(divide="ignore", invalid="ignore"):
-            mid[:, 1] = func(mid[:, 0])
-        mid[:, 1] = np.where(np.isfinite(mid[:, 1]), mid[:, 1], 0.0)
-    if vertical:
-        d = 1e-6 * k_max
-        a = _side_key(p, mid[:, 0] - d, mid[:, 1], raw, modes)
-        b = _side_key(p, mid[:, 0] + d, mid[:, 1], raw, modes)
-        return np.asarray(a != b)
-    d = 1e-6 * mu_max
-    up = _side_key(p, mid[:, 0], mid[:, 1] + d, raw, modes)
-    down = _side_key(p, mid[:, 0], mid[:, 1] - d, raw, modes)
-    flags = np.asarray(up != down)
-    # On the k axis itself there is nothing below: not a boundary of the map.
-    flags &= mid[:, 1] > 2.0 * d
-    return flags
-
-
-def _drop_short_runs(flags: np.ndarray, pts: np.ndarray, scale: tuple[float, float],
-                     min_len: float = 0.01) -> np.ndarray:
-    """Flip runs of equal flags shorter than ``min_len`` (fraction of the view) to their neighbours'."""
-    if flags.size < 3:
-        return flags
-    q = pts / np.asarray(scale)
-    seg = np.hypot(*np.diff(q, axis=0).T)
-    flags = flags.copy()
-    for _ in range(3):
-        cuts = np.flatnonzero(flags[1:] != flags[:-1]) + 1
-        starts = np.concatenate([[0], cuts])
-        ends = np.concatenate([cuts, [flags.size]])
-        lengths = np.array([seg[s:e].sum() for s, e in zip(starts, ends)])
-        changed = False
-        for s, e, L in sorted(zip(starts, ends, lengths), key=lambda r: r[2]):
-            if L >= min_len or len(starts) == 1:
-                break
-            if s == 0 and e == flags.size:
-                break
-            flags[s:e] = ~flags[s]
-            changed = True
-            break
-        if not changed:
-            break
-    return flags
-
-
-def _graph(f: Callable[[np.ndarray], np.ndarray], p: Parameters, k0: float,
-           k1: float, n: int, k: np.ndarray | None = None) -> np.ndarray:
-    """Vertices (k, f(k)) for k in [k0, k1], with the map's breakpoints among them."""
-    if k is None:
-        k = np.linspace(k0, k1, n)
-    bp = [x for x in breakpoints(p) if k0 < x < k1]
-    k = np.unique(np.concatenate([k, bp]))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.column_stack([k, f(k)])
-
-
-def _clip_mu(pts: np.ndarray, mu_lo: float, mu_hi: float) -> np.ndarray:
-    """Keep the part of a graph (k increasing) with mu_lo <= mu <= mu_hi, cut exactly."""
-    if len(pts) < 2:
-        return pts
-    k, mu = pts[:, 0], pts[:, 1]
-    inside = (mu >= mu_lo) & (mu <= mu_hi)
-    if inside.all():
-        return pts
-    out: list[tuple[float, float]] = []
-    for i in range(len(pts)):
-        if inside[i]:
-            if i > 0 and not inside[i - 1]:
-                out.append(_cut(k[i - 1], mu[i - 1], k[i], mu[i], mu_lo, mu_hi))
-            out.append((k[i], mu[i]))
-        elif i > 0 and inside[i - 1]:
-            out.append(_cut(k[i - 1], mu[i - 1], k[i], mu[i], mu_lo, mu_hi))
-            break  # the graphs used here leave the band once
-    return np.asarray(out, dtype=np.float64).reshape(-1, 2)
-
-
-def _cut(k0: float, m0: float, k1: float, m1: float, lo: float, hi: float) -> tuple[float, float]:
-    level = hi if max(m0, m1) > hi else lo
-    t = (level - m0) / (m1 - m0) if m1 != m0 else 0.0
-    return (k0 + t * (k1 - k0), level)
-
-
-def _sampled(c: Curve, p: Parameters, k_max: float, mu_max: float, n: int) -> np.ndarray | None:
-    """Vertices of the catalogue curve ``c`` within the view (None: nothing to draw).
-
-    Graphs are sampled from ``c.k_from`` to ``c.k_to`` (or a little beyond the
-    view) and cut exactly where they leave the band of mu; the vertical k = k_A
-    runs from its foot to the top; mu** is sampled densely towards its pole.
-    """
-    top = mu_max * 1.02
-    k_end = k_max * 1.02
-    kA = p.k_A
-    if c.vertical_k is not None and c.name in ("LO", "LO_end"):
-        if not 0.0 <= c.vertical_k <= k_max:
-            return None
-        mu = np.linspace(0.0, top, n)
-        return np.column_stack([np.full_like(mu, c.vertical_k), mu])
-    if c.vertical_k is not None:
-        mu0 = p.mu_A if p.above else 0.0
-        if p.above and not (kA <= k_max and kA < top):
-            return None
-        if not p.above and not (math.isfinite(kA) and kA <= k_max):
-            return None
-        mu = np.unique(np.concatenate([np.linspace(mu0, top, n), [kA] if mu0 < kA < top else []]))
-        return np.column_stack([np.full_like(mu, c.vertical_k), mu])
-    assert c.func is not None
-    if c.name == "OA":
-        if p.loaded:
-            pts = _graph(c.func, p, 0.0, min(c.k_to, k_end), n)
-            return _clip_mu(pts[np.isfinite(pts[:, 1])], 0.0, top)
-        return _graph(c.func, p, 0.0, min(c.k_to, k_end, top), n)
-    if c.name == "mu_star_star":
-        kF = c.k_from
-        if not 0.0 <= kF < k_max:
-            return None
-        # mu** = (ak - b)/(d - ck) reaches the top of the view at k = (b + M d)/(a + M c)
-        cst = p.constants
-        k_top = (cst.bP + top * cst.dP) / (cst.aP + top * cst.cP)
-        k1 = min(k_top, k_end, c.k_to)
-        kk = kF + (k1 - kF) * np.sin(np.linspace(0.0, 0.5 * np.pi, n))  # dense near the pole
-        pts = _graph(c.func, p, kF, k1, n, k=kk)
-        pts = pts[np.isfinite(pts[:, 1]) & (pts[:, 1] >= -1e-12)]
-        if len(pts) < 2:
-            return None
-        pts[:, 1] = np.maximum(pts[:, 1], 0.0)
-        return _clip_mu(pts, 0.0, top)
-    # a curve that starts right of the view is not drawn (mu* from A: up to the edge)
-    if c.k_from > 0.0 and not (c.k_from <= k_max if c.name == "mu_star" else c.k_from < k_max):
-        return None
-    pts = _graph(c.func, p, c.k_from, min(c.k_to, k_end), n)
-    if p.loaded:  # a loaded curve may have a pole (W = 0, f_y = 0): keep its finite part
-        pts = pts[np.isfinite(pts[:, 1])]
-    return _clip_mu(pts, 0.0, top)
-
-
-# Which curves a single-mode (raw) figure draws although they bound nothing there:
-# (mode, above C) -> curve names.
-_CONTEXT: dict[tuple[Mode, bool], tuple[str, ...]] = {
-    (Mode.SRO_PLUS, True): ("dotted",),  # Fig 3.8: "the dotted line lies above mu*(k)"
-    (Mode.SL, False): ("dotted",),  # Fig 4.3: xi <= 0 above the dotted line (4.22)
-    # Figs 4.4a-b and 4.5a-b draw mu* "together with lines AB and DC" (Section IV.3);
-    # the Discussion names regions BB'C'C and CC'C'' by them.
-    (Mode.RO, False): ("AB", "DC"),
-    (Mode.SRO_MINUS, False): ("AB", "DC"),
-    (Mode.SRO_PRIME_MINUS, False): ("mu_star_star",),  # Fig 4.6: mu**(k) of (4.96)
-}
-
 
 # -- the whole map -------------------------------------------------------------------------
 
@@ -339,23 +115,6 @@ class MapData:
                           header=("mode", "share of the view", "polygons", ""))
 
 
-def _point(xy: np.ndarray) -> tuple[float, float]:
-    return (float(xy[0]), float(xy[1]))
-
-
-def _on_polyline(pt: tuple[float, float], pts: np.ndarray, scale: tuple[float, float],
-                 tol: float = 2e-3) -> bool:
-    q = np.asarray(pt) / scale
-    s = pts / np.asarray(scale)
-    a, b = s[:-1], s[1:]
-    d = b - a
-    L2 = np.einsum("ij,ij->i", d, d)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        t = np.clip(np.where(L2 > 0, np.einsum("ij,ij->i", q - a, d) / L2, 0.0), 0.0, 1.0)
-    proj = a + t[:, None] * d
-    return bool(np.min(np.hypot(*(proj - q).T)) <= tol)
-
-
 def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float | None = None,
                 modes: Iterable[Mode] | None = None, raw: bool = False, samples: int = DEFAULT_SAMPLES,
                 curves: bool = True, include: Iterable[tuple[float, float]] = (),
@@ -398,75 +157,19 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
     scale = (k_max, mu_max)
     polys = {m: [simplify(poly, tolerance, scale) for poly in lst] for m, lst in polys.items()}
 
-    curve_data: dict[str, CurveData] = {}
+    drawn_curves: dict[str, CurveData] = {}
     points: dict[str, NamedPoint] = {}
     ends: dict[str, tuple[float, float]] = {}
     if curves:
         n_curve = max(16, min(samples, 400))
-        for name, curve in map_curves(p).items():
-            sampled = _sampled(curve, p, k_max, mu_max, n_curve)
-            if sampled is None or len(sampled) < 2:
-                continue
-            pts = sampled
-            # the curved graphs (mu*, mu**) are probed on the curve, not on their chords
-            func = curve.func if name in ("mu_star", "mu_star_star") else None
-            flags = _drop_short_runs(
-                _boundary_flags(p, pts, curve.vertical, raw, modes_t, k_max, mu_max, func), pts, scale)
-            keep = (not raw) or flags.any() or name == "OA" or (
-                raw_mode is not None and name in _CONTEXT.get((raw_mode, p.above), ()))
-            if raw and raw_mode is None:
-                keep = True
-            if not raw and name == "dotted" and p.above:
-                keep = False  # (3.44) bounds nothing on the final map
-            if not keep:
-                continue
-            # simplify each boundary / construction run on its own, so runs keep their ends
-            cut = np.flatnonzero(np.diff(flags.astype(np.int8))) + 1
-            bounds = np.concatenate([[0], cut, [len(pts) - 1]])
-            pieces: list[np.ndarray] = []
-            piece_flags: list[np.ndarray] = []
-            for i, j in zip(bounds[:-1], bounds[1:]):
-                if j > i:
-                    sub = simplify(pts[i:j + 1], tolerance, scale)
-                    pieces.append(sub if not pieces else sub[1:])
-                    piece_flags.append(np.full(len(sub) - 1, flags[i]))
-            pts = np.concatenate(pieces)
-            flags = np.concatenate(piece_flags)
-            curve_data[name] = CurveData(name, curve.tex, pts, flags, curve.dotted,
-                                         f"{curve.equation} {curve.report}")
-        # OA (kept for context in raw figures) only where it leads to a drawn point A
-        oa = curve_data.get("OA")
-        if raw and oa is not None and not oa.is_boundary and math.isfinite(p.k_A):
-            others = [c for key, c in curve_data.items() if key != "OA"]
-            if not any(_on_polyline((p.k_A, p.k_A), c.points, scale) for c in others):
-                del curve_data["OA"]
-        # the report's points that are drawn: where two drawn curves meet, or a drawn
-        # curve meets an axis (D, E, F, G on the k axis, C on the mu axis)
-        for name, pt in named_points(p).items():
-            if not (0.0 <= pt.k <= k_max and 0.0 <= pt.mu <= mu_max):
-                continue
-            if name == "B'" and not (math.isfinite(p.k_A) and pt.k >= p.k_A):
-                continue  # Delta < 0: mu* from A never meets AB again (Section IV.3)
-            n_on = sum(_on_polyline((pt.k, pt.mu), c.points, scale) for c in curve_data.values())
-            on_axis = pt.k <= 1e-12 * k_max or pt.mu <= 1e-12 * mu_max
-            if name == "O" or n_on >= 2 or (on_axis and n_on >= 1):
-                points[name] = pt
-        # names at the far ends of lines (as in the report's sketches)
-        if p.above:
-            if "AB" in curve_data:
-                ends["B"] = _point(curve_data["AB"].points[-1])
-        else:
-            if "AB" in curve_data and len(curve_data["AB"].points):
-                ends["B"] = _point(curve_data["AB"].points[-1])
-            if "DC" in curve_data and len(curve_data["DC"].points):
-                ends["C"] = _point(curve_data["DC"].points[-1])
-            if "C'" in points and "mu_star" in curve_data:
-                ends["C''"] = _point(curve_data["mu_star"].points[-1])
+        drawn_curves = curve_data(p, k_max, mu_max, n_curve, raw, raw_mode, modes_t, tolerance)
+        points = drawn_points(p, drawn_curves, k_max, mu_max)
+        ends = line_ends(p, drawn_curves, points)
     if _log.isEnabledFor(logging.INFO):
         _log.info("map gamma=%g, k'=%g%s: view k <= %g, mu <= %g; %d polygons (%d vertices), "
                   "%d curves, %d points; %d samples, %.3f s", p.gamma, p.kprime,
                   " (raw regions)" if raw else "", k_max, mu_max, sum(len(v) for v in polys.values()),
-                  sum(len(poly) for v in polys.values() for poly in v), len(curve_data), len(points),
+                  sum(len(poly) for v in polys.values() for poly in v), len(drawn_curves), len(points),
                   samples, time.perf_counter() - t0)
-    return MapData(p, float(k_max), float(mu_max), modes_t, bool(raw), polys, curve_data,
+    return MapData(p, float(k_max), float(mu_max), modes_t, bool(raw), polys, drawn_curves,
                    points, ends)

@@ -98,52 +98,63 @@ def parse_values(text: str, name: str, check: Callable[[float], float],
     >>> parse_values("1, 2,3", "gamma", check_gamma)
     [1.0, 2.0, 3.0]
     """
-    syntax = "a list like 1,2,3 or a range start:stop:count like -1:1:41"
     s = text.strip()
     if not s:
-        raise ValueError(f"{name}: empty; give {syntax}")
-    if ":" in s:
-        parts = s.split(":")
-        if len(parts) != 3:
-            raise ValueError(f"{name}: {text!r} is not start:stop:count ({syntax})")
-        try:
-            start, stop = float(parts[0]), float(parts[1])
-        except ValueError:
-            raise ValueError(f"{name}: start and stop of {text!r} must be numbers ({syntax})") from None
-        try:
-            count = int(parts[2])
-        except ValueError:
-            raise ValueError(f"{name}: the count of {text!r} must be a whole number >= 1, "
-                             f"got {parts[2]!r}") from None
-        if count < 1:
-            raise ValueError(f"{name}: the count of {text!r} must be a whole number >= 1, got {count}")
-        if count > max_count:
-            raise ValueError(f"{name}: {count} values in {text!r} exceed the limit of {max_count}")
-        if count == 1 and start != stop:
-            raise ValueError(f"{name}: {text!r} asks for 1 value between two different ends; "
-                             f"use a count >= 2 or start == stop")
-        for v, what in ((start, "start"), (stop, "stop")):
-            try:
-                check(v)
-            except ValueError as exc:
-                raise ValueError(f"{what} of {text!r}: {exc}") from None
-        values = np.linspace(start, stop, count).tolist()
-    else:
-        values = []
-        for piece in s.split(","):
-            piece = piece.strip()
-            if not piece:
-                raise ValueError(f"{name}: empty item in {text!r} ({syntax})")
-            try:
-                values.append(float(piece))
-            except ValueError:
-                raise ValueError(f"{name}: {piece!r} is not a number ({syntax})") from None
-        if len(values) > max_count:
-            raise ValueError(f"{name}: {len(values)} values exceed the limit of {max_count}")
+        raise ValueError(f"{name}: empty; give {_SYNTAX}")
+    values = _parse_range(text, name, check, max_count) if ":" in s else _parse_list(text, name, max_count)
     out = []
     for v in values:
         out.append(check(v))
     return out
+
+
+_SYNTAX = "a list like 1,2,3 or a range start:stop:count like -1:1:41"
+
+
+def _parse_range(text: str, name: str, check: Callable[[float], float], max_count: int) -> list[float]:
+    """``start:stop:count``: ``count`` values from start to stop (both checked), both included."""
+    parts = text.strip().split(":")
+    if len(parts) != 3:
+        raise ValueError(f"{name}: {text!r} is not start:stop:count ({_SYNTAX})")
+    try:
+        start, stop = float(parts[0]), float(parts[1])
+    except ValueError:
+        raise ValueError(f"{name}: start and stop of {text!r} must be numbers ({_SYNTAX})") from None
+    try:
+        count = int(parts[2])
+    except ValueError:
+        raise ValueError(f"{name}: the count of {text!r} must be a whole number >= 1, "
+                         f"got {parts[2]!r}") from None
+    if count < 1:
+        raise ValueError(f"{name}: the count of {text!r} must be a whole number >= 1, got {count}")
+    if count > max_count:
+        raise ValueError(f"{name}: {count} values in {text!r} exceed the limit of {max_count}")
+    if count == 1 and start != stop:
+        raise ValueError(f"{name}: {text!r} asks for 1 value between two different ends; "
+                         f"use a count >= 2 or start == stop")
+    for v, what in ((start, "start"), (stop, "stop")):
+        try:
+            check(v)
+        except ValueError as exc:
+            raise ValueError(f"{what} of {text!r}: {exc}") from None
+    values: list[float] = np.linspace(start, stop, count).tolist()
+    return values
+
+
+def _parse_list(text: str, name: str, max_count: int) -> list[float]:
+    """``a,b,c``: the numbers of a comma-separated list."""
+    values = []
+    for piece in text.strip().split(","):
+        piece = piece.strip()
+        if not piece:
+            raise ValueError(f"{name}: empty item in {text!r} ({_SYNTAX})")
+        try:
+            values.append(float(piece))
+        except ValueError:
+            raise ValueError(f"{name}: {piece!r} is not a number ({_SYNTAX})") from None
+    if len(values) > max_count:
+        raise ValueError(f"{name}: {len(values)} values exceed the limit of {max_count}")
+    return values
 
 
 def _extent_of(p: Parameters, view: str = "designer") -> tuple[float, float]:

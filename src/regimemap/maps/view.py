@@ -163,6 +163,24 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
     p = params
     ref = _reference_scale(p)
     cap = _CAP * ref
+    ks, mus = _view_points(p, raw_mode, cap)
+    if p.loaded:
+        _add_loaded_points(p, cap, ref, ks, mus)
+    for k, mu in include:
+        if math.isfinite(k) and math.isfinite(mu):
+            ks.append(float(k))
+            mus.append(float(mu))
+    if not ks:
+        ks.append(ref)
+    if k_max is None:
+        k_max = nice_ceil((1.0 + _MARGIN) * max(max(ks), 1e-12))
+    if mu_max is None:
+        mu_max = _fit_mu_max(p, raw_mode, k_max, mus)
+    return float(k_max), float(mu_max)
+
+
+def _view_points(p: Parameters, raw_mode: Mode | None, cap: float) -> tuple[list[float], list[float]]:
+    """The k and the mu to show: A (and E), 1/gamma, then by the side of C (see :func:`auto_extent`)."""
     ks: list[float] = []
     mus: list[float] = [1.0 / p.gamma]
     kA = p.k_A
@@ -175,50 +193,61 @@ def auto_extent(params: Parameters, raw_mode: Mode | None = None, *,
         ks = [2.2 * kA if math.isfinite(kA) else 2.0 / p.gamma]
         mus = [1.6 * kA if math.isfinite(kA) else 2.0 / p.gamma]
     elif p.above:
-        if p.kprime > 0.0 and p.k_D <= cap:
-            ks.append(p.k_D)
-        G = p.b_over_abs_a
-        if math.isfinite(G) and G <= cap:
-            ks.append(G)
-            if raw_mode is None or Mode(raw_mode) is Mode.SRO_PLUS:
-                ks.append(min(3.0 * G, cap))
+        ks += _points_above(p, raw_mode, cap)
     else:
-        if math.isfinite(p.k_D) and p.k_D <= cap:
-            ks += [p.k_D, 2.0 * p.k_D]
-        kB = p.k_Bprime
-        if math.isfinite(kB) and (not math.isfinite(kA) or kB >= kA) and kB <= cap:
-            ks.append(kB)
-            mus.append(p.mu_Bprime)
-        if raw_mode is not None and Mode(raw_mode) in (Mode.RO, Mode.SRO_MINUS):
-            # the raw regions reach below DC beyond C' (the report's sector CC'C'')
-            cp = named_points(p).get("C'")
-            if cp is not None and cp.k <= max(cap, 2.5 * max(ks, default=0.0)):
-                ks.append(cp.k)
-                mus.append(cp.mu)
-    if p.loaded:
-        # the loaded map's characteristic points, lift-off's start L among them
-        for pt in named_points(p).values():
-            if math.isfinite(pt.k) and math.isfinite(pt.mu) and 0.0 < pt.k <= cap:
-                ks.append(pt.k)
-                if pt.mu <= _CAP * max(1.0 / p.gamma, p.mu_Bprime):
-                    mus.append(pt.mu)
-        if math.isfinite(p.k_L):  # lift-off is shown wherever it starts
-            ks.append(1.3 * p.k_L if p.k_L > 0.0 else 0.3 * ref)
-    for k, mu in include:
-        if math.isfinite(k) and math.isfinite(mu):
-            ks.append(float(k))
-            mus.append(float(mu))
-    if not ks:
-        ks.append(ref)
-    if k_max is None:
-        k_max = nice_ceil((1.0 + _MARGIN) * max(max(ks), 1e-12))
-    if mu_max is None:
-        if raw_mode is None or Mode(raw_mode) is not Mode.RE:
-            on_view = _mu_on_view(p, k_max)
-            if p.loaded:  # mu* of a loaded block may have a pole in view: show its rise, not all of it
-                on_view = min(on_view, _POLE_CAP * max(mus))
-            mus.append(on_view)
-        if not math.isfinite(kA):  # rest up to mu = k everywhere: show OA to mid height
-            mus.append(0.5 * k_max)
-        mu_max = nice_ceil((1.0 + _MARGIN) * max(max(mus), 1e-12))
-    return float(k_max), float(mu_max)
+        _add_points_below(p, raw_mode, cap, ks, mus)
+    return ks, mus
+
+
+def _points_above(p: Parameters, raw_mode: Mode | None, cap: float) -> list[float]:
+    """Above C: D, and G = b/|a| with some of the range beyond it (cases 2/3, SRO+)."""
+    ks: list[float] = []
+    if p.kprime > 0.0 and p.k_D <= cap:
+        ks.append(p.k_D)
+    G = p.b_over_abs_a
+    if math.isfinite(G) and G <= cap:
+        ks.append(G)
+        if raw_mode is None or Mode(raw_mode) is Mode.SRO_PLUS:
+            ks.append(min(3.0 * G, cap))
+    return ks
+
+
+def _add_points_below(p: Parameters, raw_mode: Mode | None, cap: float, ks: list[float],
+                      mus: list[float]) -> None:
+    """Below C: D with room right of it (SRO'-), B' with mu_B', and C' for the raw RO, SRO-."""
+    kA = p.k_A
+    if math.isfinite(p.k_D) and p.k_D <= cap:
+        ks += [p.k_D, 2.0 * p.k_D]
+    kB = p.k_Bprime
+    if math.isfinite(kB) and (not math.isfinite(kA) or kB >= kA) and kB <= cap:
+        ks.append(kB)
+        mus.append(p.mu_Bprime)
+    if raw_mode is not None and Mode(raw_mode) in (Mode.RO, Mode.SRO_MINUS):
+        # the raw regions reach below DC beyond C' (the report's sector CC'C'')
+        cp = named_points(p).get("C'")
+        if cp is not None and cp.k <= max(cap, 2.5 * max(ks, default=0.0)):
+            ks.append(cp.k)
+            mus.append(cp.mu)
+
+
+def _add_loaded_points(p: Parameters, cap: float, ref: float, ks: list[float], mus: list[float]) -> None:
+    """The loaded map's characteristic points, lift-off's start L among them."""
+    for pt in named_points(p).values():
+        if math.isfinite(pt.k) and math.isfinite(pt.mu) and 0.0 < pt.k <= cap:
+            ks.append(pt.k)
+            if pt.mu <= _CAP * max(1.0 / p.gamma, p.mu_Bprime):
+                mus.append(pt.mu)
+    if math.isfinite(p.k_L):  # lift-off is shown wherever it starts
+        ks.append(1.3 * p.k_L if p.k_L > 0.0 else 0.3 * ref)
+
+
+def _fit_mu_max(p: Parameters, raw_mode: Mode | None, k_max: float, mus: list[float]) -> float:
+    """mu_max that shows ``mus`` and mu* over [0, k_max] (OA to mid height where A is at infinity)."""
+    if raw_mode is None or Mode(raw_mode) is not Mode.RE:
+        on_view = _mu_on_view(p, k_max)
+        if p.loaded:  # mu* of a loaded block may have a pole in view: show its rise, not all of it
+            on_view = min(on_view, _POLE_CAP * max(mus))
+        mus.append(on_view)
+    if not math.isfinite(p.k_A):  # rest up to mu = k everywhere: show OA to mid height
+        mus.append(0.5 * k_max)
+    return nice_ceil((1.0 + _MARGIN) * max(max(mus), 1e-12))

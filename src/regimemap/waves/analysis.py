@@ -105,7 +105,9 @@ class CaissonAnalysis:
                           header=("", "value", ""))
 
 
-def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope: npt.ArrayLike,
+# Goda's design procedure takes one keyword-only argument per input of the method (site, wave,
+# section, friction, options), named as in the design file and Goda (2000) (PLR0913 accepted here).
+def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope: npt.ArrayLike,  # noqa: PLR0913
                     period: npt.ArrayLike, width: npt.ArrayLike, base_depth: npt.ArrayLike,
                     crest: npt.ArrayLike, friction: npt.ArrayLike,
                     H0: npt.ArrayLike | None = None, H13: npt.ArrayLike | None = None,

@@ -159,7 +159,9 @@ class GodaPressures:
     hc_star: FloatArray
 
 
-def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.ArrayLike,
+# Goda's (2000) method takes one keyword-only argument per quantity of its formulas (Hmax, T,
+# h, hb, d, h', hc, BM, beta ...), named as in the book (PLR0913 accepted here).
+def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.ArrayLike,  # noqa: PLR0913
                    hb: npt.ArrayLike, armour_depth: npt.ArrayLike, base_depth: npt.ArrayLike,
                    crest: npt.ArrayLike, berm_width: npt.ArrayLike = 0.0,
                    angle_deg: npt.ArrayLike = 0.0, rotation_deg: npt.ArrayLike = 0.0,
