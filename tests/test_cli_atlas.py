@@ -129,3 +129,45 @@ def test_animate_needs_gif(tmp_path):
     assert r.exit_code == 2
     assert "--output" in r.output and ".gif" in r.output
     assert list(tmp_path.iterdir()) == []
+
+
+# -- k' up to the crest (issue 20, item 8): the rule of `regimemap plot` ---------------------------
+
+@pytest.mark.parametrize("cmd,args,text", [
+    ("atlas", ("--gamma", "1", "--kprime", "1.2"), "kprime must be a number in [-1, 1], got 1.2"),
+    ("atlas", ("--gamma", "1", "--kprime", "1.2", "--crest", "1.1"), "[-1, 1.1], got 1.2"),
+    ("atlas", ("--gamma", "1", "--kprime", "1.2", "--crest", "1.1,1.5"), "[-1, 1.1], got 1.2"),
+    ("atlas", ("--gamma", "1", "--kprime", "2000"), "[-1, 1] (up to --crest), got 2000"),
+    ("animate", ("--gamma", "3", "--kprime", "0.5:1.5:3"), "[-1, 1], got 1.5"),
+    ("animate", ("--gamma", "3", "--kprime", "0.5:1.5:3", "--crest", "1.2"), "[-1, 1.2], got 1.5"),
+])
+def test_kprime_above_its_crest_is_a_usage_error(tmp_path, cmd, args, text):
+    out = tmp_path / ("a.png" if cmd == "atlas" else "a.gif")
+    r = run(cmd, *args, "-o", str(out))
+    assert r.exit_code == 2, r.output
+    assert "'--kprime'" in r.output and text in r.output and "Traceback" not in r.output
+    assert not out.exists()
+
+
+@pytest.mark.render
+def test_atlas_and_animate_take_kprime_up_to_the_crest(tmp_path):
+    out = tmp_path / "a.png"
+    r = run("atlas", "--gamma", "1,3", "--kprime", "0.4,1.2,1.5", "--crest", "1.5", "--dpi", "30",
+            "-o", str(out))
+    assert r.exit_code == 0, r.output
+    assert out.read_bytes()[:4] == b"\x89PNG"
+    gif = tmp_path / "a.gif"
+    r = run("animate", "--gamma", "3", "--kprime", "1:1.5:3", "--crest", "1.5", "--dpi", "30", "-o", str(gif))
+    assert r.exit_code == 0, r.output
+    with Image.open(gif) as im:
+        assert im.n_frames == 3
+
+
+def test_the_library_takes_kprime_up_to_the_crest():
+    from regimemap.drawing.atlas import checked_values
+
+    assert checked_values([3], [0.5, 1.5], "kprime", {"crest": 1.5}) == ([3.0], [0.5, 1.5])
+    with pytest.raises(ValueError, match=r"kprime must be a number in \[-1, 1\], got 1.5"):
+        checked_values([3], [1.5])
+    with pytest.raises(ValueError, match=r"\[-1, 1.2\]"):
+        checked_values([3], [1.5], fixed={"crest": 1.2})

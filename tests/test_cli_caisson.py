@@ -190,9 +190,10 @@ def test_sheet_has_its_panels() -> None:
     assert "as the wave grows" in texts["path"]
     for number in ("97.64", "940.6", "1.160", "2.559", "0.2776", "RE", "+12.2% \u2192 SL"):
         assert number in texts["table"], number
-    # the map: filled regions and the path (a line through the design point at mu)
+    # the map: filled regions (the map's polygons, tests/test_sheet_map.py) and the path (a
+    # line through the design point at mu)
     ax = axes["map"]
-    assert ax.collections
+    assert ax.patches
     path_lines = [ln for ln in ax.lines if len(ln.get_xdata()) == report.path.factors.size]
     assert path_lines and set(path_lines[0].get_ydata()) == {report.mu}
     assert ax.get_legend() is not None

@@ -119,7 +119,7 @@ USAGE_ERRORS = [
     ("plot", G + ["-o", "map.bmp"], r"unknown file suffix \.bmp"),
     ("plot", G + ["-o", "map.svg", "--format", "pdf"], r"does not match --format"),
     ("plot", G + ["--modes", "XX"], r"'--modes': unknown mode 'XX'"),
-    ("plot", G + ["--modes", "RO'"], r"'--modes': mode RO' never appears on a map"),
+    ("plot", G + ["--modes", "RO'"], r"'--modes': mode RO' appears only on the map of a loaded block"),
     ("plot", G + ["--point", "a,b"], r"'--point': point 'a,b': k must be"),
     ("plot", G + ["--point", "-1,2"], r"'--point': .*got '-1'"),
     ("plot", G + ["--point", "1"], r"'--point': point '1' must be K,MU"),

@@ -403,3 +403,35 @@ def test_python_dash_m_regimemap(tmp_path):
                           "--kprime", "0"], capture_output=True, text=True, cwd=tmp_path)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr and "--gamma" in bad.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+# -- --modes: every mode the map can show (issue 20, item 8) ---------------------------------------
+
+#: A loaded block whose map shows rock about O' (uplift near O) and lift-off further right.
+_RO_PRIME = ["--gamma", "0.5", "--kprime", "-0.5", "--uplift-ratio", "4", "--uplift-arm", "-1"]
+
+
+@pytest.mark.render
+def test_plot_modes_of_a_loaded_map(runner, tmp_path):
+    out = tmp_path / "m.svg"
+    _ok(runner.invoke(cli, ["plot", *_RO_PRIME, "--modes", "RO',lo", "-o", str(out)]))
+    text = out.read_text()
+    assert "<!-- rock about O' -->" in text  # the key names the mode shaded
+    assert "<!-- Modes $RO'$, $LO$, block with loads -->" in text
+    _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "--uplift-ratio", "1",
+                            "--modes", "LO", "--raw", "-o", str(tmp_path / "lo.png"), "--dpi", "40"]))
+
+
+def test_plot_modes_the_map_cannot_show(runner, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    # RO' and LO need loads: the message names the modes this map can show
+    r = runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "--modes", "RE,LO"])
+    _usage(r, "'--modes'", "mode LO appears only on the map of a loaded block",
+           "this map's modes: RE, SL, RO, SRO-, SRO+, SRO'-")
+    _usage(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "--crest", "1.5",
+                               "--modes", "RO'"]), "'--modes'", "mode RO' appears only")
+    # SRO'+ is on no map; an unknown label lists all
+    _usage(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "--uplift-ratio", "1",
+                               "--modes", "SRO'+"]), "'--modes'", "never appears on a map",
+           "RE, SL, RO, SRO-, SRO+, SRO'- (and RO', LO on the map of a loaded block)")
+    assert list(tmp_path.iterdir()) == []  # nothing written

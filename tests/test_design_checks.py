@@ -87,7 +87,7 @@ def test_heel_pressure_over_5_mpa_is_named():
     assert any(m.startswith("heel pressure") and "over 5 MPa" in m for m in found)
 
 
-@pytest.mark.parametrize("command", [["caisson"], ["lifetime", "--trials", "20"]])
+@pytest.mark.parametrize("command", [["caisson"], ["lifetime", "--trials", "20"], ["simulate", "--design"]])
 def test_warning_then_strict_error(run_cli, tmp_path, command):
     path = _write(tmp_path, EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 2312000"))
     r = run_cli([*command, path])
@@ -98,3 +98,19 @@ def test_warning_then_strict_error(run_cli, tmp_path, command):
     assert "Traceback" not in strict.stderr
     clean = run_cli([*command, _write(tmp_path, EXAMPLE, "ok.toml"), "--strict"])
     assert clean.code == 0 and "warning:" not in clean.stderr
+
+
+def test_simulate_design_names_the_option_and_the_slip(run_cli, tmp_path):
+    """The depth in centimetres: a warning naming the key and the slip; --strict: an error on --design."""
+    path = _write(tmp_path, EXAMPLE.replace("depth = 10.1", "depth = 1010"), "deep.toml")
+    r = run_cli(["simulate", "--design", path])
+    assert "warning:" in r.stderr and "[site] depth = 1010" in r.stderr and "centimetres for metres" in r.stderr
+    strict = run_cli(["simulate", "--design", path, "--strict"])
+    assert strict.code == 2 and "'--design'" in strict.stderr and "[site] depth = 1010" in strict.stderr
+    assert "Traceback" not in strict.stderr
+
+
+def test_simulate_strict_needs_a_design_file(run_cli):
+    r = run_cli(["simulate", "--gamma", "3", "--half-width", "0.2", "--mu", "5", "--pulse", "half-sine",
+                 "--k-peak", "0.5", "--duration", "0.5", "--strict"])
+    assert r.code == 2 and "--strict checks a design file" in r.stderr

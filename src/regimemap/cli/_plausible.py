@@ -22,8 +22,13 @@ STRICT_HELP = ("Refuse a design file whose values are valid but implausible for 
                "without it they are warnings on standard error.")
 
 
-def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bool, source: str) -> None:
-    """Warn about (or, with ``strict``, refuse) the implausible values of ``design``."""
+def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bool, source: str,
+                    param_hint: str = "'DESIGN.toml'") -> None:
+    """Warn about (or, with ``strict``, refuse) the implausible values of ``design``.
+
+    ``param_hint`` names the design file's argument or option in the usage error of
+    ``strict`` (``'DESIGN.toml'``, or ``'--design'`` for ``regimemap simulate``).
+    """
     from ..io.plausibility import implausible_values
 
     found = implausible_values(design, analysis)
@@ -32,6 +37,6 @@ def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bo
     if strict:
         more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
         raise click.BadParameter(f"{source}: {found[0]}{more}; --strict refuses implausible values",
-                                 param_hint="'DESIGN.toml'")
+                                 param_hint=param_hint)
     for item in found:
         click.echo(f"regimemap: warning: {source}: {item}", err=True)

@@ -12,6 +12,7 @@ from ..drawing.atlas import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 from ._common import (
     LOAD_OPTIONS,
     ParamType,
+    check_kprime_crest,
     gamma_option,
     import_matplotlib,
     load_options,
@@ -55,9 +56,27 @@ def _gamma_check(v: float) -> float:
 
 
 def _kprime_check(v: float) -> float:
-    from ..mechanics.validation import check_kprime
+    """One k' of a list, before the crest is known: in [-1, 1], or up to the largest crest.
 
-    return check_kprime(v)
+    :func:`_up_to_crest` then checks it against the crest given (1 by default), as
+    ``regimemap plot`` checks its ``--kprime`` (:func:`regimemap.cli._common.check_kprime_crest`).
+    """
+    from ..mechanics.validation import LOAD_LIMITS, check_kprime
+
+    try:
+        return check_kprime(v, LOAD_LIMITS["crest"][1])
+    except ValueError:
+        raise ValueError(f"kprime must be a number in [-1, 1] (up to --crest), got {v!r}") from None
+
+
+def _up_to_crest(kprimes: list[float], loads: dict[str, list[float]]) -> list[float]:
+    """``--kprime`` checked against [-1, crest] (the lowest crest when --crest sweeps).
+
+    The rule of ``regimemap plot`` (:func:`regimemap.cli._common.check_kprime_crest`): a
+    usage error naming ``--kprime`` and the range.
+    """
+    crest = min(loads.get("crest", [1.0]))
+    return [check_kprime_crest(kp, crest) for kp in kprimes]
 
 
 def _sweep(kprimes: list[float], loads: dict[str, list[float]], axis: str
@@ -107,7 +126,8 @@ def _figure_output(path: str) -> str:
               help="Aspect ratios H/B (> 0), one row each: 1,2,3 or start:stop:count.")
 @click.option("--kprime", "kprimes", required=True, metavar="LIST",
               type=_Values("kprime", _kprime_check, MAX_PANELS),
-              help="Force heights h/H in [-1, 1], one column each: -0.6,0,0.4 or -1:1:5.")
+              help="Force heights h/H in [-1, 1] (up to --crest), one column each: -0.6,0,0.4 "
+                   "or -1:1:5.")
 @click.option("--share", type=click.Choice(["all", "row", "none"]), default="all",
               show_default=True,
               help="Axes shared by the whole figure, within each row, or not at all.")
@@ -152,6 +172,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
       regimemap atlas --gamma 0.5:3:6 --kprime -0.4 --mu-max 3 -o slender.pdf
       regimemap atlas --gamma 0.7 --kprime -0.02 --uplift-ratio 0.52 --buoyancy 0,0.3,0.6 -o b.png
     """
+    kprimes = _up_to_crest(kprimes, loads)
     sweep, values, fixed = _sweep(kprimes, loads, "columns")
     n = len(gammas) * len(values)
     if n > MAX_PANELS:
@@ -189,7 +210,8 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
 @gamma_option()
 @click.option("--kprime", "kprimes", required=True, metavar="RANGE",
               type=_Values("kprime", _kprime_check, MAX_FRAMES),
-              help="k' of the frames: start:stop:count (e.g. -1:1:41) or a list -1,-0.5,0.")
+              help="k' of the frames: start:stop:count (e.g. -1:1:41) or a list -1,-0.5,0; "
+                   "in [-1, 1] (up to --crest).")
 @click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
               show_default=True,
               help="The view of the frames: mu up to 1.2 (designer) or every characteristic "
@@ -232,6 +254,7 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
         raise click.BadParameter(f"the animation is a GIF: give a file ending in .gif, got {output!r}",
                                  param_hint="'-o' / '--output'")
     output_path(output, "--output")
+    kprimes = _up_to_crest(kprimes, loads)
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
     blocks = _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()

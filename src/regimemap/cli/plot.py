@@ -83,17 +83,30 @@ class _FormatList(ParamType):
         return tuple(dict.fromkeys(items))
 
 
+def _valid_modes(loaded: bool | None = None) -> str:
+    """The modes a map can show, as the messages list them (``loaded`` None: any map)."""
+    from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES
+
+    plain = ", ".join(m.label for m in MAP_MODES)
+    extra = ", ".join(m.label for m in LOADED_MAP_MODES if m not in MAP_MODES)
+    if loaded is None:
+        return f"{plain} (and {extra} on the map of a loaded block)"
+    return f"{plain}, {extra}" if loaded else plain
+
+
 class _Modes(ParamType):
+    """``--modes``: labels of the modes that some map shows (checked against the block later)."""
+
     name = "MODES"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
                 ) -> tuple[Any, ...]:
-        from ..mechanics.modes import MAP_MODES, Mode
+        from ..mechanics.modes import LOADED_MAP_MODES, Mode
 
         if isinstance(value, tuple):
             return value
         out = []
-        valid = ", ".join(m.label for m in MAP_MODES)
+        valid = _valid_modes()
         for item in str(value).split(","):
             if not item.strip():
                 continue
@@ -101,13 +114,35 @@ class _Modes(ParamType):
                 mode = Mode.from_label(item)
             except ValueError:
                 self.fail(f"unknown mode {item.strip()!r}; valid modes: {valid}", param, ctx)
-            if mode not in MAP_MODES:
+            if mode not in LOADED_MAP_MODES:
                 self.fail(f"mode {mode.label} never appears on a map; valid modes: {valid}",
                           param, ctx)
             out.append(mode)
         if not out:
             self.fail(f"no mode given; valid modes: {valid}", param, ctx)
         return tuple(dict.fromkeys(out))
+
+
+def check_modes_on_map(modes: tuple[Any, ...] | None, loaded: bool) -> tuple[Any, ...] | None:
+    """``--modes`` checked against the map: RO' and LO only on the map of a loaded block.
+
+    The map of a loaded block (``--buoyancy``, ``--uplift``, ``--uplift-ratio``,
+    ``--gyration``) shows :data:`~regimemap.mechanics.modes.LOADED_MAP_MODES`, the
+    report's block :data:`~regimemap.mechanics.modes.MAP_MODES`; a mode the map cannot
+    show is a usage error (exit 2) naming the modes it can.
+    """
+    from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES
+
+    if modes is None:
+        return None
+    shown = LOADED_MAP_MODES if loaded else MAP_MODES
+    bad = [m for m in modes if m not in shown]
+    if bad:
+        raise click.BadParameter(
+            f"mode {bad[0].label} appears only on the map of a loaded block (give --buoyancy, "
+            f"--uplift, --uplift-ratio or --gyration); this map's modes: {_valid_modes(loaded)}",
+            param_hint="'--modes'")
+    return modes
 
 
 class _PointSpec(ParamType):
@@ -291,7 +326,8 @@ title states the loads, and the default file name carries them.
 @click.option("--no-legend", is_flag=True, help="Do not draw the legend.")
 @click.option("--modes", type=_Modes(), default=None,
               help="Comma-separated modes to shade, e.g. RE,SL,RO (default: all). "
-                   "Valid: RE, SL, RO, SRO-, SRO+, SRO'-.")
+                   "Valid: RE, SL, RO, SRO-, SRO+, SRO'-, and on the map of a loaded block "
+                   "RO' and LO.")
 @click.option("--raw", is_flag=True,
               help="Shade each mode's region as the report derives it, before Section 4.7 "
                    "resolves overlaps (regions may overlap; use with --modes).")
@@ -314,6 +350,7 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
 
     path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
     params = Parameters(gamma, kprime, **loads)
+    modes = check_modes_on_map(modes, params.loaded)
     points = _read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
     from ..drawing.figure import fit_figure, map_figure

@@ -22,6 +22,7 @@ from ._dynamics_options import (
     min_rotation_option,
     option_errors,
 )
+from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -42,6 +43,7 @@ __all__ = ["simulate_cmd"]
                    "(Shimosako & Takahashi 1999), the uplift U = nu P in phase.  The file gives "
                    "--gamma, --half-width, --kprime, --mu, the loads, --gyration and the pulse; "
                    "giving any of them too is an error.  No added mass of water.")
+@click.option("--strict", is_flag=True, help=STRICT_HELP + " (With --design.)")
 @min_rotation_option()
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
@@ -54,7 +56,7 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
                  pulse: str | None, k_peak: float | None, duration: float | None,
                  restitution: float | None, buoyancy: float, uplift: float, uplift_ratio: float,
                  uplift_arm: float, gyration: float | None, pulse_file: str | None, design: str | None,
-                 min_rotation: float, as_json: bool, output: str | None, plot: str | None,
+                 strict: bool, min_rotation: float, as_json: bool, output: str | None, plot: str | None,
                  animate: str | None) -> None:
     """Simulate one block under one force pulse, from rest, past initiation.
 
@@ -87,7 +89,10 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
     tau0 = (0.5 - Hmax/(8 h)) T1/3, with the uplift in phase -- the force
     history of the lifetime model.  The block is rigid: no added mass of
     water (the lifetime model has it).  A line "design ..." says where the
-    numbers came from; --json adds them as "design".
+    numbers came from; --json adds them as "design".  Values that are valid
+    but implausible for a breakwater (likely unit slips: a depth over 100 m,
+    a section heavier than 30 kN/m^3 ...) are warnings on stderr, as
+    `regimemap caisson` gives them; --strict makes them an error (exit 2).
 
     \b
     Examples:
@@ -107,8 +112,10 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
 
     block: Block | None = None
     numbers: dict[str, float] | None = None
+    if strict and design is None:
+        raise click.UsageError("--strict checks a design file: give one with --design FILE.toml")
     if design is not None:  # -- the block and the pulse from a design file -------------------
-        block, pls, values, numbers = _design_run(design)
+        block, pls, values, numbers = _design_run(design, strict)
         gamma, half_width, kprime, mu = values["gamma"], values["half_width"], values["kprime"], values["mu"]
         pulse, k_peak, duration = values["pulse"], values["k_peak"], values["duration"]
         buoyancy, uplift, uplift_ratio = values["buoyancy"], values["uplift"], values["uplift_ratio"]
@@ -264,11 +271,14 @@ def _run_title(inputs: dict[str, Any], T: float) -> str:
     return f"{what}; γ = {inputs['gamma']:g}, B = {inputs['half_width']:g} m, μ = {mu:g}{kp}"
 
 
-def _design_run(design: str) -> tuple[Block, Pulse, dict[str, Any], dict[str, float]]:
+def _design_run(design: str, strict: bool = False
+                ) -> tuple[Block, Pulse, dict[str, Any], dict[str, float]]:
     """The block, the pulse, the inputs and the numbers of a design file's design wave (--design).
 
     Options that the file gives may not be given too; a bad file is a usage error naming the
-    file and the key, as ``regimemap caisson`` reports it.
+    file and the key, as ``regimemap caisson`` reports it.  Implausible values (likely unit
+    slips) are warnings on standard error, or with ``strict`` a usage error, as ``regimemap
+    caisson`` gives them (:func:`regimemap.cli._plausible.check_plausible`).
     """
     from click.core import ParameterSource
 
@@ -288,6 +298,11 @@ def _design_run(design: str) -> tuple[Block, Pulse, dict[str, Any], dict[str, fl
         raise click.BadParameter(str(exc), param_hint="'--design'") from None
     try:
         a = d.analyse()
+    except ValueError as exc:
+        check_plausible(d, None, strict, design, "'--design'")  # a unit slip may be why
+        raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
+    check_plausible(d, a, strict, design, "'--design'")
+    try:
         block, pulse = design_wave_run(a, d.site.depth, d.wave.period)
     except ValueError as exc:
         raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None

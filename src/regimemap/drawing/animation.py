@@ -21,8 +21,8 @@ from ..maps.describe import loads_text
 from ..maps.sweeps import sweep_extent, sweep_params
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
-from ..mechanics.validation import check_gamma, check_kprime
-from .atlas import SAMPLES, key_modes, sweep_text
+from ..mechanics.validation import check_gamma
+from .atlas import SAMPLES, checked_values, key_modes, sweep_text
 from .mapplot import MapStyle, draw_map
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -206,8 +206,8 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     gamma : float
         Aspect ratio H/B.
     kprimes : sequence of float
-        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1]), or the
-        value of ``sweep`` in each frame.
+        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1], or up to
+        ``fixed["crest"]``), or the value of ``sweep`` in each frame.
     k_max, mu_max : float, optional
         The view of every frame (default :func:`regimemap.maps.sweeps.sweep_extent`; the axes are
         the same in every frame).
@@ -240,8 +240,7 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     from .style import style_context
 
     _check_frames(gamma, kprimes, fps, sweep, fixed)
-    g = check_gamma(gamma)
-    kps = [check_kprime(k) for k in kprimes] if sweep == "kprime" else [float(v) for v in kprimes]
+    (g,), kps = checked_values([gamma], kprimes, sweep, fixed)  # k' up to the crest, if given
     blocks = [sweep_params(g, sweep, v, fixed) for v in kps]
     if k_max is None or mu_max is None:
         ek, em = sweep_extent(g, kps, sweep=sweep, fixed=fixed)

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -29,6 +29,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
     from ..maps.mapdata import MapData
+    from .artists import MapArtists
     from .mapplot import MapStyle
 
 __all__ = [
@@ -38,6 +39,7 @@ __all__ = [
     "PANEL_SIZE",
     "SAMPLES",
     "atlas_figure",
+    "checked_values",
     "key_modes",
     "sweep_text",
     "write_atlas",
@@ -111,20 +113,143 @@ def key_modes(datas: Sequence[MapData]) -> tuple[Mode, ...]:
     return tuple(m for m in LOADED_MAP_MODES if m in shown)
 
 
+def checked_values(gammas: Sequence[float], values: Sequence[float], sweep: str = "kprime",
+                   fixed: dict[str, Any] | None = None) -> tuple[list[float], list[float]]:
+    """The rows' gamma and the columns' (or frames') values, checked; ValueError naming the range.
+
+    A k' may reach the crest when one is given (``fixed["crest"]``; 1 by default):
+    :func:`regimemap.mechanics.validation.check_kprime` with the crest, the rule of every
+    map.  A swept load is checked with its block (:func:`regimemap.maps.sweeps.sweep_params`).
+    """
+    gs = [check_gamma(g) for g in gammas]
+    if sweep == "kprime":
+        return gs, [check_kprime(k, (fixed or {}).get("crest", 1.0)) for k in values]
+    return gs, [float(v) for v in values]
+
+
+@dataclass(frozen=True)
+class _Frame:
+    """Where the panels of an atlas go (inches): figure size, margins, panel size and gaps."""
+
+    fw: float
+    fh: float
+    left: float
+    bottom: float
+    pw: float
+    ph: float
+    wspace: float
+    hspace: float
+    nr: int
+
+    def rect(self, i: int, j: int) -> tuple[float, float, float, float]:
+        """The axes rectangle (figure fractions) of the panel in row ``i``, column ``j``."""
+        x0 = (self.left + j * (self.pw + self.wspace)) / self.fw
+        y0 = (self.bottom + (self.nr - 1 - i) * (self.ph + self.hspace)) / self.fh
+        return (x0, y0, self.pw / self.fw, self.ph / self.fh)
+
+
+def _frame(nr: int, nc: int, panel_size: tuple[float, float], share: str, tidy: bool,
+           title_lines: int, key_rows: int) -> _Frame:
+    """The layout: the key below the panels (0.1 in from the edge, ~0.2 in a row, then the
+    bottom panels' tick labels and k), the title's lines above (~0.19 in each, below 0.15 in
+    of margin, above the panels' titles) and room between panels for the tick labels and mu
+    of the panel on the right."""
+    top = max(0.7, 0.45 + 0.19 * title_lines)
+    left, right, bottom = 0.62, 0.25 if tidy else 0.2, 0.62 + 0.2 * key_rows
+    wspace = 0.3 if share == "all" else (0.72 if tidy else 0.5)
+    hspace = 0.42 if share == "all" else 0.6
+    pw, ph = panel_size
+    fw = left + right + nc * pw + (nc - 1) * wspace
+    fh = top + bottom + nr * ph + (nr - 1) * hspace
+    return _Frame(fw, fh, left, bottom, pw, ph, wspace, hspace, nr)
+
+
+def _key_of(datas: Sequence[MapData], loaded: bool, dotted: bool) -> list[Any]:
+    """The figure's key: the modes any panel shows (with loads), else the six, and the lines."""
+    from .key import key_handles
+
+    if loaded:  # the key lists the modes the panels show (lift-off ...)
+        labels = [d.curves["dotted"].label for d in datas if "dotted" in d.curves]
+        return key_handles(key_modes(datas),
+                           dotted_label=("dotted line " + labels[0]) if labels else None)
+    return _legend_handles(MAP_MODES, dotted=dotted)
+
+
+def _layout_options(layout: dict[str, Any]) -> tuple[tuple[float, float], Any]:
+    """``panel_size`` and ``extents`` of :func:`atlas_figure`'s ``**layout`` (TypeError for others)."""
+    unknown = sorted(set(layout) - {"panel_size", "extents"})
+    if unknown:
+        raise TypeError(f"atlas_figure() got unexpected keyword argument(s) {', '.join(unknown)}; "
+                        "its layout keywords are panel_size and extents")
+    pw, ph = layout.get("panel_size", PANEL_SIZE)
+    return (float(pw), float(ph)), layout.get("extents")
+
+
+def _draw_panel(ax: Axes, data: MapData, style: MapStyle, title: str, where: tuple[int, int, int],
+                share: str) -> MapArtists:
+    """One panel: the map without its key and curve names, small texts, inner tick labels off.
+
+    ``where`` is (row, column, rows).  The curves' names (mu*(k), mu = k|k'| ...) crowd a
+    small panel and spill into the next one: the legend and the full map name them.
+    """
+    from .mapplot import draw_map
+
+    i, j, nr = where
+    art = draw_map(ax, data, replace(style, legend=False, title=title))
+    for t in art.curve_labels.values():
+        t.remove()
+    art.curve_labels.clear()
+    for t in set(art.off_view.values()):
+        t.set_fontsize(6.5)
+    ax.title.set_fontsize(9)
+    ax.xaxis.label.set_fontsize(10)
+    ax.yaxis.label.set_fontsize(10)
+    ax.tick_params(labelsize=7.5)
+    inner_x = share == "all" and i < nr - 1
+    inner_y = (share == "all" or share == "row") and j > 0
+    if inner_x:
+        ax.tick_params(labelbottom=False)
+        ax.set_xlabel("")
+    if inner_y:
+        ax.tick_params(labelleft=False)
+        ax.set_ylabel("")
+    ax.set_gid(f"panel-{i}-{j}")
+    return art
+
+
+def _draw_panels(fig: Figure, frame: _Frame, datas: Sequence[Sequence[MapData]],
+                 titles: Sequence[Sequence[str]], style: MapStyle, share: str) -> list[MapArtists]:
+    """Every panel, in row-major order, on axes shared as ``share`` says."""
+    shared: Axes | None = None
+    row_first: Axes | None = None
+    arts = []
+    for i, row in enumerate(datas):
+        for j, data in enumerate(row):
+            kw: dict[str, Any] = {}
+            if share == "all" and shared is not None:
+                kw = {"sharex": shared, "sharey": shared}
+            elif share == "row" and j > 0 and row_first is not None:
+                kw = {"sharex": row_first, "sharey": row_first}
+            ax = fig.add_axes(frame.rect(i, j), **kw)
+            shared = ax if shared is None else shared
+            row_first = ax if j == 0 else row_first
+            arts.append(_draw_panel(ax, data, style, titles[i][j], (i, j, frame.nr), share))
+    return arts
+
+
 def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
                  k_max: float | None = None, mu_max: float | None = None,
-                 panel_size: tuple[float, float] = PANEL_SIZE, samples: int = SAMPLES,
-                 dpi: float = ATLAS_DPI, style: MapStyle | None = None,
-                 extents: Sequence[Sequence[tuple[float, float]]] | None = None,
+                 samples: int = SAMPLES, dpi: float = ATLAS_DPI, style: MapStyle | None = None,
                  sweep: str = "kprime", fixed: dict[str, Any] | None = None,
-                 view: str = "designer", caption: str | None = None) -> Figure:
+                 view: str = "designer", caption: str | None = None, **layout: Any) -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k' (or a load).
 
     Parameters
     ----------
     gammas, kprimes : sequence of float
         Aspect ratios (rows) and the values of the columns, force heights k'
-        by default; at most :data:`MAX_PANELS` panels in all.
+        by default (in [-1, 1], or up to ``fixed["crest"]``); at most
+        :data:`MAX_PANELS` panels in all.
     sweep : str
         What the columns vary: ``"kprime"`` or a load of
         :data:`regimemap.maps.sweeps.SWEEPS` (``"buoyancy"``, ``"uplift_ratio"`` ...).
@@ -138,13 +263,6 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         :func:`regimemap.maps.sweeps.shared_extent`).
     k_max, mu_max : float, optional
         Fix the view instead of the automatic one.
-    panel_size : (float, float)
-        Size of one panel in inches.
-    extents : rows of (k_max, mu_max), optional
-        The view of every panel, as :func:`regimemap.maps.sweeps.atlas_extents`
-        returns it (computed from ``share``, ``k_max`` and ``mu_max`` when omitted, by
-        :func:`regimemap.maps.sweeps.resolve_share`: panels that a shared view would
-        cram get views of their own, and the suptitle says so).
     view : {"designer", "report"}
         The panels' own views (:func:`regimemap.maps.designer_view.view_extent`).
     style : MapStyle, optional
@@ -161,6 +279,13 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
         Samples of k per panel.
     dpi : float
         Resolution of raster output.
+    **layout
+        ``panel_size`` : (float, float), the size of one panel in inches (default
+        :data:`PANEL_SIZE`); ``extents`` : rows of (k_max, mu_max), the view of every
+        panel, as :func:`regimemap.maps.sweeps.atlas_extents` returns it (computed from
+        ``share``, ``k_max`` and ``mu_max`` when omitted, by
+        :func:`regimemap.maps.sweeps.resolve_share`: panels that a shared view would
+        cram get views of their own, and the suptitle says so).
 
     Returns
     -------
@@ -172,19 +297,20 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     ------
     ValueError
         Invalid gamma or k', an empty list, or too many panels.
+    TypeError
+        An unknown keyword.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
     from ..maps.mapdata import compute_map
-    from .key import key_handles, key_legend
-    from .mapplot import MapStyle, draw_map
+    from .key import key_legend
+    from .mapplot import MapStyle
     from .style import style_context
 
+    panel_size, extents = _layout_options(layout)
     style = MapStyle() if style is None else style
-    gammas = [check_gamma(g) for g in gammas]
-    if sweep == "kprime":
-        kprimes = [check_kprime(k, (fixed or {}).get("crest", 1.0)) for k in kprimes]
+    gammas, kprimes = checked_values(gammas, kprimes, sweep, fixed)
     nr, nc = len(gammas), len(kprimes)
     if nr == 0 or nc == 0:
         raise ValueError("an atlas needs at least one gamma and one kprime")
@@ -194,86 +320,28 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     if extents is None:
         share, extents, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view,
                                                 sweep=sweep, fixed=fixed)
-    pw, ph = panel_size
     blocks = [[sweep_params(g, sweep, v, fixed) for v in kprimes] for g in gammas]
     loaded = any(p.loaded for row in blocks for p in row)
     datas = [[compute_map(p, k_max=extents[i][j][0], mu_max=extents[i][j][1], samples=samples,
                           curves=style.curves) for j, p in enumerate(row)]
              for i, row in enumerate(blocks)]
-    if loaded:  # the key lists the modes the panels show (lift-off ...)
-        flat = [d for row in datas for d in row]
-        dotted = [d.curves["dotted"].label for d in flat if "dotted" in d.curves]
-        handles = key_handles(key_modes(flat),
-                              dotted_label=("dotted line " + dotted[0]) if dotted else None)
-    else:
-        handles = _legend_handles(MAP_MODES, dotted=style.curves and min(
-            p.kprime for row in blocks for p in row) < 0.0)
+    handles = _key_of([d for row in datas for d in row], loaded, style.curves and min(
+        p.kprime for row in blocks for p in row) < 0.0)
     title = _atlas_title(caption, sweep, fixed, share, crammed, loaded)
-    tidy = style.tidy
     key_cols = min(4, max(2, nc))
-    key_rows = -(-len(handles) // key_cols)
-    # the key below the panels: 0.1 in from the edge, ~0.2 in a row, then the
-    # bottom panels' tick labels and k
-    # the title's lines (and one more for a long line wrapped to fit), ~0.19 in each,
-    # below 0.15 in of margin, above the panels' titles
-    lines = title.count("\n") + 1 + (1 if crammed else 0)
-    top = max(0.7, 0.45 + 0.19 * lines)
-    left, right, bottom = 0.62, 0.25 if tidy else 0.2, 0.62 + 0.2 * key_rows
-    # room between panels for the tick labels and mu of the panel on the right
-    wspace, hspace = (0.3 if share == "all" else (0.72 if tidy else 0.5)), (
-        0.42 if share == "all" else 0.6)
-    fw = left + right + nc * pw + (nc - 1) * wspace
-    fh = top + bottom + nr * ph + (nr - 1) * hspace
+    # the title's lines, and one more for a long line wrapped to fit
+    frame = _frame(nr, nc, panel_size, share, style.tidy, title.count("\n") + 1 + (1 if crammed else 0),
+                   -(-len(handles) // key_cols))
+    titles = [[_panel_title(g, kp, sweep) for kp in kprimes] for g in gammas]
     with style_context():
-        fig = Figure(figsize=(fw, fh), dpi=dpi)
+        fig = Figure(figsize=(frame.fw, frame.fh), dpi=dpi)
         FigureCanvasAgg(fig)
-        shared: Axes | None = None
-        row_first: Axes | None = None
-        arts = []
-        for i, g in enumerate(gammas):
-            for j, kp in enumerate(kprimes):
-                x0 = (left + j * (pw + wspace)) / fw
-                y0 = (bottom + (nr - 1 - i) * (ph + hspace)) / fh
-                kw: dict[str, Any] = {}
-                if share == "all" and shared is not None:
-                    kw = {"sharex": shared, "sharey": shared}
-                elif share == "row" and j > 0 and row_first is not None:
-                    kw = {"sharex": row_first, "sharey": row_first}
-                ax = fig.add_axes((x0, y0, pw / fw, ph / fh), **kw)
-                if shared is None:
-                    shared = ax
-                if j == 0:
-                    row_first = ax
-                art = draw_map(ax, datas[i][j],
-                               replace(style, legend=False, title=_panel_title(g, kp, sweep)))
-                # the curves' names (mu*(k), mu = k|k'| ...) crowd a small panel and
-                # spill into the next one: the legend and the full map name them
-                for t in art.curve_labels.values():
-                    t.remove()
-                art.curve_labels.clear()
-                for t in set(art.off_view.values()):
-                    t.set_fontsize(6.5)
-                arts.append(art)
-                ax.title.set_fontsize(9)
-                ax.xaxis.label.set_fontsize(10)
-                ax.yaxis.label.set_fontsize(10)
-                ax.tick_params(labelsize=7.5)
-                if share == "all":
-                    if i < nr - 1:
-                        ax.tick_params(labelbottom=False)
-                        ax.set_xlabel("")
-                    if j > 0:
-                        ax.tick_params(labelleft=False)
-                        ax.set_ylabel("")
-                elif share == "row" and j > 0:
-                    ax.tick_params(labelleft=False)
-                    ax.set_ylabel("")
-                ax.set_gid(f"panel-{i}-{j}")
+        arts = _draw_panels(fig, frame, datas, titles, style, share)
         key_legend(fig, handles, loc="lower center", ncols=key_cols,
-                   bbox_to_anchor=(0.5, 0.1 / fh), fontsize=8, frameon=False,
+                   bbox_to_anchor=(0.5, 0.1 / frame.fh), fontsize=8, frameon=False,
                    handleheight=1.1, columnspacing=1.5)
-        fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / fh, va="top")
-        if tidy:
+        fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / frame.fh, va="top")
+        if style.tidy:
             from .tidy import tidy_figure
 
             tidy_figure(fig, arts)

@@ -85,75 +85,113 @@ def implausible_values(design: Design, analysis: CaissonAnalysis | None = None) 
     >>> print(implausible_values(parse_design(text))[0])  # doctest: +ELLIPSIS
     [site] depth = 1010: deeper than 100 m, ... centimetres for metres?
     """
-    out: list[Implausible] = []
-    s, w, c = design.site, design.wave, design.caisson
-
-    def add(key: str, value: float, text: str) -> None:
-        out.append(Implausible(key, value, f"{key} = {_num(value)}: {text}"))
-
-    lo, hi, _ = RANGES["depth"]
-    for key, depth in (("[site] depth", s.depth), ("[site] armour_depth", s.armour_depth),
-                       ("[caisson] base_depth", c.base_depth)):
-        if depth > hi:
-            add(key, depth, f"deeper than {hi:g} m, where no caisson breakwater stands; "
-                            f"{depth / 100:.4g} m in centimetres for metres?")
-    lo, hi, _ = RANGES["period"]
-    if not lo <= w.period <= hi:
-        slip = (f"{w.period / 10:.3g} s in tenths of a second?" if w.period > hi else
-                "a frequency (1/s) or an angular frequency for a period?")
-        add("[wave] period", w.period, f"outside the {lo:g}-{hi:g} s of sea waves; {slip}")
-    lo, hi, _ = RANGES["height"]
+    w, c = design.wave, design.caisson
     heights: tuple[tuple[str, float | None], ...] = (
         ("[wave] H0", w.H0), ("[wave] H13", w.H13), ("[wave] Hmax", w.Hmax), ("[caisson] crest", c.crest))
-    for key, height in heights:
-        if height is not None and height > hi:
-            add(key, height, f"over {hi:g} m; {height / 100:.4g} m in centimetres for metres?")
+    return [*_depths(design), *_period("[wave] period", w.period), *_heights(heights),
+            *_width(c.width), *_unit_weight(design), *_densities(design), *_lifetime(design),
+            *_heel_pressure(analysis)]
+
+
+def _item(key: str, value: float, text: str) -> Implausible:
+    """One finding: ``key = value: text``."""
+    return Implausible(key, value, f"{key} = {_num(value)}: {text}")
+
+
+def _depths(design: Design) -> list[Implausible]:
+    """Depths over 100 m: centimetres for metres."""
+    s, c = design.site, design.caisson
+    hi = RANGES["depth"][1]
+    return [_item(key, depth, f"deeper than {hi:g} m, where no caisson breakwater stands; "
+                              f"{depth / 100:.4g} m in centimetres for metres?")
+            for key, depth in (("[site] depth", s.depth), ("[site] armour_depth", s.armour_depth),
+                               ("[caisson] base_depth", c.base_depth))
+            if depth > hi]
+
+
+def _period(key: str, period: float | None, slips: bool = True) -> list[Implausible]:
+    """A period outside 2-30 s: tenths of a second, or a frequency (``slips``: say which)."""
+    lo, hi, _ = RANGES["period"]
+    if period is None or lo <= period <= hi:
+        return []
+    text = f"outside the {lo:g}-{hi:g} s of sea waves"
+    if slips:
+        text += "; " + (f"{period / 10:.3g} s in tenths of a second?" if period > hi else
+                        "a frequency (1/s) or an angular frequency for a period?")
+    return [_item(key, period, text)]
+
+
+def _heights(heights: tuple[tuple[str, float | None], ...]) -> list[Implausible]:
+    """Wave heights (and the crest) over 30 m: centimetres for metres."""
+    hi = RANGES["height"][1]
+    return [_item(key, h, f"over {hi:g} m; {h / 100:.4g} m in centimetres for metres?")
+            for key, h in heights if h is not None and h > hi]
+
+
+def _width(width: float) -> list[Implausible]:
+    """A caisson narrower than 1 m or wider than 100 m."""
     lo, hi, _ = RANGES["width"]
-    if not lo <= c.width <= hi:
-        slip = (f"{c.width / 100:.4g} m in centimetres for metres?" if c.width > hi
-                else "the half width B for the full width, or metres for decimetres?")
-        add("[caisson] width", c.width, f"outside the {lo:g}-{hi:g} m of caisson widths; {slip}")
-    if c.buoyant_weight is not None:
-        # the section's implied unit weight: dry weight over its area, kN/m^3
-        g = 9.81
-        dry = c.buoyant_weight + s.water_density * g * c.width * c.base_depth / 1e3
-        area = c.width * (c.base_depth + c.crest)
-        unit = dry / area if area > 0 else math.inf
-        lo, hi, _ = RANGES["unit_weight"]
-        if not lo <= unit <= hi:
-            slip = ("N/m for kN/m?" if unit > 1000 * lo and unit / 1000 <= hi * 1.5 else
-                    "kN/m expected: N/m or tonnes per metre?" if unit > hi else
-                    "tonnes per metre for kN/m, or the weight of a smaller section?")
-            add("[caisson] buoyant_weight", c.buoyant_weight,
-                f"implies a unit weight of {_num(round(unit, 1))} kN/m^3 for the section "
-                f"{_num(c.width)} m wide and {_num(c.base_depth + c.crest)} m high "
-                f"(real caissons: {lo:g}-{hi:g}); {slip}")
+    if lo <= width <= hi:
+        return []
+    slip = (f"{width / 100:.4g} m in centimetres for metres?" if width > hi
+            else "the half width B for the full width, or metres for decimetres?")
+    return [_item("[caisson] width", width, f"outside the {lo:g}-{hi:g} m of caisson widths; {slip}")]
+
+
+def _unit_weight(design: Design) -> list[Implausible]:
+    """The section's implied unit weight (dry weight over its area, kN/m^3) outside 5-30."""
+    s, c = design.site, design.caisson
+    if c.buoyant_weight is None:
+        return []
+    g = 9.81
+    dry = c.buoyant_weight + s.water_density * g * c.width * c.base_depth / 1e3
+    area = c.width * (c.base_depth + c.crest)
+    unit = dry / area if area > 0 else math.inf
+    lo, hi, _ = RANGES["unit_weight"]
+    if lo <= unit <= hi:
+        return []
+    slip = ("N/m for kN/m?" if unit > 1000 * lo and unit / 1000 <= hi * 1.5 else
+            "kN/m expected: N/m or tonnes per metre?" if unit > hi else
+            "tonnes per metre for kN/m, or the weight of a smaller section?")
+    return [_item("[caisson] buoyant_weight", c.buoyant_weight,
+                  f"implies a unit weight of {_num(round(unit, 1))} kN/m^3 for the section "
+                  f"{_num(c.width)} m wide and {_num(c.base_depth + c.crest)} m high "
+                  f"(real caissons: {lo:g}-{hi:g}); {slip}")]
+
+
+def _densities(design: Design) -> list[Implausible]:
+    """Densities outside 800-3500 kg/m^3: t/m^3 (or g/cm^3), or a unit weight in N/m^3."""
+    c = design.caisson
     densities: tuple[tuple[str, float | None], ...] = (
         ("[caisson] concrete_density", c.concrete_density), ("[caisson] fill_density", c.fill_density),
         ("[caisson] fill_density_above", c.fill_density_above))
-    for key, rho in densities:
-        if rho is not None and not 800.0 <= rho <= 3500.0:
-            slip = "t/m^3 or g/cm^3 for kg/m^3?" if rho < 800.0 else "a unit weight in N/m^3 for a density?"
-            add(key, rho, f"outside 800-3500 kg/m^3; {slip}")
-    life = design.lifetime
-    if life is not None:
-        lo, hi, _ = RANGES["height"]
-        returns: tuple[tuple[str, float | None], ...] = (
-            ("[lifetime] H0_10", life.H0_10), ("[lifetime] H0_50", life.H0_50))
-        for key, height in returns:
-            if height is not None and height > hi:
-                add(key, height, f"over {hi:g} m; {height / 100:.4g} m in centimetres for metres?")
-        if life.period is not None and not RANGES["period"][0] <= life.period <= RANGES["period"][1]:
-            add("[lifetime] period", life.period, "outside the 2-30 s of sea waves")
-    if analysis is not None:
-        import numpy as np
+    return [_item(key, rho, "outside 800-3500 kg/m^3; " + (
+                "t/m^3 or g/cm^3 for kg/m^3?" if rho < 800.0 else "a unit weight in N/m^3 for a density?"))
+            for key, rho in densities if rho is not None and not 800.0 <= rho <= 3500.0]
 
-        pe = float(np.asarray(analysis.stability.heel_pressure)) / 1e3
-        hi = RANGES["heel_pressure"][1]
-        if math.isfinite(pe) and pe > hi:
-            out.append(Implausible(
-                "heel pressure", pe,
-                f"heel pressure {_num(round(pe))} kPa: over {hi / 1e3:g} MPa, far beyond what a rubble "
-                "mound bears (Goda 2000 allows about 500 kPa); check the units of [caisson] "
-                "buoyant_weight (kN/m) and the geometry"))
-    return out
+
+def _lifetime(design: Design) -> list[Implausible]:
+    """The ``[lifetime]`` table's return heights and period."""
+    life = design.lifetime
+    if life is None:
+        return []
+    returns: tuple[tuple[str, float | None], ...] = (
+        ("[lifetime] H0_10", life.H0_10), ("[lifetime] H0_50", life.H0_50))
+    return [*_heights(returns), *_period("[lifetime] period", life.period, slips=False)]
+
+
+def _heel_pressure(analysis: CaissonAnalysis | None) -> list[Implausible]:
+    """A heel pressure over 5 MPa (computed: needs the analysis)."""
+    if analysis is None:
+        return []
+    import numpy as np
+
+    pe = float(np.asarray(analysis.stability.heel_pressure)) / 1e3
+    hi = RANGES["heel_pressure"][1]
+    if not (math.isfinite(pe) and pe > hi):
+        return []
+    return [Implausible(
+        "heel pressure", pe,
+        f"heel pressure {_num(round(pe))} kPa: over {hi / 1e3:g} MPa, far beyond what a rubble "
+        "mound bears (Goda 2000 allows about 500 kPa); check the units of [caisson] "
+        "buoyant_weight (kN/m) and the geometry")]
