@@ -1,9 +1,14 @@
 """Every example of README.md runs (shell blocks with the installed `regimemap`, Python blocks).
 
 One test per block, so that pytest-xdist spreads them over the cores.  A block
-that reads a file an earlier block writes (``np.load("map.npz")`` after
-``regimemap export ... -o map.npz``) runs in the same test, after that block,
-in the same folder: the blocks are grouped by the files they pass on.
+that reads a file an earlier block writes (``regimemap lifetime goda.toml``
+after ``regimemap caisson --example > goda.toml``) runs in the same test, after
+that block, in the same folder: the blocks are grouped by the files they pass on.
+
+The README is the landing page: the rest of the examples live in the
+documentation site (docs/guide/), where ``make docs`` runs them (the pages'
+``regimemap-run`` commands in the html build, their Python in the doctest
+build; docs/guide/development.md says which runs where).
 """
 
 from __future__ import annotations
@@ -82,9 +87,25 @@ def _group_id(group: list[int]) -> str:
     return "+".join(f"{i}-{BLOCKS[i][0]}" for i in group)
 
 
+#: The five commands of the README's tour.
+TOUR = ("plot", "classify", "caisson", "simulate", "lifetime")
+
+
 def test_readme_has_examples():
     langs = {lang for lang, _ in BLOCKS}
-    assert {"sh", "python"} <= langs and len(BLOCKS) >= 10
+    assert {"sh", "python"} <= langs and len(BLOCKS) >= 6
+    commands = {m for _, body in BLOCKS for m in re.findall(r"^regimemap (\w+)", body, re.M)}
+    assert set(TOUR) <= commands, f"the tour lacks {set(TOUR) - commands}"
+
+
+def test_readme_links_resolve():
+    """Every relative link and image of the README names a file of the repository."""
+    text = README.read_text(encoding="utf-8")
+    targets = re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", text)
+    local = [t for t in targets if "://" not in t]
+    assert local, "the README links into the docs"
+    missing = [t for t in local if not (README.parent / t).exists()]
+    assert not missing, f"README links to missing files: {missing}"
 
 
 def test_blocks_that_read_files_run_after_the_blocks_that_write_them():

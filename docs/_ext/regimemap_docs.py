@@ -17,7 +17,11 @@ Directives
     Runs ``regimemap`` commands (one a line, ``> FILE`` to send the output to
     a file) in a folder of the page's own and shows each command with what it
     printed.  A command that fails is a build warning, so a broken example
-    fails ``make docs``.
+    fails ``make docs``.  :func:`run_command` runs one such line (the pages'
+    ``testsetup`` blocks use it to make the files their doctests read).
+``regimemap-file NAME``
+    A file (a CSV of points, a pulse) written into the folder of the page's
+    commands, for the commands after it, and shown.
 
 Gallery
 -------
@@ -349,13 +353,51 @@ def _run_folder(app: Sphinx, docname: str) -> Path:
     return Path(folders[docname])
 
 
+def run_command(command: str, folder: str | os.PathLike[str] = ".") -> Any:
+    """Run one ``regimemap ...`` command line in ``folder``, as :class:`RunCommands` does.
+
+    ``# ...`` ends the command (a comment), ``> FILE`` sends its standard output
+    to FILE in ``folder``.  Returns click's ``Result``; raises ``ValueError`` for
+    a line that is not a regimemap command.  The doctests of a page call it from
+    a ``testsetup`` to make the files that the page's commands write (the
+    doctest build does not run the commands of the pages).
+    """
+    from click.testing import CliRunner
+
+    from regimemap.cli import cli
+
+    words, target = _command_words(command)
+    old = os.getcwd()
+    try:
+        os.chdir(folder)
+        result = CliRunner().invoke(cli, words[1:], prog_name="regimemap", catch_exceptions=True)
+        if target is not None and result.exit_code == 0:
+            Path(target).write_text(result.stdout, encoding="utf-8")
+    finally:
+        os.chdir(old)
+    return result
+
+
+def _command_words(command: str) -> tuple[list[str], str | None]:
+    """The words of a ``regimemap ...`` line (comment removed) and the file after ``>``, if any."""
+    words = shlex.split(command, comments=True)
+    target = None
+    if ">" in words:
+        at = words.index(">")
+        target, words = words[at + 1], words[:at]
+    if not words or words[0] != "regimemap":
+        raise ValueError(f"regimemap-run runs regimemap commands only, got {command!r}")
+    return words, target
+
+
 class RunCommands(SphinxDirective):
     """``.. regimemap-run::`` with one ``regimemap ...`` command a line.
 
     Each command is shown in a console block, what it printed in a block of its
-    own.  Options: ``:hide-output:`` (show the commands only), ``:max-lines: N``
-    (the first N lines of each output, then ``...``), ``:output-language:``
-    (the highlighting of the outputs, ``text`` by default).
+    own.  A command may end with a ``# comment`` (shown, not run).  Options:
+    ``:hide-output:`` (show the commands only), ``:max-lines: N`` (the first N
+    lines of each output, then ``...``), ``:output-language:`` (the highlighting
+    of the outputs, ``text`` by default).
     """
 
     has_content = True
@@ -363,30 +405,16 @@ class RunCommands(SphinxDirective):
                    "output-language": directives.unchanged}
 
     def run(self) -> list[nodes.Node]:
-        from click.testing import CliRunner
-
-        from regimemap.cli import cli
-
         folder = _run_folder(self.env.app, self.env.docname)
         blocks: list[tuple[str, list[str]]] = []  # (language, lines)
         for command in (line.strip() for line in self.content):
             if not command:
                 continue
-            words = shlex.split(command)
-            target = None
-            if ">" in words:
-                at = words.index(">")
-                target, words = words[at + 1], words[:at]
-            if not words or words[0] != "regimemap":
-                raise self.error(f"regimemap-run runs regimemap commands only, got {command!r}")
-            old = os.getcwd()
             try:
-                os.chdir(folder)
-                result = CliRunner().invoke(cli, words[1:], prog_name="regimemap", catch_exceptions=True)
-                if target is not None and result.exit_code == 0:
-                    Path(target).write_text(result.stdout, encoding="utf-8")
-            finally:
-                os.chdir(old)
+                _, target = _command_words(command)
+            except ValueError as exc:
+                raise self.error(str(exc)) from None
+            result = run_command(command, folder)
             if result.exit_code != 0:
                 why = result.stderr.strip() or repr(result.exception)
                 logger.warning("regimemap-run: %r exited with %s: %s", command, result.exit_code, why,
@@ -410,6 +438,36 @@ class RunCommands(SphinxDirective):
             self.set_source_info(block)
             result_nodes.append(block)
         return result_nodes
+
+
+class WriteFile(SphinxDirective):
+    """``.. regimemap-file:: NAME``: a file of the page's example folder, shown and written.
+
+    The content is written to NAME in the folder where the page's
+    ``regimemap-run`` commands run (so that a later command reads it) and shown
+    as ``cat > NAME`` would make it.  Option ``:language:`` (``text`` by default).
+    """
+
+    has_content = True
+    required_arguments = 1
+    option_spec = {"language": directives.unchanged}
+
+    def run(self) -> list[nodes.Node]:
+        name = self.arguments[0]
+        if Path(name).name != name:
+            raise self.error(f"regimemap-file writes a file of the page's folder, got {name!r}")
+        text = "\n".join(self.content) + "\n"
+        (_run_folder(self.env.app, self.env.docname) / name).write_text(text, encoding="utf-8")
+        command = f"$ cat {name}"
+        shown = nodes.literal_block(command, command)
+        shown["language"] = "console"
+        shown["classes"].append("regimemap-run-command")
+        body = nodes.literal_block(text.rstrip("\n"), text.rstrip("\n"))
+        body["language"] = self.options.get("language", "text")
+        body["classes"].append("regimemap-run-output")
+        for block in (shown, body):
+            self.set_source_info(block)
+        return [shown, body]
 
 
 def _remove_run_folders(app: Sphinx, exception: Exception | None) -> None:
@@ -592,6 +650,7 @@ def setup(app: Sphinx) -> dict[str, Any]:
     app.add_directive("regimemap-api", PublicApi)
     app.add_directive("regimemap-design-keys", DesignKeys)
     app.add_directive("regimemap-run", RunCommands)
+    app.add_directive("regimemap-file", WriteFile)
     app.connect("missing-reference", _missing_reference)
     app.connect("autodoc-process-docstring", _plain_pipes, priority=600)
     app.connect("autodoc-skip-member", _skip_foreign)
