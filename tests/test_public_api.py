@@ -35,6 +35,7 @@ PUBLIC_API = {
         "save_figure", "write_animation", "write_atlas",
         # outcome maps and motions after initiation (regimemap.dynamics)
         "OUTCOME_STYLE", "draw_outcome_map", "motion_figure", "outcome_figure",
+        "OutcomeStyle",
         # a caisson's sliding over its design life (regimemap.lifetime)
         "chart_figure", "lifetime_figure",
     ],
@@ -223,3 +224,14 @@ def test_split_modules_keep_their_old_import_paths():
     assert query.margin_words is point_result.margin_words
     assert design.example_design_text is design_example.example_design_text
     assert design._SPEC is design_keys.DESIGN_KEYS  # read by docs/_ext (the table of the keys)
+
+
+def test_outcome_style_is_exported_by_the_drawing_package():
+    """``regimemap.drawing.OutcomeStyle`` is the frozen dataclass of :mod:`regimemap.drawing.outcome`."""
+    import dataclasses
+
+    import regimemap.drawing
+    from regimemap.drawing.outcome import OutcomeStyle
+
+    assert regimemap.drawing.OutcomeStyle is OutcomeStyle
+    assert dataclasses.is_dataclass(OutcomeStyle) and OutcomeStyle.__dataclass_params__.frozen

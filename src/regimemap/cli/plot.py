@@ -6,7 +6,6 @@ fast); the commands import :mod:`regimemap.drawing` when they run.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -15,155 +14,46 @@ import click
 
 from ..drawing.save import DEFAULT_DPI, DPI_RANGE
 from ._common import (
-    ParamType,
     RunError,
     gamma_option,
     import_matplotlib,
     kprime_option,
     load_options,
     output_dir,
-    output_path,
     positive_float,
     report_written,
     resolution_type,
 )
+from ._plot_options import (
+    FORMATS,
+    Dpi,
+    Format,
+    FormatList,
+    Modes,
+    PointSpec,
+    check_modes_on_map,
+    read_points,
+    resolve_output,
+)
+from ._plot_options import number_text as _num
 from ._writing import writing
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..drawing.artists import MapArtists
+    from ..io.points import DesignPoint
+    from ..mechanics.block import Parameters
+
+__all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command",
+           "figures_command", "plot_command", "plot_stem"]
 
 _LO, _HI = DPI_RANGE
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..io.points import DesignPoint
-
-#: Output formats, as in :data:`regimemap.drawing.save.FORMATS` (repeated so that
-#: this module need not import the renderer).
-FORMATS = ("png", "svg", "pdf")
 DEFAULT_SAMPLES = 801
 #: The number of the report's model figure (repeated from regimemap.drawing.model).
 MODEL_ID = "2.1"
 
 
-# -- option types --------------------------------------------------------------------------
-
-
-class _Dpi(ParamType):
-    name = "dpi"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        try:
-            v = float(value)
-        except (TypeError, ValueError):
-            self.fail(f"{value!r} is not a number; use a resolution in [{_LO:g}, {_HI:g}]", param, ctx)
-        if not (math.isfinite(v) and _LO <= v <= _HI):
-            self.fail(f"dpi must be a number in [{_LO:g}, {_HI:g}], got {value!r}", param, ctx)
-        return v
-
-
-class _Format(ParamType):
-    name = "png|svg|pdf"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
-        v = str(value).strip().lower().lstrip(".")
-        if v not in FORMATS:
-            self.fail(f"unknown format {value!r}; use one of {', '.join(FORMATS)}", param, ctx)
-        return v
-
-
-class _FormatList(ParamType):
-    name = "FORMATS"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
-                ) -> tuple[str, ...]:
-        if isinstance(value, tuple):
-            return value
-        items = [v.strip().lower().lstrip(".") for v in str(value).split(",") if v.strip()]
-        bad = [v for v in items if v not in FORMATS]
-        if not items or bad:
-            what = f"unknown format {bad[0]!r}" if bad else "no format given"
-            self.fail(f"{what}; use a comma-separated list of {', '.join(FORMATS)}", param, ctx)
-        return tuple(dict.fromkeys(items))
-
-
-def _valid_modes(loaded: bool | None = None) -> str:
-    """The modes a map can show, as the messages list them (``loaded`` None: any map)."""
-    from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES
-
-    plain = ", ".join(m.label for m in MAP_MODES)
-    extra = ", ".join(m.label for m in LOADED_MAP_MODES if m not in MAP_MODES)
-    if loaded is None:
-        return f"{plain} (and {extra} on the map of a loaded block)"
-    return f"{plain}, {extra}" if loaded else plain
-
-
-class _Modes(ParamType):
-    """``--modes``: labels of the modes that some map shows (checked against the block later)."""
-
-    name = "MODES"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
-                ) -> tuple[Any, ...]:
-        from ..mechanics.modes import LOADED_MAP_MODES, Mode
-
-        if isinstance(value, tuple):
-            return value
-        out = []
-        valid = _valid_modes()
-        for item in str(value).split(","):
-            if not item.strip():
-                continue
-            try:
-                mode = Mode.from_label(item)
-            except ValueError:
-                self.fail(f"unknown mode {item.strip()!r}; valid modes: {valid}", param, ctx)
-            if mode not in LOADED_MAP_MODES:
-                self.fail(f"mode {mode.label} never appears on a map; valid modes: {valid}",
-                          param, ctx)
-            out.append(mode)
-        if not out:
-            self.fail(f"no mode given; valid modes: {valid}", param, ctx)
-        return tuple(dict.fromkeys(out))
-
-
-def check_modes_on_map(modes: tuple[Any, ...] | None, loaded: bool) -> tuple[Any, ...] | None:
-    """``--modes`` checked against the map: RO' and LO only on the map of a loaded block.
-
-    The map of a loaded block (``--buoyancy``, ``--uplift``, ``--uplift-ratio``,
-    ``--gyration``) shows :data:`~regimemap.mechanics.modes.LOADED_MAP_MODES`, the
-    report's block :data:`~regimemap.mechanics.modes.MAP_MODES`; a mode the map cannot
-    show is a usage error (exit 2) naming the modes it can.
-    """
-    from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES
-
-    if modes is None:
-        return None
-    shown = LOADED_MAP_MODES if loaded else MAP_MODES
-    bad = [m for m in modes if m not in shown]
-    if bad:
-        raise click.BadParameter(
-            f"mode {bad[0].label} appears only on the map of a loaded block (give --buoyancy, "
-            f"--uplift, --uplift-ratio or --gyration); this map's modes: {_valid_modes(loaded)}",
-            param_hint="'--modes'")
-    return modes
-
-
-class _PointSpec(ParamType):
-    name = "K,MU[:NAME]"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..io.points import DesignPoint, parse_point_spec
-
-        if isinstance(value, DesignPoint):
-            return value
-        try:
-            return parse_point_spec(str(value))
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
-
-
 # -- helpers -------------------------------------------------------------------------------
-
-
-def _num(x: float) -> str:
-    return f"{x:g}"
 
 
 #: Short names of the loads in file names.
@@ -181,74 +71,8 @@ def plot_stem(gamma: float, kprime: float, loads: dict[str, Any] | None = None) 
     return f"regime-g{_num(gamma)}-kp{_num(kprime)}{extra}"
 
 
-def _resolve_output(output: str | None, fmt: str | None, default_name: str) -> tuple[Path, str]:
-    """The output path and format from ``-o`` and ``--format`` (usage errors exit 2)."""
-    if output is None:
-        fmt = fmt or "png"
-        return output_path(f"{default_name}.{fmt}", "--output"), fmt
-    path = Path(output)
-    suffix = path.suffix.lower().lstrip(".")
-    if suffix and suffix in FORMATS:
-        if fmt is not None and fmt != suffix:
-            raise click.BadParameter(
-                f"file suffix .{suffix} does not match --format {fmt}", param_hint="'--format'")
-        fmt = suffix
-    elif suffix and fmt is None:
-        raise click.BadParameter(
-            f"unknown file suffix .{suffix} in {output!r}; use one of {', '.join(FORMATS)} "
-            "(or give --format)", param_hint="'-o' / '--output'")
-    else:
-        # no suffix (or an unknown one with --format): add the format's suffix, as matplotlib does
-        fmt = fmt or "png"
-        path = path.with_name(f"{path.name}.{fmt}")
-    return output_path(path, "--output"), fmt
-
-
 def _check_dir(path: str, option: str) -> Path:
     return output_dir(path, option, create=True)
-
-
-def _read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
-                 loads: dict[str, Any] | None = None) -> list[DesignPoint]:
-    """Design points from ``--points`` files and ``--point`` specs, for this map."""
-    points = list(specs)
-    if files:
-        from ..io.points import read_points_table  # imports csv: only when needed
-    for f in files:
-        try:
-            table = read_points_table(f)
-        except ValueError as exc:
-            raise click.BadParameter(str(exc), param_hint="'--points'") from None
-        if table.note:
-            click.echo(f"regimemap: note: {f} is {table.note}; read as such", err=True)
-        points.extend(table.points)
-    keep: list[DesignPoint] = []
-    other: list[DesignPoint] = []
-    for pt in points:
-        same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
-            pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
-        same = same and _same_loads(pt, loads or {})
-        (keep if same else other).append(pt)
-    if other:
-        names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in other[:5])
-        more = f" and {len(other) - 5} more" if len(other) > 5 else ""
-        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime or other loads "
-                   f"and are not drawn on this map: {names}{more}", err=True)
-    return keep
-
-
-def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
-    """Whether the loads a point carries (CSV columns) are the map's."""
-    from ..mechanics.block import LOAD_DEFAULTS
-
-    for key, default in LOAD_DEFAULTS.items():
-        own = getattr(pt, key, None)
-        if own is None:
-            continue
-        want = loads.get(key, default)
-        if want is None or not math.isclose(own, want, rel_tol=1e-9, abs_tol=1e-12):
-            return False
-    return True
 
 
 _PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
@@ -303,7 +127,7 @@ title states the loads, and the default file name carries them.
 @click.option("-o", "--output", metavar="FILE",
               help="Output file; its suffix (.png, .svg, .pdf) sets the format. "
                    "Default: regime-g<GAMMA>-kp<KPRIME>.<format>.")
-@click.option("--format", "fmt", type=_Format(), default=None,
+@click.option("--format", "fmt", type=Format(), default=None,
               help="png, svg or pdf (default: from the suffix of -o, else png).")
 @click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
               show_default=True,
@@ -316,7 +140,7 @@ title states the loads, and the default file name carries them.
               help="Top of the mu axis (wins over --view).")
 @click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
               help="Samples of k for the region polygons and curves (2-5000).")
-@click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
+@click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--title", default=None,
               help="Title above the map (mathtext allowed); '' for none. "
@@ -324,14 +148,14 @@ title states the loads, and the default file name carries them.
 @click.option("--no-curves", is_flag=True, help="Do not draw the boundary curves and points.")
 @click.option("--no-labels", is_flag=True, help="Do not write the mode symbols in the regions.")
 @click.option("--no-legend", is_flag=True, help="Do not draw the legend.")
-@click.option("--modes", type=_Modes(), default=None,
+@click.option("--modes", type=Modes(), default=None,
               help="Comma-separated modes to shade, e.g. RE,SL,RO (default: all). "
                    "Valid: RE, SL, RO, SRO-, SRO+, SRO'-, and on the map of a loaded block "
                    "RO' and LO.")
 @click.option("--raw", is_flag=True,
               help="Shade each mode's region as the report derives it, before Section 4.7 "
                    "resolves overlaps (regions may overlap; use with --modes).")
-@click.option("--point", "point_specs", type=_PointSpec(), multiple=True,
+@click.option("--point", "point_specs", type=PointSpec(), multiple=True,
               help="Mark a design point K,MU or K,MU:NAME (repeatable).")
 @click.option("--points", "points_files", multiple=True, metavar="FILE.csv",
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
@@ -348,39 +172,50 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
                  loads: dict[str, Any]) -> None:
     from ..mechanics.block import Parameters
 
-    path, fmt = _resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
+    path, fmt = resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
     params = Parameters(gamma, kprime, **loads)
     modes = check_modes_on_map(modes, params.loaded)
-    points = _read_points(points_files, point_specs, params.gamma, params.kprime, loads)
+    points = read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
-    from ..drawing.figure import fit_figure, map_figure
+    from ..drawing.figure import map_figure
     from ..drawing.mapplot import MapStyle
     from ..drawing.save import save_figure
-    from ..drawing.style import style_context
 
     style = MapStyle(curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title)
     fig, ax, artists = map_figure(
         params, style=style, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes,
         raw=raw, samples=resolution, view=view)
     if show_ambiguity:
-        from ..drawing.ambiguity import draw_ambiguity
-        from ..drawing.tidy import tidy_figure
+        _draw_ambiguity(fig, ax, artists, params)
+    _warn_outside(points, *artists.extent)
+    with writing(path):
+        save_figure(fig, path, fmt, dpi=dpi)
+    _written(path)
 
-        with style_context():
-            overlay = draw_ambiguity(ax, params, artists.data.k_max, artists.data.mu_max) or []
-            artists.extra.extend(overlay)
-            artists.legend = ax.get_legend()  # rebuilt with one more entry
-            fit_figure(fig, ax)  # the overlay may have added legend entries
-            tidy_figure(fig, [artists], fixed=[a for a in overlay if hasattr(a, "get_text")])
-    k_hi, mu_hi = artists.extent
+
+def _draw_ambiguity(fig: Any, ax: Any, artists: MapArtists, params: Parameters) -> None:
+    """``--show-ambiguity``: the overlay of where several modes are admissible, drawn on the map
+    with its legend entries, the figure refitted and its labels tidied around the overlay."""
+    from ..drawing.ambiguity import draw_ambiguity
+    from ..drawing.figure import fit_figure
+    from ..drawing.style import style_context
+    from ..drawing.tidy import tidy_figure
+
+    with style_context():
+        overlay = draw_ambiguity(ax, params, artists.data.k_max, artists.data.mu_max) or []
+        artists.extra.extend(overlay)
+        artists.legend = ax.get_legend()  # rebuilt with one more entry
+        fit_figure(fig, ax)  # the overlay may have added legend entries
+        tidy_figure(fig, [artists], fixed=[a for a in overlay if hasattr(a, "get_text")])
+
+
+def _warn_outside(points: Sequence[DesignPoint], k_hi: float, mu_hi: float) -> None:
+    """A warning on standard error naming the design points outside the view drawn."""
     outside = [p for p in points if p.k > k_hi or p.mu > mu_hi]
     if outside:
         names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in outside[:5])
         click.echo(f"regimemap: warning: {len(outside)} point(s) outside the view "
                    f"k <= {_num(k_hi)}, mu <= {_num(mu_hi)}: {names}", err=True)
-    with writing(path):
-        save_figure(fig, path, fmt, dpi=dpi)
-    _written(path)
 
 
 # -- figure / figures ------------------------------------------------------------------------
@@ -425,13 +260,13 @@ def _preset_or_usage_error(fid: str) -> Any:
 @click.argument("figure_id", metavar="FIGURE_ID")
 @click.option("-o", "--output", metavar="FILE",
               help="Output file (.png, .svg, .pdf); default fig-<ID>.<format>.")
-@click.option("--format", "fmt", type=_Format(), default=None,
+@click.option("--format", "fmt", type=Format(), default=None,
               help="png, svg or pdf (default: from the suffix of -o, else png).")
-@click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
+@click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: float) -> None:
     preset = _preset_or_usage_error(figure_id)
-    path, fmt = _resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
+    path, fmt = resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
 
     import_matplotlib()
     from ..drawing.figure import render_preset
@@ -476,9 +311,9 @@ W.4: the uplift ratio swept); --set all draws both.
 @click.command("figures", help=_FIGURES_HELP, short_help="Draw all 25 figures of the report.")
 @click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
               help="Folder for the files (created if its parent folder exists).")
-@click.option("--format", "formats", type=_FormatList(), default="png", show_default=True,
+@click.option("--format", "formats", type=FormatList(), default="png", show_default=True,
               help="Comma-separated formats: png, svg, pdf.")
-@click.option("--dpi", type=_Dpi(), default=DEFAULT_DPI, show_default=True,
+@click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")

@@ -31,7 +31,7 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .lifetime_chart import chart_figure
     from .mapplot import MapStyle, default_title, draw_design_points, draw_map
     from .motion import motion_figure
-    from .outcome import draw_outcome_map, outcome_figure
+    from .outcome import OutcomeStyle, draw_outcome_map, outcome_figure
     from .save import save_figure
     from .style import MODE_STYLE, OUTCOME_STYLE, style_context
 
@@ -41,6 +41,7 @@ __all__ = [
     "MapArtists",
     "MapStyle",
     "OUTCOME_STYLE",
+    "OutcomeStyle",
     "atlas_figure",
     "chart_figure",
     "default_title",
@@ -83,6 +84,7 @@ _WHERE = {
     "draw_ambiguity": "ambiguity",
     "save_figure": "save",
     "OUTCOME_STYLE": "style",
+    "OutcomeStyle": "outcome",
     "draw_outcome_map": "outcome",
     "outcome_figure": "outcome",
     "motion_figure": "motion",

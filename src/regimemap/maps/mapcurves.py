@@ -94,12 +94,17 @@ def _boundary_flags(p: Parameters, pts: np.ndarray, vertical: bool, raw: bool,
     The sides are probed at the middle of the segment, 1e-6 of the view away
     from the curve, so that only the segments that touch another curve within
     that distance can be misjudged; :func:`_drop_short_runs` removes those.
+    A graph ``mu = func(k)`` is probed on the curve itself, at the middle of the
+    segment's k: the middle of its chord lies off a curved graph (mu*, mu**, and
+    every line of a loaded map whose uplift grows with the push) by more than
+    the probes' distance, so that both probes would fall on one side of it and a
+    boundary would be drawn as a construction line.
     """
     mid = 0.5 * (pts[1:] + pts[:-1])
-    if func is not None:  # a curved graph: probe on the curve, not on its chord
+    if func is not None:  # a graph: probe on the curve, not on its chord
         with np.errstate(divide="ignore", invalid="ignore"):
-            mid[:, 1] = func(mid[:, 0])
-        mid[:, 1] = np.where(np.isfinite(mid[:, 1]), mid[:, 1], 0.0)
+            on = np.asarray(func(mid[:, 0]), dtype=np.float64)
+        mid[:, 1] = np.where(np.isfinite(on), on, mid[:, 1])
     if vertical:
         d = 1e-6 * k_max
         a = _side_key(p, mid[:, 0] - d, mid[:, 1], raw, modes)
@@ -272,8 +277,8 @@ def curve_data(p: Parameters, k_max: float, mu_max: float, n_curve: int, raw: bo
         pts = _sampled(curve, p, k_max, mu_max, n_curve)
         if pts is None or len(pts) < 2:
             continue
-        # the curved graphs (mu*, mu**) are probed on the curve, not on their chords
-        func = curve.func if name in ("mu_star", "mu_star_star") else None
+        # every graph is probed on the curve, not on its chords (curved: mu*, mu**, loaded lines)
+        func = None if curve.vertical else curve.func
         flags = _drop_short_runs(
             _boundary_flags(p, pts, curve.vertical, raw, modes, k_max, mu_max, func), pts, scale)
         if not _keep_curve(p, name, flags, raw, raw_mode):

@@ -1,0 +1,274 @@
+"""Options of ``regimemap plot``, ``regimemap figure`` and ``regimemap figures``: their types
+(resolution, format, modes, design points) and the steps that turn them into what a command
+draws: the output path and format from ``-o`` and ``--format``, ``--modes`` checked against
+the map, the design points of ``--point`` and ``--points`` that belong on it.
+
+Importing this module does not import matplotlib; the modes and the points table are imported
+when an option needs them.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import click
+
+from ..drawing.save import DPI_RANGE
+from ._common import ParamType, output_path
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..io.points import DesignPoint
+
+__all__ = [
+    "FORMATS",
+    "Dpi",
+    "Format",
+    "FormatList",
+    "Modes",
+    "PointSpec",
+    "valid_modes",
+    "check_modes_on_map",
+    "resolve_output",
+    "read_points",
+    "number_text",
+]
+
+#: Output formats, as in :data:`regimemap.drawing.save.FORMATS` (repeated so that
+#: this module need not import the renderer).
+FORMATS = ("png", "svg", "pdf")
+
+_LO, _HI = DPI_RANGE
+
+
+def number_text(x: float) -> str:
+    """A number written shortest (``%g``), as file names and messages write them."""
+    return f"{x:g}"
+
+
+# -- option types --------------------------------------------------------------------------
+
+
+class Dpi(ParamType):
+    """``--dpi``: the resolution of PNG output, a number in :data:`~regimemap.drawing.save.DPI_RANGE`."""
+
+    name = "dpi"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            self.fail(f"{value!r} is not a number; use a resolution in [{_LO:g}, {_HI:g}]", param, ctx)
+        if not (math.isfinite(v) and _LO <= v <= _HI):
+            self.fail(f"dpi must be a number in [{_LO:g}, {_HI:g}], got {value!r}", param, ctx)
+        return v
+
+
+class Format(ParamType):
+    """``--format`` of one figure: png, svg or pdf (case and a leading dot ignored)."""
+
+    name = "png|svg|pdf"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        v = str(value).strip().lower().lstrip(".")
+        if v not in FORMATS:
+            self.fail(f"unknown format {value!r}; use one of {', '.join(FORMATS)}", param, ctx)
+        return v
+
+
+class FormatList(ParamType):
+    """``--format`` of ``figures``: a comma-separated list of formats, each once."""
+
+    name = "FORMATS"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> tuple[str, ...]:
+        if isinstance(value, tuple):
+            return value
+        items = [v.strip().lower().lstrip(".") for v in str(value).split(",") if v.strip()]
+        bad = [v for v in items if v not in FORMATS]
+        if not items or bad:
+            what = f"unknown format {bad[0]!r}" if bad else "no format given"
+            self.fail(f"{what}; use a comma-separated list of {', '.join(FORMATS)}", param, ctx)
+        return tuple(dict.fromkeys(items))
+
+
+def valid_modes(loaded: bool | None = None) -> str:
+    """The modes a map can show, as the messages list them (``loaded`` None: any map)."""
+    from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES
+
+    plain = ", ".join(m.label for m in MAP_MODES)
+    extra = ", ".join(m.label for m in LOADED_MAP_MODES if m not in MAP_MODES)
+    if loaded is None:
+        return f"{plain} (and {extra} on the map of a loaded block)"
+    return f"{plain}, {extra}" if loaded else plain
+
+
+class Modes(ParamType):
+    """``--modes``: labels of the modes that some map shows (checked against the block later)."""
+
+    name = "MODES"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None
+                ) -> tuple[Any, ...]:
+        from ..mechanics.modes import LOADED_MAP_MODES, Mode
+
+        if isinstance(value, tuple):
+            return value
+        out = []
+        valid = valid_modes()
+        for item in str(value).split(","):
+            if not item.strip():
+                continue
+            try:
+                mode = Mode.from_label(item)
+            except ValueError:
+                self.fail(f"unknown mode {item.strip()!r}; valid modes: {valid}", param, ctx)
+            if mode not in LOADED_MAP_MODES:
+                self.fail(f"mode {mode.label} never appears on a map; valid modes: {valid}",
+                          param, ctx)
+            out.append(mode)
+        if not out:
+            self.fail(f"no mode given; valid modes: {valid}", param, ctx)
+        return tuple(dict.fromkeys(out))
+
+
+def check_modes_on_map(modes: tuple[Any, ...] | None, loaded: bool) -> tuple[Any, ...] | None:
+    """``--modes`` checked against the map: RO' and LO only on the map of a loaded block.
+
+    The map of a loaded block (``--buoyancy``, ``--uplift``, ``--uplift-ratio``,
+    ``--gyration``) shows :data:`~regimemap.mechanics.modes.LOADED_MAP_MODES`, the
+    report's block :data:`~regimemap.mechanics.modes.MAP_MODES`; a mode the map cannot
+    show is a usage error (exit 2) naming the modes it can.
+    """
+    from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES
+
+    if modes is None:
+        return None
+    shown = LOADED_MAP_MODES if loaded else MAP_MODES
+    bad = [m for m in modes if m not in shown]
+    if bad:
+        raise click.BadParameter(
+            f"mode {bad[0].label} appears only on the map of a loaded block (give --buoyancy, "
+            f"--uplift, --uplift-ratio or --gyration); this map's modes: {valid_modes(loaded)}",
+            param_hint="'--modes'")
+    return modes
+
+
+class PointSpec(ParamType):
+    """``--point K,MU[:NAME]``: one design point (:func:`regimemap.io.points.parse_point_spec`)."""
+
+    name = "K,MU[:NAME]"
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        from ..io.points import DesignPoint, parse_point_spec
+
+        if isinstance(value, DesignPoint):
+            return value
+        try:
+            return parse_point_spec(str(value))
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
+
+
+# -- from the options to what is drawn -------------------------------------------------------
+
+
+def resolve_output(output: str | None, fmt: str | None, default_name: str) -> tuple[Path, str]:
+    """The output path and format from ``-o`` and ``--format`` (usage errors exit 2).
+
+    Parameters
+    ----------
+    output : str or None
+        ``-o``: a file name, with or without a suffix.
+    fmt : str or None
+        ``--format``.
+    default_name : str
+        The file name without suffix when ``-o`` is not given.
+
+    Returns
+    -------
+    (Path, str)
+        The file to write (its folder checked) and its format.
+    """
+    if output is None:
+        fmt = fmt or "png"
+        return output_path(f"{default_name}.{fmt}", "--output"), fmt
+    path = Path(output)
+    suffix = path.suffix.lower().lstrip(".")
+    if suffix and suffix in FORMATS:
+        if fmt is not None and fmt != suffix:
+            raise click.BadParameter(
+                f"file suffix .{suffix} does not match --format {fmt}", param_hint="'--format'")
+        fmt = suffix
+    elif suffix and fmt is None:
+        raise click.BadParameter(
+            f"unknown file suffix .{suffix} in {output!r}; use one of {', '.join(FORMATS)} "
+            "(or give --format)", param_hint="'-o' / '--output'")
+    else:
+        # no suffix (or an unknown one with --format): add the format's suffix, as matplotlib does
+        fmt = fmt or "png"
+        path = path.with_name(f"{path.name}.{fmt}")
+    return output_path(path, "--output"), fmt
+
+
+def read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
+                loads: dict[str, Any] | None = None) -> list[DesignPoint]:
+    """Design points from ``--points`` files and ``--point`` specs, for this map.
+
+    Parameters
+    ----------
+    files : sequence of str
+        The ``--points`` CSV files (a bad file is a usage error).
+    specs : sequence of DesignPoint
+        The ``--point`` options.
+    gamma, kprime : float
+        The map's block.
+    loads : dict, optional
+        The map's loads (``--buoyancy`` ...).
+
+    Returns
+    -------
+    list of DesignPoint
+        The points of this map; the others are named in a warning on standard error.
+    """
+    points = list(specs)
+    if files:
+        from ..io.points import read_points_table  # imports csv: only when needed
+    for f in files:
+        try:
+            table = read_points_table(f)
+        except ValueError as exc:
+            raise click.BadParameter(str(exc), param_hint="'--points'") from None
+        if table.note:
+            click.echo(f"regimemap: note: {f} is {table.note}; read as such", err=True)
+        points.extend(table.points)
+    keep: list[DesignPoint] = []
+    other: list[DesignPoint] = []
+    for pt in points:
+        same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
+            pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
+        same = same and _same_loads(pt, loads or {})
+        (keep if same else other).append(pt)
+    if other:
+        names = ", ".join(p.name or f"({number_text(p.k)}, {number_text(p.mu)})" for p in other[:5])
+        more = f" and {len(other) - 5} more" if len(other) > 5 else ""
+        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime or other loads "
+                   f"and are not drawn on this map: {names}{more}", err=True)
+    return keep
+
+
+def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
+    """Whether the loads a point carries (CSV columns) are the map's."""
+    from ..mechanics.block import LOAD_DEFAULTS
+
+    for key, default in LOAD_DEFAULTS.items():
+        own = getattr(pt, key, None)
+        if own is None:
+            continue
+        want = loads.get(key, default)
+        if want is None or not math.isclose(own, want, rel_tol=1e-9, abs_tol=1e-12):
+            return False
+    return True
