@@ -2,7 +2,8 @@
 
 Prints points per second for label_grid (2000 x 2000 grid) and classify
 (4 million scattered points), the solver's rate for comparison, and then the
-plotting timings of bench/bench_plot.py and the outcome-map benchmark of
+plotting timings of bench/bench_plot.py (``regimemap plot`` against a bare matplotlib script
+drawing the same polygons, and ``regimemap figures --set all``) and the outcome-map benchmark of
 bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics) and the lifetime benchmark of
 bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart).  Times are
 the best of several runs (wall clock, this machine); the targets of the issues are shown beside them.

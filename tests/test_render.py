@@ -313,6 +313,21 @@ def test_no_pyplot_and_no_global_rcparams():
     assert out.stdout.strip() == "no-pyplot []"
 
 
+def test_mathtext_parses_are_shared_between_renderers():
+    """Each SVG file has a renderer and a mathtext parser of its own: a formula is parsed once."""
+    from matplotlib.mathtext import MathTextParser
+
+    from regimemap.drawing.style import share_mathtext_parses, style_context
+
+    with style_context():
+        pass
+    assert getattr(MathTextParser.__dict__["_parse_cached"], "regimemap_shared", False)
+    assert not share_mathtext_parses()  # installed once per process
+    one, other = MathTextParser("path"), MathTextParser("path")
+    assert one.parse(r"$\mu^*(k)$", 72) is other.parse(r"$\mu^*(k)$", 72)
+    assert type(MathTextParser("agg").parse(r"$\mu^*(k)$", 72)).__name__ == "RasterParse"
+
+
 # -- names of the points ------------------------------------------------------------------
 
 

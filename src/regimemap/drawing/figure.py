@@ -173,7 +173,10 @@ def map_data(params: Parameters, *, view: str = "designer", k_max: float | None 
                        samples=samples, curves=curves, include=include)
 
 
-def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapData | None = None,
+# The front door of a map figure: what the map shows (map_data's keywords), the figure (size,
+# dpi, reuse) and the style, one keyword each, as render_map and the CLI pass them (PLR0913
+# accepted here).
+def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapData | None = None,  # noqa: PLR0913
                view: str = "designer", k_max: float | None = None, mu_max: float | None = None,
                modes: Iterable[Mode] | None = None, raw: bool = False,
                samples: int = DEFAULT_SAMPLES, include: Iterable[tuple[float, float]] = (),

@@ -29,7 +29,7 @@ import numpy as np
 
 from ..maps.describe import loads_text
 from ..maps.geometry import area_in_view
-from ..maps.mapdata import MapData
+from ..maps.mapdata import CurveData, MapData
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
 from .artists import MapArtists
@@ -164,64 +164,26 @@ def draw_map(ax: Axes, data: MapData, style: MapStyle | None = None) -> MapArtis
     -------
     MapArtists
     """
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import Polygon
-
     style = MapStyle() if style is None else style
     if style.tidy and style.curves:
         data = _without_coincident_lines(data)
     out = MapArtists(data=data)
     k_max, mu_max = data.k_max, data.mu_max
     frame = Frame(ax, k_max, mu_max)
-    ax.set_xlim(0.0, k_max)
-    ax.set_ylim(0.0, mu_max)
-    ax.set_xlabel("$k$", fontsize=12, labelpad=2)
-    ax.set_ylabel(r"$\mu$", fontsize=12, labelpad=6, rotation=0, va="center")
-    ax.tick_params(labelsize=9)
-    if style.curves and "O" in data.points:
-        ax.xaxis.set_major_formatter(_no_zero_formatter())
-        ax.yaxis.set_major_formatter(_no_zero_formatter())
-
-    # fills
+    _axes(ax, data, style)
     for mode in data.modes:
-        st = MODE_STYLE[mode]
-        patches: list[Patch] = []
-        for poly in data.polygons.get(mode, []):
-            if len(poly) < 3:
-                continue
-            patch = Polygon(poly, closed=True, facecolor=st.color, edgecolor="none",
-                            linewidth=0.0, hatch=st.hatch if style.hatches else None,
-                            hatchcolor=st.hatch_color, zorder=_Z_FILL,
-                            alpha=0.75 if data.raw and len(data.modes) > 1 else None,
-                            label=f"_{mode.label}")
-            patch.set_hatch_linewidth(HATCH_LW)
-            ax.add_patch(patch)
-            patches.append(patch)
-        out.fills[mode] = patches
+        out.fills[mode] = _fills(ax, data, mode, style)
 
     obstacles: list[Box] = []
-    # curves, the named points and their names, the points off view
+    lines: list[np.ndarray] = []
+    # curves, the named points and their names, the points off view, the curves' labels
     if style.curves:
         for name, cd in data.curves.items():
-            pieces: list[Line2D] = []
-            for pts, is_boundary in cd.runs():
-                if cd.dotted:
-                    kw: dict[str, Any] = dict(DOTTED)
-                elif is_boundary:
-                    kw = {"color": "black", "linewidth": LINE_LW}
-                else:
-                    kw = dict(CONSTRUCTION)
-                line = Line2D(pts[:, 0], pts[:, 1], zorder=_Z_LINE if is_boundary else _Z_CONS,
-                              solid_capstyle="round", solid_joinstyle="round",
-                              label=f"_{name}", **kw)
-                ax.add_line(line)
-                pieces.append(line)
-            out.curves[name] = pieces
+            out.curves[name] = _curve(ax, name, cd)
         out.point_markers, out.point_labels = name_points(ax, data, frame, obstacles)
         if style.tidy:
             out.off_view = mark_off_view(ax, data.params, frame, obstacles)
-    lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()] if style.curves else []
-    if style.curves:
+        lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()]
         out.curve_labels = curve_labels(ax, data, frame, obstacles, lines)
     if style.labels:
         out.region_labels = region_labels(ax, data, frame, obstacles, lines, on_band=style.tidy)
@@ -236,6 +198,57 @@ def draw_map(ax: Axes, data: MapData, style: MapStyle | None = None) -> MapArtis
         # measures every tick label first (the layout here is fixed anyway)
         out.title = ax.set_title(title, fontsize=9.5, loc="left", pad=6, y=1.0)
     return out
+
+
+def _axes(ax: Axes, data: MapData, style: MapStyle) -> None:
+    """The view, the axis labels and the tick labels (none at 0 when O is named)."""
+    ax.set_xlim(0.0, data.k_max)
+    ax.set_ylim(0.0, data.mu_max)
+    ax.set_xlabel("$k$", fontsize=12, labelpad=2)
+    ax.set_ylabel(r"$\mu$", fontsize=12, labelpad=6, rotation=0, va="center")
+    ax.tick_params(labelsize=9)
+    if style.curves and "O" in data.points:
+        ax.xaxis.set_major_formatter(_no_zero_formatter())
+        ax.yaxis.set_major_formatter(_no_zero_formatter())
+
+
+def _fills(ax: Axes, data: MapData, mode: Mode, style: MapStyle) -> list[Patch]:
+    """The filled (and hatched) polygons of one mode's regions."""
+    from matplotlib.patches import Polygon
+
+    st = MODE_STYLE[mode]
+    patches: list[Patch] = []
+    for poly in data.polygons.get(mode, []):
+        if len(poly) < 3:
+            continue
+        patch = Polygon(poly, closed=True, facecolor=st.color, edgecolor="none",
+                        linewidth=0.0, hatch=st.hatch if style.hatches else None,
+                        hatchcolor=st.hatch_color, zorder=_Z_FILL,
+                        alpha=0.75 if data.raw and len(data.modes) > 1 else None,
+                        label=f"_{mode.label}")
+        patch.set_hatch_linewidth(HATCH_LW)
+        ax.add_patch(patch)
+        patches.append(patch)
+    return patches
+
+
+def _curve(ax: Axes, name: str, cd: CurveData) -> list[Line2D]:
+    """One curve: its boundary runs solid, its construction runs dashed (or all dotted)."""
+    from matplotlib.lines import Line2D
+
+    pieces: list[Line2D] = []
+    for pts, is_boundary in cd.runs():
+        if cd.dotted:
+            kw: dict[str, Any] = dict(DOTTED)
+        elif is_boundary:
+            kw = {"color": "black", "linewidth": LINE_LW}
+        else:
+            kw = dict(CONSTRUCTION)
+        line = Line2D(pts[:, 0], pts[:, 1], zorder=_Z_LINE if is_boundary else _Z_CONS,
+                      solid_capstyle="round", solid_joinstyle="round", label=f"_{name}", **kw)
+        ax.add_line(line)
+        pieces.append(line)
+    return pieces
 
 
 def _key(ax: Axes, data: MapData, style: MapStyle) -> Any:

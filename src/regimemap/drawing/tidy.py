@@ -116,23 +116,10 @@ def text_boxes(fig: Figure, maps: Sequence[MapArtists], extra: Iterable[Artist] 
         if ax is None or ax in seen_axes:
             continue
         seen_axes.append(ax)
-        for t in _tick_labels(ax):
-            fixed.append((f"tick {t.get_text()}", box_of(t, renderer)))
-        titles = [getattr(ax, name, None) for name in ("title", "_left_title", "_right_title")]
-        for t in [ax.xaxis.label, ax.yaxis.label, *titles]:
-            if visible_text(t):
-                fixed.append((f"axis text {t.get_text()!r}", box_of(t, renderer)))
-        leg = ax.get_legend()
-        if leg is not None and leg.get_visible():
-            fixed.append(("key", box_of(leg, renderer)))
-        for name, m in art.point_markers.items():
-            markers.extend((f"point {name}", b) for b in _marker_boxes(ax, m, renderer))
-        for a in art.extra:
-            if a.get_gid() == "design-dots":
-                markers.extend(("design point", b) for b in _marker_boxes(ax, a, renderer))
-        for kind, t in _movable(art):
-            if visible_text(t):
-                labels.append((f"{kind} {t.get_text()!r}", box_of(t, renderer)))
+        fixed += _axes_boxes(ax, renderer)
+        markers += _map_marker_boxes(ax, art, renderer)
+        labels += [(f"{kind} {t.get_text()!r}", box_of(t, renderer))
+                   for kind, t in _movable(art) if visible_text(t)]
     for leg in fig.legends:
         if leg.get_visible():
             fixed.append(("key", box_of(leg, renderer)))
@@ -143,6 +130,30 @@ def text_boxes(fig: Figure, maps: Sequence[MapArtists], extra: Iterable[Artist] 
         if a.get_visible():
             fixed.append((f"extra {a.get_gid() or type(a).__name__}", box_of(a, renderer)))
     return {"fixed": fixed, "markers": markers, "labels": labels}
+
+
+def _axes_boxes(ax: Axes, renderer: RendererBase) -> list[tuple[str, Box]]:
+    """The boxes of the texts of one Axes that stay: tick and axis labels, titles, key."""
+    out = [(f"tick {t.get_text()}", box_of(t, renderer)) for t in _tick_labels(ax)]
+    titles: list[Any] = [getattr(ax, n, None) for n in ("title", "_left_title", "_right_title")]
+    out += [(f"axis text {t.get_text()!r}", box_of(t, renderer))
+            for t in [ax.xaxis.label, ax.yaxis.label, *titles] if visible_text(t)]
+    leg = ax.get_legend()
+    if leg is not None and leg.get_visible():
+        out.append(("key", box_of(leg, renderer)))
+    return out
+
+
+def _map_marker_boxes(ax: Axes, art: MapArtists, renderer: RendererBase
+                      ) -> list[tuple[str, Box]]:
+    """The boxes of a map's markers: the report's points, then the design points."""
+    out: list[tuple[str, Box]] = []
+    for name, m in art.point_markers.items():
+        out += [(f"point {name}", b) for b in _marker_boxes(ax, m, renderer)]
+    for a in art.extra:
+        if a.get_gid() == "design-dots":
+            out += [("design point", b) for b in _marker_boxes(ax, a, renderer)]
+    return out
 
 
 def _axes_of(art: MapArtists) -> Any:
@@ -276,13 +287,7 @@ def _tidy(fig: Figure, maps: Sequence[MapArtists], fixed: list[Artist], fit_titl
     renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
     fig.draw_without_rendering()  # the ticks, titles and keys in their final places
     if fit_titles:
-        fb = fig.bbox
-        for art in maps:
-            if art.title is not None and fit_title(art.title, renderer, fb.x1 - GAP, fb.y1 - GAP):
-                report.moved.append(f"title {art.title.get_text()!r}")
-        sup = getattr(fig, "_suptitle", None)
-        if sup is not None:
-            fit_title(sup, renderer, fb.x1 - GAP, fb.y1 - GAP)
+        _fit_titles(fig, maps, renderer, report)
     boxes = text_boxes(fig, maps, fixed)
     placer = Placer(fig, renderer, [b for _, b in boxes["fixed"]]
                      + [b for _, b in boxes["markers"]])
@@ -296,32 +301,10 @@ def _tidy(fig: Figure, maps: Sequence[MapArtists], fixed: list[Artist], fit_titl
             if not visible_text(t):
                 continue
             within = axes_box if kind in ("curve", "region", "off-view") else None
-            ok_here = True
-            if kind == "region":
-                mode = next((m for m, lst in art.region_labels.items()
-                             if any(v is t for v in lst)), None)
-                xy = t.get_position()
-                poly = polygon_of(art, mode, (float(xy[0]), float(xy[1])))
-                ok_here = (getattr(t, "arrow_patch", None) is not None
-                           or (poly is not None and inside(poly, xy)))
-            if kind == "point" and getattr(t, "arrow_patch", None) is None:
-                ok_here = off_lines(placer.box(t), lines)  # a name written on a line reads badly
-            if kind == "curve":
-                ok_here = False  # placed again below with its measured size: closer to its line
-            if ok_here and placer.free(placer.box(t), within):
+            if _fits_here(art, kind, t, placer, lines) and placer.free(placer.box(t), within):
                 placer.take(t)
                 continue
-            if kind in ("point", "design"):
-                new, ok = place_annotation(ax, t, placer, None, lines if kind == "point" else None)
-            elif kind == "off-view":
-                new, ok = t, place_off_view(t, placer, axes_box)
-            elif kind == "curve":
-                name = next((n for n, v in art.curve_labels.items() if v is t), "")
-                new, ok = place_curve_label(ax, art, name, t, placer)
-            else:
-                mode = next((m for m, lst in art.region_labels.items()
-                             if any(v is t for v in lst)), None)
-                new, ok = place_region_label(ax, art, mode, t, placer)
+            new, ok = _move(ax, art, kind, t, placer, lines, axes_box)
             replace_label(art, t, new)
             label = f"{kind} {new.get_text()!r}"
             if ok:
@@ -332,3 +315,50 @@ def _tidy(fig: Figure, maps: Sequence[MapArtists], fixed: list[Artist], fit_titl
                 new.set_visible(False)
                 report.hidden.append(label)
     return report
+
+
+def _fit_titles(fig: Figure, maps: Sequence[MapArtists], renderer: RendererBase,
+                report: TidyReport) -> None:
+    """Fit each map's title, and the suptitle, inside the figure (see :func:`fit_title`)."""
+    fb = fig.bbox
+    for art in maps:
+        if art.title is not None and fit_title(art.title, renderer, fb.x1 - GAP, fb.y1 - GAP):
+            report.moved.append(f"title {art.title.get_text()!r}")
+    sup = getattr(fig, "_suptitle", None)
+    if sup is not None:
+        fit_title(sup, renderer, fb.x1 - GAP, fb.y1 - GAP)
+
+
+def _mode_of(art: MapArtists, t: Any) -> Any:
+    """The mode whose symbol ``t`` is (None if it is none of them)."""
+    return next((m for m, lst in art.region_labels.items() if any(v is t for v in lst)), None)
+
+
+def _fits_here(art: MapArtists, kind: str, t: Any, placer: Placer, lines: Any) -> bool:
+    """Whether a label may stay where it was drawn, if nothing else is there.
+
+    A mode symbol must lie on its region (or point to it), a point's name off the lines
+    (a name written on a line reads badly); a curve's label is always placed again, with
+    its measured size, closer to its line.
+    """
+    if kind == "region":
+        xy = t.get_position()
+        poly = polygon_of(art, _mode_of(art, t), (float(xy[0]), float(xy[1])))
+        return (getattr(t, "arrow_patch", None) is not None
+                or (poly is not None and inside(poly, xy)))
+    if kind == "point" and getattr(t, "arrow_patch", None) is None:
+        return bool(off_lines(placer.box(t), lines))
+    return kind != "curve"
+
+
+def _move(ax: Axes, art: MapArtists, kind: str, t: Any, placer: Placer, lines: Any,
+          axes_box: Box) -> tuple[Any, bool]:
+    """Find a label a free place among its candidates: the label (maybe a new one), found."""
+    if kind in ("point", "design"):
+        return place_annotation(ax, t, placer, None, lines if kind == "point" else None)
+    if kind == "off-view":
+        return t, place_off_view(t, placer, axes_box)
+    if kind == "curve":
+        name = next((n for n, v in art.curve_labels.items() if v is t), "")
+        return place_curve_label(ax, art, name, t, placer)
+    return place_region_label(ax, art, _mode_of(art, t), t, placer)
