@@ -19,6 +19,7 @@ import pytest
 from regimemap import Parameters
 from regimemap.cli.explore import open_explorer, plot_command_line
 from regimemap.drawing.explore import Explorer, KeyImage, TextPanel
+from regimemap.drawing.explore_images import WidgetsImage
 from regimemap.drawing.figure import map_figure
 from regimemap.mechanics.modes import Mode
 
@@ -194,6 +195,43 @@ def test_key_bitmap_shows_the_key(explorer: Explorer) -> None:
     rows = slice(int(h - box.y1), int(h - box.y0))
     cols = slice(int(box.x0), int(box.x1))
     assert np.abs(real[rows, cols].astype(int) - cached[rows, cols].astype(int)).max() <= 2
+
+
+def test_still_widgets_are_drawn_from_bitmaps_while_dragging(explorer: Explorer) -> None:
+    """While one slider is dragged the other widgets are pixels (the same); the release shows them."""
+    still: WidgetsImage = explorer._still  # noqa: SLF001
+    canvas = explorer.fig.canvas
+    explorer.set_loads(buoyancy=0.2)
+    canvas.draw()
+    real = np.asarray(canvas.buffer_rgba()).copy()
+    widgets = [explorer.kprime_slider.ax, explorer.buoyancy_slider.ax, explorer.nu_slider.ax,
+               explorer.save_ax]
+    boxes = [ax.get_tightbbox() for ax in widgets]
+    for g in (3.1, 3.2, 3.0):
+        explorer.set_gamma(g, final=False)
+        canvas.draw()
+    assert set(still.frozen) == set(widgets) and explorer.gamma_slider.ax.get_visible()
+    assert explorer.check_ax.get_visible()  # its mark is drawn by the widget itself
+    assert not any(ax.get_visible() for ax in widgets)
+    assert still.renders == len(widgets)  # once each for the whole drag
+    cached = np.asarray(canvas.buffer_rgba()).copy()
+    h = real.shape[0]
+    for box in boxes:
+        rows = slice(int(h - box.y1), int(h - box.y0))
+        cols = slice(int(box.x0), int(box.x1))
+        assert np.abs(real[rows, cols].astype(int) - cached[rows, cols].astype(int)).max() <= 2
+    explorer.finish()
+    assert still.frozen == () and all(ax.get_visible() for ax in widgets)
+    # a drag of k' next: the gamma slider is frozen, k' is not; unchanged widgets stay cached
+    explorer.set_kprime(0.3, final=False)
+    assert explorer.gamma_slider.ax in still.frozen and explorer.kprime_slider.ax not in still.frozen
+    assert still.renders == len(widgets) + 1
+    # the loads switched off meanwhile: their sliders are hidden, not frozen
+    explorer.set_loads(enabled=False, final=False)
+    assert not explorer.buoyancy_slider.ax.get_visible()
+    assert explorer.buoyancy_slider.ax not in still.frozen
+    explorer.finish()
+    assert not explorer.buoyancy_slider.ax.get_visible() and explorer.kprime_slider.ax.get_visible()
 
 
 # -- a click: what classify says -------------------------------------------------------------------
@@ -436,11 +474,18 @@ def test_drag_title_reads_as_plots() -> None:
     from regimemap.drawing.explore import drag_title
     from regimemap.drawing.mapplot import default_title
 
-    for p in (Parameters(3.0, -0.3), Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524)):
+    # the drag title's symbols are Unicode, read back as plot's mathtext
+    tex_of = {"\u03b3": r"\gamma", "k\u2032": "k'", "\u03b2": r"\beta", "\u03bd": r"\nu",
+              "e\u1d64": "e_u", "\u2212": "-"}
+    for p in (Parameters(3.0, -0.3), Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524),
+              Parameters(1.2, 0.5, uplift=0.1, uplift_ratio=0.4, uplift_arm=0.25)):
         plain, tex = drag_title(p).split("\n"), default_title(p).split("\n")
         assert plain[0] == tex[0]
-        assert plain[1].replace("$", "").replace("\u2212", "-").replace(" = ", "=") == \
-            tex[1].replace("$", "").replace(" = ", "=")
+        assert "$" not in plain[1]  # no mathtext: nothing to parse again at each frame
+        line = plain[1]
+        for uni, sym in tex_of.items():
+            line = line.replace(uni, sym)
+        assert line.replace(" = ", "=") == tex[1].replace("$", "").replace(" = ", "=")
 
 
 def test_off_screen_explorer_stays_out_of_pyplot() -> None:

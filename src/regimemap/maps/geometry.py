@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Iterable
+from typing import NamedTuple
 
 import numpy as np
 
@@ -36,6 +37,7 @@ __all__ = [
     "raw_intervals",
     "breakpoints",
     "bisect_edge",
+    "bisect_edges",
     "region_polygons",
     "area_in_view",
 ]
@@ -167,6 +169,73 @@ def bisect_edge(present: Callable[[float], bool], k_in: float, k_out: float,
     return k_in
 
 
+def bisect_edges(present: Callable[[np.ndarray, np.ndarray], np.ndarray], k_in: np.ndarray,
+                 k_out: np.ndarray, iterations: int = 60, columns: int = 256) -> np.ndarray:
+    """:func:`bisect_edge` for many edges at once: for each, the same k.
+
+    Parameters
+    ----------
+    present : callable
+        ``present(which, k)``: for the edges ``which`` (indices, shape (m,)) and
+        abscissae ``k`` of shape (m, j) (row i for edge ``which[i]``), whether
+        each edge's condition holds, a boolean array of shape (m, j).
+    k_in, k_out : array_like
+        For each edge, a k where its condition holds and one where it does not.
+    iterations : int
+        As :func:`bisect_edge`.
+    columns : int
+        About how many abscissae to ask ``present`` at a time.  Each call asks,
+        for every edge not yet done, the ``2**d - 1`` midpoints that the next
+        ``d`` steps of bisection may visit (either answer at each step; ``d``
+        as large as ``columns`` allows, at least 1); then each edge walks down
+        its answers exactly as :func:`bisect_edge` does.  ``present`` is
+        vectorised: a call costs little more for a few hundred columns than
+        for one, so the edges are found in a few calls instead of ~40 each.
+
+    Returns
+    -------
+    ndarray
+        For each edge, the last k where its condition holds.
+    """
+    k_in = np.array(k_in, dtype=np.float64).ravel()
+    k_out = np.array(k_out, dtype=np.float64).ravel()
+    steps = np.zeros(k_in.size, dtype=np.intp)
+    todo = np.arange(k_in.size) if iterations > 0 else np.zeros(0, dtype=np.intp)
+    while todo.size:
+        depth = min(max(int(math.log2(columns / todo.size + 1.0)), 1), 12)
+        nodes = 2 ** depth - 1
+        # the bisection tree of each edge, level by level, stored as a heap: node i has
+        # children 2i + 1 (the condition holds at i's middle) and 2i + 2 (it does not)
+        lo, hi = k_in[todo, None], k_out[todo, None]
+        levels = []
+        for _ in range(depth):
+            middle = 0.5 * (lo + hi)
+            levels.append(middle)
+            lo = np.stack([middle, lo], axis=2).reshape(todo.size, -1)
+            hi = np.stack([hi, middle], axis=2).reshape(todo.size, -1)
+        mid = np.concatenate(levels, axis=1)
+        holds = np.asarray(present(todo, mid), dtype=bool)
+        left: list[int] = []
+        for row, e in enumerate(todo):
+            a, b, i, done = float(k_in[e]), float(k_out[e]), 0, False
+            while i < nodes and not done:
+                m = float(mid[row, i])
+                steps[e] += 1
+                if m in (a, b):
+                    done = True
+                    break
+                if holds[row, i]:
+                    a, i = m, 2 * i + 1
+                else:
+                    b, i = m, 2 * i + 2
+                done = abs(b - a) <= 1e-13 * max(1.0, abs(a)) or steps[e] >= iterations
+            k_in[e], k_out[e] = a, b
+            if not done:
+                left.append(int(e))
+        todo = np.array(left, dtype=np.intp)
+    return k_in
+
+
 def region_polygons(p: Parameters, k_max: float, mu_max: float,
                     modes: Iterable[Mode] | None = None, raw: bool = False,
                     samples: int = DEFAULT_SAMPLES, overshoot: float = 1.5) -> dict[Mode, list[np.ndarray]]:
@@ -203,37 +272,52 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
         return final_intervals(p, kk, mu_cap)
 
     cols = intervals(k)
-    out: dict[Mode, list[np.ndarray]] = {}
-    for mode in modes:
+    # the runs of columns where each mode is present, and their ends to find (all at once)
+    runs: list[tuple[Mode, np.ndarray]] = []
+    edges: list[tuple[int, int, int]] = []  # (index of the mode in ``modes``, inner, outer)
+    for i, mode in enumerate(modes):
         lo, hi = cols[mode]
-        columns = (hi - lo) > 0.0
-        polys: list[np.ndarray] = []
-        if columns.any():
-            idx = np.flatnonzero(columns)
-            runs = np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1)
+        idx = np.flatnonzero((hi - lo) > 0.0)
+        if idx.size == 0:
+            continue
+        for run in np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1):
+            runs.append((mode, run))
+            for inner, outer in ((run[0], run[0] - 1), (run[-1], run[-1] + 1)):
+                if 0 <= outer < k.size:
+                    edges.append((i, int(inner), int(outer)))
+    edge_mode = np.array([e[0] for e in edges], dtype=np.intp)
 
-            def present(kk: float, mode: Mode = mode) -> bool:
-                lo1, hi1 = intervals(np.array([kk]))[mode]
-                return bool(hi1[0] - lo1[0] > 0.0)
+    def present(which: np.ndarray, kk: np.ndarray) -> np.ndarray:
+        at = intervals(kk.ravel())
+        width = np.stack([at[m][1] - at[m][0] for m in modes]).reshape((len(modes),) + kk.shape)
+        return np.asarray(width[edge_mode[which], np.arange(kk.shape[0])] > 0.0)
 
-            for run in runs:
-                ks = list(k[run])
-                i0, i1 = run[0], run[-1]
-                if i0 > 0:
-                    ks.insert(0, bisect_edge(present, k[i0], k[i0 - 1]))
-                if i1 < k.size - 1:
-                    ks.append(bisect_edge(present, k[i1], k[i1 + 1]))
-                kk = np.asarray(ks)
-                lo_k, hi_k = intervals(kk)[mode]
-                poly = np.concatenate([np.column_stack([kk, lo_k]), np.column_stack([kk[::-1], hi_k[::-1]])])
-                polys.append(poly)
-        out[mode] = polys
+    ends = bisect_edges(present, k[[e[1] for e in edges]], k[[e[2] for e in edges]])
+    found = {edge: float(ke) for edge, ke in zip(edges, ends)}
+    out: dict[Mode, list[np.ndarray]] = {mode: [] for mode in modes}
+    for mode, run in runs:
+        i, i0, i1 = modes.index(mode), int(run[0]), int(run[-1])
+        ks = list(k[run])
+        if i0 > 0:
+            ks.insert(0, found[(i, i0, i0 - 1)])
+        if i1 < k.size - 1:
+            ks.append(found[(i, i1, i1 + 1)])
+        kk = np.asarray(ks)
+        lo_k, hi_k = intervals(kk)[mode]
+        out[mode].append(np.concatenate([np.column_stack([kk, lo_k]),
+                                         np.column_stack([kk[::-1], hi_k[::-1]])]))
     return out
 
 
 # -- loaded blocks: several pieces of a mode per column --------------------------------------
 
 Pieces = list[list[tuple[Mode, float, float]]]
+
+#: The label of a piece of a column that no hypothesis holds: a single float where strict
+#: ends meet (mu = mu_B' at a corner), left out of the pieces.
+_NO_MODE = 255
+#: Mode codes are 0 .. _CODES - 1.
+_CODES = max(int(m) for m in Mode) + 1
 
 
 def _merge(column: list[tuple[Mode, float, float]]) -> list[tuple[Mode, float, float]]:
@@ -247,15 +331,13 @@ def _merge(column: list[tuple[Mode, float, float]]) -> list[tuple[Mode, float, f
     return out
 
 
-def final_pieces(p: Parameters, k: np.ndarray, mu_cap: float) -> Pieces:
-    """The final map along each column as pieces ``(mode, lo, hi)`` of mu in [0, mu_cap], bottom up.
+def _final_table(p: Parameters, k: np.ndarray, mu_cap: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Every column cut at all its ends: (lo, hi, label) of each cut, arrays of shape (len(k), m).
 
-    Each column is cut at the thresholds of the rule and at the ends of every
-    hypothesis's interval (:func:`~regimemap.mechanics.regions.column_intervals`),
-    so the mode is constant on each piece; it is labelled by the rule itself
-    (:func:`~regimemap.maps.classify.classify_constants`) at its middle.
+    The cuts of a column are sorted bottom up and tile [0, mu_cap]; empty cuts
+    have lo == hi; the label is the rule's mode at the middle (``_NO_MODE``
+    where no hypothesis holds).
     """
-    k = np.asarray(k, dtype=np.float64)
     cst = p.constants
     t = thresholds(k, cst)
     ends = [np.zeros_like(k), np.full_like(k, mu_cap), t.mu_rest, t.upper, t.lower, t.mu_star]
@@ -264,12 +346,31 @@ def final_pieces(p: Parameters, k: np.ndarray, mu_cap: float) -> Pieces:
     E = np.stack([np.broadcast_to(e, k.shape) for e in ends], axis=1)
     E = np.sort(np.clip(np.where(np.isfinite(E), E, np.where(E > 0, mu_cap, 0.0)), 0.0, mu_cap), axis=1)
     a, b = E[:, :-1], E[:, 1:]
-    mid = 0.5 * (a + b)
-    lab = classify_constants(np.broadcast_to(k[:, None], mid.shape).copy(), mid, cst)
+    # only the non-empty cuts are labelled (most are empty: ends meet or are clipped)
+    full = b > a
+    lab = np.full(a.shape, _NO_MODE, dtype=np.uint8)
+    rows = np.broadcast_to(k[:, None], a.shape)
+    lab[full] = classify_constants(rows[full], 0.5 * (a[full] + b[full]), cst)
+    return a, b, lab
+
+
+def final_pieces(p: Parameters, k: np.ndarray, mu_cap: float) -> Pieces:
+    """The final map along each column as pieces ``(mode, lo, hi)`` of mu in [0, mu_cap], bottom up.
+
+    Each column is cut at the thresholds of the rule and at the ends of every
+    hypothesis's interval (:func:`~regimemap.mechanics.regions.column_intervals`),
+    so the mode is constant on each piece; it is labelled by the rule itself
+    (:func:`~regimemap.maps.classify.classify_constants`) at its middle.  A
+    piece that no hypothesis holds (one float wide, where strict ends meet) is
+    left out.
+    """
+    k = np.asarray(k, dtype=np.float64)
+    a, b, lab = _final_table(p, k, mu_cap)
+    keep = (b > a) & (lab != _NO_MODE)
     out: Pieces = []
     for j in range(k.size):
         col = [(Mode(int(lab[j, s])), float(a[j, s]), float(b[j, s]))
-               for s in range(mid.shape[1]) if b[j, s] > a[j, s]]
+               for s in np.flatnonzero(keep[j])]
         out.append(_merge(col))
     return out
 
@@ -288,58 +389,141 @@ def raw_pieces(p: Parameters, k: np.ndarray, mu_cap: float, modes: Iterable[Mode
     return [_merge(col) for col in out]
 
 
-def _tracks(cols: Pieces, n: int) -> dict[tuple[Mode, int], tuple[np.ndarray, np.ndarray]]:
-    """(mode, t) -> per-column (lo, hi) of the t-th piece of that mode (NaN where absent)."""
-    tracks: dict[tuple[Mode, int], tuple[np.ndarray, np.ndarray]] = {}
+class _Tracks(NamedTuple):
+    """The pieces of every column by mode code and rank: the t-th piece of mode m, bottom up."""
+
+    counts: np.ndarray  #: (columns, codes): how many pieces of each mode a column has
+    lo: np.ndarray  #: (codes, ranks, columns): lo of the t-th piece of mode m (NaN: none)
+    hi: np.ndarray  #: (codes, ranks, columns)
+
+
+def _table_tracks(a: np.ndarray, b: np.ndarray, lab: np.ndarray) -> _Tracks:
+    """:func:`final_pieces` (:func:`_merge` of the labelled cuts) as :class:`_Tracks`, all columns at once.
+
+    The cuts of :func:`_final_table` are visited bottom up, one cut of every
+    column per step: a non-empty labelled cut of the mode of the column's last
+    piece that touches it extends that piece; any other starts the next piece
+    of its mode.
+    """
+    n, cuts = a.shape
+    count = np.zeros((n, _CODES), dtype=np.intp)
+    lo = np.full((_CODES, cuts, n), np.nan)
+    hi = np.full((_CODES, cuts, n), np.nan)
+    cur = np.full(n, -1, dtype=np.intp)  # mode of the last piece of each column
+    cur_t = np.zeros(n, dtype=np.intp)  # and its rank
+    cur_hi = np.full(n, -np.inf)
+    labels = lab.astype(np.intp)
+    for s in range(cuts):
+        a_s, b_s, m_s = a[:, s], b[:, s], labels[:, s]
+        valid = (b_s > a_s) & (m_s != _NO_MODE)
+        if not valid.any():
+            continue
+        cont = valid & (m_s == cur) & (cur_hi >= a_s)
+        new = valid & ~cont
+        j = np.flatnonzero(new)
+        m = m_s[j]
+        t = count[j, m]
+        count[j, m] = t + 1
+        lo[m, t, j] = a_s[j]
+        cur[j], cur_t[j], cur_hi[j] = m, t, b_s[j]
+        c = np.flatnonzero(cont)
+        cur_hi[c] = np.maximum(cur_hi[c], b_s[c])
+        v = np.flatnonzero(valid)
+        hi[cur[v], cur_t[v], v] = cur_hi[v]
+    return _Tracks(count, lo, hi)
+
+
+def _table_counts(a: np.ndarray, b: np.ndarray, lab: np.ndarray) -> np.ndarray:
+    """``_table_tracks(a, b, lab).counts`` without the pieces' ends: (columns, codes), all at once.
+
+    A non-empty labelled cut starts a piece unless the column's previous such
+    cut has its mode and touches it (their ends are sorted, so the run's top
+    is that cut's top).
+    """
+    n, cuts = a.shape
+    labels = lab.astype(np.intp)
+    valid = (b > a) & (labels != _NO_MODE)
+    last = np.maximum.accumulate(np.where(valid, np.arange(cuts), -1), axis=1)
+    prev = np.concatenate([np.full((n, 1), -1), last[:, :-1]], axis=1)
+    rows = np.arange(n)[:, None]
+    at = np.maximum(prev, 0)
+    joined = (prev >= 0) & (labels[rows, at] == labels) & (b[rows, at] >= a)
+    starts = valid & ~joined
+    codes = (rows * _CODES + labels)[starts]
+    return np.bincount(codes, minlength=n * _CODES).reshape(n, _CODES)
+
+
+def _list_tracks(cols: Pieces) -> _Tracks:
+    """Pieces as lists per column (:func:`raw_pieces`) as :class:`_Tracks`."""
+    n = len(cols)
+    ranks = max([len(col) for col in cols] + [1])
+    count = np.zeros((n, _CODES), dtype=np.intp)
+    lo = np.full((_CODES, ranks, n), np.nan)
+    hi = np.full((_CODES, ranks, n), np.nan)
     for j, pieces in enumerate(cols):
-        seen: dict[Mode, int] = {}
-        for m, lo, hi in pieces:
-            t = seen.get(m, 0)
-            seen[m] = t + 1
-            if (m, t) not in tracks:
-                tracks[(m, t)] = (np.full(n, np.nan), np.full(n, np.nan))
-            tracks[(m, t)][0][j] = lo
-            tracks[(m, t)][1][j] = hi
-    return tracks
+        for m, a, b in pieces:
+            t = count[j, int(m)]
+            count[j, int(m)] = t + 1
+            lo[int(m), t, j] = a
+            hi[int(m), t, j] = b
+    return _Tracks(count, lo, hi)
 
 
 def _track_polygons(p: Parameters, k: np.ndarray, mu_cap: float, modes: tuple[Mode, ...],
                     raw: bool) -> dict[Mode, list[np.ndarray]]:
-    def pieces(kk: np.ndarray) -> Pieces:
-        return raw_pieces(p, kk, mu_cap, modes) if raw else final_pieces(p, kk, mu_cap)
+    """The polygons of a loaded block: each mode's t-th piece followed across the columns.
 
-    def piece_at(kk: float, key: tuple[Mode, int]) -> tuple[float, float] | None:
-        found = [(lo, hi) for m, lo, hi in pieces(np.array([kk]))[0] if m == key[0]]
-        return found[key[1]] if len(found) > key[1] else None
+    The ends of each run of columns are found by :func:`bisect_edges`, all at
+    once (the same k as :func:`bisect_edge` one by one).
+    """
+    def tracks(kk: np.ndarray) -> _Tracks:
+        kk = np.asarray(kk, dtype=np.float64)
+        if raw:
+            return _list_tracks(raw_pieces(p, kk, mu_cap, modes))
+        return _table_tracks(*_final_table(p, kk, mu_cap))
 
+    tr = tracks(k)
     out: dict[Mode, list[np.ndarray]] = {m: [] for m in modes}
-    for key, (lo, hi) in sorted(_tracks(pieces(k), k.size).items(), key=lambda kv: (int(kv[0][0]), kv[0][1])):
-        if key[0] not in out:
-            continue
-        def present(kk: float, key: tuple[Mode, int] = key) -> bool:
-            return piece_at(kk, key) is not None
+    # every run of columns of every (mode, rank), and its ends to find: (mode, t, inner, outer)
+    runs: list[tuple[int, int, np.ndarray]] = []
+    edges: list[tuple[int, int, int, int]] = []
+    for m in sorted(int(mode) for mode in out):
+        for t in range(tr.lo.shape[1]):
+            idx = np.flatnonzero(np.isfinite(tr.lo[m, t]))
+            if idx.size == 0:
+                continue
+            for run in np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1):
+                runs.append((m, t, run))
+                for inner, outer in ((run[0], run[0] - 1), (run[-1], run[-1] + 1)):
+                    if 0 <= outer < k.size:
+                        edges.append((m, t, int(inner), int(outer)))
+    edge_m = np.array([e[0] for e in edges], dtype=np.intp)
+    edge_t = np.array([e[1] for e in edges], dtype=np.intp)
 
-        idx = np.flatnonzero(np.isfinite(lo))
-        for run in np.split(idx, np.flatnonzero(np.diff(idx) > 1) + 1):
-            ks, los, his = list(k[run]), list(lo[run]), list(hi[run])
-            i0, i1 = run[0], run[-1]
-            for inner, outer, front in ((i0, i0 - 1, True), (i1, i1 + 1, False)):
-                if not 0 <= outer < k.size:
-                    continue
-                ke = bisect_edge(present, k[inner], k[outer])
-                pc = piece_at(ke, key)
-                if pc is not None and ke != k[inner]:
-                    if front:
-                        ks.insert(0, ke)
-                        los.insert(0, pc[0])
-                        his.insert(0, pc[1])
-                    else:
-                        ks.append(ke)
-                        los.append(pc[0])
-                        his.append(pc[1])
-            kk, ll, hh = np.asarray(ks), np.asarray(los), np.asarray(his)
-            out[key[0]].append(np.concatenate([np.column_stack([kk, ll]),
-                                               np.column_stack([kk[::-1], hh[::-1]])]))
+    def present(which: np.ndarray, kk: np.ndarray) -> np.ndarray:
+        flat = kk.ravel()
+        counts = (_list_tracks(raw_pieces(p, flat, mu_cap, modes)).counts if raw
+                  else _table_counts(*_final_table(p, flat, mu_cap)))
+        count = counts.reshape(kk.shape + (_CODES,))
+        rows = np.arange(kk.shape[0])[:, None]
+        cols = np.arange(kk.shape[1])[None, :]
+        return np.asarray(count[rows, cols, edge_m[which][:, None]] > edge_t[which][:, None])
+
+    ke = bisect_edges(present, k[[e[2] for e in edges]], k[[e[3] for e in edges]])
+    at_edge = tracks(ke)
+    found = {edge: (float(ke[i]), at_edge.lo[edge[0], edge[1], i], at_edge.hi[edge[0], edge[1], i])
+             for i, edge in enumerate(edges)
+             if np.isfinite(at_edge.lo[edge[0], edge[1], i]) and ke[i] != k[edge[2]]}
+    for m, t, run in runs:
+        kk, ll, hh = k[run], tr.lo[m, t, run], tr.hi[m, t, run]
+        i0, i1 = int(run[0]), int(run[-1])
+        front, back = found.get((m, t, i0, i0 - 1)), found.get((m, t, i1, i1 + 1))
+        if front is not None:
+            kk, ll, hh = (np.concatenate([[v], arr]) for v, arr in zip(front, (kk, ll, hh)))
+        if back is not None:
+            kk, ll, hh = (np.concatenate([arr, [v]]) for v, arr in zip(back, (kk, ll, hh)))
+        out[Mode(m)].append(np.concatenate([np.column_stack([kk, ll]),
+                                            np.column_stack([kk[::-1], hh[::-1]])]))
     return out
 
 
