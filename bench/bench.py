@@ -5,7 +5,8 @@ Prints points per second for label_grid (2000 x 2000 grid) and classify
 plotting timings of bench/bench_plot.py (``regimemap plot`` against a bare matplotlib script
 drawing the same polygons, and ``regimemap figures --set all``) and the outcome-map benchmark of
 bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics) and the lifetime benchmark of
-bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart).  Times are
+bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart) and the
+explorer's redraw of bench/bench_explore.py.  Times are
 the best of several runs (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
@@ -100,6 +101,14 @@ def main() -> int:
         spec.loader.exec_module(mod)
         print()
         mod.main()
+    explore = Path(__file__).with_name("bench_explore.py")
+    if explore.exists():  # regimemap explore: one redraw per slider step (<= 100 ms)
+        spec = importlib.util.spec_from_file_location("bench_explore", explore)
+        mod = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        mod.main([])
     return 0
 
 

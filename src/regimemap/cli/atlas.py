@@ -7,8 +7,15 @@ from typing import Any
 
 import click
 
-from ..drawing.animation import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
-from ..drawing.atlas import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
+from ..drawing.limits import (
+    ANIMATION_DPI,
+    ANIMATION_DPI_RANGE,
+    ATLAS_DPI,
+    ATLAS_DPI_RANGE,
+    FPS_RANGE,
+    MAX_FRAMES,
+    MAX_PANELS,
+)
 from ._common import (
     LOAD_OPTIONS,
     ParamType,

@@ -23,6 +23,7 @@ from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, Mode
 from ..mechanics.validation import check_gamma
 from .atlas import SAMPLES, checked_values, key_modes, sweep_text
+from .limits import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
 from .mapplot import MapStyle, draw_map
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,13 +48,6 @@ __all__ = [
     "write_animation",
 ]
 
-#: Largest number of frames of an animation.
-MAX_FRAMES = 400
-#: Resolution of the frames of an animation by default, and the range allowed.
-ANIMATION_DPI = 100
-ANIMATION_DPI_RANGE: tuple[int, int] = (30, 300)
-#: Frames per second of an animation: the range allowed.
-FPS_RANGE: tuple[float, float] = (0.5, 50.0)
 
 
 def _fmt(x: float) -> str:

@@ -23,6 +23,7 @@ from ..maps.describe import format_value
 from ..maps.sweeps import SWEEPS, resolve_share, sweep_params
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.validation import check_gamma, check_kprime
+from .limits import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -45,15 +46,10 @@ __all__ = [
     "write_atlas",
 ]
 
-#: Largest number of panels of an atlas (rows x columns).
-MAX_PANELS = 48
 #: Size of one atlas panel in inches (width, height).
 PANEL_SIZE: tuple[float, float] = (2.7, 2.35)
 #: Samples of k per panel / frame (fewer than a single map: the panels are small).
 SAMPLES = 401
-#: Resolution (dots per inch) of an atlas by default, and the range allowed.
-ATLAS_DPI = 150
-ATLAS_DPI_RANGE: tuple[int, int] = (30, 600)
 
 
 def _fmt(x: float) -> str:
