@@ -170,9 +170,11 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: ArrayLike, tria
             lo, hi = float(w[i - 1]), float(w[i])
             for _ in range(WIDTH_STEPS):
                 mid = 0.5 * (lo + hi)
+                # the narrowest chart width guides the sampling (the chart's waves), unslid
                 pair = (caissons[0], caisson.with_width(mid))
-                r = run_chunks(pair, model, chunks, jobs=jobs, scheduler=scheduler, progress=progress)
-                if float(r.sliding[1].mean()) <= target:
+                r = run_chunks(pair, model, chunks, jobs=jobs, scheduler=scheduler, progress=progress,
+                               guides=1)
+                if float(r.sliding[0].mean()) <= target:
                     hi = mid
                 else:
                     lo = mid

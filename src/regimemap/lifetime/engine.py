@@ -17,6 +17,7 @@ distribution as drawing all ``N`` heights (docs/lifetime.md, Sect. 8).
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -27,7 +28,7 @@ from .normal import truncated_normal
 from .sliding import half_sine_slide, wave_duration
 from .storms import SeaStates, sea_states, sliding_threshold, wave_forces
 
-__all__ = ["BLOCK", "BlockResult", "simulate_block"]
+__all__ = ["BLOCK", "BlockResult", "simulate_block", "simulate_blocks"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -35,8 +36,14 @@ IntArray = NDArray[np.int64]
 #: Lifetimes per random stream.
 BLOCK = 100
 
-#: Most sliding waves computed at once (bounds the memory of a block).
+#: Most exponentials drawn at once (the slices of whole storms the draws come in).
 _WAVE_SLICE = 1 << 20
+
+#: Most sliding waves whose loads are computed at once (bounds the memory of a chunk).
+_PIECE = 1 << 18
+
+#: Most slides (widths x waves) computed at once.
+_SLIDE_ELEMENTS = 1 << 21
 
 
 @dataclass(frozen=True)
@@ -69,6 +76,72 @@ def _factor(f: ErrorFactor, u: FloatArray, truncate: float | None) -> FloatArray
                       dtype=np.float64)
 
 
+@dataclass
+class _Draws:
+    """One block's uniforms and storm counts, and the generator that drew them."""
+
+    rng: np.random.Generator
+    n: int
+    counts: IntArray          # storms of each lifetime
+    life: IntArray            # the lifetime of each storm
+    first: int                # its first storm among the blocks simulated together
+    u_deep: FloatArray        # (n,) for the deep-water factors
+    u: FloatArray             # (5, storms): peak, tide phase, transformation, force, friction
+
+
+def _draw_storms(model: LifetimeModel, stream: np.random.SeedSequence, n: int, first: int) -> _Draws:
+    """The block's draws up to the storms' factors, in the order of :func:`simulate_block`."""
+    rng = np.random.Generator(np.random.PCG64(stream))
+    u_deep = rng.random(n)
+    lam = model.climate.storms_per_year
+    if lam is None:
+        counts = np.full(n, model.years, dtype=np.int64)
+    else:
+        counts = rng.poisson(lam, size=(n, model.years)).sum(axis=1).astype(np.int64)
+    life = np.repeat(np.arange(n), counts)
+    return _Draws(rng, n, counts, life, first, u_deep, rng.random((5, life.size)))
+
+
+def _storm_seas(caissons: tuple[Caisson, ...], model: LifetimeModel, blocks: Sequence[_Draws]) -> SeaStates:
+    """The sea states of the storms of all the blocks (element by element: as block by block)."""
+    err, cut = model.errors, model.truncate
+    f_deep = _factor(err.deepwater, np.concatenate([b.u_deep for b in blocks]), cut)
+    life = np.concatenate([b.life + k * b.n for k, b in enumerate(blocks)])
+    u = np.concatenate([b.u for b in blocks], axis=1)
+    H0 = model.climate.quantile(u[0]) * f_deep[life]
+    tide = 0.5 * model.tide_range * np.sin(2.0 * np.pi * u[1])
+    return sea_states(caissons, model, H0, tide, _factor(err.transformation, u[2], cut),
+                      _factor(err.force, u[3], cut), _factor(err.friction, u[4], cut))
+
+
+def _draw_waves(d: _Draws, seas: SeaStates, H_s: FloatArray) -> tuple[IntArray, IntArray, FloatArray]:
+    """The block's sliding waves: their number per storm, their storms (global) and exponentials.
+
+    The exponentials are drawn in slices of whole storms of at most
+    :data:`_WAVE_SLICE` waves (or one storm), as they always were.
+    """
+    k = slice(d.first, d.first + d.life.size)
+    can = np.isfinite(H_s[k])
+    p = np.zeros(d.life.size)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        p[can] = np.exp(-2.0 * (H_s[k][can] / seas.H13[k][can]) ** 2)
+    n_sliding = d.rng.binomial(np.where(can, seas.n_waves[k], 0), p).astype(np.int64)
+    ends = np.cumsum(n_sliding)
+    draws = []
+    first = 0
+    while first < n_sliding.size:  # slices of whole storms, at most _WAVE_SLICE waves (or one storm)
+        start_wave = 0 if first == 0 else int(ends[first - 1])
+        last = max(int(np.searchsorted(ends, start_wave + _WAVE_SLICE, side="right")), first + 1)
+        last = min(last, n_sliding.size)
+        m = int(ends[last - 1]) - start_wave
+        if m:
+            draws.append(d.rng.standard_exponential(m))
+        first = last
+    storm = np.repeat(np.arange(d.first, d.first + n_sliding.size, dtype=np.int64), n_sliding)
+    E = np.concatenate(draws) if draws else np.zeros(0)
+    return n_sliding, storm, E
+
+
 def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: np.random.SeedSequence,
                    n: int = BLOCK) -> BlockResult:
     """Simulate ``n`` lifetimes of the same caisson at several widths, from one random stream.
@@ -98,63 +171,116 @@ def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: 
     option shifts the others' random numbers; the binomial number of sliding
     waves of each storm; one standard exponential per sliding wave.
     """
-    rng = np.random.Generator(np.random.PCG64(stream))
-    err = model.errors
-    f_deep = _factor(err.deepwater, rng.random(n), model.truncate)
-    lam = model.climate.storms_per_year
-    if lam is None:
-        counts = np.full(n, model.years, dtype=np.int64)
-    else:
-        counts = rng.poisson(lam, size=(n, model.years)).sum(axis=1).astype(np.int64)
-    n_storms = int(counts.sum())
-    life = np.repeat(np.arange(n), counts)
-    u = rng.random((5, n_storms))
-    H0 = model.climate.quantile(u[0]) * f_deep[life]
-    tide = 0.5 * model.tide_range * np.sin(2.0 * np.pi * u[1])
-    seas = sea_states(caissons, model, H0, tide, _factor(err.transformation, u[2], model.truncate),
-                      _factor(err.force, u[3], model.truncate), _factor(err.friction, u[4], model.truncate))
-    H_s = sliding_threshold(caissons[0], model, seas)
-    can = np.isfinite(H_s)
-    p = np.zeros(n_storms)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        p[can] = np.exp(-2.0 * (H_s[can] / seas.H13[can]) ** 2)
-    n_sliding = rng.binomial(np.where(can, seas.n_waves, 0), p).astype(np.int64)
+    return simulate_blocks(caissons, model, (stream,), n)[0]
 
-    n_w = len(caissons)
-    storm_slide = np.zeros((n_w, n_storms))
+
+def simulate_blocks(caissons: tuple[Caisson, ...], model: LifetimeModel,
+                    streams: Sequence[np.random.SeedSequence], n: int = BLOCK,
+                    guides: int = 0) -> list[BlockResult]:
+    """Simulate several blocks together: each as :func:`simulate_block`, to the last bit.
+
+    Parameters
+    ----------
+    caissons : tuple of Caisson
+        One section at one site, of one or more widths.
+    model : LifetimeModel
+        Climate and options.
+    streams : sequence of numpy.random.SeedSequence
+        One seed per block; each block draws from its own generator, in the
+        order of :func:`simulate_block`.
+    n : int, optional
+        Lifetimes in each block (:data:`BLOCK`).
+    guides : int, optional
+        The first ``guides`` caissons only guide the sampling -- their
+        sliding heights choose the waves drawn, as in a run of all the
+        caissons -- and are not slid: the results have the rows of
+        ``caissons[guides:]`` only (the bisection of the design chart keeps
+        the chart's waves without sliding its narrowest width again).
+
+    Returns
+    -------
+    list of BlockResult
+        One per stream, the same as :func:`simulate_block` of that stream
+        (its rows ``guides:``).
+
+    Notes
+    -----
+    Every formula is element by element over storms or waves, and every sum
+    is over the waves of one storm or the storms of one lifetime, in order:
+    so the storms of all the blocks share one computation of the sea states
+    and the sliding thresholds, and their waves one computation of the loads
+    and the slides (all widths at once), and each block's numbers are those
+    it would have alone.
+    """
+    blocks: list[_Draws] = []
     first = 0
-    total = int(n_sliding.sum())
+    for stream in streams:
+        blocks.append(_draw_storms(model, stream, n, first))
+        first += blocks[-1].life.size
+    seas = _storm_seas(caissons, model, blocks)
+    H_s = sliding_threshold(caissons[0], model, seas)
+    waves = [_draw_waves(b, seas, H_s) for b in blocks]
+    n_sliding = np.concatenate([w[0] for w in waves])
+    storm = np.concatenate([w[1] for w in waves])
+    E = np.concatenate([w[2] for w in waves])
+    if not 0 <= guides < len(caissons):
+        raise ValueError(f"guides must be in [0, {len(caissons)}), got {guides!r}")
+    storm_slide = _slide_waves(caissons[0], model, seas, H_s, n_sliding, storm, E, guides)
+
+    n_w = len(caissons) - guides
+    out = []
+    for b in blocks:
+        k = storm_slide[:, b.first:b.first + b.life.size]
+        index = (np.arange(n_w)[:, None] * b.n + b.life[None, :]).ravel()
+        sliding = np.bincount(index, weights=k.ravel(), minlength=n_w * b.n).reshape(n_w, b.n)
+        max_storm = np.zeros((n_w, b.n))
+        np.maximum.at(max_storm.reshape(-1), index, k.ravel())
+        total = int(n_sliding[b.first:b.first + b.life.size].sum())
+        out.append(BlockResult(sliding=sliding.astype(np.float64), max_storm=max_storm, storms=b.counts,
+                               sliding_waves=total))
+    return out
+
+
+def _slide_waves(caisson: Caisson, model: LifetimeModel, seas: SeaStates, H_s: FloatArray,
+                 n_sliding: IntArray, storm: IntArray, E: FloatArray, guides: int) -> FloatArray:
+    """Each storm's total slide at widths ``guides:``, ``(n_widths - guides, n_storms)``.
+
+    The waves go in pieces of whole storms (at most :data:`_PIECE` waves, or
+    one storm), and the widths of a piece in groups of at most
+    :data:`_SLIDE_ELEMENTS` slides: one numpy call for all the waves of a
+    piece, one for a group's slides, one sum per storm in wave order.
+    """
+    n_storms = n_sliding.size
+    storm_slide = np.zeros((seas.widths.size - guides, n_storms))
     ends = np.cumsum(n_sliding)
-    while first < n_storms:  # slices of whole storms, at most _WAVE_SLICE waves (or one storm)
+    first = 0
+    while first < n_storms:
         start_wave = 0 if first == 0 else int(ends[first - 1])
-        last = int(np.searchsorted(ends, start_wave + _WAVE_SLICE, side="right"))
-        last = max(last, first + 1)
-        _slide_storms(caissons, model, seas, H_s, n_sliding, rng, first, min(last, n_storms),
-                      storm_slide)
+        last = max(int(np.searchsorted(ends, start_wave + _PIECE, side="right")), first + 1)
+        last = min(last, n_storms)
+        waves = slice(start_wave, int(ends[last - 1]))
+        if waves.stop > waves.start:
+            _slide_piece(caisson, model, seas, H_s, storm[waves], E[waves], first, last, guides, storm_slide)
         first = last
-    sliding = np.stack([np.bincount(life, weights=storm_slide[j], minlength=n) for j in range(n_w)]
-                       ).astype(np.float64)
-    max_storm = np.zeros((n_w, n))
-    for j in range(n_w):
-        np.maximum.at(max_storm[j], life, storm_slide[j])
-    return BlockResult(sliding=sliding, max_storm=max_storm, storms=counts, sliding_waves=total)
+    return storm_slide
 
 
-def _slide_storms(caissons: tuple[Caisson, ...], model: LifetimeModel, seas: SeaStates, H_s: FloatArray,
-                  n_sliding: IntArray, rng: np.random.Generator, first: int, last: int,
-                  storm_slide: FloatArray) -> None:
-    """Draw the sliding waves of storms ``first..last-1`` and add up their slides per storm."""
-    counts = n_sliding[first:last]
-    m = int(counts.sum())
-    if m == 0:
-        return
-    storm = np.repeat(np.arange(first, last), counts)
-    E = rng.standard_exponential(m)
+def _slide_piece(caisson: Caisson, model: LifetimeModel, seas: SeaStates, H_s: FloatArray, storm: IntArray,
+                 E: FloatArray, first: int, last: int, guides: int, storm_slide: FloatArray) -> None:
+    """The slides of the waves of storms ``first..last-1`` at widths ``guides:``, summed per storm."""
     H13 = seas.H13[storm]
     H = np.minimum(np.sqrt(H_s[storm] ** 2 + 0.5 * H13 * H13 * E), seas.H_cap[storm])
-    P, u = wave_forces(caissons[0], model, seas, storm, H)
+    P, u = wave_forces(caisson, model, seas, storm, H)
     tau = wave_duration(H, seas.depth[storm], seas.period[storm])
-    mu = seas.friction[storm]
-    for j, b in enumerate(seas.widths):
-        x = half_sine_slide(P + mu * u * b, seas.resistance[j, storm], seas.mass[j, storm], tau)
-        storm_slide[j, first:last] += np.bincount(storm - first, weights=x, minlength=last - first)
+    mu_u = seas.friction[storm] * u
+    m, n_storms = storm.size, last - first
+    n_w = seas.widths.size
+    rows = max(1, _SLIDE_ELEMENTS // m)
+    for j in range(guides, n_w, rows):
+        group = slice(j, min(j + rows, n_w))
+        F = P[None, :] + mu_u[None, :] * seas.widths[group, None]
+        x = half_sine_slide(F, seas.resistance[group, storm], seas.mass[group, storm], tau[None, :])
+        k = group.stop - group.start
+        index = (np.arange(k)[:, None] * n_storms + (storm - first)[None, :]).ravel()
+        sums = np.bincount(index, weights=x.ravel(), minlength=k * n_storms).reshape(k, n_storms)
+        storm_slide[group.start - guides:group.stop - guides, first:last] += sums

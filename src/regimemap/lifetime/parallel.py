@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .engine import BLOCK, BlockResult, simulate_block
+from .engine import BLOCK, BlockResult, simulate_blocks
 from .model import Caisson, LifetimeModel
 
 __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
@@ -72,9 +72,10 @@ def make_chunks(trials: int, seed: int, chunk: int = DEFAULT_CHUNK) -> list[Chun
     return out
 
 
-def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk) -> BlockResult:
-    """Simulate one chunk's blocks and keep its share of the lifetimes."""
-    parts = [simulate_block(caissons, model, s) for s in chunk.streams]
+def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk,
+              guides: int = 0) -> BlockResult:
+    """Simulate one chunk's blocks and keep its share of the lifetimes (``guides``: :func:`run_chunks`)."""
+    parts = simulate_blocks(caissons, model, chunk.streams, guides=guides)
     sliding = np.concatenate([p.sliding for p in parts], axis=1)[:, :chunk.keep]
     max_storm = np.concatenate([p.max_storm for p in parts], axis=1)[:, :chunk.keep]
     storms = np.concatenate([p.storms for p in parts])[:chunk.keep]
@@ -91,21 +92,21 @@ def available_cores() -> int:
 
 
 def _serial(caissons: tuple[Caisson, ...], model: LifetimeModel,
-            chunks: Sequence[Chunk]) -> Iterator[BlockResult]:
+            chunks: Sequence[Chunk], guides: int) -> Iterator[BlockResult]:
     for c in chunks:
-        yield run_chunk(caissons, model, c)
+        yield run_chunk(caissons, model, c, guides)
 
 
 def _processes(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
-               jobs: int) -> Iterator[BlockResult]:
+               jobs: int, guides: int) -> Iterator[BlockResult]:
     with ProcessPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(run_chunk, caissons, model, c) for c in chunks]
+        futures = [pool.submit(run_chunk, caissons, model, c, guides) for c in chunks]
         for f in futures:  # in order: the result does not depend on which finishes first
             yield f.result()
 
 
 def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
-          scheduler: str) -> Iterator[BlockResult]:
+          scheduler: str, guides: int) -> Iterator[BlockResult]:
     try:
         from distributed import Client
     except ImportError:
@@ -119,7 +120,7 @@ def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[
                                  f"{str(exc) or type(exc).__name__}") from None
     try:
         futures = client.map(run_chunk, [caissons] * len(chunks), [model] * len(chunks), list(chunks),
-                             pure=False)
+                             [guides] * len(chunks), pure=False)
         for f in futures:
             yield f.result()
     finally:
@@ -128,7 +129,7 @@ def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[
 
 def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk], *,
                jobs: int = 1, scheduler: str | None = None,
-               progress: Callable[[int], None] | None = None) -> BlockResult:
+               progress: Callable[[int], None] | None = None, guides: int = 0) -> BlockResult:
     """Run every chunk and join their results in order.
 
     Parameters
@@ -146,6 +147,10 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
         run on its workers instead.
     progress : callable, optional
         Called with the number of lifetimes of each finished chunk.
+    guides : int, optional
+        The first ``guides`` caissons only choose the waves (their sliding
+        heights count in the sampling threshold) and are not slid; the result
+        has the rows of ``caissons[guides:]``.
 
     Returns
     -------
@@ -153,13 +158,13 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
         The lifetimes of all chunks, in order.
     """
     if scheduler is not None:
-        results: Iterator[BlockResult] = _dask(caissons, model, chunks, scheduler)
+        results: Iterator[BlockResult] = _dask(caissons, model, chunks, scheduler, guides)
         where = f"on the Dask scheduler at {scheduler}"
     elif jobs > 1 and len(chunks) > 1:
-        results = _processes(caissons, model, chunks, min(jobs, len(chunks)))
+        results = _processes(caissons, model, chunks, min(jobs, len(chunks)), guides)
         where = f"in {min(jobs, len(chunks))} processes"
     else:
-        results = _serial(caissons, model, chunks)
+        results = _serial(caissons, model, chunks, guides)
         where = "in this process"
     total = sum(c.keep for c in chunks)
     _log.info("%d lifetimes of %d years x %d width%s in %d chunk%s %s", total, model.years, len(caissons),

@@ -71,8 +71,53 @@ def added_mass(base_depth: ArrayLike, rho_w: float) -> FloatArray:
     return np.asarray(ADDED_MASS_COEFFICIENT * rho_w * hp * hp, dtype=np.float64)
 
 
-def _velocity(ratio: FloatArray, s1: FloatArray, c1: FloatArray, s: FloatArray) -> FloatArray:
-    return np.asarray(ratio * (c1 - np.cos(s)) - (s - s1), dtype=np.float64)
+#: Most Newton (or bisection) steps for the stop within the wave.
+_STOP_STEPS = 60
+
+
+def _stop_within(ratio: FloatArray, s1: FloatArray, c1: FloatArray) -> FloatArray:
+    """The root ``s2`` of the velocity on ``[max(s1, pi - s1), pi]`` of each wave (1-d arrays).
+
+    Newton's method from ``pi``, safeguarded by the bracket; each wave runs
+    its own steps until its iterate stops changing (from then on it never
+    changes: the step and the bracket are functions of it), at most
+    :data:`_STOP_STEPS`.  Settled waves leave the arrays, so the work follows
+    the waves still iterating; each wave's iterates are the same whatever
+    the other waves in the arrays.
+    """
+    lo = np.maximum(s1, np.pi - s1)
+    hi = np.full_like(ratio, np.pi)
+    s = hi.copy()
+    out = np.empty_like(ratio)
+    todo = np.arange(ratio.size)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        for _ in range(_STOP_STEPS):
+            # v = ratio (c1 - cos s) - (s - s1) and dv = ratio sin s - 1, written in place
+            v = np.subtract(c1, np.cos(s))
+            v *= ratio
+            v -= s - s1
+            dv = np.sin(s)
+            dv *= ratio
+            dv -= 1.0
+            np.copyto(lo, s, where=v > 0.0)
+            np.copyto(hi, s, where=v <= 0.0)
+            step = np.divide(v, dv, out=v)
+            np.subtract(s, step, out=step)
+            bisect = np.add(lo, hi, out=dv)
+            bisect *= 0.5
+            # lo and hi are finite: the strict bounds also refuse an infinite or nan step
+            s_new = np.where((step > lo) & (step < hi), step, bisect)
+            going = s_new != s
+            s = s_new
+            n_going = int(np.count_nonzero(going))
+            if n_going == 0:
+                break
+            if 8 * n_going < 7 * going.size:  # an eighth has settled: keep the others only
+                settled = ~going
+                out[todo[settled]] = s[settled]
+                todo, ratio, s1, c1, lo, hi, s = (a[going] for a in (todo, ratio, s1, c1, lo, hi, s))
+    out[todo] = s
+    return out
 
 
 def half_sine_slide(force: ArrayLike, resistance: ArrayLike, mass: ArrayLike,
@@ -134,21 +179,7 @@ def half_sine_slide(force: ArrayLike, resistance: ArrayLike, mass: ArrayLike,
     early = ~late
     if np.any(early):
         re, s1e, c1e = ratio[early], s1[early], c1[early]
-        lo = np.maximum(s1e, np.pi - s1e)
-        hi = np.full_like(re, np.pi)
-        s = hi.copy()
-        for _ in range(60):
-            v = _velocity(re, s1e, c1e, s)
-            dv = re * np.sin(s) - 1.0
-            lo = np.where(v > 0.0, s, lo)
-            hi = np.where(v <= 0.0, s, hi)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                step = s - v / dv
-            bisect = 0.5 * (lo + hi)
-            s_new = np.where((step > lo) & (step < hi) & np.isfinite(step), step, bisect)
-            if np.array_equal(s_new, s):
-                break
-            s = s_new
+        s = _stop_within(re, s1e, c1e)
         D[early] = re * (c1e * (s - s1e) - (np.sin(s) - q[early])) - 0.5 * (s - s1e) ** 2
     omega = np.pi / tau[moving]
     out[moving] = np.maximum(D, 0.0) * R[moving] / (M[moving] * omega * omega)

@@ -13,12 +13,13 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from regimemap.waves import breaker_height, caisson_loads, design_heights, goda_pressures, wavelength
+from regimemap.waves import breaker_height, caisson_loads, design_heights, wavelength
+from regimemap.waves.pressure import GodaSeaState, goda_pressures_for, goda_sea_state
 
 from .model import PERIOD_COEFFICIENT, PERIOD_EXPONENT, Caisson, LifetimeModel
 from .sliding import added_mass
 
-__all__ = ["SeaStates", "sea_states", "sliding_threshold", "wave_forces"]
+__all__ = ["SeaStates", "StormLoads", "sea_states", "sliding_threshold", "storm_loads", "wave_forces"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -103,6 +104,57 @@ def sea_states(caissons: tuple[Caisson, ...], model: LifetimeModel, H0: FloatArr
                      mass=dry + added_mass(hp, c.rho_w)[None, :])
 
 
+@dataclass(frozen=True)
+class StormLoads:
+    """The wave loads of given storms, prepared once for any wave heights (:func:`storm_loads`).
+
+    Calling it with the heights ``H`` (one per storm of ``storm``, or
+    broadcast) gives ``(P, U_per_width)`` as :func:`wave_forces` does.
+    """
+
+    sea: GodaSeaState        # the storms' sea states (Goda's height-free factors)
+    base_depth: FloatArray   # h' + tide [m]
+    force_factor: FloatArray
+    impulsive: bool
+
+    def __call__(self, H: FloatArray) -> tuple[FloatArray, FloatArray]:
+        """``P`` [N/m] and ``U/b`` [N/m per m of width] of waves of height ``H``, times the force factor."""
+        loads = caisson_loads(goda_pressures_for(self.sea, H, self.impulsive), self.base_depth, 1.0)
+        f = self.force_factor
+        return np.asarray(loads.P * f, dtype=np.float64), np.asarray(loads.U * f, dtype=np.float64)
+
+
+def storm_loads(caisson: Caisson, model: LifetimeModel, seas: SeaStates, storm: IntArray) -> StormLoads:
+    """Goda's loads in the sea states of ``storm``, for waves of heights given later.
+
+    Parameters
+    ----------
+    caisson : Caisson
+        The site (and the wave angle, berm width).
+    model : LifetimeModel
+        ``impulsive``.
+    seas : SeaStates
+        The storms.
+    storm : ndarray of int
+        The storm of each wave (or each storm once, for a bisection on the height).
+
+    Returns
+    -------
+    StormLoads
+        The wave length, Goda's ``alpha1``, ``alpha3`` and Takahashi's
+        ``alpha_I1`` of each entry computed once: evaluating it at many heights
+        costs only the height-dependent part of the formulas, and gives the
+        same numbers, bit for bit, as :func:`wave_forces`.
+    """
+    c = caisson
+    sea = goda_sea_state(period=seas.period[storm], depth=seas.depth[storm], hb=seas.hb[storm],
+                         armour_depth=seas.armour_depth[storm], base_depth=seas.base_depth[storm],
+                         crest=seas.crest[storm], berm_width=c.berm_width, angle_deg=c.angle_deg,
+                         rotation_deg=c.rotation_deg, rho_w=c.rho_w, g=c.g, L=seas.L[storm])
+    return StormLoads(sea=sea, base_depth=seas.base_depth[storm], force_factor=seas.force_factor[storm],
+                      impulsive=model.impulsive)
+
+
 def wave_forces(caisson: Caisson, model: LifetimeModel, seas: SeaStates, storm: IntArray,
                 H: FloatArray) -> tuple[FloatArray, FloatArray]:
     """Goda's force ``P`` and uplift per metre of width ``U/b`` of waves of height ``H``.
@@ -124,24 +176,20 @@ def wave_forces(caisson: Caisson, model: LifetimeModel, seas: SeaStates, storm: 
     Returns
     -------
     P, U_per_width : ndarray
-        [N/m] and [N/m per m of width], both times the storm's force factor.
+        [N/m] and [N/m per m of width], both times the storm's force factor
+        (:func:`storm_loads` evaluated once).
     """
-    c = caisson
-    p = goda_pressures(Hmax=H, period=seas.period[storm], depth=seas.depth[storm], hb=seas.hb[storm],
-                       armour_depth=seas.armour_depth[storm], base_depth=seas.base_depth[storm],
-                       crest=seas.crest[storm], berm_width=c.berm_width, angle_deg=c.angle_deg,
-                       rotation_deg=c.rotation_deg, impulsive=model.impulsive, rho_w=c.rho_w, g=c.g,
-                       L=seas.L[storm])
-    loads = caisson_loads(p, seas.base_depth[storm], 1.0)
-    f = seas.force_factor[storm]
-    return np.asarray(loads.P * f, dtype=np.float64), np.asarray(loads.U * f, dtype=np.float64)
+    return storm_loads(caisson, model, seas, storm)(H)
 
 
-def _excess(seas: SeaStates, P: FloatArray, u: FloatArray, storm: IntArray) -> FloatArray:
-    """``max over widths of F - R`` for waves of the given storms (> 0: some width slides)."""
-    mu = seas.friction[storm]
-    F = P[None, :] + mu[None, :] * u[None, :] * seas.widths[:, None]
-    return np.asarray(np.max(F - seas.resistance[:, storm], axis=0), dtype=np.float64)
+def _excess(P: FloatArray, mu_u: FloatArray, widths: FloatArray, resistance: FloatArray) -> FloatArray:
+    """``max over widths of F - R``, ``F = P + mu U`` (> 0: some width slides).
+
+    ``mu_u`` is ``mu U/b`` of each wave, ``resistance`` the ``(n_widths, n)``
+    friction ``R`` at rest of the waves' storms.
+    """
+    F = P[None, :] + mu_u[None, :] * widths[:, None]
+    return np.asarray(np.max(F - resistance, axis=0), dtype=np.float64)
 
 
 def sliding_threshold(caisson: Caisson, model: LifetimeModel, seas: SeaStates) -> FloatArray:
@@ -171,17 +219,20 @@ def sliding_threshold(caisson: Caisson, model: LifetimeModel, seas: SeaStates) -
     live = np.flatnonzero((seas.n_waves > 0) & (seas.H13 > 0.0))
     if live.size == 0:
         return out
-    cap = seas.H_cap[live]
-    P, u = wave_forces(caisson, model, seas, live, cap)
-    live = live[_excess(seas, P, u, live) > 0.0]
+    P, u = wave_forces(caisson, model, seas, live, seas.H_cap[live])
+    live = live[_excess(P, seas.friction[live] * u, seas.widths, seas.resistance[:, live]) > 0.0]
     if live.size == 0:
         return out
+    # the storms' sea states, frictions and resistances once; each step only evaluates the heights
+    loads = storm_loads(caisson, model, seas, live)
+    mu = seas.friction[live]
+    resistance = seas.resistance[:, live]
     lo = np.zeros(live.size)
     hi = seas.H_cap[live].copy()
     for _ in range(_THRESHOLD_STEPS):
         mid = 0.5 * (lo + hi)
-        P, u = wave_forces(caisson, model, seas, live, mid)
-        slides = _excess(seas, P, u, live) > 0.0
+        P, u = loads(mid)
+        slides = _excess(P, mu * u, seas.widths, resistance) > 0.0
         hi = np.where(slides, mid, hi)
         lo = np.where(slides, lo, mid)
     out[live] = lo
