@@ -35,19 +35,24 @@ def _inside(poly: np.ndarray, k: np.ndarray, mu: np.ndarray) -> np.ndarray:
     return inside
 
 
-def _solver_sets(k, mu, g, kp):
+def _solver_bits(k, mu, g, kp):
+    """The solver's admissible set of every point, as bits (bit i: the i-th mode of Mode)."""
     adm = admissible(k, mu, g, kp)
-    return [frozenset(m for m, a in adm.items() if a[i]) for i in range(k.size)]
+    bits = np.zeros(k.size, np.int64)
+    for i, m in enumerate(Mode):
+        bits |= adm[m].astype(np.int64) << i
+    return bits
 
 
 def _stable_mask(k, mu, g, kp):
-    """Points whose solver set is the same at four neighbours (off the boundaries)."""
-    base = _solver_sets(k, mu, g, kp)
+    """Points whose solver set is the same at four neighbours (off the boundaries), and the set
+    of every point."""
+    base = _solver_bits(k, mu, g, kp)
     ok = np.ones(k.size, bool)
     for dk, dm in ((H, 0), (-H, 0), (0, H), (0, -H)):
-        other = _solver_sets(np.maximum(k + dk, 0), np.maximum(mu + dm, 0), g, kp)
-        ok &= np.array([a == b for a, b in zip(base, other)])
-    return base, ok
+        ok &= _solver_bits(np.maximum(k + dk, 0), np.maximum(mu + dm, 0), g, kp) == base
+    sets = {b: frozenset(m for i, m in enumerate(Mode) if b >> i & 1) for b in np.unique(base).tolist()}
+    return [sets[b] for b in base.tolist()], ok
 
 
 def _view(p: Parameters) -> tuple[float, float]:
@@ -96,16 +101,28 @@ def test_polygons_equal_solver_non_uniqueness(gamma, kprime):
 
 
 def _near_edge(poly, k, mu, tol):
+    """Whether each point (k, mu) lies closer than ``tol`` to a side of the closed ``poly``.
+
+    A point can be that close to a side only inside the side's box grown by ``tol``: the points
+    sorted by k once, each side measures the few points of its box only.
+    """
     a = poly
     b = np.roll(poly, -1, axis=0)
     d = b - a
     L2 = np.maximum((d ** 2).sum(1), 1e-300)
-    pts = np.stack([k, mu], 1)
+    order = np.argsort(k, kind="stable")
+    ks = k[order]
+    lo_box, hi_box = np.minimum(a, b) - 2.0 * tol, np.maximum(a, b) + 2.0 * tol
     out = np.zeros(k.size, bool)
-    for ai, di, li in zip(a, d, L2):
+    for ai, di, li, lo, hi in zip(a, d, L2, lo_box, hi_box):
+        idx = order[np.searchsorted(ks, lo[0]):np.searchsorted(ks, hi[0], side="right")]
+        idx = idx[(mu[idx] >= lo[1]) & (mu[idx] <= hi[1])]
+        if idx.size == 0:
+            continue
+        pts = np.stack([k[idx], mu[idx]], 1)
         t = np.clip(((pts - ai) @ di) / li, 0, 1)
         proj = ai + t[:, None] * di
-        out |= np.hypot(*(pts - proj).T) < tol
+        out[idx] |= np.hypot(*(pts - proj).T) < tol
     return out
 
 

@@ -35,15 +35,28 @@ def _inside(poly: np.ndarray, x: np.ndarray, y: np.ndarray) -> np.ndarray:
     return inside
 
 
-def _edge_distance(poly: np.ndarray, x: np.ndarray, y: np.ndarray, scale) -> np.ndarray:
-    q = np.column_stack([x, y]) / scale
+def _near_edge(poly: np.ndarray, xs: np.ndarray, ys: np.ndarray, scale, tol: float) -> np.ndarray:
+    """Whether each point of the grid ``meshgrid(xs, ys)`` (raveled) lies closer than ``tol`` to an
+    edge of ``poly``, distances measured in units of ``scale`` (the view).
+
+    A point can be that close to a segment only inside the segment's box grown by ``tol``: the
+    distance is computed there only (a few cells of the grid per segment, not every point).
+    """
+    gx, gy = xs / scale[0], ys / scale[1]
     s = poly / np.asarray(scale)
-    a, b = s[:-1], s[1:]
-    d = b - a
-    L2 = np.maximum(np.einsum("ij,ij->i", d, d), 1e-300)
-    t = np.clip(np.einsum("pij,ij->pi", q[:, None, :] - a[None], d) / L2, 0, 1)
-    proj = a[None] + t[..., None] * d[None]
-    return np.min(np.hypot(*(proj - q[:, None, :]).transpose(2, 0, 1)), axis=1)
+    near = np.zeros((gy.size, gx.size), bool)
+    for a, b in zip(s[:-1], s[1:], strict=True):
+        lo, hi = np.minimum(a, b) - 2.0 * tol, np.maximum(a, b) + 2.0 * tol
+        i0, i1 = np.searchsorted(gx, lo[0]), np.searchsorted(gx, hi[0], side="right")
+        j0, j1 = np.searchsorted(gy, lo[1]), np.searchsorted(gy, hi[1], side="right")
+        if i0 >= i1 or j0 >= j1:
+            continue
+        qx, qy = np.meshgrid(gx[i0:i1], gy[j0:j1])
+        d = b - a
+        L2 = max(float(d @ d), 1e-300)
+        t = np.clip(((qx - a[0]) * d[0] + (qy - a[1]) * d[1]) / L2, 0, 1)
+        near[j0:j1, i0:i1] |= np.hypot(a[0] + t * d[0] - qx, a[1] + t * d[1] - qy) < tol
+    return near.ravel()
 
 
 @pytest.mark.slow
@@ -61,7 +74,7 @@ def test_polygons_of_loaded_maps_match_label_grid(p):
     for mode, lst in polys.items():
         for poly in lst:
             ins = _inside(poly, x, y)
-            edge = _edge_distance(poly, x, y, (k_max, mu_max)) < 2e-3
+            edge = _near_edge(poly, kk, mu, (k_max, mu_max), 2e-3)
             near |= edge
             assert (grid.ravel()[ins & ~edge] == mode).all(), (mode.label,)
             covered += ins

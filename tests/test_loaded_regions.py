@@ -12,6 +12,7 @@ tested separately: there the label must be admissible.
 from __future__ import annotations
 
 import collections
+import functools
 
 import numpy as np
 import pytest
@@ -28,6 +29,17 @@ from ._sweep import tiered
 SWEEP = loaded_sweep(100, seed=0)
 
 
+@functools.cache
+def _solved(i: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, dict]:
+    """The sample of ``SWEEP[i]`` (1500 points, seed 7) and the solver's least-constraint choice
+    there: (k, mu, codes, admissible), computed once per process for the two tests that use it
+    (about 6 MB for the whole sweep).  Read-only."""
+    gamma, kprime, loads = SWEEP[i]
+    k, mu = sample(gamma, kprime, loads, 1500, seed=7)
+    codes, adm, _ = least_constraint(k, mu, gamma, kprime, **loads)
+    return k, mu, codes, adm
+
+
 def near_boundary(k, mu, g, kp, loads, codes, adm, rel=1e-6):
     """Points where the solver's admissible sets or choice change under a small move."""
     k_hi, mu_hi = view(g, kp, loads)
@@ -41,10 +53,11 @@ def near_boundary(k, mu, g, kp, loads, codes, adm, rel=1e-6):
     return near
 
 
-@pytest.mark.parametrize("gamma,kprime,loads", tiered(SWEEP, every=8))
-def test_raw_regions_and_classify_equal_the_solver(gamma, kprime, loads):
-    k, mu = sample(gamma, kprime, loads, 1500, seed=7)
-    codes, adm, _ = least_constraint(k, mu, gamma, kprime, **loads)
+@pytest.mark.parametrize(("i",), tiered([(i,) for i in range(len(SWEEP))], every=8),
+                         ids=[f"{g:.3g}-{kp:.3g}-{n}" for n, (g, kp, _) in enumerate(SWEEP)])
+def test_raw_regions_and_classify_equal_the_solver(i):
+    gamma, kprime, loads = SWEEP[i]
+    k, mu, codes, adm = _solved(i)
     keep = ~near_boundary(k, mu, gamma, kprime, loads, codes, adm)
     assert keep.mean() > 0.9
     p = Parameters(gamma, kprime, **loads)
@@ -128,9 +141,8 @@ def test_lift_off_is_a_whole_column():
 def test_loads_create_new_modes_and_overlaps():
     """Which modes win and which overlaps occur with loads (least constraint decides them)."""
     won, overlaps = collections.Counter(), collections.Counter()
-    for g, kp, loads in SWEEP:
-        k, mu = sample(g, kp, loads, 1500, seed=7)
-        codes, adm, _ = least_constraint(k, mu, g, kp, **loads)
+    for case in range(len(SWEEP)):
+        _, _, codes, adm = _solved(case)
         won.update(Mode(c).label for c in np.unique(codes))
         stack = np.stack([adm[c] for c in SELECTION_ORDER])
         for i in np.flatnonzero(stack.sum(axis=0) > 1):

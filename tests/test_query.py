@@ -23,10 +23,15 @@ from regimemap.mechanics.solver import Hypothesis, admissible, solve
 from ._sweep import sample_points, sweep
 
 
-def _mode_along(var: str, r, value: float) -> Mode:
-    if var == "k":
-        return Mode(int(classify(value, r.mu, r.gamma, r.kprime)))
-    return Mode(int(classify(r.k, value, r.gamma, r.kprime)))
+def _modes_along(queries: list) -> list[Mode]:
+    """The mode of the point of each ``(var, r, value)`` in ``queries``: the result ``r``'s point
+    with its ``var`` ("k" or "mu") set to ``value`` -- one call of classify for all (it is
+    pointwise: the labels of one call per point)."""
+    k = np.array([v if var == "k" else r.k for var, r, v in queries])
+    mu = np.array([v if var == "mu" else r.mu for var, r, v in queries])
+    gamma = np.array([r.gamma for _, r, _ in queries])
+    kprime = np.array([r.kprime for _, r, _ in queries])
+    return [Mode(int(c)) for c in classify(k, mu, gamma, kprime)]
 
 
 def _random_points(n_per: int = 25, n_kprime: int = 9) -> list[DesignPoint]:
@@ -71,9 +76,10 @@ def test_chosen_hypothesis_is_admissible(results):
 
 @pytest.mark.slow
 def test_admissible_set_equals_solver_and_contains_mode(results):
-    for r in results:
-        adm = admissible(r.k, r.mu, r.gamma, r.kprime)
-        assert set(r.admissible) == {m for m, ok in adm.items() if bool(ok)}
+    # the solver on every point at once (it is pointwise)
+    adm = admissible(*(np.array([getattr(r, a) for r in results]) for a in ("k", "mu", "gamma", "kprime")))
+    for i, r in enumerate(results):
+        assert set(r.admissible) == {m for m, ok in adm.items() if bool(ok[i])}
         assert r.mode in r.admissible
         # Section 4.7: the chosen mode is the first admissible one in PRIORITY order
         assert r.admissible[0] == r.mode
@@ -83,6 +89,8 @@ def test_admissible_set_equals_solver_and_contains_mode(results):
 def test_margins_are_exact(results):
     """The mode holds strictly inside the margin and differs at the boundary found."""
     checked = 0
+    # the labels along the margins, gathered and classified at once: (var, r, value) per query
+    at, inside, beyond = [], [], []
     for r in results:
         for m in (r.margin_k, r.margin_mu):
             x = m.value
@@ -92,30 +100,36 @@ def test_margins_are_exact(results):
                 checked += 1
                 assert (c.at > x) if c.direction == "up" else (c.at < x)
                 assert c.delta == pytest.approx(abs(c.at - x))
-                assert _mode_along(m.variable, r, c.at) != r.mode
+                at.append((m.variable, r, c.at))
                 # just inside, and along the whole way, the mode is the point's own
                 for t in (0.0, 0.25, 0.5, 0.9, 1.0 - 1e-9):
-                    v = x + (c.at - x) * t
-                    assert _mode_along(m.variable, r, v) == r.mode, (m.variable, c, t)
+                    inside.append(((m.variable, r, x + (c.at - x) * t), (c, t)))
                 # just beyond, the mode is the reported one (or, for an isolated
                 # boundary point, the mode at the boundary)
-                beyond = c.at + (c.at - x) * 1e-9
-                if beyond >= 0.0:
-                    assert c.to in (_mode_along(m.variable, r, beyond),
-                                    _mode_along(m.variable, r, c.at))
+                b = c.at + (c.at - x) * 1e-9
+                if b >= 0.0:
+                    beyond.append(((m.variable, r, b), len(at) - 1, c))
     assert checked > 1000
+    mode_at = _modes_along(at)
+    for (_, r, _), mode in zip(at, mode_at, strict=True):
+        assert mode != r.mode
+    for ((var, r, _), (c, t)), mode in zip(inside, _modes_along([q for q, _ in inside]), strict=True):
+        assert mode == r.mode, (var, c, t)
+    for ((_, _, _), i, c), mode in zip(beyond, _modes_along([q for q, _, _ in beyond]), strict=True):
+        assert c.to in (mode, mode_at[i])
 
 
 @pytest.mark.slow
 def test_no_change_means_none_far_away(results):
+    queries = []
     for r in results:
         for m in (r.margin_k, r.margin_mu):
             if m.up is None:
-                for v in (m.value * 1.01 + 1e-3, 10 * m.value + 1.0, 1e3, 1e7):
-                    assert _mode_along(m.variable, r, v) == r.mode
+                queries += [(m.variable, r, v) for v in (m.value * 1.01 + 1e-3, 10 * m.value + 1.0, 1e3, 1e7)]
             if m.down is None and m.value > 0:
-                for v in (0.0, 0.5 * m.value, 0.999 * m.value):
-                    assert _mode_along(m.variable, r, v) == r.mode
+                queries += [(m.variable, r, v) for v in (0.0, 0.5 * m.value, 0.999 * m.value)]
+    for (var, r, v), mode in zip(queries, _modes_along(queries), strict=True):
+        assert mode == r.mode, (var, v)
 
 
 def test_nearest_and_relative(results):

@@ -69,9 +69,11 @@ def test_rock_about_O_prime_never_admissible():
         assert not solve(Hypothesis.ROCK_O_PRIME, k, mu, g, kp).ok.any()
 
 
+# The two sweeps below: k' every 0.25 and at every case threshold of the report (tests/_sweep.py),
+# for the 12 aspect ratios (149 pairs; the modes change only at the thresholds, which are all in).
 @pytest.mark.slow
 def test_admissible_set_never_empty():
-    for g, kp in sweep(11):
+    for g, kp in sweep(9):
         k, mu = sample_points(g, kp, 3000, seed=2)
         adm = admissible(k, mu, g, kp)
         assert np.stack(list(adm.values())).any(axis=0).all(), (g, kp)
@@ -79,7 +81,7 @@ def test_admissible_set_never_empty():
 
 @pytest.mark.slow
 def test_slide_right_and_slide_rock_prime_plus_never_admissible():
-    for g, kp in sweep(11):
+    for g, kp in sweep(9):
         k, mu = sample_points(g, kp, 3000, seed=3)
         hyp = admissible_hypotheses(k, mu, g, kp)
         assert not hyp[Hypothesis.SLIDE_RIGHT].any()
@@ -97,3 +99,30 @@ def test_singular_slide_rock_is_not_admissible():
 def test_modes_mapping_covers_all_modes():
     adm = admissible(0.1, 0.5, 1.0, 0.0)
     assert set(adm) == set(Mode)
+
+
+def test_the_elimination_solves_the_system_as_a_general_solver_does():
+    """The solver eliminates the accelerations (the diagonal block of the dynamic rows) and
+    solves the 3x3 system of the reactions by Cramer's rule: its determinants and solutions
+    are numpy.linalg's for every hypothesis's rows, and for random systems of that shape."""
+    from regimemap.mechanics import solver
+
+    rng = np.random.default_rng(7)
+    n = 2000
+    A = rng.normal(size=(n, 6, 6))
+    A[:, :3, :3] = 0.0
+    A[:, [0, 1, 2], [0, 1, 2]] = rng.uniform(0.5, 2.0, size=(n, 3)) * rng.choice([-1, 1], size=(n, 3))
+    rhs = rng.normal(size=(n, 6))
+    det, u = solver._solve_system(A, rhs)
+    np.testing.assert_allclose(det, np.linalg.det(A), rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(u, np.linalg.solve(A, rhs[..., None])[..., 0], rtol=1e-8, atol=1e-10)
+    mu, gamma = rng.uniform(0.01, 1.5, n), rng.uniform(0.2, 5.0, n)
+    for hypothesis in Hypothesis:
+        A = np.zeros((n, 6, 6))
+        A[:, :3] = solver.dynamic_rows(gamma, solver.default_i2(gamma))
+        A[:, 3:], _ = solver.contact_rows(hypothesis, mu, gamma)
+        det, u = solver._solve_system(A, rhs)
+        np.testing.assert_allclose(det, np.linalg.det(A), rtol=1e-9, atol=1e-12)
+        ok = np.abs(np.linalg.det(A)) > 1e-9
+        np.testing.assert_allclose(u[ok], np.linalg.solve(A[ok], rhs[ok, :, None])[..., 0],
+                                   rtol=1e-7, atol=1e-9)

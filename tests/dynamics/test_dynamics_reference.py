@@ -19,8 +19,15 @@ A_MR = float(MR.alpha)
 ZERO = Pulse.rectangular(0.0, 0.01)
 
 
+#: Relative resolution of a threshold compared with the 1 % criterion of the stepper: the
+#: reference's bisection to 1e-4 and two rounds of 33 stepper runs over a bracket of +-25 %
+#: (0.45/32**2 = 4.4e-4) resolve it 20 to 100 times finer than the criterion (the errors found are
+#: below 2e-4).
+REF_TOL = 1e-4
+
+
 def _stepper_threshold(block: Block, make: Callable[[np.ndarray], Pulse], lo: float, hi: float,
-                       rounds: int = 3, n: int = 33, **kw: object) -> float:
+                       rounds: int = 2, n: int = 33, **kw: object) -> float:
     """Smallest overturning value by vectorised refinement of a bracket (lo safe, hi overturns)."""
     for _ in range(rounds):
         vals = np.linspace(lo, hi, n)
@@ -99,7 +106,7 @@ def test_stepper_rectangular_pulse_threshold_matches_reference(lam: float) -> No
         return ref.rocking(P_MR, A_MR, ref.rectangular(k, td), td, eta=float(MR.housner_ratio),
                            t_end=td + 40 / P_MR).overturned
 
-    t_ref = ref.threshold(over, 0.01, 3.0, tol=1e-6)
+    t_ref = ref.threshold(over, 0.01, 3.0, tol=REF_TOL)
     t_st = _stepper_threshold(MR, lambda td: Pulse.rectangular(k, td), 0.8 * t_ref, 1.25 * t_ref)
     assert t_st == pytest.approx(t_ref, rel=1e-2)
 
@@ -122,7 +129,7 @@ def test_reference_linearised_half_sine_threshold_of_makris_roussos() -> None:
 
 @pytest.mark.slow
 def test_stepper_half_sine_threshold_within_one_percent_of_reference() -> None:
-    thr_ref = ref.threshold(lambda kp: _mr_over(kp, False), 0.50, 0.70, tol=1e-6)
+    thr_ref = ref.threshold(lambda kp: _mr_over(kp, False), 0.50, 0.70, tol=REF_TOL)
     thr = _stepper_threshold(MR, lambda kp: Pulse.half_sine(kp, 0.5), 0.5, 0.7)
     assert thr == pytest.approx(thr_ref, rel=1e-2)
 
@@ -144,11 +151,12 @@ def test_one_sine_non_monotone_pattern_matches_reference() -> None:
     flips = np.flatnonzero(np.diff(o_ref.astype(int)) != 0)
     # safe - overturn - safe - overturn
     assert not o_ref[0] and len(flips) == 3 and o_ref[-1]
-    # the three reference transitions, refined
+    # the three reference transitions, refined to 1/256 of the line's pitch (under 3e-4 in k, 30
+    # times finer than the 2 % band left out around them below)
     edges = []
     for i in flips:
         lo, hi = ks[i], ks[i + 1]
-        for _ in range(12):
+        for _ in range(8):
             mid = 0.5 * (lo + hi)
             if over(mid) == o_ref[i]:
                 lo = mid

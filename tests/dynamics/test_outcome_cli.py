@@ -18,21 +18,36 @@ MR = ["--gamma", "3", "--half-width", "0.2", "--kprime", "0", "--mu", "5", "--pu
 SWEEP = ["--k-peak", "0.3:1.5:9", "--duration", "0.25,0.5,1"]
 
 
-@pytest.fixture
-def terminal(monkeypatch):
+def _on_a_terminal(monkeypatch: pytest.MonkeyPatch) -> None:
     """Standard error is a terminal, and a bar is drawn at once."""
     monkeypatch.setattr(progress_module, "_stderr_is_terminal", lambda: True)
     monkeypatch.setattr(progress_module, "DELAY", 0.0)
 
 
-@pytest.mark.slow
-def test_json_schema(tmp_path):
-    out = tmp_path / "map.json"
-    r = invoke_cli(["outcome", *MR, *SWEEP, "-o", str(out)])
+@pytest.fixture
+def terminal(monkeypatch):
+    """Standard error is a terminal, and a bar is drawn at once."""
+    _on_a_terminal(monkeypatch)
+
+
+@pytest.fixture(scope="module")
+def mr_json(tmp_path_factory):
+    """``regimemap outcome`` of the Makris-Roussos block over SWEEP, written as JSON, on a terminal:
+    the run (exit code, stdout, stderr with its progress bars), the file and its contents --
+    computed once for the schema and the progress-bar tests."""
+    out = tmp_path_factory.mktemp("outcome") / "map.json"
+    with pytest.MonkeyPatch.context() as mp:
+        _on_a_terminal(mp)
+        r = invoke_cli(["outcome", *MR, *SWEEP, "-o", str(out)])
     assert r.code == 0, r.output
+    return r, out, json.loads(out.read_text())
+
+
+@pytest.mark.slow
+def test_json_schema(mr_json):
+    r, out, d = mr_json
     assert r.stdout.splitlines() == [str(out)]
     assert "boundaries refined" in r.stderr
-    d = json.loads(out.read_text())
     assert set(d) == {"first", "second", "axes", "labels", "category", "max_rotation", "residual_slide",
                       "refined", "boundaries", "min_rotation", "inputs"}
     assert (d["first"], d["second"]) == ("k_peak", "duration") and d["refined"] is True
@@ -72,13 +87,13 @@ def test_no_refine_and_quiet(tmp_path):
 
 
 @pytest.mark.slow
-def test_outcome_progress_bars_on_a_terminal(tmp_path, terminal):
-    out = tmp_path / "map.npz"
-    r = invoke_cli(["outcome", *MR, *SWEEP, "-o", str(out)])
-    assert r.code == 0, r.output
+def test_outcome_progress_bars_on_a_terminal(tmp_path, terminal, mr_json):
+    r = mr_json[0]  # the run of SWEEP on a terminal (the bars do not depend on the output format)
     assert "\rsimulating:" in r.stderr and "/27 [" in r.stderr and "\rrefining boundaries:" in r.stderr
-    r = invoke_cli(["outcome", *MR, *SWEEP, "-q", "-o", str(out)])
-    assert r.code == 0 and r.stderr == ""
+    # --quiet: no bar, nothing on standard error, for any sweep (a small one that is refined too)
+    out = tmp_path / "map.npz"
+    r = invoke_cli(["outcome", *MR, "--k-peak", "0.3,1.5", "--duration", "0.25,1", "-q", "-o", str(out)])
+    assert r.code == 0 and r.stderr == "" and out.is_file()
 
 
 @pytest.mark.slow

@@ -61,20 +61,26 @@ def test_sf_width_has_the_required_safety_factor():
     assert sf_width(GODA, MODEL, 2.4) == pytest.approx(2.0 * w, rel=1e-9)
 
 
-@pytest.mark.subprocess
 @pytest.mark.slow
-def test_goda_takagi_trend_shallow_narrower_deep_wider():
+@pytest.mark.parametrize("depth, wider", [(8.0, False), (20.0, True)], ids=["shallow-narrower", "deep-wider"])
+def test_goda_takagi_trend_shallow_narrower_deep_wider(depth: float, wider: bool):
+    """At 8 m the width for the target is below the conventional width, at 20 m above it (the two
+    depths are separate tests: each is a long Monte Carlo chart, and pytest-xdist runs them side by
+    side)."""
     model = LifetimeModel(Climate.from_return_values(5.6, 6.3))
-    ratios = {}
-    for depth in (8.0, 20.0):
-        c = replace(GODA, depth=depth, base_depth=depth - 3.0, armour_depth=depth - 4.5, crest=3.78,
-                    angle_deg=0.0)
-        conventional = sf_width(c, model, 1.2)
-        chart = design_chart(c, model, np.linspace(0.5, 2.0, 16) * conventional, trials=1500, seed=3,
-                             jobs=2)
-        assert chart.width_for_target is not None
-        ratios[depth] = chart.width_for_target / conventional
-    assert ratios[8.0] < 1.0 < ratios[20.0], ratios
+    c = replace(GODA, depth=depth, base_depth=depth - 3.0, armour_depth=depth - 4.5, crest=3.78,
+                angle_deg=0.0)
+    conventional = sf_width(c, model, 1.2)
+    # 0.7 to 1.6 times the conventional width, every 0.1: the widths for the target (about 0.9
+    # and 1.36 times it) are inside with room; the narrower sections of a wider chart only
+    # slide for longer (3 times the CPU, the same widths found to 1 %).  One process: the same
+    # bits with any jobs (tests/lifetime/test_engine.py; the chart on two cores in
+    # tests/lifetime/test_cli_lifetime.py).
+    chart = design_chart(c, model, np.linspace(0.7, 1.6, 10) * conventional, trials=1500, seed=3)
+    assert chart.width_for_target is not None
+    assert chart.expected_sliding[0] > chart.target > chart.expected_sliding[-1]
+    ratio = chart.width_for_target / conventional
+    assert (ratio > 1.0) if wider else (ratio < 1.0), (depth, ratio)
 
 
 def test_lifetime_and_chart_agree_within_their_errors():

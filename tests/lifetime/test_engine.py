@@ -58,10 +58,11 @@ def test_no_seed_draws_one_and_reports_it():
 @pytest.mark.slow
 def test_standard_error_falls_like_one_over_root_n():
     # a narrow caisson slides in nearly every lifetime: the spread is tame
-    se = {n: _run(NARROW, trials=n, seed=5).std_error for n in (400, 1600, 6400)}
+    runs = {n: _run(NARROW, trials=n, seed=5) for n in (400, 1600, 6400)}
+    se = {n: r.std_error for n, r in runs.items()}
     for n in (400, 1600):
         assert se[n] / se[4 * n] == pytest.approx(2.0, rel=0.25)
-    r = _run(NARROW, trials=6400, seed=5)
+    r = runs[6400]
     assert r.std_error == pytest.approx(np.std(r.sliding, ddof=1) / math.sqrt(6400))
 
 

@@ -32,6 +32,7 @@ impacting corner.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from enum import IntEnum
 from typing import NamedTuple
@@ -189,52 +190,64 @@ class Contact:
     def solve(self, vxf: FloatArray, vyf: FloatArray, omf: FloatArray) -> ContactState:
         """The velocity after the step from the free velocity (vxf, vyf, omf), and its state.
 
-        The states are tried in the priority order of the module docstring; states that no run
-        can be in (no run with that corner active) are skipped.
+        The states are tried in the priority order of the module docstring, each run taking the
+        first that is admissible for it; states that no run can be in (no run with that corner
+        active) are skipped, and so are the states after the point where every run has found
+        one (the result is the same: a later state never overrides an earlier one).
         """
         a = self.arms
         uNO = vyf + a.xO * omf
         uNP = vyf + a.xP * omf
-        both = self.act_O & self.act_P
-        at_O = _Corner(a.xO, a.yO, uNO, self.act_O, a.xP, self.act_P)
-        at_P = _Corner(a.xP, a.yP, uNP, self.act_P, a.xO, self.act_O)
+        act_O, act_P = self.act_O, self.act_P
+        any_O, any_P = bool(act_O.any()), bool(act_P.any())
+        both = act_O & act_P
+        at_O = _Corner(a.xO, a.yO, uNO, act_O, a.xP, act_P)
+        at_P = _Corner(a.xP, a.yP, uNP, act_P, a.xO, act_O)
         v = (vxf, vyf, omf)
-        # candidate states in priority order: (code, admissible, vx, vy, om)
-        cands: list[_Candidate] = []
-        if both.any():
-            cands.append(self._rest(v, both))
-            cands.extend(self._slides(v, both))
-        stickO = stickP = None
-        if self.act_P.any():
-            cands.append((Phase.SRO_PRIME_MINUS, *self._slip(v, -1.0, at_P)))
-        if self.act_O.any():
-            stickO = self._stick(v, at_O)
-            cands.append((Phase.RO, *stickO))
-            cands.append((Phase.SRO_MINUS, *self._slip(v, -1.0, at_O)))
-            cands.append((Phase.SRO_PLUS, *self._slip(v, 1.0, at_O)))
-        if self.act_P.any():
-            stickP = self._stick(v, at_P)
-            cands.append((Phase.RO_PRIME, *stickP))
-            cands.append((Phase.SRO_PRIME_PLUS, *self._slip(v, 1.0, at_P)))
+        stick: dict[int, tuple[BoolArray, FloatArray, FloatArray, FloatArray]] = {}
 
-        # flight, then overwrite by the states from the lowest to the highest priority
-        tol = self.tol
-        flight = (~self.act_O | (uNO >= -tol)) & (~self.act_P | (uNP >= -tol))
+        def stick_at(c_: int) -> tuple[BoolArray, FloatArray, FloatArray, FloatArray]:
+            if c_ not in stick:
+                stick[c_] = self._stick(v, at_O if c_ == Phase.RO else at_P)
+            return stick[c_]
+
+        # the candidate states in priority order, computed when needed: (code, admissible, vx, vy, om)
+        cands: list[Callable[[], list[_Candidate]]] = []
+        if both.any():
+            cands.append(lambda: [self._rest(v, both), *self._slides(v, both)])
+        if any_P:
+            cands.append(lambda: [(Phase.SRO_PRIME_MINUS, *self._slip(v, -1.0, at_P))])
+        if any_O:
+            cands.append(lambda: [(Phase.RO, *stick_at(Phase.RO))])
+            cands.append(lambda: [(Phase.SRO_MINUS, *self._slip(v, -1.0, at_O)),
+                                  (Phase.SRO_PLUS, *self._slip(v, 1.0, at_O))])
+        if any_P:
+            cands.append(lambda: [(Phase.RO_PRIME, *stick_at(Phase.RO_PRIME)),
+                                  (Phase.SRO_PRIME_PLUS, *self._slip(v, 1.0, at_P))])
+
         vx1, vy1, om1 = v
         code = np.full(vxf.shape, Phase.FLIGHT, dtype=np.int8)
-        found = flight
-        for c_, okk, cvx, cvy, com in reversed(cands):
-            vx1 = np.where(okk, cvx, vx1)
-            vy1 = np.where(okk, cvy, vy1)
-            om1 = np.where(okk, com, om1)
-            code[okk] = c_
-            found = found | okk
+        found = np.zeros(vxf.shape, dtype=bool)
+        for make in cands:
+            for c_, okk, cvx, cvy, com in make():
+                take = okk & ~found
+                vx1 = np.where(take, cvx, vx1)
+                vy1 = np.where(take, cvy, vy1)
+                om1 = np.where(take, com, om1)
+                code[take] = c_
+                found |= okk
+            if found.all():
+                return ContactState(vx1, vy1, om1, code, ~found)
+        # flight, where no contact state is admissible
+        tol = self.tol
+        found |= (~act_O | (uNO >= -tol)) & (~act_P | (uNP >= -tol))
         none = ~found
         if none.any():
             # nothing admissible (never met in our runs): stop, or stick on the active corner
-            for act, st_, c_ in ((self.act_P, stickP, Phase.RO_PRIME), (self.act_O, stickO, Phase.RO)):
-                if st_ is not None:
-                    m = none & act
+            for act, c_ in ((act_P, Phase.RO_PRIME), (act_O, Phase.RO)):
+                m = none & act
+                if m.any():
+                    st_ = stick_at(c_)
                     vx1 = np.where(m, st_[1], vx1)
                     vy1 = np.where(m, st_[2], vy1)
                     om1 = np.where(m, st_[3], om1)

@@ -283,8 +283,7 @@ def schedule(b: _Batch) -> Schedule:
     h_reg = np.where(b.nleft > 0, b.hp, b.hf)
     t_reg = b.t + h_reg
     tm = b.t + 0.5 * h_reg
-    rows = np.arange(b.size)
-    a = b.ev[rows, b.iev] - (0.5 * EVENT_STEP) * h_reg
+    a = b.evn - (0.5 * EVENT_STEP) * h_reg
     due = b.mid | (a < t_reg)
     if not due.any():  # no event: the regular step
         b.nleft = np.maximum(b.nleft - 1, 0)
@@ -315,6 +314,7 @@ def schedule(b: _Batch) -> Schedule:
     b.tgt[d] = np.where(over, end + np.where(nleft > 0, b.hp[d], b.hf[d]), end)
     b.mid[d] = ~done | over
     b.iev[d] = iev + tiny
+    b.evn[d] = b.ev[d, iev + tiny]
     b.nleft = np.maximum(b.nleft - 1, 0)
     b.nleft[d] = nleft
     h_all, tm_all, t_all = h_reg.copy(), tm.copy(), t_reg.copy()

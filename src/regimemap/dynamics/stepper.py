@@ -148,10 +148,10 @@ def _as_runs(value: ArrayLike, n: int) -> FloatArray:
     return np.broadcast_to(np.asarray(value, dtype=np.float64), (n,)).astype(np.float64)
 
 
-def _gaps(B: FloatArray, H: FloatArray, y: FloatArray, th: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """The heights of O and O' above the base (m), for C at height H + y and rotation th."""
-    c0 = np.cos(th)
-    s0 = np.sin(th)
+def _gaps(B: FloatArray, H: FloatArray, y: FloatArray, c0: FloatArray,
+          s0: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """The heights of O and O' above the base (m), for C at height H + y and rotation theta
+    (``c0``, ``s0``: its cosine and sine)."""
     return H + y - B * s0 - H * c0, H + y + B * s0 - H * c0
 
 
@@ -213,16 +213,24 @@ class _Batch:
     tmax: FloatArray
     eta: FloatArray
     alpha: FloatArray
-    # the events: the times (inf padding, sorted, a last column of inf) and the next one's index
+    # derived constants: 1e-6 B (the gap tolerance's floor), B + H, g/J
+    gtol0: FloatArray
+    BH: FloatArray
+    gJ: FloatArray
+    # the events: the times (inf padding, sorted, a last column of inf), the next one's index and
+    # time (``evn`` = ev[i, iev[i]])
     ev: FloatArray
     iev: IntArray
-    # the state at the start of the step; ``mid``: inside a regular step cut by an event, which
-    # ends at ``tgt``
+    evn: FloatArray
+    # the state at the start of the step (``cth``, ``sth``: the cosine and sine of ``th``); ``mid``:
+    # inside a regular step cut by an event, which ends at ``tgt``
     mid: BoolArray
     tgt: FloatArray
     x: FloatArray
     y: FloatArray
     th: FloatArray
+    cth: FloatArray
+    sth: FloatArray
     vx: FloatArray
     vy: FloatArray
     om: FloatArray
@@ -264,8 +272,10 @@ class _Batch:
             idx=np.arange(n), B=B, H=H, J=J, mu=par["mu"], kpr=par["kprime"], beta=par["beta"],
             u=par["u"], nu=par["nu"], eu=par["e_u"], kp=kp, T=T, hp=hp, hf=hf, tmax=tmax,
             eta=(J + H * H - B * B) / (J + H * H + B * B), alpha=np.arctan2(B, H),
-            ev=ev, iev=np.zeros(n, dtype=np.int64), mid=np.zeros(n, dtype=bool), tgt=np.zeros(n),
-            x=np.zeros(n), y=y0.copy(), th=th0.copy(), vx=np.where(th0 != 0, om0 * r_y, 0.0),
+            gtol0=1e-6 * B, BH=B + H, gJ=float(block.g) / J,
+            ev=ev, iev=np.zeros(n, dtype=np.int64), evn=ev[:, 0].copy(), mid=np.zeros(n, dtype=bool),
+            tgt=np.zeros(n), x=np.zeros(n), y=y0.copy(), th=th0.copy(), cth=c0, sth=s0,
+            vx=np.where(th0 != 0, om0 * r_y, 0.0),
             vy=np.where(th0 != 0, -om0 * r_x, 0.0), om=np.where(th0 != 0, om0, 0.0), t=np.zeros(n),
             nleft=np.rint(T / hp).astype(np.int64), prevO=np.zeros(n, dtype=bool),
             prevP=np.zeros(n, dtype=bool), prev_code=np.full(n, -1, dtype=np.int8),
@@ -313,15 +323,17 @@ def _step(b: _Batch, pulse: Pulse, g: float, restitution: float | None, loaded: 
     """Advance every run of the batch by one step of the scheme (in place)."""
     h, tm, h_reg, t_new = schedule(b)
     hh = 0.5 * h
-    k = pulse.k(tm, b.kp, b.T)
+    # after every run's pulse, k = 0 (what Pulse.k gives there, without evaluating the shape)
+    past = tm >= b.T if pulse.t_samples is None else tm > pulse.t_samples[-1]
+    k = np.zeros(b.size) if past.all() else pulse.k(tm, b.kp, b.T)
     thm = b.th + hh * b.om
     c, s = np.cos(thm), np.sin(thm)
     Bc, Bs, Hc, Hs = b.B * c, b.B * s, b.H * c, b.H * s
     arms = Arms(Hs - Bc, -Bs - Hc, Bc + Hs, Bs - Hc)
     # activation on the linearised gap at the mid-point, g(q_k) + (h/2) u_N (Moreau 1988)
-    gO, gP = _gaps(b.B, b.H, b.y, b.th)
+    gO, gP = _gaps(b.B, b.H, b.y, b.cth, b.sth)
     # tolerance: v_k met the constraint with the previous step's arms, an O(h^2 om^2 R) mismatch
-    gtol = 1e-6 * b.B + (h_reg * b.om) ** 2 * (b.B + b.H)
+    gtol = b.gtol0 + (h_reg * b.om) ** 2 * b.BH
     actO = gO + hh * (b.vy + arms.xO * b.om) <= gtol
     actP = gP + hh * (b.vy + arms.xP * b.om) <= gtol
     contact = Contact(arms, actO, actP, b.mu, b.J, 1e-10 * g * h)
@@ -330,24 +342,26 @@ def _step(b: _Batch, pulse: Pulse, g: float, restitution: float | None, loaded: 
     kpr_t = pulse.kprime(tm) if pulse.has_kprime else None
     kpr = b.kpr if kpr_t is None else kpr_t
     fx = -g * k
-    tau = (g / b.J) * k * kpr * Hc
+    tau = b.gJ * k * kpr * Hc
     fy: FloatArray | float
     if loaded:
         lift = b.u + b.nu * k
         fy = g * (b.beta + lift - 1.0)
-        tau = tau + (g / b.J) * (b.eu * Bc + Hs) * lift
+        tau = tau + b.gJ * (b.eu * Bc + Hs) * lift
     else:
         fy = -g
     new = contact.solve(b.vx + h * fx, b.vy + h * fy, b.om + h * tau)
     b.x += hh * (b.vx + new.vx)
     b.y += hh * (b.vy + new.vy)
     b.th += hh * (b.om + new.om)
+    b.cth = np.cos(b.th)
+    b.sth = np.sin(b.th)
     # no drift of a single pivot: the position update of a rotation drifts the pivot's gap by
     # O(h^3) per step; move C vertically so that the pivot keeps its gap (or closes a positive one)
     pivO = PIVOT_O[new.code]
     pivP = PIVOT_P[new.code]
     if pivO.any() or pivP.any():
-        gO1, gP1 = _gaps(b.B, b.H, b.y, b.th)  # a run turns about one corner at most
+        gO1, gP1 = _gaps(b.B, b.H, b.y, b.cth, b.sth)  # a run turns about one corner at most
         b.y -= np.where(pivO, gO1 - np.minimum(gO, 0.0), 0.0)
         b.y -= np.where(pivP, gP1 - np.minimum(gP, 0.0), 0.0)
     t_start = b.t
@@ -381,8 +395,8 @@ def _leaving(b: _Batch, code: CodeArray, loaded: bool) -> tuple[BoolArray, BoolA
     after = b.nleft == 0
     over = np.abs(b.th) > _HALF_PI
     if after.any():
-        c1 = np.cos(b.th)
-        s1 = np.sin(b.th)
+        c1 = b.cth
+        s1 = b.sth
         rO = b.H * s1 - b.B * c1
         rP = b.B * c1 + b.H * s1
         if loaded:  # the moment of the constant loads about the pivot

@@ -229,6 +229,34 @@ def contact_rows(hypothesis: Hypothesis, mu: Float, gamma: Float) -> tuple[Float
     return A, rhs
 
 
+def _solve_system(A: Float, rhs: Float) -> tuple[Float, Float]:
+    """The determinants of the systems ``A u = rhs`` (shape ``(n, 6, 6)``, ``(n, 6)``) and their
+    solutions (not finite where the determinant is 0).
+
+    The dynamic rows (the first three, :func:`dynamic_rows`) have a diagonal block on the
+    accelerations: eliminating the accelerations leaves, for the reactions f = (fx, fy, M), the
+    3x3 Schur complement ``S f = r2 - A21 D^-1 r1`` with ``S = A22 - A21 D^-1 A12``, solved by
+    Cramer's rule for every point at once; ``det A = det D det S``.  The same solution as a
+    general 6x6 solve (``numpy.linalg``) to rounding, about ten times faster on a sweep.
+    """
+    d = np.stack([A[:, 0, 0], A[:, 1, 1], A[:, 2, 2]], axis=1)  # D, the diagonal block
+    A12, A21 = A[:, :3, 3:], A[:, 3:, :3]
+    r1, r2 = rhs[:, :3, None], rhs[:, 3:, None]
+    w = A21 / d[:, None, :]  # A21 D^-1
+    S = A[:, 3:, 3:] - w @ A12
+    y0, y1, y2 = (r2 - w @ r1)[:, :, 0].T
+    (a, b_, c), (d_, e, f), (g, h, i) = np.ascontiguousarray(S.transpose(1, 2, 0))
+    c0, c1, c2 = e * i - f * h, f * g - d_ * i, d_ * h - e * g  # cofactors of the first row
+    det_s = a * c0 + b_ * c1 + c * c2
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inv = 1.0 / det_s
+        react = np.stack([(y0 * c0 + y1 * (c * h - b_ * i) + y2 * (b_ * f - c * e)) * inv,
+                          (y0 * c1 + y1 * (a * i - c * g) + y2 * (c * d_ - a * f)) * inv,
+                          (y0 * c2 + y1 * (b_ * g - a * h) + y2 * (a * e - b_ * d_)) * inv], axis=1)
+        acc = (r1 - A12 @ react[:, :, None])[:, :, 0] / d
+    return np.prod(d, axis=1) * det_s, np.concatenate([acc, react], axis=1)
+
+
 def solve(hypothesis: Hypothesis, k: ArrayLike, mu: ArrayLike, gamma: ArrayLike,
           kprime: ArrayLike, tol: float = TOLERANCE, *, buoyancy: ArrayLike = 0.0,
           uplift: ArrayLike = 0.0, uplift_ratio: ArrayLike = 0.0, uplift_arm: ArrayLike = 1.0 / 3.0,
@@ -271,12 +299,10 @@ def solve(hypothesis: Hypothesis, k: ArrayLike, mu: ArrayLike, gamma: ArrayLike,
     # Singular systems (e.g. 4 + g^2 - 3 mu g = 0 in (3.30)) have no unique
     # solution.  |det A| is compared with Hadamard's bound, the product of the
     # row norms, so the test does not depend on the scale of gamma, k or mu.
-    det = np.linalg.det(A)
+    det, u = _solve_system(A, rhs)
     hadamard = np.prod(np.linalg.norm(A, axis=2), axis=1)
     solvable = np.abs(det) > 1e-12 * hadamard
-    A[~solvable] = np.eye(6)
-    rhs[~solvable] = 0.0
-    u = np.linalg.solve(A, rhs[..., None])[..., 0]
+    u[~solvable] = 0.0
     X, Y, T, fx, fy, M = (u[:, i] for i in range(6))
 
     with np.errstate(divide="ignore", invalid="ignore"):
