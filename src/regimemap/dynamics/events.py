@@ -41,9 +41,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 if TYPE_CHECKING:  # pragma: no cover
+    from .batch import Batch
     from .block import Block
     from .pulses import Pulse
-    from .stepper import _Batch
 
 __all__ = ["EVENT_STEP", "BOUNDARY_MARGIN", "onset_boundaries", "crossing_times", "event_times",
            "Schedule", "schedule"]
@@ -266,7 +266,7 @@ class Schedule(NamedTuple):
     t_new: FloatArray
 
 
-def schedule(b: _Batch) -> Schedule:
+def schedule(b: Batch) -> Schedule:
     """The next step of every run, and the schedule's state after it (``b.nleft``, ``b.mid``,
     ``b.tgt``, ``b.iev``, updated in place).
 

@@ -135,7 +135,7 @@ def estimated_steps(block: Block, duration: float, dt: float | None = None) -> i
     The default step (:func:`regimemap.dynamics.default_steps`) is at most duration/400 over the
     pulse and 0.004/p after it, and a run is given up 60/p after the pulse.
     """
-    from .stepper import FREE_STEP, FREE_TIME, PULSE_STEPS
+    from .batch import FREE_STEP, FREE_TIME, PULSE_STEPS
 
     p = float(np.min(np.asarray(block.p, dtype=np.float64)))
     h_free = FREE_STEP / p if dt is None else dt
@@ -151,7 +151,7 @@ def check_run_steps(block: Block, duration: float) -> int:
     ValueError
         When they exceed :data:`MAX_STEPS`; the message says where they come from.
     """
-    from .stepper import FREE_STEP, FREE_TIME
+    from .batch import FREE_STEP, FREE_TIME
 
     steps = estimated_steps(block, duration)
     if steps > MAX_STEPS:

@@ -16,7 +16,7 @@ from .contact import Phase
 from .results import History
 
 if TYPE_CHECKING:  # pragma: no cover
-    from .stepper import _Batch, _Step
+    from .batch import Batch, Step
 
 __all__ = ["RunLog", "HISTORY_KEYS"]
 
@@ -31,7 +31,7 @@ HISTORY_KEYS = ("t", "x", "y", "theta", "vx", "vy", "omega", "k", "phase")
 class RunLog:
     """The phases of every run and the time history of one, recorded step by step."""
 
-    def __init__(self, b: _Batch, record_phases: bool, history: int | None) -> None:
+    def __init__(self, b: Batch, record_phases: bool, history: int | None) -> None:
         self.n = b.size
         self.record_phases = record_phases
         self.runs: list[IntArray] = []
@@ -50,7 +50,7 @@ class RunLog:
             self.hist["k"].append(0.0)
             self.hist["phase"].append(-1.0)
 
-    def record(self, b: _Batch, step: _Step) -> None:
+    def record(self, b: Batch, step: Step) -> None:
         """Log a step (before ``b.prev_code`` takes the new codes)."""
         code = step.code
         if self.record_phases:
