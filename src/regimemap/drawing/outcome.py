@@ -21,7 +21,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -30,6 +30,7 @@ from numpy.typing import NDArray
 from ..dynamics.outcome import OutcomeMap
 from ..dynamics.regions import MapGeometry
 from ..dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK, STILL_MOVING
+from .outcome_artists import CategoryLookup, OutcomeArtists
 from .outcome_words import AXIS_LABELS, axis_label, outcome_title, rotation_text
 from .placement import cell_edges
 from .save import DEFAULT_DPI
@@ -37,15 +38,9 @@ from .style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
-    from matplotlib.collections import LineCollection
-    from matplotlib.contour import QuadContourSet
     from matplotlib.figure import Figure
-    from matplotlib.legend import Legend
-    from matplotlib.patches import PathPatch
     from matplotlib.path import Path as MplPath
-    from matplotlib.text import Text
 
-    from .outcome_text import CategoryLookup, TextReport
 
 __all__ = ["AXIS_LABELS", "OutcomeArtists", "OUTCOME_FIGSIZE", "OutcomeStyle", "axis_label", "cell_edges",
            "category_rectangles", "draw_outcome_map", "outcome_figure", "outcome_title", "rotation_text"]
@@ -58,47 +53,6 @@ _Z_FILL, _Z_EDGE, _Z_CONTOUR, _Z_LABEL = 1.0, 2.5, 3.0, 6.0
 #: Contours: residual slide solid, maximum rotation dashed (both dark: they cross every fill).
 SLIDE_CONTOUR: dict[str, Any] = {"colors": "#222255", "linewidths": 0.9}
 ROTATION_CONTOUR: dict[str, Any] = {"colors": "#222222", "linewidths": 0.9, "linestyles": [(0, (4.0, 2.0))]}
-
-
-@dataclass
-class OutcomeArtists:
-    """What :func:`draw_outcome_map` drew.
-
-    Attributes
-    ----------
-    regions : dict
-        Category code -> the PathPatch of its region (one per category present).
-    boundaries : LineCollection or None
-        The black lines between categories.
-    boundary_lines : list of ndarray
-        Their polylines (data coordinates).
-    contours : dict
-        ``"residual_slide"`` and ``"max_rotation"`` -> their ContourSet (when drawn).
-    contour_units : dict
-        The same keys -> the unit written after a level.
-    labels : list of Text
-        Region labels (those with room; :func:`place_outcome_text` removes the others).
-    contour_labels : list of Text
-        One label per contour level that has room for it.
-    title : Text or None
-    legend : Legend or None
-    category_at : CategoryLookup or None
-        The category at points of the drawing.
-    report : TextReport or None
-        What the text placement did.
-    """
-
-    regions: dict[int, PathPatch] = field(default_factory=dict)
-    boundaries: LineCollection | None = None
-    boundary_lines: list[NDArray[np.float64]] = field(default_factory=list)
-    contours: dict[str, QuadContourSet] = field(default_factory=dict)
-    contour_units: dict[str, str] = field(default_factory=dict)
-    labels: list[Text] = field(default_factory=list)
-    contour_labels: list[Text] = field(default_factory=list)
-    title: Text | None = None
-    legend: Legend | None = None
-    category_at: CategoryLookup | None = None
-    report: TextReport | None = None
 
 
 def category_rectangles(category: NDArray[Any], code: int) -> list[tuple[int, int, int, int]]:
@@ -330,8 +284,6 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
                                             capstyle="projecting" if geo is None else "round",
                                             joinstyle="round", zorder=_Z_EDGE)
             ax.add_collection(out.boundaries)
-        from .outcome_text import CategoryLookup
-
         out.category_at = CategoryLookup(cat, xs, ys, paths if geo is not None else None)
 
         handles = _region_handles(m.labels, present, st.hatches)

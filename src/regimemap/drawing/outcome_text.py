@@ -24,12 +24,13 @@ layout does not depend on the resolution of a file):
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
+from .outcome_artists import CategoryLookup, OutcomeArtists, TextReport
 from .style import OUTCOME_STYLE
 from .tidy import MEASURE_DPI, fit_title
 
@@ -37,10 +38,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.backend_bases import RendererBase
     from matplotlib.figure import Figure
-    from matplotlib.path import Path as MplPath
     from matplotlib.text import Text
 
-    from .outcome import OutcomeArtists
 
 __all__ = ["CategoryLookup", "TextReport", "outcome_text_boxes", "place_outcome_text"]
 
@@ -58,45 +57,6 @@ _CONTOUR_PATCH: dict[str, Any] = {"boxstyle": "round,pad=0.3", "fc": "white", "e
 #: The codes where each contour means something (slide: slide only, slide-rock; rotation:
 #: rock only, slide-rock).
 _WHERE = {"residual_slide": (1, 3), "max_rotation": (2, 3)}
-
-
-class CategoryLookup:
-    """The category at points of a drawn outcome map (data coordinates; -1 off the map).
-
-    From the region polygons of a refined map, else from the cells (each node's cell reaches
-    half-way to its neighbours).  ``category``, ``xs`` and ``ys`` are the grid with increasing
-    axes.
-    """
-
-    def __init__(self, category: NDArray[Any], xs: NDArray[np.float64], ys: NDArray[np.float64],
-                 regions: dict[int, MplPath] | None = None):
-        self.category = np.asarray(category)
-        from .placement import cell_edges
-
-        self.xe, self.ye = cell_edges(xs), cell_edges(ys)
-        self.regions = regions
-
-    def __call__(self, points: NDArray[np.float64]) -> NDArray[np.int64]:
-        pts = np.asarray(points, dtype=np.float64).reshape(-1, 2)
-        out = np.full(len(pts), -1, dtype=np.int64)
-        if self.regions is not None:
-            for code, path in self.regions.items():
-                if np.asarray(path.vertices).size:
-                    out[path.contains_points(pts)] = code
-            return out
-        j = np.searchsorted(self.xe, pts[:, 0]) - 1
-        i = np.searchsorted(self.ye, pts[:, 1]) - 1
-        ok = (j >= 0) & (j < self.category.shape[1]) & (i >= 0) & (i < self.category.shape[0])
-        out[ok] = self.category[i[ok], j[ok]]
-        return out
-
-
-@dataclass
-class TextReport:
-    """What :func:`place_outcome_text` did: the texts it placed and those it left out."""
-
-    placed: list[str] = field(default_factory=list)
-    hidden: list[str] = field(default_factory=list)
 
 
 def _box(t: Any, renderer: RendererBase, pad: float = 0.0) -> Box:
