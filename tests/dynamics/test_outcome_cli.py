@@ -100,9 +100,10 @@ def test_outcome_progress_bars_on_a_terminal(tmp_path, terminal, mr_json):
 def test_library_progress_counts_every_run():
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     done: list[int] = []
-    m = outcome_map(blk, "half-sine", ("k_peak", np.linspace(0.3, 1.5, 9)), ("duration", [0.25, 0.5, 1.0]),
+    # 5 x 2 cells whose boundaries the refinement follows (rocking, overturning and rest meet)
+    m = outcome_map(blk, "half-sine", ("k_peak", np.linspace(0.3, 1.5, 5)), ("duration", [0.25, 0.5]),
                     progress=done.append)
-    assert m.crossings is not None and sum(done) == 27 + m.crossings.runs
+    assert m.crossings is not None and m.crossings.runs > 0 and sum(done) == 10 + m.crossings.runs
     runs = MapRuns(blk, "half-sine", "k_peak", "duration")
     stages: dict[str, list[int]] = {}
     totals: dict[str, int] = {}
@@ -115,9 +116,9 @@ def test_library_progress_counts_every_run():
         stages[what] = []
         yield stages[what].append
 
-    m2 = staged_outcome_map(runs, np.linspace(0.3, 1.5, 9), [0.25, 0.5, 1.0], bars=bars)
-    assert totals == {"simulating": 27, "refining boundaries": planned_refinement_runs(m2)}
-    assert sum(stages["simulating"]) == 27
+    m2 = staged_outcome_map(runs, np.linspace(0.3, 1.5, 5), [0.25, 0.5], bars=bars)
+    assert totals == {"simulating": 10, "refining boundaries": planned_refinement_runs(m2)}
+    assert sum(stages["simulating"]) == 10
     assert 0 < sum(stages["refining boundaries"]) <= totals["refining boundaries"]
     assert np.array_equal(m2.category, m.category)
     assert np.array_equal(m2.crossings.fraction, m.crossings.fraction)
