@@ -39,7 +39,8 @@ import numpy as np
 from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, PRIORITY, SELECTION_ORDER, Mode
 from ..mechanics.regions import column_intervals
-from .geometry import DEFAULT_SAMPLES, bisect_edge, raw_intervals, sample_k
+from .bisection import bisect_edge
+from .geometry import DEFAULT_SAMPLES, raw_intervals, sample_k
 
 __all__ = [
     "AmbiguousRegion",
