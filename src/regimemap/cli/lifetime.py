@@ -320,11 +320,12 @@ def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChar
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.lifetime import lifetime_figure
-                    from ..drawing.lifetime_chart import chart_figure
+                    from ..drawing.lifetime import lifetime_figure, lifetime_title
+                    from ..drawing.lifetime_chart import chart_figure, chart_title
 
-                    fig = (lifetime_figure(result, title) if isinstance(result, LifetimeResult)
-                           else chart_figure(result, title))
+                    fig = (lifetime_figure(result, lifetime_title(title, result))
+                           if isinstance(result, LifetimeResult)
+                           else chart_figure(result, chart_title(title, result)))
                 from ..drawing.save import save_figure
 
                 save_figure(fig, path)
