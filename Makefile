@@ -70,8 +70,20 @@ docs: $(DOCS_STAMP)
 	$(BIN)/sphinx-build -b html -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
 	$(BIN)/sphinx-build -b doctest -W --keep-going -q -d docs/_build/doctrees docs docs/_build/doctest
 
+.PHONY: dist
+
+# `make dist`: the sdist and the wheel into dist/ (python -m build, in an isolated environment with
+# the build requirements of pyproject.toml), checked by twine.  The version is git's (setuptools-scm);
+# building writes it into src/regimemap/_version.py, so the editable install is then brought to
+# the same version (its metadata and that file agree).
+dist: $(STAMP)
+	rm -rf dist
+	$(BIN)/python -m build --outdir dist .
+	$(BIN)/twine check --strict dist/*
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
+
 clean:
-	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build src/*.egg-info
+	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build dist src/*.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +
 
 distclean: clean
