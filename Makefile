@@ -50,10 +50,13 @@ test-fast: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "$(TEST_FAST)"
 
 # ruff's rules (pyproject.toml, [tool.ruff.lint]) include the complexity limits -- C901,
-# PLR0912, PLR0913, PLR0915 -- so a function that outgrows them fails here.
+# PLR0912, PLR0913, PLR0915 -- so a function that outgrows them fails here.  sp-repo-review runs
+# the Scientific Python development guide's checks on the repository (the skipped ones, and why,
+# in [tool.repo-review]); it prints the failures only.
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench conftest.py
 	$(BIN)/mypy
+	$(BIN)/sp-repo-review --show err .
 
 bench: $(STAMP)
 	$(BIN)/python bench/bench.py
