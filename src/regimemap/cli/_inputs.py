@@ -47,7 +47,7 @@ class InputFile(ParamType):
         if kind not in ("design", "points", "pulse"):
             raise ValueError(f"kind must be 'design', 'points' or 'pulse', got {kind!r}")
         self.kind = kind
-        self.name = f"{kind} file"
+        self.name = "file"  # as click.Path(dir_okay=False) names itself
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
         path = str(value)
