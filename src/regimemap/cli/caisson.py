@@ -8,6 +8,7 @@ from pathlib import Path
 import click
 
 from ._common import RunError, import_matplotlib, output_path, report_written
+from ._inputs import DESIGN_FILE
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -20,7 +21,7 @@ _FORMATS = ("png", "svg", "pdf")
     "caisson",
     short_help="Goda loads, safety factors and the mode on the loaded map of a caisson (design file).",
 )
-@click.argument("design", required=False, type=click.Path(dir_okay=False), metavar="DESIGN.toml")
+@click.argument("design", required=False, type=DESIGN_FILE, metavar="DESIGN.toml")
 @click.option("--example", is_flag=True,
               help="Print the commented example design file (Goda's worked caisson) and exit.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")

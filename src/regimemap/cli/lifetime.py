@@ -20,6 +20,7 @@ import click
 
 from ._check import check_option, exit_on_failure
 from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
+from ._inputs import DESIGN_FILE
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -94,7 +95,7 @@ def _suffix(path: str) -> str:
 
 @click.command("lifetime",
                short_help="Expected sliding distance of a caisson over its design life (Monte Carlo).")
-@click.argument("design", type=click.Path(dir_okay=False), metavar="DESIGN.toml")
+@click.argument("design", type=DESIGN_FILE, metavar="DESIGN.toml")
 @click.option("--trials", type=_Checked("integer", _file_key("trials")), default=None, metavar="N",
               help="Lifetimes to simulate, 1 to 10000000 (default: [lifetime] trials, or 5000).")
 @click.option("--seed", type=_Checked("integer", _file_key("seed")), default=None, metavar="S",

@@ -22,6 +22,7 @@ from ._dynamics_options import (
     min_rotation_option,
     option_errors,
 )
+from ._inputs import DESIGN_FILE, PULSE_FILE
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -33,10 +34,10 @@ __all__ = ["simulate_cmd"]
 
 @click.command("simulate", short_help="Follow one run after initiation: phases, overturning, residuals.")
 @block_options(swept=False)
-@click.option("--pulse-file", "pulse_file", type=click.Path(dir_okay=False), metavar="FILE.csv",
+@click.option("--pulse-file", "pulse_file", type=PULSE_FILE, metavar="FILE.csv",
               help="Instead of --pulse/--k-peak/--duration: a sampled force history, a CSV with "
                    "columns t (s),k and optionally kprime (then it replaces --kprime).")
-@click.option("--design", "design", type=click.Path(dir_okay=False), metavar="FILE.toml",
+@click.option("--design", "design", type=DESIGN_FILE, metavar="FILE.toml",
               help="Instead of the block and the pulse: a caisson's design file (`regimemap caisson "
                    "--example` prints one).  Runs the caisson's equivalent block under its design "
                    "wave Hmax: a half-sine of peak k = P/(m g) lasting tau0 = (0.5 - Hmax/(8 h)) T1/3 "

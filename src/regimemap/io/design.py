@@ -59,6 +59,7 @@ from .design_lifetime import (
     read_lifetime,
 )
 from .design_lifetime import lifetime_model as _lifetime_model
+from .inputs import read_design_text
 from .toml_lines import key_line
 
 if TYPE_CHECKING:
@@ -336,7 +337,7 @@ def read_design(path: str | Path) -> Design:
     """
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
+        text = read_design_text(p)
     except (OSError, UnicodeDecodeError) as exc:
         raise DesignFileError(f"{p}: cannot read the design file: {exc}") from None
     return parse_design(text, source=str(p))
