@@ -64,11 +64,10 @@ def test_the_example_is_plausible():
 
 
 @pytest.mark.parametrize("old,new,key,slip", [
-    ("depth = 10.1", "depth = 1010", "[site] depth = 1010", "centimetres for metres"),
+    ("depth = 10.1", "depth = 80", "[site] depth = 80", "deeper than any caisson breakwater built"),
     ("buoyant_weight = 2312", "buoyant_weight = 2312000", "[caisson] buoyant_weight = 2312000", "N/m for kN/m"),
-    ("period = 11.4", "period = 114", "[wave] period = 114", "tenths of a second"),
-    ("width = 15.0", "width = 1500", "[caisson] width = 1500", "centimetres for metres"),
-    ("H0 = 6.3", "H0 = 630", "[wave] H0 = 630", "centimetres for metres"),
+    ("period = 11.4", "period = 1.5", "[wave] period = 1.5", "a laboratory model's wave"),
+    ("width = 15.0", "width = 250", "[caisson] width = 250", "centimetres for metres"),
 ])
 def test_each_unit_slip_is_named(old, new, key, slip):
     text = EXAMPLE.replace(old, new, 1)
@@ -101,12 +100,17 @@ def test_warning_then_strict_error(run_cli, tmp_path, command):
 
 
 def test_simulate_design_names_the_option_and_the_slip(run_cli, tmp_path):
-    """The depth in centimetres: a warning naming the key and the slip; --strict: an error on --design."""
+    """The depth in centimetres: beyond the hard limit, an error on --design naming the key and the slip;
+    a caisson far wider than any: a warning, and with --strict an error."""
     path = _write(tmp_path, EXAMPLE.replace("depth = 10.1", "depth = 1010"), "deep.toml")
     r = run_cli(["simulate", "--design", path])
-    assert "warning:" in r.stderr and "[site] depth = 1010" in r.stderr and "centimetres for metres" in r.stderr
+    assert r.code == 2 and "'--design'" in r.stderr and "line 8: [site] depth = 1010" in r.stderr
+    assert "centimetres for metres" in r.stderr and "Traceback" not in r.stderr
+    path = _write(tmp_path, EXAMPLE.replace("width = 15.0", "width = 250"), "wide.toml")
+    r = run_cli(["simulate", "--design", path])
+    assert "warning:" in r.stderr and "[caisson] width = 250" in r.stderr
     strict = run_cli(["simulate", "--design", path, "--strict"])
-    assert strict.code == 2 and "'--design'" in strict.stderr and "[site] depth = 1010" in strict.stderr
+    assert strict.code == 2 and "'--design'" in strict.stderr and "[caisson] width = 250" in strict.stderr
     assert "Traceback" not in strict.stderr
 
 
