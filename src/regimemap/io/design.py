@@ -283,7 +283,8 @@ def _read_wave(data: Mapping[str, Any], r: DesignReader) -> WaveSpec:
             raise r.fail(f"[wave] {missing} is missing; accepted: either H0 (equivalent deep-water "
                          "height, m) or both H13 and Hmax (heights at the wall, m)", "wave")
         if Hmax < H13:
-            raise r.key_error("wave", "Hmax", Hmax, f"smaller than [wave] H13 = {r.written('wave', 'H13', H13)}")
+            raise r.key_error("wave", "Hmax", Hmax,
+                              f"smaller than [wave] H13 = {r.written('wave', 'H13', H13)}")
     return WaveSpec(period=r.required(data, "wave", "period"), H0=H0, H13=H13, Hmax=Hmax,
                     angle=r.number(data, "wave", "angle") or 0.0,
                     rotation=r.number(data, "wave", "rotation") or 0.0)
