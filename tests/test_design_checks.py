@@ -22,8 +22,10 @@ def test_goda_fails_the_required_sliding_factor(run_cli, tmp_path):
     path = _write(tmp_path, EXAMPLE)
     r = run_cli(["caisson", path])
     assert r.code == 0
-    assert "design check: the section FAILS the sliding check" in r.stdout
-    assert "SF sliding 1.16 < required 1.2" in r.stdout
+    lines = r.stdout.splitlines()
+    assert "FAIL  sliding safety factor 1.16 >= 1.2" in lines
+    assert "PASS  overturning safety factor 2.559 >= 1.2" in lines
+    assert "verdict: FAIL (1 of 2 requirements not met)" in lines
     obj = json.loads(run_cli(["caisson", path, "--json"]).stdout)
     assert obj["design_check"]["sliding"] == {"value": pytest.approx(1.16, abs=0.005), "required": 1.2,
                                               "meets": False}
@@ -34,7 +36,8 @@ def test_goda_fails_the_required_sliding_factor(run_cli, tmp_path):
 def test_required_factors_come_from_the_file(run_cli, tmp_path):
     text = EXAMPLE.replace("# required_sliding = 1.2", "required_sliding = 1.1")
     r = run_cli(["caisson", _write(tmp_path, text)])
-    assert "both safety factors reach the required ones" in r.stdout and "1.16 >= 1.1" in r.stdout
+    assert "PASS  sliding safety factor 1.16 >= 1.1" in r.stdout.splitlines()
+    assert "verdict: PASS (every requirement met)" in r.stdout.splitlines()
     bad = EXAMPLE.replace("# required_sliding = 1.2", "required_sliding = 0.8")
     r = run_cli(["caisson", _write(tmp_path, bad, "bad.toml")])
     assert r.code == 2 and "[caisson] required_sliding = 0.8" in r.stderr

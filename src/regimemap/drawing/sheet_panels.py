@@ -12,6 +12,7 @@ these functions only draw.  Also the sheet's small helpers: its font size
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -19,8 +20,10 @@ import numpy as np
 from ..maps.caisson import CaissonReport
 from ..maps.describe import format_significant
 from ..maps.loadedmap import Margin, mode_label
+from ..mechanics.checks import Check
 from ..mechanics.modes import Mode
 from .style import MODE_STYLE, ModeStyle
+from .verdict import FAIL_COLOUR
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -268,7 +271,10 @@ def _onset_text(r: CaissonReport) -> str:
     return f"{mode_label(p.onset_mode)} from {p.onset:.3f}\u00d7 H"
 
 
-def draw_table(ax: Axes, r: CaissonReport) -> None:
+def draw_table(ax: Axes, r: CaissonReport, checks: Mapping[str, Check | None] | None = None) -> None:
+    """(f) the numbers, four columns; a row named in ``checks`` (``"sliding"``, ``"overturning"``)
+    whose check fails has its number in the fail colour, in bold."""
+    checks = {} if checks is None else checks
     a = r.analysis
     h, p, ld, sec, st, b = a.heights, a.pressures, a.loads, a.section, a.stability, a.block
     f = float
@@ -322,5 +328,8 @@ def draw_table(ax: Axes, r: CaissonReport) -> None:
                 ax.text(x, y, value, fontsize=FS, va="center", ha="left")
                 continue
             ax.text(x, y, name, fontsize=FS, va="center")
-            ax.text(x + 0.16, y, value, fontsize=FS, va="center", ha="right")
+            check = checks.get(name)
+            bad = check is not None and not check.passed
+            ax.text(x + 0.16, y, value, fontsize=FS, va="center", ha="right",
+                    color=FAIL_COLOUR if bad else "black", fontweight="bold" if bad else "normal")
             ax.text(x + 0.167, y, unit, fontsize=FS - 0.5, va="center", ha="left", color="0.25")
