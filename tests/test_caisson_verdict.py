@@ -177,3 +177,26 @@ def test_the_sheet_flags_the_lifetime_esd(tmp_path):
 
 def test_check_dataclass_is_what_the_sheet_reads():
     assert Check.at_least("sliding safety factor", 1.16, 1.2).verdict == "FAIL"
+
+
+# -- simulate --design ------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(("text", "check", "code"), [(NO_LIFE, True, 1), (NO_LIFE, False, 0), (WIDE, True, 0)])
+def test_simulate_design_check(run_cli, tmp_path, text, check, code):
+    path = _write(tmp_path, text)
+    args = ["simulate", "--design", path, *(["--check"] if check else [])]
+    r = run_cli(args)
+    assert r.code == code, r.stderr
+    sliding, _ = _sf(text)
+    verdict = "PASS" if sliding >= 1.2 else "FAIL"
+    assert f"{verdict}  sliding safety factor {sliding:.4g} >= 1.2" in r.stdout.splitlines()
+    obj = json.loads(run_cli([*args, "--json"]).stdout)
+    assert [c["name"] for c in obj["checks"]] == ["sliding safety factor", "overturning safety factor"]
+    assert obj["checks"][0]["pass"] is (sliding >= 1.2)
+
+
+def test_simulate_check_needs_a_design_file(run_cli):
+    r = run_cli(["simulate", "--gamma", "3", "--half-width", "0.2", "--kprime", "0", "--mu", "5", "--pulse",
+                 "half-sine", "--k-peak", "0.5", "--duration", "0.5", "--check"])
+    assert r.code == 2 and "--check checks a design file's requirements" in r.stderr

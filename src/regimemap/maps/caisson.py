@@ -47,6 +47,7 @@ __all__ = [
     "esd_check",
     "loaded_map_of",
     "map_view",
+    "stability_checks",
 ]
 
 #: Wave-height factors of the path (``H1/3`` and ``Hmax`` times s).
@@ -302,7 +303,12 @@ def caisson_checks(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF
     >>> [(c.name, round(c.value, 3), c.verdict) for c in caisson_checks(r)]
     [('sliding safety factor', 1.16, 'FAIL'), ('overturning safety factor', 2.559, 'PASS')]
     """
-    st = r.analysis.stability
+    return stability_checks(r.analysis, required)
+
+
+def stability_checks(a: CaissonAnalysis, required: tuple[float, float] = REQUIRED_SF) -> list[Check]:
+    """:func:`caisson_checks` of an analysis of one caisson (Goda's procedure alone)."""
+    st = a.stability
     return [Check.at_least("sliding safety factor", float(st.sliding), required[0]),
             Check.at_least("overturning safety factor", float(st.overturning), required[1])]
 
