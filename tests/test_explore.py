@@ -129,6 +129,23 @@ def test_set_loads_and_the_toggle(explorer: Explorer) -> None:
     assert_same_map(explorer, Parameters(3.0, 0.4, buoyancy=0.3))
 
 
+def test_ticking_loads_shows_their_sliders_at_once(explorer: Explorer, monkeypatch) -> None:
+    """Ticking 'loads' with both sliders at 0 changes no map, yet their sliders appear: the figure
+    is redrawn at once (not only after the next drag of gamma)."""
+    import regimemap.drawing.explore as explore_module
+
+    draws: list[object] = []
+    monkeypatch.setattr(explore_module, "request_draw", draws.append)
+    assert not explorer.buoyancy_slider.ax.get_visible()
+    before = explorer.params
+    explorer.loads_check.set_active(0)  # what a click on the box does
+    assert explorer.loads_enabled and explorer.params == before  # the same block: beta = nu = 0
+    assert explorer.buoyancy_slider.ax.get_visible() and explorer.nu_slider.ax.get_visible()
+    assert draws == [explorer.fig]
+    explorer.loads_check.set_active(0)  # and unticking hides them, drawn at once too
+    assert not explorer.buoyancy_slider.ax.get_visible() and draws == [explorer.fig, explorer.fig]
+
+
 def test_loads_given_at_start(echo: Echo) -> None:
     p = Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524, gyration=0.8)
     ex = open_explorer(p, echo=echo)

@@ -265,7 +265,8 @@ class Explorer:
         before = self.params
         Parameters(self._gamma, self._kprime, **{**self._fixed, **extra})
         self._load_values = values
-        if on != self._loads_on:
+        toggled = on != self._loads_on
+        if toggled:
             self._loads_on = on
             check = self.loads_check
             self._syncing, drawon = True, check.drawon
@@ -280,7 +281,8 @@ class Explorer:
         show_load_sliders(self._widgets, self._loads_on)
         moving = ((self.buoyancy_slider,) if buoyancy is not None else ()) + (
             (self.nu_slider,) if uplift_ratio is not None else ())
-        self._update(final, self.params != before, moving)
+        # ticking 'loads' at beta = nu = 0 changes no map but shows (or hides) two sliders: draw
+        self._update(final, toggled or self.params != before, moving)
 
     def click(self, k: float, mu: float) -> PointResult:
         """The answer at (k, mu): shown in the panel, printed, and the point marked on the map.
