@@ -200,3 +200,16 @@ def test_simulate_check_needs_a_design_file(run_cli):
     r = run_cli(["simulate", "--gamma", "3", "--half-width", "0.2", "--kprime", "0", "--mu", "5", "--pulse",
                  "half-sine", "--k-peak", "0.5", "--duration", "0.5", "--check"])
     assert r.code == 2 and "--check checks a design file's requirements" in r.stderr
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("text", [NO_LIFE, WIDE])
+def test_the_onset_label_stays_inside_panel_e(text):
+    from regimemap.drawing.sheet import sheet_figure
+
+    fig = sheet_figure(caisson_report(parse_design(text).analysis_inputs()))
+    (ax,) = [a for a in fig.axes if a.get_label() == "path"]
+    renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
+    (label,) = [t for t in ax.texts if "from" in t.get_text()]
+    box, inside = label.get_window_extent(renderer), ax.get_window_extent(renderer)
+    assert inside.x0 <= box.x0 and box.x1 <= inside.x1

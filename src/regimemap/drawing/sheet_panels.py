@@ -228,8 +228,11 @@ def draw_path(ax: Axes, r: CaissonReport, required: tuple[float, float] = (1.2, 
     if p.onset is not None and p.onset > float(s[0]):
         ax.axvline(p.onset, color="#b0001c", lw=0.8)
         assert p.onset_mode is not None
-        ax.text(p.onset, 0.11 * ymax, f" {mode_label(p.onset_mode)} from {p.onset:.3f}\u00d7",
-                fontsize=FS - 0.5, color="#b0001c", va="bottom", ha="left")
+        # beside its line, on the side with room for it (the label spans ~40 % of the axis)
+        right = p.onset <= float(s[0]) + 0.6 * (float(s[-1]) - float(s[0]))
+        words = f"{mode_label(p.onset_mode)} from {p.onset:.3f}\u00d7"
+        ax.text(p.onset, 0.11 * ymax, f" {words}" if right else f"{words} ", fontsize=FS - 0.5,
+                color="#b0001c", va="bottom", ha="left" if right else "right")
     ax.set_xlim(float(s[0]), float(s[-1]))
     ax.set_ylim(0.0, ymax)
     ax.set_xlabel("wave-height factor s (H$_{1/3}$, H$_{max}$ \u00d7 s)", fontsize=FS)
