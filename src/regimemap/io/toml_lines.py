@@ -70,7 +70,7 @@ def key_text(text: str, table: str, key: str) -> str | None:
 
     Examples
     --------
-    >>> key_text("[site]\ndepth = 10.10   # h\n", "site", "depth")
+    >>> key_text("[site]\\ndepth = 10.10   # h\\n", "site", "depth")
     '10.10'
     """
     n = key_line(text, table, key)
