@@ -40,7 +40,8 @@ __all__ = ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_dura
 
 FloatArray = NDArray[np.float64]
 
-#: :math:`M_a / (\rho_w h'^2)` for both faces: :math:`2 (16/\pi^3) \sum_{n\ \mathrm{odd}} 1/n^3 = (28/\pi^3) \zeta(3)`
+#: :math:`M_a / (\rho_w h'^2)` for both faces:
+#: :math:`2 (16/\pi^3) \sum_{n\ \mathrm{odd}} 1/n^3 = (28/\pi^3) \zeta(3)`
 #: (incompressible potential flow against a rigid vertical wall; :doc:`/lifetime`, Sect. 6.2).
 ADDED_MASS_COEFFICIENT = 28.0 / math.pi**3 * 1.2020569031595942853997
 

@@ -224,7 +224,8 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
     Goda (1974; 2000, Sect. 4.2), with :math:`w_0 = \\rho_w g`:
 
     * :math:`\\eta^* = 0.75 (1 + \\cos\\beta) \\lambda_1 H_\\mathrm{max}`;
-    * :math:`p_1 = 0.5 (1 + \\cos\\beta) (\\lambda_1 \\alpha_1 + \\lambda_2 \\alpha^* \\cos^2\\beta) w_0 H_\\mathrm{max}`;
+    * :math:`p_1 = 0.5 (1 + \\cos\\beta) (\\lambda_1 \\alpha_1 + \\lambda_2 \\alpha^* \\cos^2\\beta)
+      w_0 H_\\mathrm{max}`;
     * :math:`p_2 = p_1 / \\cosh(2 \\pi h / L)`, :math:`p_3 = \\alpha_3 p_1`;
     * :math:`p_4 = p_1 (1 - h_c/\\eta^*)` for :math:`\\eta^* > h_c`, else 0;
     * :math:`p_u = 0.5 (1 + \\cos\\beta) \\lambda_3 \\alpha_1 \\alpha_3 w_0 H_\\mathrm{max}`;
