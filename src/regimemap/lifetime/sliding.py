@@ -19,11 +19,11 @@ together as half a sine,
     v(s) = v(pi) - (s - pi)                           (s >= pi),
 
 it stops at the first root ``s2`` of ``v`` after ``s1``, and in units of
-``R/(M omega^2)`` it has slid
+:math:`R/(M \\omega^2)` it has slid
 
     D(s) = (F/R)[cos s1 (s - s1) - (sin s - sin s1)] - (s - s1)^2/2,
 
-``D(s2)`` when it stops within the wave, ``D(pi) + v(pi)^2/2`` otherwise.  The
+``D(s2)`` when it stops within the wave, :math:`D(\\pi) + v(\\pi)^2/2` otherwise.  The
 derivation is in :doc:`/lifetime`, Sect. 6.
 """
 

@@ -174,7 +174,7 @@ def section_from_densities(width: npt.ArrayLike, base_depth: npt.ArrayLike, cres
         Fraction ``phi`` of the section's area that is concrete (walls, slabs,
         cap), ``0 <= phi <= 1``; the rest is fill.
     concrete_density : array_like
-        ``rho_c`` [kg/m^3] (reinforced concrete about 2400).
+        :math:`\\rho_c` [kg/m^3] (reinforced concrete about 2400).
     fill_density : array_like
         Density of the fill BELOW still water [kg/m^3]: saturated sand or
         gravel, pores full of water (about 2000).
@@ -198,8 +198,8 @@ def section_from_densities(width: npt.ArrayLike, base_depth: npt.ArrayLike, cres
     :math:`\\rho_a = \\phi \\rho_c + (1 - \\phi) \\rho_\\mathrm{fill,above}`. Per metre:
     :math:`m = 2B (\\rho_b h' + \\rho_a h_c)`, buoyancy :math:`\\rho_w g\\, 2B h'` (the
     caisson displaces its whole submerged volume; water in the pores of the
-    fill is part of ``rho_b``), :math:`W' = m g - \\rho_w g\\, 2B h'` (Goda 2000,
-    Sect. 4.3), ``H_C = (m_b h'/2 + m_a (h' + hc/2)) / m`` and
+    fill is part of :math:`\\rho_b`), :math:`W' = m g - \\rho_w g\\, 2B h'` (Goda 2000,
+    Sect. 4.3), :math:`H_C = (m_b h'/2 + m_a (h' + h_c/2)) / m` and
     :math:`I = \\sum_j m_j ((2B)^2 + t_j^2)/12 + m_j (z_j - H_C)^2` (rectangles and
     parallel axes). Horizontally symmetric, so ``t = B``.
     """
