@@ -111,3 +111,16 @@ def test_no_runtime_warning_reaches_the_user(tmp_path, old, new):
                           "--json"], capture_output=True, text=True, check=False)
     assert "RuntimeWarning" not in run.stderr and "internal error" not in run.stderr, run.stderr
     assert run.returncode in (0, 1, 2), run.stderr
+
+
+@pytest.mark.render
+@pytest.mark.parametrize("old,new", [("buoyant_weight = 2312", "buoyant_weight = 1e7"),
+                                     ("width = 15.0", "width = 500")])
+def test_the_sheet_draws_at_the_limits(tmp_path, old, new):
+    """The heaviest and the widest section accepted still draw their sheet, warnings and all."""
+    path = _write(tmp_path, _replace(old, new).split("[lifetime]")[0])
+    sheet = tmp_path / "sheet.png"
+    run = subprocess.run([sys.executable, "-W", "error::RuntimeWarning", "-m", "regimemap", "caisson", path,
+                          "-o", str(sheet)], capture_output=True, text=True, check=False)
+    assert run.returncode == 0, run.stderr
+    assert sheet.is_file() and "internal error" not in run.stderr
