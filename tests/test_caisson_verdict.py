@@ -213,3 +213,13 @@ def test_the_onset_label_stays_inside_panel_e(text):
     (label,) = [t for t in ax.texts if "from" in t.get_text()]
     box, inside = label.get_window_extent(renderer), ax.get_window_extent(renderer)
     assert inside.x0 <= box.x0 and box.x1 <= inside.x1
+
+
+@pytest.mark.render
+def test_the_sheet_header_echoes_the_file():
+    from regimemap.drawing.sheet import sheet_figure
+
+    d = parse_design(NO_LIFE.replace("H0 = 6.3 ", "H0 = 6.30 ").replace("friction = 0.6 ", "friction = 0.60 "))
+    fig = sheet_figure(caisson_report(d.analysis_inputs()), written=d.written)
+    (head,) = [t.get_text() for t in fig.texts if "T\u2081/\u2083" in t.get_text()]
+    assert head.startswith("H\u2080\u2032 = 6.30 m, T\u2081/\u2083 = 11.4 s,") and "\u03bc = 0.60," in head

@@ -122,7 +122,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
             checks.append(esd_check(life))
         fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required,
                            checks=checks, lifetime_impulsive=None if d.lifetime is None
-                           else d.lifetime.impulsive)
+                           else d.lifetime.impulsive, written=d.written)
         with writing(output):
             save_figure(fig, output)
     if as_json:

@@ -24,7 +24,7 @@ and :func:`regimemap.maps.mapdata.compute_map`); these modules only draw.
 from __future__ import annotations
 
 import textwrap
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
 from .. import __version__
@@ -143,8 +143,8 @@ def sheet_map_data(report: CaissonReport, view: MapView | None = None) -> MapDat
 def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float = DEFAULT_DPI,
                  view: MapView | None = None, lifetime: LifetimeResult | None = None,
                  required: tuple[float, float] = (1.2, 1.2), data: MapData | None = None,
-                 checks: Sequence[Check] | None = None, lifetime_impulsive: bool | None = None
-                 ) -> Figure:
+                 checks: Sequence[Check] | None = None, lifetime_impulsive: bool | None = None,
+                 written: Mapping[str, str] | None = None) -> Figure:
     """The one-page design sheet of a caisson (A4 portrait, no pyplot).
 
     Parameters
@@ -177,6 +177,10 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
     lifetime_impulsive : bool, optional
         Whether the lifetime simulation included Takahashi's impulsive coefficient (the
         design file's ``[lifetime] impulsive``), named in (g)'s title.
+    written : mapping, optional
+        The design file's values as it writes them (``{"wave.H0": "6.3"}``,
+        :attr:`regimemap.io.design.Design.written`): the header echoes H0', T1/3, tan theta
+        and mu so.
 
     Returns
     -------
@@ -203,12 +207,18 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         draw_verdict_badge(fig, checks, x=1.0 - 0.37 / W, y=1.0 - 0.36 / H, fontsize=12.0)
         a = report.analysis
         inp = report.inputs
-        wave = (f"H\u2080\u2032 = {num(report, 'H0'):g} m" if inp.get("H0") is not None
+        shown = {} if written is None else written
+
+        def value(key: str, name: str) -> str:  # as the design file writes it, else the number
+            return shown.get(key) or f"{num(report, name):g}"
+
+        wave = (f"H\u2080\u2032 = {value('wave.H0', 'H0')} m" if inp.get("H0") is not None
                 else "H\u2081/\u2083, H$_{max}$ given at the wall")
         fig.text(0.6 / W, 1.0 - 0.68 / H,
-                 f"{wave}, T\u2081/\u2083 = {num(report, 'period'):g} s, "
+                 f"{wave}, T\u2081/\u2083 = {value('wave.period', 'period')} s, "
                  f"\u03b2 = {float(a.pressures.beta):g}\u00b0, "
-                 f"tan \u03b8 = {num(report, 'slope'):g}, \u03bc = {report.mu:g}, "
+                 f"tan \u03b8 = {value('site.seabed_slope', 'slope')}, "
+                 f"\u03bc = {shown.get('caisson.friction') or format(report.mu, 'g')}, "
                  f"W\u2032 = {fmt(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
                  + ("Goda (2000) with Takahashi's \u03b1$_I$ (impulsive = true)"
                     if inp.get("impulsive", True) else
