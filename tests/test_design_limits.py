@@ -101,6 +101,7 @@ def test_values_are_kept_as_written():
         parse_design(_replace("period = 11.4", "period = 4.0e1"))
 
 
+@pytest.mark.subprocess
 @pytest.mark.parametrize("old,new", [("H0 = 6.3", "H0 = 30"), ("period = 11.4", "period = 1"),
                                      ("width = 15.0", "width = 0.05"), ("depth = 10.1", "depth = 100"),
                                      ("crest = 3.4", "crest = 100"), ("armour_depth = 5.6", "armour_depth = 0.01")])
@@ -114,6 +115,7 @@ def test_no_runtime_warning_reaches_the_user(tmp_path, old, new):
 
 
 @pytest.mark.render
+@pytest.mark.subprocess
 @pytest.mark.parametrize("old,new", [("buoyant_weight = 2312", "buoyant_weight = 1e7"),
                                      ("width = 15.0", "width = 500")])
 def test_the_sheet_draws_at_the_limits(tmp_path, old, new):
