@@ -62,6 +62,7 @@ def test_check_exit_status(run_cli, tmp_path, text, check, code):
     assert obj["design_check"]["sliding"]["meets"] is (sliding >= 1.2)  # the older form, kept
 
 
+@pytest.mark.render
 def test_check_writes_everything_before_exit_1(run_cli, tmp_path):
     sheet = tmp_path / "sheet.png"
     r = run_cli(["caisson", _write(tmp_path, NO_LIFE), "--check", "-o", str(sheet)])
