@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from ._check import check_option, exit_on_failure
 from ._common import RunError, import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._plausible import STRICT_HELP, check_plausible
@@ -28,7 +29,9 @@ _FORMATS = ("png", "svg", "pdf")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
               help="Also write a one-page design sheet (.pdf, .svg or .png), atomically.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
-def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool) -> None:
+@check_option
+def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool,
+                check: bool) -> None:
     """Goda's design procedure for a vertical-breakwater caisson, placed on the regime map.
 
     Reads DESIGN.toml (site, design wave, caisson; `regimemap caisson --example`
@@ -38,7 +41,17 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     gyration), its mode on the loaded map with its margins (how much more k,
     or less mu, changes the mode), and how the caisson fares as the wave
     grows from 0.5 to 1.5 times the design heights.  Goda's safety factors
-    are both >= 1 exactly when the map says rest.
+    are both >= 1 exactly when the map says rest.  Goda's pressures include
+    Takahashi's impulsive coefficient alpha_I unless the file says
+    `impulsive = false` in [caisson] (the header names the setting).
+
+    The design check lists each requirement, PASS or FAIL: the sliding and
+    overturning safety factors at least [caisson] required_sliding and
+    required_overturning (1.2 by default), and, when the sheet draws the
+    sliding over the design life, the expected sliding distance at most
+    0.1 m (--json: "checks" and "verdict").  With --check the exit status is
+    1 when any requirement fails (after the report and the sheet are
+    written); usage errors exit 2.
 
     With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
     the cross-section, the pressure diagram, the loaded map with the design
@@ -53,6 +66,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
       regimemap caisson goda.toml
       regimemap caisson goda.toml --json
       regimemap caisson goda.toml -o sheet.pdf
+      regimemap caisson goda.toml --check
     """
     from ..io.design import DesignFileError, example_design_text, read_design
 
@@ -88,7 +102,9 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     required = (d.caisson.required_sliding, d.caisson.required_overturning)
 
     from ..io.caisson import caisson_json, format_caisson
+    from ..maps.caisson import caisson_checks, esd_check
 
+    checks = caisson_checks(report, required)
     if output is not None:  # the sheet first: a failure leaves no report half-printed
         import_matplotlib()
         from ..drawing.save import save_figure
@@ -104,15 +120,20 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
                                         jobs=available_cores())
             except ValueError as exc:
                 raise RunError(f"{design}: {exc}") from None
-        fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required)
+            checks.append(esd_check(life))
+        fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required,
+                           checks=checks, lifetime_impulsive=None if d.lifetime is None
+                           else d.lifetime.impulsive, written=d.written)
         with writing(output):
             save_figure(fig, output)
     if as_json:
-        obj = caisson_json(report, source=design, required=required)
+        obj = caisson_json(report, source=design, required=required, checks=checks)
         if output is not None:  # the written file's path, inside the one JSON object
             obj["sheet"] = output
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
-        return
-    click.echo(format_caisson(report, source=design, required=required))
-    if output is not None:
-        report_written(output)
+    else:
+        click.echo(format_caisson(report, source=design, required=required, checks=checks,
+                                  written=d.written))
+        if output is not None:
+            report_written(output)
+    exit_on_failure(checks, check)
