@@ -8,7 +8,7 @@ import json
 import pytest
 
 from regimemap.io.design import example_design_text, parse_design
-from regimemap.maps.caisson import caisson_checks, caisson_report, esd_check
+from regimemap.maps.caisson import caisson_checks, caisson_report
 from regimemap.mechanics.checks import Check
 
 EXAMPLE = example_design_text()
@@ -104,15 +104,6 @@ def test_the_inputs_are_echoed_as_written(run_cli, tmp_path):
     assert "wave length of T1/3 at h = 10.10 m" in r.stdout
 
 
-def test_esd_check():
-    class Life:
-        expected_sliding = 1.136
-
-    c = esd_check(Life(), 0.1)  # type: ignore[arg-type]
-    assert (c.name, c.relation, c.unit, c.passed) == ("expected sliding distance", "<=", "m", False)
-    assert esd_check(Life(), 2.0).passed  # type: ignore[arg-type]
-
-
 # -- the sheet --------------------------------------------------------------------------------
 
 
@@ -160,12 +151,13 @@ def test_the_sheet_flags_the_lifetime_esd(tmp_path):
 
     from regimemap.drawing.sheet import LIFETIME_PANEL, sheet_figure
     from regimemap.drawing.verdict import FAIL_COLOUR
-    from regimemap.lifetime import lifetime_sliding
+    from regimemap.lifetime import Requirements, judge_lifetime, lifetime_sliding
 
     d = parse_design(EXAMPLE.replace("trials = 5000", "trials = 200"))
     r = caisson_report(d.analysis_inputs())
-    life = lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), 200, 2026)
-    checks = [*caisson_checks(r), esd_check(life)]
+    life = judge_lifetime(lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), 200, 2026),
+                          Requirements(target=0.1))
+    checks = [*caisson_checks(r), *life.checks]
     assert checks[2].value > 0.1  # Goda's caisson slides about a metre in 50 years
     fig = sheet_figure(r, lifetime=life, checks=checks, lifetime_impulsive=False)
     (ax,) = [a for a in fig.axes if a.get_label() == LIFETIME_PANEL]

@@ -102,7 +102,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     required = (d.caisson.required_sliding, d.caisson.required_overturning)
 
     from ..io.caisson import caisson_json, format_caisson
-    from ..maps.caisson import caisson_checks, esd_check
+    from ..maps.caisson import caisson_checks
 
     checks = caisson_checks(report, required)
     if output is not None:  # the sheet first: a failure leaves no report half-printed
@@ -112,7 +112,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
 
         life = None
         if d.lifetime is not None:  # the file's [lifetime]: the sheet gains the lifetime panel
-            from ..lifetime import available_cores, lifetime_sliding
+            from ..lifetime import Requirements, available_cores, judge_lifetime, lifetime_sliding
 
             spec = d.lifetime_spec()
             try:
@@ -120,7 +120,9 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
                                         jobs=available_cores())
             except ValueError as exc:
                 raise RunError(f"{design}: {exc}") from None
-            checks.append(esd_check(life))
+            life = judge_lifetime(life, Requirements(target=spec.target, allowed=spec.allowed,
+                                                     failure_sliding=spec.failure_sliding))
+            checks.extend(life.checks)
         fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required,
                            checks=checks, lifetime_impulsive=None if d.lifetime is None
                            else d.lifetime.impulsive, written=d.written)

@@ -27,7 +27,7 @@ import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from ..maps.caisson import CaissonReport, MapView, caisson_checks, esd_check, map_view
+from ..maps.caisson import CaissonReport, MapView, caisson_checks, map_view
 from ..maps.mapdata import MapData, compute_map
 from ..mechanics.checks import Check
 from .save import DEFAULT_DPI, figure_version
@@ -172,7 +172,7 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         shows (PASS, or FAIL and how many); a failing safety factor of (f) and a failing
         expected sliding distance of (g) are written in the fail colour.  Default:
         :func:`regimemap.maps.caisson.caisson_checks` of ``required``, and
-        :func:`regimemap.maps.caisson.esd_check` of ``lifetime`` when given.
+        the checks of ``lifetime`` (:func:`regimemap.lifetime.judge_lifetime`) when given.
     lifetime_impulsive : bool, optional
         Whether the lifetime simulation included Takahashi's impulsive coefficient (the
         design file's ``[lifetime] impulsive``), named in (g)'s title.
@@ -192,7 +192,7 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
     view = map_view(report) if view is None else view
     W, H = SHEET_SIZE
     if checks is None:
-        checks = [*caisson_checks(report, required), *([] if lifetime is None else [esd_check(lifetime)])]
+        checks = [*caisson_checks(report, required), *(() if lifetime is None else lifetime.checks)]
     by_name = {c.name: c for c in checks}
 
     def rect(x: float, y: float, w: float, h: float) -> tuple[float, float, float, float]:

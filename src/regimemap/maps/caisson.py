@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -32,11 +32,7 @@ from ..waves import CaissonAnalysis, analyse_caisson
 from .loadedmap import LoadedMap, Margin, classify_at, margins, mode_grid, named_points
 from .query import margin_words
 
-if TYPE_CHECKING:  # pragma: no cover
-    from ..lifetime.results import LifetimeResult
-
 __all__ = [
-    "ESD_TARGET",
     "PATH_FACTORS",
     "REQUIRED_SF",
     "CaissonReport",
@@ -44,7 +40,6 @@ __all__ = [
     "WavePath",
     "caisson_checks",
     "caisson_report",
-    "esd_check",
     "loaded_map_of",
     "map_view",
     "stability_checks",
@@ -57,9 +52,6 @@ _RE = int(Mode.RE)
 
 #: The safety factors a design must reach by default, sliding and overturning (Goda 2000, Sect. 4.2).
 REQUIRED_SF = (1.2, 1.2)
-#: The tolerable expected sliding distance over the design life [m] (Goda & Takagi 2000: 0.1 m for
-#: a caisson that should hardly move; Shimosako & Takahashi 1999 allow 0.3 m).
-ESD_TARGET = 0.1
 
 
 def loaded_map_of(a: CaissonAnalysis, index: Any = ()) -> LoadedMap:
@@ -311,12 +303,6 @@ def stability_checks(a: CaissonAnalysis, required: tuple[float, float] = REQUIRE
     st = a.stability
     return [Check.at_least("sliding safety factor", float(st.sliding), required[0]),
             Check.at_least("overturning safety factor", float(st.overturning), required[1])]
-
-
-def esd_check(result: LifetimeResult, target: float = ESD_TARGET) -> Check:
-    """The requirement on the sliding over the design life: the expected sliding distance at
-    most ``target`` metres (Shimosako & Takahashi 1999; 0.1 m by default, Goda & Takagi 2000)."""
-    return Check.at_most("expected sliding distance", result.expected_sliding, target, "m")
 
 
 @dataclass(frozen=True)
