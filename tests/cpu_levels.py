@@ -69,8 +69,11 @@ def levels() -> tuple[list[list[str]], list[str]]:
     have = [t for t in dispatch if features.get(t)]
     steps = [t for t in have if used is None or t in used]
     notes = [f"{t}: not on this CPU" for t in dispatch if t not in have]
-    notes += [f"{t}: no ufunc loop is compiled for it (disabled with the level below)"
-              for t in have if t not in steps]
+    for t in have:
+        if t not in steps:
+            below = [u for u in steps if have.index(u) < have.index(t)]
+            notes.append(f"{t}: no ufunc loop is compiled for it"
+                         + (f" (disabled together with {below[-1]})" if below else ""))
     return [have[have.index(t):] for t in reversed(steps)], notes
 
 
