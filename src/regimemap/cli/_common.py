@@ -428,7 +428,8 @@ def run_main(group: click.Command, argv: list[str] | None = None) -> int:
     * an interrupt (Ctrl-C) exits 130.
     """
     try:
-        group.main(args=argv, prog_name="regimemap", standalone_mode=False)
+        # without standalone mode click returns the code of a click.exceptions.Exit (--check's 1)
+        code = group.main(args=argv, prog_name="regimemap", standalone_mode=False)
     except click.exceptions.Abort:
         _say("regimemap: interrupted")
         return 130
@@ -455,4 +456,4 @@ def run_main(group: click.Command, argv: list[str] | None = None) -> int:
         _say(f"regimemap: internal error: {type(exc).__name__}: {exc}"
              " (please report it; REGIMEMAP_DEBUG=1 shows the traceback)")
         return 1
-    return 0
+    return code if isinstance(code, int) and not isinstance(code, bool) else 0

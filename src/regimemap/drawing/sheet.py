@@ -24,10 +24,9 @@ import textwrap
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
-from .. import __version__
 from ..maps.caisson import CaissonReport, MapView, map_view
 from ..maps.mapdata import MapData, compute_map
-from .save import DEFAULT_DPI
+from .save import DEFAULT_DPI, figure_version
 from .sheet_map import draw_map_panel, map_legend, tidy_map_panel
 from .sheet_panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, fmt, num
 from .style import style_context
@@ -181,7 +180,7 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
                  f"W\u2032 = {fmt(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
                  "Goda (2000) with Takahashi's \u03b1$_I$"
                  + ("" if inp.get("impulsive", True) else " (off)")
-                 + f"; regimemap {__version__}",
+                 + f"; regimemap {figure_version()}",
                  fontsize=FS + 0.5, va="top", color="0.2", linespacing=1.4)
 
         ax_sec = fig.add_axes(rect(0.75, 8.55, 4.6, 1.85), label="section")
