@@ -73,7 +73,9 @@ def figure_version(version: str | None = None) -> str:
     '0.2.0'
     """
     if version is None:
-        from .. import __version__ as version
+        from .. import __version__
+
+        version = __version__
     match = re.match(r"\d+(?:\.\d+)*", version)
     return match.group(0) if match else version
 
