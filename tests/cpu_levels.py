@@ -44,16 +44,17 @@ print(sorted({s["current"] for f in info.values() for s in f.values()}))
 
 def _features() -> tuple[list[str], dict[str, bool], set[str] | None]:
     """numpy's dispatch targets (lowest first), this CPU's features, the targets loops use."""
-    import numpy as np
-
     try:
         from numpy._core import _multiarray_umath as umath
     except ImportError:  # numpy 1.x
         from numpy.core import _multiarray_umath as umath  # type: ignore[no-redef]
     used: set[str] | None = None
-    introspect = getattr(np.lib, "introspect", None)
-    if introspect is not None and hasattr(introspect, "opt_func_info"):
-        used = {target for sigs in introspect.opt_func_info().values() for s in sigs.values()
+    try:
+        from numpy.lib.introspect import opt_func_info  # numpy >= 2.1
+    except ImportError:
+        pass
+    else:
+        used = {target for sigs in opt_func_info().values() for s in sigs.values()
                 for target in s["available"].split()}
     return list(umath.__cpu_dispatch__), dict(umath.__cpu_features__), used
 
