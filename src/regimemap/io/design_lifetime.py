@@ -19,7 +19,7 @@ from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 from .design_errors import DesignFileError, did_you_mean
-from .toml_lines import key_line
+from .toml_lines import key_line, key_text
 
 if TYPE_CHECKING:
     from regimemap.lifetime import LifetimeModel
@@ -100,8 +100,9 @@ def _height(x: float) -> bool:
 
 def _why_height(x: float) -> str:
     if x > MAX_HEIGHT:
+        slip = f"; {x / 100:.4g} m in centimetres for metres?" if x / 100 <= MAX_HEIGHT else ""
         return (f"above {MAX_HEIGHT:g} m, higher than any sea measured (the largest significant "
-                f"heights measured are about 20 m); {x / 100:.4g} m in centimetres for metres?")
+                f"heights measured are about 20 m){slip}")
     return "not > 0"
 
 
@@ -246,7 +247,9 @@ class _LifetimeReader:
 
     def bad(self, table: str, key: str, value: Any, why: str) -> DesignFileError:
         accepted = LIFETIME_TABLES[table][key].accepted
-        return self.fail(table, key, f"[{table}] {key} = {value!r}: {why}; accepted: {accepted}")
+        written = key_text(self.text, table, key) if not isinstance(value, list) else None
+        shown = written if written is not None else repr(value)
+        return self.fail(table, key, f"[{table}] {key} = {shown}: {why}; accepted: {accepted}")
 
     def check_names(self, table: str, data: Mapping[str, Any]) -> None:
         known = LIFETIME_TABLES[table]
