@@ -1,0 +1,170 @@
+"""From a record to return values with their confidence band: the steps of ``regimemap climate``.
+
+numpy and scipy: threshold, storms (or annual maxima), fit, bootstrap, return values.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .fit import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit, return_values
+from .record import Record
+from .storms import (
+    DEFAULT_COVERAGE,
+    DEFAULT_GAP,
+    DEFAULT_QUANTILE,
+    AnnualMaxima,
+    Storms,
+    annual_maxima,
+    resolve_threshold,
+    storms,
+)
+
+__all__ = ["METHODS", "ClimateOptions", "ClimateResult", "MIN_YEARS", "analyse"]
+
+#: The ways to take extremes from a record.
+METHODS = ("pot", "annual-maxima")
+#: Shortest record [years] for an extreme-value analysis.
+MIN_YEARS = 1.0
+
+
+@dataclass(frozen=True)
+class ClimateOptions:
+    """How to analyse a record (the options of ``regimemap climate`` and of ``[lifetime.record]``).
+
+    Attributes
+    ----------
+    method : str
+        ``pot`` (peaks over a threshold) or ``annual-maxima``.
+    threshold : tuple of (str, float)
+        ``("quantile", q)`` or ``("value", metres)`` (peaks over a threshold).
+    gap_hours : float
+        Declustering gap [h], > 0.
+    distribution : str or None
+        ``gpd`` or ``weibull`` (pot), ``gumbel`` or ``gev`` (annual maxima); None: ``gpd`` or ``gumbel``.
+    shape : float
+        Weibull ``k`` (fixed).
+    coverage : float
+        Least share of a year's hours observed for its annual maximum.
+    return_periods : tuple of float
+        Return periods [years].
+    confidence : float
+        Level of the bands, in (0, 1).
+    bootstrap : int
+        Bootstrap replicates (0: no band).
+    seed : int
+        Root seed of the bootstrap.
+    """
+
+    method: str = "pot"
+    threshold: tuple[str, float] = ("quantile", DEFAULT_QUANTILE)
+    gap_hours: float = DEFAULT_GAP
+    distribution: str | None = None
+    shape: float = 2.0
+    coverage: float = DEFAULT_COVERAGE
+    return_periods: tuple[float, ...] = (10.0, 50.0, 100.0)
+    confidence: float = 0.9
+    bootstrap: int = 200
+    seed: int = 0
+
+    @property
+    def fitted(self) -> str:
+        """The distribution fitted."""
+        if self.distribution is not None:
+            return self.distribution
+        return "gpd" if self.method == "pot" else "gumbel"
+
+    def check(self) -> None:
+        """The combination is possible, else a ValueError naming the option."""
+        if self.method not in METHODS:
+            raise ValueError(f"method must be one of {', '.join(METHODS)}, got {self.method!r}")
+        allowed = POT_DISTRIBUTIONS if self.method == "pot" else AM_DISTRIBUTIONS
+        if self.fitted not in allowed:
+            raise ValueError(f"distribution {self.fitted!r} does not fit {self.method}: "
+                             f"accepted {', '.join(allowed)}")
+        if not self.gap_hours > 0.0:
+            raise ValueError(f"gap must be a number of hours > 0, got {self.gap_hours!r}")
+        if not 0.0 < self.confidence < 1.0:
+            raise ValueError(f"confidence must be in (0, 1), got {self.confidence!r}")
+        if not 0.0 < self.coverage <= 1.0:
+            raise ValueError(f"coverage must be in (0, 1], got {self.coverage!r}")
+
+
+@dataclass(frozen=True)
+class ClimateResult:
+    """The analysis of a record.
+
+    Attributes
+    ----------
+    record : Record
+    options : ClimateOptions
+    storms : Storms or None
+        The storms (pot).
+    maxima : AnnualMaxima or None
+        The annual maxima (annual-maxima).
+    fit : Fit
+    band : Band or None
+        The bootstrap (None without replicates).
+    return_values : list of dict
+        ``{period, value, lower, upper}``.
+    notes : list of str
+        Warnings about the fit (``--strict`` makes them errors).
+    """
+
+    record: Record
+    options: ClimateOptions
+    storms: Storms | None
+    maxima: AnnualMaxima | None
+    fit: Fit
+    band: Band | None
+    return_values: list[dict[str, float | None]]
+    notes: list[str] = field(default_factory=list)
+
+    @property
+    def sample(self) -> np.ndarray:
+        """The values fitted (storm peaks or annual maxima)."""
+        if self.storms is not None:
+            return self.storms.peak
+        assert self.maxima is not None
+        return self.maxima.maxima
+
+
+def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
+    """Threshold, storms or annual maxima, fit, bootstrap and return values.
+
+    Raises
+    ------
+    ValueError
+        A record shorter than :data:`MIN_YEARS`, a threshold above every height, too few storms
+        or years for a fit, or an impossible option (the message names it).
+    """
+    options.check()
+    if record.years < MIN_YEARS:
+        raise ValueError(f"{record.source}: {record.years:.2f} years observed; an extreme-value "
+                         f"analysis needs at least {MIN_YEARS:g} year")
+    notes: list[str] = []
+    st: Storms | None = None
+    am: AnnualMaxima | None = None
+    if options.method == "pot":
+        u = resolve_threshold(record, *options.threshold)
+        st = storms(record, u, options.gap_hours)
+        estimate = fit(st.peak, options.fitted, u, st.rate, options.shape)
+        sample, years = st.peak, record.years
+    else:
+        am = annual_maxima(record, options.coverage)
+        estimate = fit(am.maxima, options.fitted)
+        sample, years = am.maxima, None
+    if estimate.distribution == "gev" and estimate.parameters["xi"] <= GEV_XI[0] + 1e-6:
+        notes.append(f"the GEV shape reached its bound xi = {GEV_XI[0]:g} (too few or too even annual "
+                     "maxima for three parameters): prefer gumbel or peaks over a threshold")
+    band = (bootstrap(sample, estimate, options.bootstrap, options.seed, years, options.shape)
+            if options.bootstrap > 0 else None)
+    for R in options.return_periods:
+        if estimate.rate * R <= 1.0:
+            raise ValueError(f"return period {R:g} years is shorter than the mean time between "
+                             f"storms ({1.0 / estimate.rate:.3g} years)")
+    values = return_values(estimate, band, list(options.return_periods), options.confidence)
+    return ClimateResult(record=record, options=options, storms=st, maxima=am, fit=estimate, band=band,
+                         return_values=values, notes=notes)
