@@ -184,16 +184,18 @@ def test_a_guide_width_chooses_the_waves_but_is_not_slid():
 
 
 # fingerprints of the engine before vectorising (2ad9f7f): sum and largest of each width's
-# lifetime slides, and the sliding waves, of 300 lifetimes of seed 7 in chunks of 200
+# lifetime slides, and the sliding waves, of 300 lifetimes of seed 7 in chunks of 200; the normal
+# quantile is scipy.special.ndtri (it differs from Wichura's AS 241 in the last bit: the sums move
+# by under 3e-15 relative, the sliding waves not at all)
 BEFORE = {
     "goda": (MODEL, (11.0, 15.0, 19.0),
-             ("0x1.703bf4d9bd536p+12", "0x1.165361935a1f4p+8", "0x1.e99e4a226d556p+0"),
-             ("0x1.f0b6f18c52277p+8", "0x1.1e74a6a5541aep+6", "0x1.35f07d381d42fp+0"), 9573),
+             ("0x1.703bf4d9bd538p+12", "0x1.165361935a1f7p+8", "0x1.e99e4a226d554p+0"),
+             ("0x1.f0b6f18c5226fp+8", "0x1.1e74a6a5541aap+6", "0x1.35f07d381d42fp+0"), 9573),
     "impulsive-tide": (MODEL.with_(impulsive=True, tide_range=2.0), (12.0, 16.0),
-                       ("0x1.28870fd779681p+12", "0x1.b7b0891d6e47bp+7"),
-                       ("0x1.7bf30a6a12f3ep+8", "0x1.0f6d2b995abafp+6"), 10359),
+                       ("0x1.28870fd779684p+12", "0x1.b7b0891d6e481p+7"),
+                       ("0x1.7bf30a6a12f39p+8", "0x1.0f6d2b995aba8p+6"), 10359),
     "poisson": (LifetimeModel(Climate.from_return_values(5.0, 6.3, storms_per_year=3.0), years=20), (13.0,),
-                ("0x1.34f02bc85853ep+9",), ("0x1.7048bc1f07b2ap+7",), 1159),
+                ("0x1.34f02bc85853ap+9",), ("0x1.7048bc1f07b3bp+7",), 1159),
 }
 
 

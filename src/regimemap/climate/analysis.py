@@ -22,12 +22,15 @@ from .storms import (
     storms,
 )
 
-__all__ = ["METHODS", "ClimateOptions", "ClimateResult", "MIN_YEARS", "analyse"]
+__all__ = ["METHODS", "MIN_YEARS", "ClimateOptions", "ClimateResult", "Curves", "Diagnostics", "analyse",
+           "curves", "diagnostics"]
 
 #: The ways to take extremes from a record.
 METHODS = ("pot", "annual-maxima")
 #: Shortest record [years] for an extreme-value analysis.
 MIN_YEARS = 1.0
+#: Fewest storms above a threshold of the diagnostics.
+DIAGNOSTIC_STORMS = 20
 
 
 @dataclass(frozen=True)
@@ -168,3 +171,108 @@ def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
     values = return_values(estimate, band, list(options.return_periods), options.confidence)
     return ClimateResult(record=record, options=options, storms=st, maxima=am, fit=estimate, band=band,
                          return_values=values, notes=notes)
+
+
+@dataclass(frozen=True)
+class Curves:
+    """What the return-level and QQ plots draw (computed here, drawn by :mod:`regimemap.drawing.climate`).
+
+    Attributes
+    ----------
+    periods : ndarray
+        Return periods of the fitted curve [years].
+    level : ndarray
+        The fit's return values there [m].
+    lower, upper : ndarray or None
+        The band's bounds there (None without a bootstrap).
+    observed : ndarray
+        The values fitted, ascending [m].
+    observed_periods : ndarray
+        Their return periods at Weibull plotting positions: ``p_i = i/(n + 1)``,
+        ``R_i = 1/(lambda (1 - p_i))``.
+    model_quantiles : ndarray
+        The fit's quantiles at ``p_i`` (the QQ plot's x).
+    """
+
+    periods: np.ndarray
+    level: np.ndarray
+    lower: np.ndarray | None
+    upper: np.ndarray | None
+    observed: np.ndarray
+    observed_periods: np.ndarray
+    model_quantiles: np.ndarray
+
+
+def curves(result: ClimateResult, points: int = 60) -> Curves:
+    """The return-level curve with its band, and the observations at their plotting positions."""
+    f = result.fit
+    x = np.sort(result.sample)
+    p = np.arange(1, x.size + 1) / (x.size + 1.0)
+    obs_periods = 1.0 / (f.rate * (1.0 - p))
+    first = 1.05 / f.rate if f.rate > 1.0 else 1.1
+    last = max(2.0 * float(obs_periods.max()), 2.0 * max(result.options.return_periods), 200.0)
+    periods = np.geomspace(first, last, points)
+    level = np.array([f.return_value(R) for R in periods])
+    lower = upper = None
+    if result.band is not None and result.band.fits:
+        bounds = np.array([result.band.interval(R, result.options.confidence) for R in periods])
+        lower, upper = bounds[:, 0], bounds[:, 1]
+    return Curves(periods=periods, level=level, lower=lower, upper=upper, observed=x,
+                  observed_periods=obs_periods, model_quantiles=np.asarray(f.frozen().ppf(p), dtype=float))
+
+
+@dataclass(frozen=True)
+class Diagnostics:
+    """Threshold diagnostics over a range of thresholds (Coles 2001, Sect. 4.3.1).
+
+    Attributes
+    ----------
+    thresholds : ndarray
+        ``u`` [m].
+    storms : ndarray of int
+        Storms above each ``u`` (declustered with the analysis' gap).
+    mean_excess : ndarray
+        Mean residual life: the mean of ``peak - u`` [m]; for a GPD linear in ``u``.
+    mean_excess_ci : ndarray
+        Its 90 % normal half-width, ``1.645 sd/sqrt(n)``.
+    xi : ndarray
+        The GPD shape fitted above each ``u`` (NaN where too few storms); constant above a valid
+        threshold.
+    sigma_star : ndarray
+        The modified scale ``sigma - xi u``, constant likewise.
+    """
+
+    thresholds: np.ndarray
+    storms: np.ndarray
+    mean_excess: np.ndarray
+    mean_excess_ci: np.ndarray
+    xi: np.ndarray
+    sigma_star: np.ndarray
+
+
+def diagnostics(record: Record, gap_hours: float = DEFAULT_GAP, points: int = 30) -> Diagnostics:
+    """Mean residual life and parameter stability at ``points`` thresholds evenly from the 90 %
+    quantile of the heights to the height that leaves :data:`DIAGNOSTIC_STORMS` storms; the GPD
+    is fitted only where at least that many storms remain."""
+    hs = record.hs[np.isfinite(record.hs)]
+    top = storms(record, float(np.quantile(hs, 0.90)), gap_hours).peak
+    last = float(np.sort(top)[-DIAGNOSTIC_STORMS]) if top.size > DIAGNOSTIC_STORMS else float(top.max())
+    us = np.linspace(float(np.quantile(hs, 0.90)), max(last - 1e-9, float(np.quantile(hs, 0.90))), points)
+    n, me, ci, xi, ss = [], [], [], [], []
+    for u in us:
+        s = storms(record, float(u), gap_hours)
+        e = s.peak - u
+        n.append(s.count)
+        me.append(float(e.mean()) if e.size else np.nan)
+        ci.append(1.645 * float(e.std(ddof=1)) / np.sqrt(e.size) if e.size > 1 else np.nan)
+        try:
+            if s.count < DIAGNOSTIC_STORMS:
+                raise ValueError("too few storms")
+            g = fit(s.peak, "gpd", float(u), s.rate)
+            xi.append(g.parameters["xi"])
+            ss.append(g.parameters["sigma"] - g.parameters["xi"] * float(u))
+        except ValueError:
+            xi.append(np.nan)
+            ss.append(np.nan)
+    return Diagnostics(thresholds=us, storms=np.array(n), mean_excess=np.array(me),
+                       mean_excess_ci=np.array(ci), xi=np.array(xi), sigma_star=np.array(ss))

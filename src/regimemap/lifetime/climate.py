@@ -1,7 +1,7 @@
 """The wave climate of a site: the distribution of storm peaks ``H0'``, fitted or given.
 
-numpy only.  A storm's peak equivalent deep-water significant height follows
-a Weibull distribution
+numpy; the fits on scipy.stats and scipy.optimize.  A storm's peak equivalent deep-water
+significant height follows a Weibull distribution
 
     F(H) = 1 - exp(-((H - B)/A)^k),   H >= B,
 
@@ -24,6 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from scipy import optimize, stats
 
 __all__ = ["DISTRIBUTIONS", "Climate"]
 
@@ -149,10 +150,10 @@ class Climate:
         Notes
         -----
         Gumbel: ``A`` solves ``A = mean(x) - sum(x e^(-x/A)) / sum(e^(-x/A))`` and
-        ``B = -A ln mean(e^(-x/A))``.  Weibull with ``k`` given: for a location
+        ``B = -A ln mean(e^(-x/A))`` (``scipy.stats.gumbel_r.fit``).  Weibull with ``k`` given: for a location
         ``B`` the scale is ``A^k = mean((x - B)^k)``, and ``B`` maximises the
         profile log-likelihood ``-n ln mean((x - B)^k) + (k - 1) sum ln(x - B)``
-        over ``B < min(x)`` (a grid, then golden-section search).
+        over ``B < min(x)`` (a grid, then ``scipy.optimize.minimize_scalar``).
         """
         x = np.sort(np.asarray(maxima, dtype=np.float64).ravel())
         if x.size < 3 or not np.all(np.isfinite(x)):
@@ -208,28 +209,9 @@ class Climate:
 
 
 def _fit_gumbel(x: FloatArray) -> tuple[float, float]:
-    mean = float(x.mean())
-    xs = x - mean
-
-    def resid(A: float) -> float:
-        w = np.exp(-(xs - xs[0]) / A)  # x is sorted: exponents <= 0, no overflow
-        return float(A - (-(w * xs).sum() / w.sum()))  # A - (mean - weighted mean) in shifted units
-
-    # A - mean(x) + sum(x w)/sum(w) is increasing in A; bracket it and bisect
-    lo, hi = 1e-6 * float(x.std() + 1e-300), 10.0 * float(x.std()) + 1e-12
-    while resid(hi) < 0.0:
-        hi *= 2.0
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if resid(mid) < 0.0:
-            lo = mid
-        else:
-            hi = mid
-        if hi - lo <= 4e-16 * hi:
-            break
-    A = 0.5 * (lo + hi)
-    B = mean + float(xs[0]) - A * math.log(float(np.mean(np.exp(-(xs - xs[0]) / A))))
-    return A, B
+    """Gumbel maximum likelihood (``scipy.stats.gumbel_r.fit``): ``(A, B)``."""
+    B, A = stats.gumbel_r.fit(x)
+    return float(A), float(B)
 
 
 def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
@@ -238,21 +220,18 @@ def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
 
 
 def _fit_weibull(x: FloatArray, k: float) -> tuple[float, float]:
+    """Weibull maximum likelihood with ``k`` given: the profile over ``B`` on a grid, then Brent's
+    bounded search (``scipy.optimize.minimize_scalar``) around its best point: ``(A, B)``."""
     spread = float(x[-1] - x[0])
     x0 = float(x[0])
-    # B = x0 - exp(t): t from a thousandth of the spread to a hundred spreads below the minimum
+    # B = x0 - exp(t): t from a millionth of the spread to a hundred spreads below the minimum
     ts = np.linspace(math.log(1e-6 * spread), math.log(100.0 * spread), 400)
     vals = [_weibull_profile(x, k, x0 - math.exp(t)) for t in ts]
     i = int(np.argmax(vals))
-    lo, hi = ts[max(i - 1, 0)], ts[min(i + 1, ts.size - 1)]
-    golden = (math.sqrt(5.0) - 1.0) / 2.0
-    for _ in range(100):
-        a = hi - golden * (hi - lo)
-        b = lo + golden * (hi - lo)
-        if _weibull_profile(x, k, x0 - math.exp(a)) >= _weibull_profile(x, k, x0 - math.exp(b)):
-            hi = b
-        else:
-            lo = a
-    B = x0 - math.exp(0.5 * (lo + hi))
+    lo, hi = float(ts[max(i - 1, 0)]), float(ts[min(i + 1, ts.size - 1)])
+    best = optimize.minimize_scalar(lambda t: -_weibull_profile(x, k, x0 - math.exp(t)), bounds=(lo, hi),
+                                    method="bounded", options={"xatol": 1e-12})
+    t = float(best.x) if -best.fun >= vals[i] else float(ts[i])
+    B = x0 - math.exp(t)
     A = float(np.mean((x - B) ** k)) ** (1.0 / k)
     return A, B
