@@ -180,3 +180,17 @@ def test_analyse_real_excerpt():
         analyse(r, ClimateOptions(threshold=("value", 6.0), bootstrap=0))
     with pytest.raises(ValueError, match="needs at least 1 year"):
         analyse(make_record("short", r.time[:2000], r.hs[:2000]), ClimateOptions())
+
+
+@pytest.mark.parametrize(("dist", "params", "u", "rate"), [
+    ("gpd", {"sigma": 1.3, "xi": -0.3}, 4.0, 6.0), ("gpd", {"sigma": 1.3, "xi": 0.0}, 4.0, 6.0),
+    ("gpd", {"sigma": 0.9, "xi": 0.25}, 2.0, 3.0), ("weibull", {"A": 0.9, "k": 1.3}, 2.0, 5.0),
+    ("gumbel", {"A": 0.7, "B": 5.7}, None, 1.0), ("gev", {"mu": 6.0, "sigma": 0.9, "xi": -0.2}, None, 1.0),
+    ("gev", {"mu": 6.0, "sigma": 0.9, "xi": 0.15}, None, 1.0),
+])
+def test_closed_form_return_values_equal_scipy_isf(dist, params, u, rate):
+    from regimemap.climate.fit import Fit
+
+    f = Fit(distribution=dist, parameters=params, threshold=u, rate=rate, n=20)
+    for R in (2.0, 10.0, 50.0, 1000.0):
+        assert f.return_value(R) == pytest.approx(float(f.frozen().isf(1.0 / (rate * R))), rel=1e-12)

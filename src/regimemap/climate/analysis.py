@@ -125,6 +125,11 @@ class ClimateResult:
     return_values: list[dict[str, float | None]]
     notes: list[str] = field(default_factory=list)
 
+    def warnings(self) -> list[str]:
+        """The quality control's warnings and the fit's notes (``--strict`` makes them errors)."""
+        am = self.options.method == "annual-maxima"
+        return self.record.quality.warnings(self.options.coverage if am else None) + self.notes
+
     @property
     def sample(self) -> np.ndarray:
         """The values fitted (storm peaks or annual maxima)."""
@@ -164,6 +169,9 @@ def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
                      "maxima for three parameters): prefer gumbel or peaks over a threshold")
     band = (bootstrap(sample, estimate, options.bootstrap, options.seed, years, options.shape)
             if options.bootstrap > 0 else None)
+    if band is not None and band.failed > 0.05 * band.requested:
+        notes.append(f"{band.failed} of {band.requested} bootstrap replicates had too few values to fit "
+                     "and were left out: the band is too narrow (lower the threshold)")
     for R in options.return_periods:
         if estimate.rate * R <= 1.0:
             raise ValueError(f"return period {R:g} years is shorter than the mean time between "

@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import optimize, stats
 
 __all__ = ["AM_DISTRIBUTIONS", "GEV_XI", "MIN_MAXIMA", "MIN_PEAKS", "POT_DISTRIBUTIONS", "Band", "Fit",
-           "bootstrap", "fit", "return_values"]
+           "bootstrap", "fit", "return_levels", "return_values"]
 
 FloatArray = NDArray[np.float64]
 
@@ -92,11 +92,44 @@ class Fit:
         return stats.genextreme(-p["xi"], loc=p["mu"], scale=p["sigma"])
 
     def return_value(self, years: float) -> float:
-        """``H_R`` [m]: ``F(H_R) = 1 - 1/(lambda R)``."""
-        p = 1.0 / (self.rate * float(years))
-        if not 0.0 < p < 1.0:
+        """``H_R`` [m]: ``F(H_R) = 1 - 1/(lambda R)`` (:func:`return_levels`; equal to the frozen
+        distribution's ``isf(1/(lambda R))``)."""
+        if not self.rate * float(years) > 1.0:
             raise ValueError(f"no {years:g}-year return value with {self.rate:.3g} storms a year")
-        return float(self.frozen().isf(p))
+        p = self.parameters
+        return float(return_levels(self.distribution, {k: np.array([v]) for k, v in p.items()},
+                                   self.threshold, np.array([self.rate]), float(years))[0])
+
+
+def return_levels(distribution: str, parameters: dict[str, FloatArray], threshold: float | None,
+                  rate: FloatArray, years: float) -> FloatArray:
+    """``H_R`` of many parameter sets at once, in closed form (NaN where ``lambda R <= 1``).
+
+    ``gpd``: ``u + sigma/xi ((lambda R)^xi - 1)`` (``u + sigma ln(lambda R)`` at ``xi = 0``);
+    ``weibull``: ``u + A (ln lambda R)^(1/k)``; ``gumbel``: ``B - A ln(-ln(1 - 1/R))``;
+    ``gev``: ``mu + sigma/xi (y^-xi - 1)``, ``y = -ln(1 - 1/R)`` (``mu - sigma ln y`` at ``xi = 0``).
+    """
+    u = 0.0 if threshold is None else float(threshold)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        lr = np.where(rate * years > 1.0, rate * years, np.nan)
+        if distribution == "gpd":
+            xi, sigma = parameters["xi"], parameters["sigma"]
+            small = np.abs(xi) < 1e-12
+            safe = np.where(small, 1.0, xi)
+            out = np.where(small, sigma * np.log(lr), sigma / safe * np.expm1(safe * np.log(lr)))
+            return np.asarray(u + out, dtype=np.float64)
+        if distribution == "weibull":
+            return np.asarray(u + parameters["A"] * np.log(lr) ** (1.0 / parameters["k"]),
+                              dtype=np.float64)
+        y = -math.log1p(-1.0 / years)
+        if distribution == "gumbel":
+            return np.asarray(parameters["B"] - parameters["A"] * math.log(y), dtype=np.float64)
+        xi, mu, sigma = parameters["xi"], parameters["mu"], parameters["sigma"]
+        small = np.abs(xi) < 1e-12
+        safe = np.where(small, 1.0, xi)
+        ly = math.log(y)
+        return np.asarray(np.where(small, mu - sigma * ly, mu + sigma / safe * np.expm1(-safe * ly)),
+                          dtype=np.float64)
 
 
 def _gpd_profile(y: FloatArray) -> tuple[float, float]:
@@ -264,13 +297,12 @@ class Band:
 
     def return_values(self, years: float) -> FloatArray:
         """Each replicate's ``R``-year value (NaN where ``lambda R <= 1``)."""
-        out = []
-        for f in self.fits:
-            try:
-                out.append(f.return_value(years))
-            except ValueError:
-                out.append(math.nan)
-        return np.array(out, dtype=np.float64)
+        if not self.fits:
+            return np.zeros(0)
+        first = self.fits[0]
+        params = {k: np.array([f.parameters[k] for f in self.fits]) for k in first.parameters}
+        rates = np.array([f.rate for f in self.fits])
+        return return_levels(first.distribution, params, first.threshold, rates, years)
 
     def interval(self, years: float, confidence: float) -> tuple[float, float]:
         """The percentile interval of the ``R``-year value at ``confidence``."""

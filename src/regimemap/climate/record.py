@@ -65,8 +65,9 @@ class Quality:
     spikes_dropped: bool = False
     coverage: dict[int, float] = field(default_factory=dict)
 
-    def warnings(self, min_coverage: float = 0.8) -> list[str]:
-        """The findings a careful user must see (``--strict`` makes them errors)."""
+    def warnings(self, min_coverage: float | None = None) -> list[str]:
+        """The findings a careful user must see (``--strict`` makes them errors); the calendar
+        years below ``min_coverage`` too when it is given (annual maxima)."""
         out = []
         if self.duplicates:
             out.append(f"{self.duplicates} repeated time(s) dropped (the first value of each kept)")
@@ -77,9 +78,10 @@ class Quality:
             first = ", ".join(f"{t} {h:.2f} m" for t, h in self.spikes[:3])
             more = f" and {len(self.spikes) - 3} more" if len(self.spikes) > 3 else ""
             out.append(f"{len(self.spikes)} isolated spike(s) {what}: {first}{more}")
-        short = [y for y, c in self.coverage.items() if c < min_coverage]
+        short = [] if min_coverage is None else [y for y, c in self.coverage.items() if c < min_coverage]
         if short:
-            out.append(f"{len(short)} calendar year(s) below {100 * min_coverage:g} % coverage: "
+            out.append(f"{len(short)} calendar year(s) below {100 * (min_coverage or 0.0):g} % coverage "
+                       "left out of the annual maxima: "
                        + ", ".join(f"{y} ({100 * self.coverage[y]:.0f} %)" for y in short))
         return out
 

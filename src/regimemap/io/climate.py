@@ -25,8 +25,8 @@ def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, 
     spikes: ``[{time, hs}]``), ``spikes_dropped``, ``period``}, ``method``, ``threshold`` (m;
     null for annual maxima), ``gap_hours``, ``storms`` (count; for annual maxima the years used),
     ``rate_per_year``, ``distribution``, ``parameters``, ``return_values`` [{``period``,
-    ``value``, ``lower``, ``upper``}], ``confidence``, ``bootstrap`` (replicates fitted),
-    ``seed``, ``warnings``.
+    ``value``, ``lower``, ``upper``}], ``confidence``, ``bootstrap`` (replicates drawn),
+    ``bootstrap_fitted`` (those with enough values to fit), ``seed``, ``warnings``.
     """
     r, o, q = result.record, result.options, result.record.quality
     pot = result.storms is not None
@@ -50,9 +50,10 @@ def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, 
         "parameters": {k: json_number(v) for k, v in result.fit.parameters.items()},
         "return_values": [{k: _num(v) for k, v in rv.items()} for rv in result.return_values],
         "confidence": json_number(o.confidence),
-        "bootstrap": 0 if result.band is None else len(result.band.fits),
+        "bootstrap": 0 if result.band is None else result.band.requested,
+        "bootstrap_fitted": 0 if result.band is None else len(result.band.fits),
         "seed": o.seed,
-        "warnings": q.warnings(o.coverage) + result.notes,
+        "warnings": result.warnings(),
     }
 
 
@@ -87,8 +88,9 @@ def format_climate(result: ClimateResult, source: str | None = None) -> str:
     lines.append(f"  fit: {_NAMES[f.distribution]}, maximum likelihood: {parameter_text(result)}")
     if result.band is not None:
         b = result.band
-        lines.append(f"  band: {100 * o.confidence:g} % percentile interval of {len(b.fits)} non-parametric "
-                     f"bootstrap replicates (seed {b.seed})")
+        fitted = f", {len(b.fits)} fitted" if b.failed else ""
+        lines.append(f"  band: {100 * o.confidence:g} % percentile interval of {b.requested} non-parametric "
+                     f"bootstrap replicates{fitted} (seed {b.seed})")
     lines.append("")
     lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % band" if result.band else ""))
     for rv in result.return_values:
@@ -97,7 +99,7 @@ def format_climate(result: ClimateResult, source: str | None = None) -> str:
         band = ("" if rv["lower"] is None or rv["upper"] is None
                 else f"{rv['lower']:.2f} to {rv['upper']:.2f} m")
         lines.append(f"  {rv['period']:>5g} years  {value:6.2f} m  {band}")
-    warnings = q.warnings(o.coverage) + result.notes
+    warnings = result.warnings()
     if warnings:
         lines.append("")
         lines.extend(f"warning: {w}" for w in warnings)
