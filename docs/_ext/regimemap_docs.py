@@ -397,15 +397,29 @@ class RunCommands(SphinxDirective):
     own.  A command may end with a ``# comment`` (shown, not run).  Options:
     ``:hide-output:`` (show the commands only), ``:max-lines: N`` (the first N
     lines of each output, then ``...``), ``:output-language:`` (the highlighting
-    of the outputs, ``text`` by default).
+    of the outputs, ``text`` by default), ``:copy-first: NAME PATH [PATH ...]`` (copy
+    the first of the PATHs that exists -- relative to the repository, such as the
+    shared data beside a clone and an excerpt in the tests -- to NAME in the folder
+    before the commands run).
     """
 
     has_content = True
     option_spec = {"hide-output": directives.flag, "max-lines": directives.nonnegative_int,
-                   "output-language": directives.unchanged}
+                   "output-language": directives.unchanged, "copy-first": directives.unchanged}
+
+    def _copy_first(self, folder: Path) -> None:
+        name, *paths = self.options["copy-first"].split()
+        root = Path(self.env.app.srcdir).parent
+        for path in paths:
+            if (root / path).is_file():
+                shutil.copyfile(root / path, folder / name)
+                return
+        logger.warning("regimemap-run: none of %s exists", ", ".join(paths), location=self.get_location())
 
     def run(self) -> list[nodes.Node]:
         folder = _run_folder(self.env.app, self.env.docname)
+        if "copy-first" in self.options:
+            self._copy_first(folder)
         blocks: list[tuple[str, list[str]]] = []  # (language, lines)
         for command in (line.strip() for line in self.content):
             if not command:
