@@ -192,6 +192,10 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
         raise RunError(str(exc)) from None
     except ValueError as exc:
         raise RunError(f"{design}: {exc}") from None
+    from ._climate_band import run_climate_band
+
+    band = (run_climate_band(spec, caisson, model, n, result.seed, run, quiet, design)
+            if isinstance(result, LifetimeResult) else None)
     seconds = time.perf_counter() - t0
     if not quiet:
         _note_run(n, model.years, widths, seconds, workers, run["chunk"], scheduler, root, result.seed)
@@ -205,10 +209,18 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
                else io_lifetime.chart_json(result, model, source=design))
         if outputs:
             obj["files"] = written
+        if band is not None:
+            from ..io.climate import climate_band_json
+
+            obj["climate_band"] = climate_band_json(band)
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
         return
     click.echo(io_lifetime.format_lifetime(result, model, source=design) if isinstance(result, LifetimeResult)
                else io_lifetime.format_chart(result, model, source=design))
+    if band is not None:
+        from ..io.climate import climate_band_lines
+
+        click.echo("\n".join(climate_band_lines(band)))
     for path in written:
         report_written(path)
 

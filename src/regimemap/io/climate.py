@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from ..climate.analysis import ClimateResult
 from ._numbers import json_number
 
-__all__ = ["climate_json", "format_climate", "parameter_text"]
+if TYPE_CHECKING:
+    from ..lifetime.replicates import ClimateBand
+
+__all__ = ["climate_band_json", "climate_band_lines", "climate_json", "format_climate", "parameter_text"]
 
 _NAMES = {"gpd": "generalised Pareto", "weibull": "Weibull (shape fixed)", "gumbel": "Gumbel",
           "gev": "generalised extreme value"}
@@ -104,3 +107,19 @@ def format_climate(result: ClimateResult, source: str | None = None) -> str:
         lines.append("")
         lines.extend(f"warning: {w}" for w in warnings)
     return "\n".join(lines)
+
+
+def climate_band_json(band: ClimateBand) -> dict[str, Any]:
+    """``{level, lower, upper, replicates, expected_sliding, std_error, trials, seed}``: the ESD
+    over the replicate climates (the climate's uncertainty included) and its band [m]."""
+    return {"level": json_number(band.level), "lower": json_number(band.lower),
+            "upper": json_number(band.upper), "replicates": band.replicates,
+            "expected_sliding": json_number(band.expected_sliding), "std_error": json_number(band.std_error),
+            "trials": band.trials, "seed": band.seed}
+
+
+def climate_band_lines(band: ClimateBand) -> list[str]:
+    """The band for people: two lines."""
+    return [f"ESD with the climate's uncertainty {band.expected_sliding:.3g} m ± {band.std_error:.2g} m "
+            f"({band.replicates} bootstrap climates x {band.trials} lifetimes)",
+            f"  {100 * band.level:g} % climate band: {band.lower:.3g} m to {band.upper:.3g} m"]
