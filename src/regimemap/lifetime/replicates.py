@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -21,6 +22,7 @@ from numpy.typing import NDArray
 
 from .climate import Climate
 from .model import Caisson, LifetimeModel
+from .parallel import DEFAULT_CHUNK
 from .simulate import lifetime_sliding
 
 __all__ = ["ClimateBand", "climate_band"]
@@ -107,7 +109,25 @@ def climate_band(caisson: Caisson, model: LifetimeModel, climates: Sequence[Clim
     children = np.random.SeedSequence(seed).spawn(len(climates))
     seeds = [int(s.generate_state(1, np.uint32)[0]) for s in children]
     esd = np.empty(len(climates))
-    for i, (c, s) in enumerate(zip(climates, seeds)):
-        esd[i] = lifetime_sliding(caisson, model.with_(climate=c), trials, s, progress=progress,
-                                  **run).expected_sliding
+    jobs = int(run.get("jobs", 1) or 1)
+    chunk = int(run.get("chunk", DEFAULT_CHUNK))
+    if jobs > 1 and run.get("scheduler") is None and len(climates) > 1:
+        # one pool for all the replicates, each run whole in a worker (as with jobs = 1: its numbers
+        # depend only on its seed)
+        with ProcessPoolExecutor(max_workers=min(jobs, len(climates))) as pool:
+            futures = {pool.submit(_one, caisson, model.with_(climate=c), trials, s, chunk): i
+                       for i, (c, s) in enumerate(zip(climates, seeds))}
+            for future in as_completed(futures):
+                esd[futures[future]] = future.result()
+                if progress is not None:
+                    progress(trials)
+    else:
+        for i, (c, s) in enumerate(zip(climates, seeds)):
+            esd[i] = lifetime_sliding(caisson, model.with_(climate=c), trials, s, progress=progress,
+                                      **run).expected_sliding
     return ClimateBand(esd=esd, level=float(level), seed=int(seed), trials=int(trials))
+
+
+def _one(caisson: Caisson, model: LifetimeModel, trials: int, seed: int, chunk: int) -> float:
+    """One replicate's ESD, in this process (a worker's task)."""
+    return lifetime_sliding(caisson, model, trials, seed, chunk=chunk).expected_sliding
