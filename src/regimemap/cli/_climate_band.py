@@ -9,8 +9,10 @@ the same band with any ``--jobs``, ``--chunk`` or scheduler.
 
 from __future__ import annotations
 
+import time
 from typing import TYPE_CHECKING, Any
 
+import click
 import numpy as np
 
 from ._common import RunError
@@ -37,9 +39,14 @@ def run_climate_band(spec: LifetimeSpec, caisson: Caisson, model: LifetimeModel,
     from ._progress import progress_bar
 
     boot, life = (int(s.generate_state(1, np.uint32)[0]) for s in np.random.SeedSequence(seed).spawn(2))
+    t0 = time.perf_counter()
     try:
         climates = replicate_climates(record_analysis(spec.record, spec.climate_replicates, boot))
         with progress_bar(trials * len(climates), "climate band", quiet, unit=" lifetimes") as step:
-            return climate_band(caisson, model, climates, trials, life, BAND_LEVEL, progress=step, **run)
+            band = climate_band(caisson, model, climates, trials, life, BAND_LEVEL, progress=step, **run)
     except ValueError as exc:
         raise RunError(f"{source}: {exc}") from None
+    if not quiet:
+        click.echo(f"regimemap: climate band: {band.replicates} bootstrap climates x {trials} lifetimes "
+                   f"in {time.perf_counter() - t0:.1f} s", err=True)
+    return band

@@ -192,13 +192,13 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
         raise RunError(str(exc)) from None
     except ValueError as exc:
         raise RunError(f"{design}: {exc}") from None
+    seconds = time.perf_counter() - t0
+    if not quiet:
+        _note_run(n, model.years, widths, seconds, workers, run["chunk"], scheduler, root, result.seed)
     from ._climate_band import run_climate_band
 
     band = (run_climate_band(spec, caisson, model, n, result.seed, run, quiet, design)
             if isinstance(result, LifetimeResult) else None)
-    seconds = time.perf_counter() - t0
-    if not quiet:
-        _note_run(n, model.years, widths, seconds, workers, run["chunk"], scheduler, root, result.seed)
 
     # -- the files, then the report ----------------------------------------------------------
     from ..io import lifetime as io_lifetime
