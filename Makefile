@@ -50,10 +50,13 @@ test-fast: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "$(TEST_FAST)"
 
 # ruff's rules (pyproject.toml, [tool.ruff.lint]) include the complexity limits -- C901,
-# PLR0912, PLR0913, PLR0915 -- so a function that outgrows them fails here.
+# PLR0912, PLR0913, PLR0915 -- so a function that outgrows them fails here.  sp-repo-review runs
+# the Scientific Python development guide's checks on the repository (the skipped ones, and why,
+# in [tool.repo-review]); it prints the failures only.
 lint: $(STAMP)
 	$(BIN)/ruff check src tests bench conftest.py
 	$(BIN)/mypy
+	$(BIN)/sp-repo-review --show err .
 
 bench: $(STAMP)
 	$(BIN)/python bench/bench.py
@@ -70,8 +73,20 @@ docs: $(DOCS_STAMP)
 	$(BIN)/sphinx-build -b html -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
 	$(BIN)/sphinx-build -b doctest -W --keep-going -q -d docs/_build/doctrees docs docs/_build/doctest
 
+.PHONY: dist
+
+# `make dist`: the sdist and the wheel into dist/ (python -m build, in an isolated environment with
+# the build requirements of pyproject.toml), checked by twine.  The version is git's (setuptools-scm);
+# building writes it into src/regimemap/_version.py, so the editable install is then brought to
+# the same version (its metadata and that file agree).
+dist: $(STAMP)
+	rm -rf dist
+	$(BIN)/python -m build --outdir dist .
+	$(BIN)/twine check --strict dist/*
+	$(BIN)/python -m pip install --quiet --no-deps --no-build-isolation -e .
+
 clean:
-	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build src/*.egg-info
+	rm -rf .pytest_cache .hypothesis .mypy_cache .ruff_cache .cache build dist src/*.egg-info
 	find . -name __pycache__ -type d -prune -exec rm -rf {} +
 
 distclean: clean

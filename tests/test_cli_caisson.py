@@ -90,10 +90,12 @@ def test_json_report(goda: Path) -> None:
 
 
 BAD = [
-    ("base_depth = 7.1", "base_depth = -7.1", r"\[caisson\] base_depth = -7\.1: out of range; accepted: "),
-    ("friction = 0.6", "friction = \"high\"", r"\[caisson\] friction = 'high': expected a number.*accepted"),
-    ("period = 11.4", "perod = 11.4", r"unknown key \[wave\] perod \(did you mean 'period'\?\)"),
-    ("depth = 10.1", "depth = 6.0", r"\[caisson\] base_depth = 7\.1: .*deeper than the water"),
+    ("base_depth = 7.1", "base_depth = -7.1",
+     r"line 23: \[caisson\] base_depth = -7\.1: out of range, below 0\.01 m.*; accepted: "),
+    ("friction = 0.6", "friction = \"high\"",
+     r"line 26: \[caisson\] friction = \"high\": expected a number.*accepted"),
+    ("period = 11.4", "perod = 11.4", r"line 16: unknown key \[wave\] perod \(did you mean 'period'\?\)"),
+    ("depth = 10.1", "depth = 6.0", r"line 23: \[caisson\] base_depth = 7\.1: .*deeper than the water"),
     ("[site]", "[site", r"TOML syntax error at line \d+"),
 ]
 

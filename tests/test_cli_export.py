@@ -42,7 +42,7 @@ def test_csv_with_extent(tmp_path):
     r = run("export", "--gamma", "2", "--kprime", "0.4", "--k-max", "3", "--mu-max", "2",
             "--resolution", "11", "-o", str(out))
     assert r.exit_code == 0, r.output
-    rows = list(csv.DictReader(out.open()))
+    rows = list(csv.DictReader(out.read_text(encoding="utf-8").splitlines()))
     assert len(rows) == 121
     assert max(float(r["k"]) for r in rows) == 3.0 and max(float(r["mu"]) for r in rows) == 2.0
     for row in rows:

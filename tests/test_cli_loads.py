@@ -81,7 +81,7 @@ def test_points_csv_load_columns(run_cli, tmp_path):
     r = run_cli(["classify", "--points", str(f), "--gamma", "0.7", "--kprime", "-0.018", "-o",
                  str(out)])
     assert r.code == 0, r.output
-    rows = list(csv.DictReader(out.open()))
+    rows = list(csv.DictReader(out.read_text(encoding="utf-8").splitlines()))
     assert [row["mode"] for row in rows] == ["RE", "RE", "LO"]
     assert rows[0]["buoyancy"] == "" and rows[1]["buoyancy"] == "0.318"
     assert rows[2]["chosen_by"] == "least constraint" and rows[1]["chosen_by"] == "unique"
@@ -122,7 +122,7 @@ def test_export_csv_round_trip_with_loads(run_cli, tmp_path):
     out = tmp_path / "m.csv"
     r = run_cli(["export", *GODA, "--resolution", "12", "-o", str(out)])
     assert r.code == 0, r.output
-    rows = list(csv.DictReader(out.open()))
+    rows = list(csv.DictReader(out.read_text(encoding="utf-8").splitlines()))
     assert list(rows[0]) == ["k", "mu", "mode", "gamma", "kprime", "buoyancy", "uplift_ratio",
                              "uplift_arm"]
     k = np.array([float(r_["k"]) for r_ in rows])

@@ -22,8 +22,10 @@ def test_goda_fails_the_required_sliding_factor(run_cli, tmp_path):
     path = _write(tmp_path, EXAMPLE)
     r = run_cli(["caisson", path])
     assert r.code == 0
-    assert "design check: the section FAILS the sliding check" in r.stdout
-    assert "SF sliding 1.16 < required 1.2" in r.stdout
+    lines = r.stdout.splitlines()
+    assert "FAIL  sliding safety factor 1.16 >= 1.2" in lines
+    assert "PASS  overturning safety factor 2.559 >= 1.2" in lines
+    assert "verdict: FAIL (1 of 2 requirements not met)" in lines
     obj = json.loads(run_cli(["caisson", path, "--json"]).stdout)
     assert obj["design_check"]["sliding"] == {"value": pytest.approx(1.16, abs=0.005), "required": 1.2,
                                               "meets": False}
@@ -34,7 +36,8 @@ def test_goda_fails_the_required_sliding_factor(run_cli, tmp_path):
 def test_required_factors_come_from_the_file(run_cli, tmp_path):
     text = EXAMPLE.replace("# required_sliding = 1.2", "required_sliding = 1.1")
     r = run_cli(["caisson", _write(tmp_path, text)])
-    assert "both safety factors reach the required ones" in r.stdout and "1.16 >= 1.1" in r.stdout
+    assert "PASS  sliding safety factor 1.16 >= 1.1" in r.stdout.splitlines()
+    assert "verdict: PASS (every requirement met)" in r.stdout.splitlines()
     bad = EXAMPLE.replace("# required_sliding = 1.2", "required_sliding = 0.8")
     r = run_cli(["caisson", _write(tmp_path, bad, "bad.toml")])
     assert r.code == 2 and "[caisson] required_sliding = 0.8" in r.stderr
@@ -64,11 +67,10 @@ def test_the_example_is_plausible():
 
 
 @pytest.mark.parametrize("old,new,key,slip", [
-    ("depth = 10.1", "depth = 1010", "[site] depth = 1010", "centimetres for metres"),
+    ("depth = 10.1", "depth = 80", "[site] depth = 80", "deeper than any caisson breakwater built"),
     ("buoyant_weight = 2312", "buoyant_weight = 2312000", "[caisson] buoyant_weight = 2312000", "N/m for kN/m"),
-    ("period = 11.4", "period = 114", "[wave] period = 114", "tenths of a second"),
-    ("width = 15.0", "width = 1500", "[caisson] width = 1500", "centimetres for metres"),
-    ("H0 = 6.3", "H0 = 630", "[wave] H0 = 630", "centimetres for metres"),
+    ("period = 11.4", "period = 1.5", "[wave] period = 1.5", "a laboratory model's wave"),
+    ("width = 15.0", "width = 250", "[caisson] width = 250", "centimetres for metres"),
 ])
 def test_each_unit_slip_is_named(old, new, key, slip):
     text = EXAMPLE.replace(old, new, 1)
@@ -101,12 +103,17 @@ def test_warning_then_strict_error(run_cli, tmp_path, command):
 
 
 def test_simulate_design_names_the_option_and_the_slip(run_cli, tmp_path):
-    """The depth in centimetres: a warning naming the key and the slip; --strict: an error on --design."""
+    """The depth in centimetres: beyond the hard limit, an error on --design naming the key and the slip;
+    a caisson far wider than any: a warning, and with --strict an error."""
     path = _write(tmp_path, EXAMPLE.replace("depth = 10.1", "depth = 1010"), "deep.toml")
     r = run_cli(["simulate", "--design", path])
-    assert "warning:" in r.stderr and "[site] depth = 1010" in r.stderr and "centimetres for metres" in r.stderr
+    assert r.code == 2 and "'--design'" in r.stderr and "line 8: [site] depth = 1010" in r.stderr
+    assert "centimetres for metres" in r.stderr and "Traceback" not in r.stderr
+    path = _write(tmp_path, EXAMPLE.replace("width = 15.0", "width = 250"), "wide.toml")
+    r = run_cli(["simulate", "--design", path])
+    assert "warning:" in r.stderr and "[caisson] width = 250" in r.stderr
     strict = run_cli(["simulate", "--design", path, "--strict"])
-    assert strict.code == 2 and "'--design'" in strict.stderr and "[site] depth = 1010" in strict.stderr
+    assert strict.code == 2 and "'--design'" in strict.stderr and "[caisson] width = 250" in strict.stderr
     assert "Traceback" not in strict.stderr
 
 

@@ -129,6 +129,23 @@ def test_set_loads_and_the_toggle(explorer: Explorer) -> None:
     assert_same_map(explorer, Parameters(3.0, 0.4, buoyancy=0.3))
 
 
+def test_ticking_loads_shows_their_sliders_at_once(explorer: Explorer, monkeypatch) -> None:
+    """Ticking 'loads' with both sliders at 0 changes no map, yet their sliders appear: the figure
+    is redrawn at once (not only after the next drag of gamma)."""
+    import regimemap.drawing.explore as explore_module
+
+    draws: list[object] = []
+    monkeypatch.setattr(explore_module, "request_draw", draws.append)
+    assert not explorer.buoyancy_slider.ax.get_visible()
+    before = explorer.params
+    explorer.loads_check.set_active(0)  # what a click on the box does
+    assert explorer.loads_enabled and explorer.params == before  # the same block: beta = nu = 0
+    assert explorer.buoyancy_slider.ax.get_visible() and explorer.nu_slider.ax.get_visible()
+    assert draws == [explorer.fig]
+    explorer.loads_check.set_active(0)  # and unticking hides them, drawn at once too
+    assert not explorer.buoyancy_slider.ax.get_visible() and draws == [explorer.fig, explorer.fig]
+
+
 def test_loads_given_at_start(echo: Echo) -> None:
     p = Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524, gyration=0.8)
     ex = open_explorer(p, echo=echo)
@@ -499,3 +516,62 @@ def test_off_screen_explorer_stays_out_of_pyplot() -> None:
     ex.set_kprime(-0.2)
     assert_same_map(ex, Parameters(3.0, -0.2))
     ex.close()
+
+
+# -- explore --design: the caisson's design wave ---------------------------------------------------
+
+
+def _goda(tmp_path: Path) -> Path:
+    from regimemap.io.design import example_design_text
+
+    p = tmp_path / "goda.toml"
+    p.write_text(example_design_text(), encoding="utf-8")
+    return p
+
+
+@pytest.mark.slow
+def test_cli_design_starts_at_the_design_wave(run_cli, tmp_path: Path) -> None:
+    """The first view is the caisson's loaded map with its design point: plot's bytes with the
+    block and the point that `regimemap caisson --json` gives."""
+    import json
+
+    goda = _goda(tmp_path)
+    out = tmp_path / "start.png"
+    run = run_cli(["explore", "--design", str(goda), "-o", str(out)])
+    assert run.code == 0, run.stderr
+    assert run.stdout == f"{out}\n"
+    c = json.loads(run_cli(["caisson", str(goda), "--json"]).stdout)
+    args = ["--gamma", repr(c["gamma"]), "--kprime", repr(c["kprime"]), "--buoyancy", repr(c["buoyancy"]),
+            "--uplift-ratio", repr(c["uplift_ratio"]), "--uplift-arm", repr(c["uplift_arm"]),
+            "--gyration", repr(c["gyration"]), "--crest", repr(c["crest"]),
+            "--point", f"{c['k']!r},{c['mu']!r}"]
+    assert out.read_bytes() == plot_bytes(run_cli, tmp_path, args, "goda.png")
+
+
+def test_design_point_is_marked_with_its_answer(echo: Echo, tmp_path: Path) -> None:
+    from regimemap.io.design import read_design
+    from regimemap.maps.caisson import caisson_report
+    from regimemap.maps.points import DesignPoint
+
+    report = caisson_report(read_design(_goda(tmp_path)).analysis_inputs())
+    params = report.map.parameters()
+    ex = open_explorer(params, echo=echo, point=DesignPoint(report.k, report.mu))
+    try:
+        assert ex.params == params and ex.loads_enabled  # beta and nu on their sliders
+        assert ex.point == DesignPoint(report.k, report.mu)  # not rounded as a click would be
+        assert ex.result is not None and ex.result.mode == Mode(report.mode) == Mode.RE
+        assert ex.info_text == ex.describe(ex.result) and echo.out == []
+    finally:
+        ex.close()
+
+
+def test_cli_design_refuses_the_block_and_bad_files(run_cli, tmp_path: Path) -> None:
+    goda = _goda(tmp_path)
+    run = run_cli(["explore", "--design", str(goda), "--gamma", "2", "--buoyancy", "0.3",
+                   "-o", str(tmp_path / "x.png")])
+    assert run.code == 2 and "--gamma, --buoyancy and --design exclude each other" in run.stderr
+    bad = tmp_path / "bad.toml"
+    bad.write_text(goda.read_text(encoding="utf-8").replace("width = 15.0", "widht = 15.0"), encoding="utf-8")
+    run = run_cli(["explore", "--design", str(bad), "-o", str(tmp_path / "x.png")])
+    assert run.code == 2 and "'--design'" in run.stderr and "line 22: unknown key [caisson] widht" in run.stderr
+    assert not (tmp_path / "x.png").exists()

@@ -51,9 +51,9 @@ PUBLIC_API = {
     ],
     "regimemap.lifetime": [
         "ADDED_MASS_COEFFICIENT", "Caisson", "Climate", "ClusterUnavailable", "DEFAULT_ERRORS",
-        "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "DesignChart", "ErrorFactor", "Errors", "LifetimeModel",
-        "LifetimeResult", "added_mass", "available_cores", "design_chart", "half_sine_slide",
-        "lifetime_sliding", "sf_width", "wave_duration",
+        "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "DesignChart", "ErrorFactor", "Errors", "Failure",
+        "LifetimeModel", "LifetimeResult", "Requirements", "added_mass", "available_cores", "design_chart",
+        "half_sine_slide", "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
     ],
     "regimemap.climate": [
         "AM_DISTRIBUTIONS", "METHODS", "POT_DISTRIBUTIONS", "AnnualMaxima", "Band", "ClimateOptions",

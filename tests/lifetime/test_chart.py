@@ -87,3 +87,65 @@ def test_lifetime_and_chart_agree_within_their_errors():
     r = lifetime_sliding(GODA.with_width(12.0), MODEL, trials=1500, seed=2)
     c = design_chart(GODA, MODEL, [12.0, 14.0], trials=1500, seed=8)
     assert abs(r.expected_sliding - c.expected_sliding[0]) < 4.0 * np.hypot(r.std_error, c.std_error[0])
+
+
+# -- the width for the target: its tolerance and its Monte Carlo interval -----------------------------
+
+
+def _exponential_decay(n: int, seed: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Lifetimes ``S_i(b) = X_i exp(-(b - 10))``, ``X_i`` standard exponential: the ESD falls to the
+    target 0.1 at ``b* = 10 + log(mean X / 0.1)`` exactly (log-linear between any two widths)."""
+    x = np.random.default_rng(seed).standard_exponential(n)
+    widths = np.linspace(10.0, 20.0, 11)
+    return widths, x[None, :] * np.exp(-(widths[:, None] - 10.0)), x
+
+
+@pytest.mark.parametrize("n", [400, 1600, 6400])
+def test_the_interval_is_the_delta_method_s_for_a_closed_form_curve(n: int) -> None:
+    from regimemap.lifetime.chart import width_interval
+
+    widths, sliding, x = _exponential_decay(n, seed=n)
+    iv = width_interval(widths, sliding, 0.1, seed=3)
+    centre = 10.0 + np.log(x.mean() / 0.1)  # the sample's own crossing
+    assert iv.lower < centre < iv.upper
+    # b* = 10 + log(mean X) + const: sd(log mean X) = cv / sqrt(n) = 1 / sqrt(n) (cv of Exp(1) is 1)
+    expected = 2.0 * 1.959964 / np.sqrt(n)
+    assert iv.upper - iv.lower == pytest.approx(expected, rel=0.15)
+    assert iv.level == 0.95
+
+
+def test_the_interval_shrinks_as_one_over_sqrt_trials_and_is_seeded() -> None:
+    from regimemap.lifetime.chart import width_interval
+
+    spans = []
+    for n in (500, 8000):
+        widths, sliding, _ = _exponential_decay(n, seed=1)
+        iv = width_interval(widths, sliding, 0.1, seed=3)
+        spans.append(iv.upper - iv.lower)
+        assert width_interval(widths, sliding, 0.1, seed=3) == iv  # the same seed, the same interval
+    assert spans[0] / spans[1] == pytest.approx(4.0, rel=0.2)  # sqrt(8000 / 500)
+
+
+def test_the_width_is_bisected_to_the_tolerance_and_lies_in_its_interval() -> None:
+    widths = [12.0, 16.0, 20.0]
+    c = design_chart(GODA, MODEL, widths, trials=300, seed=9, target=0.1, tolerance=0.05)
+    w = c.width_for_target
+    assert w is not None and c.width_interval is not None
+    assert c.bracket_problem() is None
+    # the bracket of the last step: the narrowest probe that met the target and the widest that did not
+    met = [b for b, e in c.probes if e <= 0.1] + [b for b, e in zip(widths, c.expected_sliding) if e <= 0.1]
+    missed = [b for b, e in c.probes if e > 0.1] + [b for b, e in zip(widths, c.expected_sliding) if e > 0.1]
+    assert w == min(met) and 0.0 < w - max(missed) <= 0.05
+    assert len(c.probes) == 7  # 4 m to 0.05 m: ceil(log2(80))
+    assert c.width_interval.lower <= w <= c.width_interval.upper
+    # a coarser tolerance stops sooner, on the same path
+    coarse = design_chart(GODA, MODEL, widths, trials=300, seed=9, target=0.1, tolerance=1.0)
+    assert coarse.probes == c.probes[:2]
+
+
+def test_a_chart_that_does_not_bracket_the_target_says_both_ends() -> None:
+    c = design_chart(GODA, MODEL, [9.0, 10.0], trials=200, seed=1, target=0.001)
+    msg = c.bracket_problem()
+    assert msg is not None and "no width meets it" in msg
+    assert f"{c.expected_sliding[0]:.4g} m at 9 m" in msg and f"{c.expected_sliding[1]:.4g} m at 10 m" in msg
+    assert c.width_interval is None

@@ -208,7 +208,9 @@ def test_design_chart(run_cli, goda: Path, tmp_path: Path) -> None:
     assert [w for w, _, _ in rows] == ["12", "16", "20", "24"]
     esd = [float(e) for _, e, _ in rows]
     assert esd == sorted(esd, reverse=True)  # wider slides less (the same random numbers)
-    assert re.search(r"^width for ESD <= 0.1 m: \S+ m$", r.stdout, re.M)
+    assert re.search(r"^width for ESD <= 0.1 m: \S+ m \(bisected to 0.05 m\)$", r.stdout, re.M)
+    assert re.search(r"^  95 % interval \S+ - \S+ m \(Monte Carlo: bootstrap of the 200 lifetimes", r.stdout, re.M)
+    assert "wave force: impulsive = false" in r.stdout
     assert "width for SF_sliding = 1.2 under the 50-year wave" in r.stdout
     assert r.stdout.splitlines()[-1] == png and Path(png).read_bytes()[:4] == b"\x89PNG"
 
@@ -218,14 +220,118 @@ def test_design_chart(run_cli, goda: Path, tmp_path: Path) -> None:
     assert set(j["chart"][0]) == {"width", "expected_sliding", "std_error"}
     assert j["target"] == 0.3 and 16.0 <= j["width_for_target"] <= 24.0
     assert 14.0 < j["sf_width"] < 16.0 and j["trials"] == 200 and j["seed"] == 2026
+    iv = j["width_interval"]
+    assert iv["level"] == 0.95 and iv["lower"] <= j["width_for_target"] <= iv["upper"]
+    assert j["width_tolerance"] == 0.05 and j["impulsive"] is False
+    # the design's 15 m against the width for the target: one check
+    assert j["checks"] == [{"name": "width for ESD <= 0.3 m", "value": 15.0,
+                            "required": j["width_for_target"], "relation": ">=", "unit": "m",
+                            "pass": False}]
 
 
-def test_a_chart_that_never_meets_the_target(run_cli, goda: Path) -> None:
-    r = ok(run_cli(["lifetime", str(goda), "--trials", "100", "--width", "8:10:2", "--target", "1e-6"]))
-    assert "none of the chart's widths meets it" in r.stdout
-    j = json.loads(ok(run_cli(["lifetime", str(goda), "--trials", "100", "--width", "8:10:2",
-                               "--target", "1e-6", "--json"])).stdout)
-    assert j["width_for_target"] is None
+@pytest.mark.parametrize(("widths", "where"), [("8:10:2", "no width meets it"),
+                                                ("40:50:2", "every width meets it")])
+def test_a_chart_that_does_not_bracket_the_target_exits_2_with_both_ends(run_cli, goda: Path, widths: str,
+                                                                         where: str) -> None:
+    r = run_cli(["lifetime", str(goda), "--trials", "100", "--width", widths, "--target", "0.1"])
+    line = failed(r, 2, "'--width'", "the target ESD 0.1 m is not between the ESD at the ends", where)
+    lo, hi = widths.split(":")[:2]
+    assert re.search(rf"\S+ m at {lo} m and \S+ m at {hi} m", line), line
+
+
+def test_widths_beyond_those_of_caissons_are_refused(run_cli, goda: Path) -> None:
+    # the 1:1e6:5, which once answered 977.6 m
+    failed(run_cli(["lifetime", str(goda), "--width", "1:1e6:5", "--target", "0.1"]), 2,
+           "'--width'", "outside the 1-100 m of caisson widths", "1 <= A < B <= 100")
+
+
+def test_the_width_tolerance_sets_the_bisection(run_cli, goda: Path) -> None:
+    base = ["lifetime", str(goda), "--trials", "200", "--width", "12:24:4", "--json"]
+    fine = json.loads(ok(run_cli([*base, "--width-tolerance", "0.01"])).stdout)
+    coarse = json.loads(ok(run_cli([*base, "--width-tolerance", "1"])).stdout)
+    assert fine["width_tolerance"] == 0.01 and coarse["width_tolerance"] == 1.0
+    # the same bisection path: the coarse answer is within 1 m above the fine one
+    assert 0.0 <= coarse["width_for_target"] - fine["width_for_target"] <= 1.0
+    failed(run_cli([*base, "--width-tolerance", "0"]), 2, "'--width-tolerance'", "0.001 <= tolerance <= 10")
+    failed(run_cli(["lifetime", str(goda), "--width-tolerance", "0.1"]), 2, "--width-tolerance", "--width")
+
+
+def test_the_chart_s_table_as_csv(run_cli, goda: Path, tmp_path: Path) -> None:
+    text = EXAMPLE.replace("# failure_sliding = 5.0", "failure_sliding = 5.0")
+    goda.write_text(text, encoding="utf-8")
+    csv = tmp_path / "chart.csv"
+    j = json.loads(ok(run_cli(["lifetime", str(goda), "--trials", "200", "--width", "12:24:4", "--json",
+                               "-o", str(csv)])).stdout)
+    lines = csv.read_text(encoding="utf-8").splitlines()
+    assert lines[0] == ("width_m,expected_sliding_m,std_error_m,p_exceed_0.03m,p_exceed_0.1m,"
+                        "p_exceed_0.3m,p_exceed_1m,p_exceed_3m,p_failure")
+    rows = [[float(x) for x in line.split(",")] for line in lines[1:]]
+    assert [r[0] for r in rows] == [12.0, 16.0, 20.0, 24.0]
+    for r, c in zip(rows, j["chart"]):
+        assert r[1] == pytest.approx(c["expected_sliding"], rel=1e-11)
+        assert r[2] == pytest.approx(c["std_error"], rel=1e-11)
+        assert r[3] >= r[4] >= r[5] >= r[6] >= r[7] >= r[8] >= 0.0  # P(S > 5 m) <= P(S > 3 m)
+    assert j["failure_sliding"] == 5.0
+
+
+# -- the requirements and --check ---------------------------------------------------------------------
+
+
+def test_check_exits_1_on_a_failed_requirement_after_the_report_and_the_files(run_cli, goda: Path,
+                                                                                tmp_path: Path) -> None:
+    csv = tmp_path / "life.csv"
+    r = run_cli(["lifetime", str(goda), "--trials", TRIALS, "--check", "-o", str(csv)])
+    assert r.code == 1 and "Traceback" not in r.output
+    assert csv.exists()
+    assert re.search(r"^  FAIL  expected sliding distance \S+ m <= 0.1 m$", r.stdout, re.M)
+    assert "  verdict: FAIL (1 of 1 requirements not met)" in r.stdout
+    # without --check the same report exits 0
+    assert ok(run_cli(["lifetime", str(goda), "--trials", TRIALS])).stdout == r.stdout.replace(
+        f"{csv}\n", "")
+
+
+def test_check_exits_0_when_every_requirement_passes(run_cli, goda: Path) -> None:
+    goda.write_text(EXAMPLE.replace("target = 0.1 ", "target = 1000 "), encoding="utf-8")
+    r = ok(run_cli(["lifetime", str(goda), "--trials", TRIALS, "--check"]))
+    assert "  PASS  expected sliding distance" in r.stdout and "verdict: PASS" in r.stdout
+
+
+def test_check_keeps_usage_errors_at_2(run_cli, goda: Path) -> None:
+    goda.write_text(EXAMPLE.replace("H0_50 = 6.3", "H0_50 = 630"), encoding="utf-8")
+    failed(run_cli(["lifetime", str(goda), "--check"]), 2, "H0_50 = 630", "above 30 m")
+
+
+def test_json_checks_allowed_exceedances_and_the_failure_probability(run_cli, goda: Path) -> None:
+    text = EXAMPLE.replace("target = 0.1 ", 'target = 5\nallowed = {0.1 = 0.5, "3" = 0.001}\n')
+    text = text.replace("# failure_sliding = 5.0", "failure_sliding = 5.0")
+    goda.write_text(text, encoding="utf-8")
+    r = run_cli(["lifetime", str(goda), "--trials", TRIALS, "--json", "--check"])
+    assert r.code == 1, r.output
+    j = json.loads(r.stdout)
+    names = [c["name"] for c in j["checks"]]
+    assert names == ["expected sliding distance", "P(S > 0.1 m)", "P(S > 3 m)"]
+    by = {c["name"]: c for c in j["checks"]}
+    assert by["P(S > 0.1 m)"]["value"] == j["exceedance"]["0.1"] and by["P(S > 0.1 m)"]["pass"] is True
+    assert by["P(S > 3 m)"]["value"] == j["exceedance"]["3"] > 0.001 and by["P(S > 3 m)"]["pass"] is False
+    assert by["expected sliding distance"] == {"name": "expected sliding distance",
+                                               "value": j["expected_sliding"], "required": 5.0,
+                                               "relation": "<=", "unit": "m",
+                                               "pass": j["expected_sliding"] <= 5.0}
+    # the failure probability: the share of lifetimes beyond 5 m, from the lifetimes themselves
+    f = j["failure"]
+    assert f["sliding_limit"] == 5.0
+    p = f["probability"]
+    assert j["exceedance"]["3"] >= p > 0.0
+    assert f["std_error"] == pytest.approx(np.sqrt(p * (1 - p) / int(TRIALS)), rel=1e-9)
+    assert j["impulsive"] is False and j["climate_as_written"] == "H0_10 = 5.0 m, H0_50 = 6.3 m"
+
+
+@pytest.mark.parametrize("value", ["1e300", "630"])
+def test_absurd_climates_are_refused_without_strict(run_cli, goda: Path, value: str) -> None:
+    goda.write_text(EXAMPLE.replace("H0_50 = 6.3", f"H0_50 = {value}"), encoding="utf-8")
+    r = run_cli(["lifetime", str(goda)])
+    failed(r, 2, "[lifetime] H0_50 =", "above 30 m, higher than any sea measured")
+    assert "RuntimeWarning" not in r.output
 
 
 # -- refusals -----------------------------------------------------------------------------------------
@@ -254,7 +360,7 @@ def test_a_chart_that_never_meets_the_target(run_cli, goda: Path) -> None:
     (["--scheduler", "tcp://host:99999"], ["'--scheduler'", "got 'tcp://host:99999'"]),
     (["-o", "{tmp}/life.txt"], ["'--output'", ".txt", ".png, .svg or .pdf", ".csv or .npz"]),
     (["-o", "{tmp}/life"], ["'--output'", "no suffix"]),
-    (["--width", "10:20:3", "-o", "{tmp}/chart.csv"], ["'--output'", "not with --width"]),
+    (["--width", "10:20:3", "-o", "{tmp}/chart.npz"], ["'--output'", "not with --width"]),
     (["-o", "{tmp}/missing/life.png"], ["'--output'", "does not exist"]),
     (["-o", "{tmp}/a.csv", "-o", "{tmp}/a.csv"], ["the same file is given twice"]),
 ])

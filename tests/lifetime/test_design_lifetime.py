@@ -4,6 +4,7 @@ with the file, the key, its line, the value and what is accepted."""
 from __future__ import annotations
 
 import re
+import warnings
 from pathlib import Path
 
 import pytest
@@ -160,9 +161,31 @@ REFUSED = [
     ("shape = 2.0", "shape = -1.5", "shape =", ["[lifetime] shape = -1.5", "k > 0"]),
     ("shape = 2.0", 'shape = "2"', "shape =", ["[lifetime] shape = '2'", "expected a number, found a string"]),
     ("H0_50 = 6.3", "H0_50 = 5.0", "H0_50 =",
-     ["[lifetime] H0_50 = 5.0", "not above [lifetime] H0_10 = 5.0", "H0_50 > H0_10"]),
+     ["[lifetime] H0_50 = 5.0", "not above [lifetime] H0_10 = 5.0", "H0_10 < H0_50"]),
     ("H0_50 = 6.3", "H0_50 = 4", "H0_50 =", ["[lifetime] H0_50 = 4", "not above"]),
-    ("H0_10 = 5.0", "H0_10 = -5.0", "H0_10 =", ["[lifetime] H0_10 = -5.0", "out of range", "> 0 in metres"]),
+    ("H0_10 = 5.0", "H0_10 = -5.0", "H0_10 =", ["[lifetime] H0_10 = -5.0", "not > 0", "0 < H0_10 <= 30 m"]),
+    # hard physical limits: errors without --strict, naming the limit and why
+    ("H0_50 = 6.3", "H0_50 = 1e300", "H0_50 =",
+     ["[lifetime] H0_50 = 1e+300", "above 30 m, higher than any sea measured", "about 20 m"]),
+    ("H0_50 = 6.3", "H0_50 = 630", "H0_50 =",
+     ["[lifetime] H0_50 = 630", "above 30 m", "6.3 m in centimetres for metres?"]),
+    ("H0_10 = 5.0", "H0_10 = 500", "H0_10 =", ["[lifetime] H0_10 = 500", "above 30 m"]),
+    ("H0_10 = 5.0", "annual_maxima = [4.1, 36.0, 5.2]", "annual_maxima =",
+     ["[lifetime] annual_maxima = [4.1, 36.0, 5.2]", "36.0 in the list is above 30 m"]),
+    ("storm_hours = 2.0", "period = 114", "period =",
+     ["[lifetime] period = 114", "above 30 s", "11.4 s in tenths of a second?", "1 <= T1/3 <= 30 s"]),
+    ("storm_hours = 2.0", "period = 0.09", "period =", ["[lifetime] period = 0.09", "below 1 s"]),
+    ("tide_range = 0.0", "tide_range = 150", "tide_range =", ["[lifetime] tide_range = 150", "Bay of Fundy"]),
+    ("H0_10 = 5.0", "H0_10 = 5.0\nstorms_per_year = 1000", "storms_per_year =",
+     ["[lifetime] storms_per_year = 1000", "<= 365"]),
+    ("storm_hours = 2.0", "storm_hours = 1000", "storm_hours =", ["[lifetime] storm_hours = 1000", "<= 168"]),
+    # the requirements
+    ("target = 0.1", "target = 0", "target =", ["[lifetime] target = 0", "ESD <= target"]),
+    ("target = 0.1", "allowed = 0.2", "allowed =", ["[lifetime] allowed = 0.2", "expected a table"]),
+    ("target = 0.1", 'allowed = {"0.1" = 1.5}', "allowed =", ["the probability 1.5 of 0.1 m is not in [0, 1]"]),
+    ("target = 0.1", 'allowed = {"-1" = 0.5}', "allowed =", ["the sliding '-1' is not > 0 m"]),
+    ("target = 0.1", 'allowed = {"a" = 0.5}', "allowed =", ["the key 'a' is not a sliding distance"]),
+    ("target = 0.1", "failure_sliding = -2", "failure_sliding =", ["[lifetime] failure_sliding = -2", "off its mound"]),
     ("trials = 5000", "trials = 0", "trials =", ["[lifetime] trials = 0", "out of range", "1 <= trials"]),
     ("trials = 5000", f"trials = {MAX_TRIALS + 1}", "trials =", [f"trials = {MAX_TRIALS + 1}", "out of range"]),
     ("trials = 5000", "trials = 5000.0", "trials =", ["expected a whole number, found a float"]),
@@ -176,7 +199,7 @@ REFUSED = [
     ('distribution = "weibull"', "distribution = 1", "distribution =", ["expected a string, found an integer"]),
     ("storm_hours = 2.0", "storm_hours = 0", "storm_hours =", ["[lifetime] storm_hours = 0", "hours"]),
     ("storm_hours = 2.0", "storm_hours = inf", "storm_hours =", ["storm_hours = inf", "not a finite number"]),
-    ("tide_range = 0.0", "tide_range = -1", "tide_range =", ["[lifetime] tide_range = -1", "tidal range >= 0"]),
+    ("tide_range = 0.0", "tide_range = -1", "tide_range =", ["[lifetime] tide_range = -1", "0 <= tide_range"]),
     ("tide_range = 0.0", "tide_range = nan", "tide_range =", ["tide_range = nan", "not a finite number"]),
     ("thresholds = [0.03, 0.1, 0.3, 1.0, 3.0]", "thresholds = [0.1, -3]", "thresholds =",
      ["[lifetime] thresholds = [0.1, -3]", "-3 in the list is out of range", "each > 0 in metres"]),
@@ -188,11 +211,11 @@ REFUSED = [
     ("impulsive = false", "impulsive = 0", "impulsive =", ["[lifetime] impulsive = 0", "expected true or false"]),
     ("storm_hours = 2.0", "truncate = 0", "truncate =", ["[lifetime] truncate = 0", "standard deviations"]),
     ("storm_hours = 2.0", "steepness = 0.2", "steepness =", ["[lifetime] steepness = 0.2", "0 < H0'/L0 <= 0.142"]),
-    ("storm_hours = 2.0", "period = -3", "period =", ["[lifetime] period = -3", "T1/3 > 0 in seconds"]),
+    ("storm_hours = 2.0", "period = -3", "period =", ["[lifetime] period = -3", "1 <= T1/3 <= 30 s"]),
     ("storm_hours = 2.0", "period = 10\nsteepness = 0.03", "steepness =",
      ["[lifetime] steepness = 0.03 together with [lifetime] period = 10"]),
     ("H0_10 = 5.0", "H0_10 = 5.0\nstorms_per_year = 0.05", "storms_per_year =",
-     ["[lifetime] storms_per_year = 0.05", "storms_per_year > 0.1"]),
+     ["[lifetime] storms_per_year = 0.05", "0.1 < storms_per_year"]),
     ("H0_10 = 5.0", "H0_10 = 5.0\nannual_maxima = [4.1, 3.6, 5.2]", "annual_maxima =",
      ["[lifetime] annual_maxima together with H0_10", "either H0_10 and H0_50"]),
     ("H0_50 = 6.3", "", "H0_10 =", ["[lifetime] H0_50 is missing (H0_10 = 5.0 is given)"]),
@@ -228,6 +251,34 @@ def test_refused_with_the_key_and_its_line(old: str, new: str, at: str, parts: l
         assert "; accepted: " in msg, msg
 
 
+def test_the_requirements_are_read() -> None:
+    spec = parse_design(EXAMPLE).lifetime_spec()
+    assert (spec.target, dict(spec.allowed), spec.failure_sliding) == (0.1, {}, None)
+    # TOML reads a bare key 0.1 as the dotted key 0 . 1: read back as 0.1
+    text = edit(EXAMPLE, "target = 0.1", "target = 0.05\nallowed = {0.1 = 0.2, \"3\" = 0.01}\nfailure_sliding = 5")
+    spec = parse_design(text).lifetime_spec()
+    assert spec.target == 0.05 and dict(spec.allowed) == {0.1: 0.2, 3.0: 0.01}
+    assert spec.failure_sliding == 5.0
+
+
+def test_the_climate_is_echoed_as_written() -> None:
+    assert parse_design(EXAMPLE).lifetime_spec().climate_as_written() == "H0_10 = 5.0 m, H0_50 = 6.3 m"
+    text = edit(edit(EXAMPLE, "H0_10 = 5.0", "H0_10 = 5"), "H0_50 = 6.3", "H0_50 = 6.30")
+    assert parse_design(text).lifetime_spec().climate_as_written() == "H0_10 = 5 m, H0_50 = 6.3 m"
+
+
+def test_a_climate_fit_that_overflows_is_named() -> None:
+    from regimemap.io.design_lifetime import LifetimeSpec, lifetime_model
+
+    spec = LifetimeSpec(H0_10=1e-300, H0_50=30.0)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no numpy RuntimeWarning on the way
+        try:
+            lifetime_model(spec)
+        except ValueError as exc:
+            assert "cannot be computed" in str(exc)
+
+
 def test_a_file_with_a_bad_lifetime_is_refused_by_caisson_too(tmp_path: Path) -> None:
     path = tmp_path / "goda.toml"
     path.write_text(edit(EXAMPLE, "shape = 2.0", "shape = -1"), encoding="utf-8")
@@ -245,7 +296,7 @@ def test_no_climate_names_the_table_s_line() -> None:
 @pytest.mark.parametrize(("maxima", "why"), [
     ("[4.0, 5.0]", "2 values, fewer than three"),
     ("[4.0, 4.0, 4.0]", "the values are all equal"),
-    ("[4.0, 0, 5.0]", "0 in the list is out of range"),
+    ("[4.0, 0, 5.0]", "0 in the list is not > 0"),
 ])
 def test_refused_annual_maxima(maxima: str, why: str) -> None:
     text = edit(edit(EXAMPLE, "H0_10 = 5.0", f"annual_maxima = {maxima}"), "H0_50 = 6.3", "")

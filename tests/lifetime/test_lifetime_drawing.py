@@ -323,3 +323,73 @@ def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResu
     print_figure(fig, a, "svg")
     print_figure(sheet_figure(report, title="goda.toml", lifetime=goda), b, "svg")
     assert a.getvalue() == b.getvalue()
+
+
+# -- the verdict, the title, the zone off the mound, the width's interval ---------------------------
+
+
+def _judged(result: LifetimeResult, target: float, failure: float | None = None) -> LifetimeResult:
+    from regimemap.lifetime import Requirements, judge_lifetime
+
+    return judge_lifetime(result, Requirements(target=target, failure_sliding=failure))
+
+
+def _fig_texts(fig) -> list:
+    return [t for t in fig.texts] + [t for ax in fig.axes for t in ax.texts]
+
+
+@pytest.mark.parametrize(("target", "word"), [(0.1, "FAIL (1 of 1)"), (100.0, "PASS")])
+def test_the_lifetime_figure_says_pass_or_fail_and_colours_a_failing_esd(goda: LifetimeResult, target: float,
+                                                                         word: str) -> None:
+    from matplotlib.colors import to_hex
+
+    from regimemap.drawing.lifetime import lifetime_title
+    from regimemap.drawing.verdict import FAIL_COLOUR
+
+    result = _judged(goda, target, failure=5.0)
+    fig = lifetime_figure(result, lifetime_title("goda", result))
+    _check_figure(fig)
+    texts = _fig_texts(fig)
+    assert [t.get_text() for t in fig.texts if t.get_text() in ("PASS", "FAIL (1 of 1)")] == [word]
+    esd = next(t for t in texts if t.get_text().startswith("ESD = "))
+    assert (to_hex(esd.get_color()) == FAIL_COLOUR.lower()) == (word != "PASS")
+    title = " ".join(t.get_text() for t in fig.texts)
+    for part in ("goda: caisson $b$ = 15 m", "1000 lifetimes", "seed 1", "impulsive = false"):
+        assert part in title, (part, title)
+    # the zone off the mound: a hatched span from 5 m in both panels, and the failure in the key
+    for ax in fig.axes:
+        spans = [p for p in ax.patches if p.get_hatch()]
+        assert len(spans) == 1 and spans[0].get_x() == pytest.approx(5.0)
+    key = " ".join(t.get_text() for t in fig.legends[0].get_texts())
+    assert f"off the mound ($S$ > 5 m): failure {100 * result.failure.probability:.3g} %" in key
+
+
+def test_no_zone_off_the_mound_without_a_lifetime_beyond_it(wide: LifetimeResult) -> None:
+    result = _judged(wide, 0.1, failure=1e6)
+    fig = lifetime_figure(result)
+    assert not any(p.get_hatch() for ax in fig.axes for p in ax.patches)
+    assert "no lifetime slid off the mound" in " ".join(t.get_text() for t in fig.legends[0].get_texts())
+
+
+def test_the_chart_draws_the_interval_the_design_width_and_the_verdict(chart: DesignChart) -> None:
+    from matplotlib.colors import to_hex
+
+    from regimemap.drawing.lifetime_chart import chart_title
+    from regimemap.drawing.verdict import FAIL_COLOUR
+    from regimemap.lifetime import judge_chart
+
+    judged = judge_chart(chart, 15.0)
+    assert judged.checks and not judged.checks[0].passed  # 15 m is narrower than the width found
+    fig = chart_figure(judged, chart_title("goda", judged))
+    _check_figure(fig)
+    ax = fig.axes[0]
+    iv = judged.width_interval
+    assert iv is not None
+    bars = [ln for ln in ax.lines if list(ln.get_xdata()) == [iv.lower, iv.upper]]
+    assert len(bars) == 1 and list(bars[0].get_ydata()) == [judged.target] * 2
+    design = next(t for t in ax.texts if t.get_text().startswith("design b = 15"))
+    assert to_hex(design.get_color()) == FAIL_COLOUR.lower()
+    assert "FAIL (1 of 1)" in [t.get_text() for t in fig.texts]
+    passed = judge_chart(chart, 24.0)
+    assert passed.checks[0].passed
+    assert "PASS" in [t.get_text() for t in chart_figure(passed, "goda").texts]

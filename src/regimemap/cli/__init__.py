@@ -83,15 +83,18 @@ def _register(group: click.Group) -> None:
 _register(cli)
 
 
-def main(argv: list[str] | None = None) -> NoReturn:
+def main(argv: list[str] | None = None, *, exiting: bool = False) -> NoReturn:
     """Run the command line with ``argv`` and exit; errors become one line on stderr.
+
+    ``exiting``: the process ends with this call (the console script), so after
+    Ctrl-C or SIGTERM a second one is ignored rather than interrupting the exit.
 
     The cyclic garbage collector is paused while the process starts (see
     ``regimemap.cli._common.import_matplotlib``) and restored before exiting,
     so ``main`` can be called from Python (it raises ``SystemExit``).
     """
     with gc_paused_at_start():
-        code = run_main(cli, argv)
+        code = run_main(cli, argv, exiting=exiting)
     sys.exit(code)
 
 
@@ -106,6 +109,6 @@ def console_main() -> NoReturn:
     streams are still flushed (every output file is closed before this point).
     """
     try:
-        main()
+        main(exiting=True)
     finally:
         gc.freeze()

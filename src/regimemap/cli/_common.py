@@ -6,7 +6,9 @@ import contextlib
 import functools
 import gc
 import os
+import signal
 import sys
+import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar, overload
@@ -49,6 +51,8 @@ __all__ = [
     "output_dir",
     "run_main",
     "RunError",
+    "Terminated",
+    "stop_signals",
     "gc_paused_at_start",
     "import_matplotlib",
     "ParamType",
@@ -414,7 +418,56 @@ def _guess_path(group: click.Command, argv: list[str] | None) -> str:
     return "regimemap"
 
 
-def run_main(group: click.Command, argv: list[str] | None = None) -> int:
+class Terminated(BaseException):
+    """SIGTERM, raised in the main thread while a command runs (:func:`stop_signals`).
+
+    A BaseException, as KeyboardInterrupt is: ``except Exception`` does not
+    swallow it, and cleanups (the temporary file of an atomic write, a
+    process pool) run as they do for Ctrl-C.
+    """
+
+
+_STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+
+@contextlib.contextmanager
+def stop_signals(*, exiting: bool = False) -> Iterator[None]:
+    """While the block runs, SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`.
+
+    Only the first of them raises: a second Ctrl-C (or the same signal sent to
+    a whole process group twice) cannot interrupt the cleanup of the first
+    half-way with a traceback.  Afterwards the handlers are restored, unless
+    ``exiting`` (the ``regimemap`` process itself, which ends now) and a
+    signal came: both are then ignored until the process has exited.  A
+    signal the process was started with ignored (``nohup``, a background job
+    of a script) stays ignored.  Outside the main thread nothing is changed.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    saved = {sig: signal.getsignal(sig) for sig in _STOP_SIGNALS}
+    caught: list[int] = []
+
+    def stop(signum: int, frame: object) -> None:
+        if caught:  # the first one is being handled
+            return
+        caught.append(signum)
+        if signum == signal.SIGTERM:
+            raise Terminated(signum)
+        raise KeyboardInterrupt
+
+    for sig in _STOP_SIGNALS:
+        if saved[sig] is not signal.SIG_IGN:
+            signal.signal(sig, stop)
+    try:
+        yield
+    finally:
+        for sig, handler in saved.items():
+            # SIG_IGN, not a Python handler: the interpreter keeps it while it shuts down
+            signal.signal(sig, signal.SIG_IGN if exiting and caught else handler)
+
+
+def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bool = False) -> int:
     """Run ``group`` and return an exit code; no traceback ever reaches the user.
 
     Every error is one line on stderr:
@@ -425,10 +478,19 @@ def run_main(group: click.Command, argv: list[str] | None = None) -> int:
       exit 1: ``regimemap: error: ...``;
     * an unexpected exception (a bug) exits 1 with ``regimemap: internal error: ...``
       (set ``REGIMEMAP_DEBUG=1`` to see the traceback);
-    * an interrupt (Ctrl-C) exits 130.
+    * an interrupt (Ctrl-C, SIGINT) exits 130 with ``regimemap: interrupted``,
+      SIGTERM 143 with ``regimemap: terminated`` (128 + the signal's number, as
+      a shell reports a process the signal ended); worker processes are
+      stopped and no file is left half-written (:func:`stop_signals`; with
+      ``exiting``, the process is about to end, and a second signal is ignored).
     """
     try:
-        group.main(args=argv, prog_name="regimemap", standalone_mode=False)
+        with stop_signals(exiting=exiting):
+            # without standalone mode click returns the code of a click.exceptions.Exit (--check's 1)
+            code = group.main(args=argv, prog_name="regimemap", standalone_mode=False)
+    except Terminated:
+        _say("regimemap: terminated")
+        return 128 + int(signal.SIGTERM)
     except click.exceptions.Abort:
         _say("regimemap: interrupted")
         return 130
@@ -455,4 +517,4 @@ def run_main(group: click.Command, argv: list[str] | None = None) -> int:
         _say(f"regimemap: internal error: {type(exc).__name__}: {exc}"
              " (please report it; REGIMEMAP_DEBUG=1 shows the traceback)")
         return 1
-    return 0
+    return code if isinstance(code, int) and not isinstance(code, bool) else 0

@@ -7,7 +7,9 @@ from pathlib import Path
 
 import click
 
+from ._check import check_option, exit_on_failure
 from ._common import RunError, import_matplotlib, output_path, report_written
+from ._inputs import DESIGN_FILE
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -20,14 +22,16 @@ _FORMATS = ("png", "svg", "pdf")
     "caisson",
     short_help="Goda loads, safety factors and the mode on the loaded map of a caisson (design file).",
 )
-@click.argument("design", required=False, type=click.Path(dir_okay=False), metavar="DESIGN.toml")
+@click.argument("design", required=False, type=DESIGN_FILE, metavar="DESIGN.toml")
 @click.option("--example", is_flag=True,
               help="Print the commented example design file (Goda's worked caisson) and exit.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
               help="Also write a one-page design sheet (.pdf, .svg or .png), atomically.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
-def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool) -> None:
+@check_option
+def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool,
+                check: bool) -> None:
     """Goda's design procedure for a vertical-breakwater caisson, placed on the regime map.
 
     Reads DESIGN.toml (site, design wave, caisson; `regimemap caisson --example`
@@ -37,7 +41,17 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     gyration), its mode on the loaded map with its margins (how much more k,
     or less mu, changes the mode), and how the caisson fares as the wave
     grows from 0.5 to 1.5 times the design heights.  Goda's safety factors
-    are both >= 1 exactly when the map says rest.
+    are both >= 1 exactly when the map says rest.  Goda's pressures include
+    Takahashi's impulsive coefficient alpha_I unless the file says
+    `impulsive = false` in [caisson] (the header names the setting).
+
+    The design check lists each requirement, PASS or FAIL: the sliding and
+    overturning safety factors at least [caisson] required_sliding and
+    required_overturning (1.2 by default), and, when the sheet draws the
+    sliding over the design life, the expected sliding distance at most
+    0.1 m (--json: "checks" and "verdict").  With --check the exit status is
+    1 when any requirement fails (after the report and the sheet are
+    written); usage errors exit 2.
 
     With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
     the cross-section, the pressure diagram, the loaded map with the design
@@ -52,6 +66,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
       regimemap caisson goda.toml
       regimemap caisson goda.toml --json
       regimemap caisson goda.toml -o sheet.pdf
+      regimemap caisson goda.toml --check
     """
     from ..io.design import DesignFileError, example_design_text, read_design
 
@@ -87,7 +102,9 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     required = (d.caisson.required_sliding, d.caisson.required_overturning)
 
     from ..io.caisson import caisson_json, format_caisson
+    from ..maps.caisson import caisson_checks
 
+    checks = caisson_checks(report, required)
     if output is not None:  # the sheet first: a failure leaves no report half-printed
         import_matplotlib()
         from ..drawing.save import save_figure
@@ -95,7 +112,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
 
         life = None
         if d.lifetime is not None:  # the file's [lifetime]: the sheet gains the lifetime panel
-            from ..lifetime import available_cores, lifetime_sliding
+            from ..lifetime import Requirements, available_cores, judge_lifetime, lifetime_sliding
 
             spec = d.lifetime_spec()
             try:
@@ -103,15 +120,22 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
                                         jobs=available_cores())
             except ValueError as exc:
                 raise RunError(f"{design}: {exc}") from None
-        fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required)
+            life = judge_lifetime(life, Requirements(target=spec.target, allowed=spec.allowed,
+                                                     failure_sliding=spec.failure_sliding))
+            checks.extend(life.checks)
+        fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required,
+                           checks=checks, lifetime_impulsive=None if d.lifetime is None
+                           else d.lifetime.impulsive, written=d.written)
         with writing(output):
             save_figure(fig, output)
     if as_json:
-        obj = caisson_json(report, source=design, required=required)
+        obj = caisson_json(report, source=design, required=required, checks=checks)
         if output is not None:  # the written file's path, inside the one JSON object
             obj["sheet"] = output
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
-        return
-    click.echo(format_caisson(report, source=design, required=required))
-    if output is not None:
-        report_written(output)
+    else:
+        click.echo(format_caisson(report, source=design, required=required, checks=checks,
+                                  written=d.written))
+        if output is not None:
+            report_written(output)
+    exit_on_failure(checks, check)

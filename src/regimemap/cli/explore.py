@@ -31,6 +31,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
     from ..drawing.explore import Explorer
+    from ..maps.points import DesignPoint
     from ..mechanics.block import Parameters
 
 __all__ = ["explore_cmd", "open_explorer", "plot_command_line"]
@@ -49,8 +50,8 @@ def plot_command_line(explorer: Explorer) -> str:
 
 
 def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT_SAMPLES,
-                  fig: Figure | None = None, echo: Any = click.echo, window: bool = True
-                  ) -> Explorer:
+                  fig: Figure | None = None, echo: Any = click.echo, window: bool = True,
+                  point: DesignPoint | None = None) -> Explorer:
     """An :class:`~regimemap.drawing.explore.Explorer` wired as ``regimemap explore`` wires it.
 
     A click shows the text of ``regimemap classify``
@@ -82,7 +83,7 @@ def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT
         return _stem(holder[0]) if holder else plot_stem(p.gamma, p.kprime)
 
     ex = Explorer(params, resolution=resolution, fig=fig, describe=format_result, write=write,
-                  file_stem=stem, echo=echo, window=window)
+                  file_stem=stem, echo=echo, window=window, point=point)
     holder.append(ex)
     return ex
 
@@ -102,6 +103,12 @@ standard output.  'Save' writes the current view exactly as regimemap plot
 would (the same bytes) to regime-g<GAMMA>-kp<KPRIME>.png in the current
 folder and prints its path.
 
+--design FILE.toml starts at a caisson's design wave (`regimemap caisson
+--example` prints a design file): its loaded block (gamma, k', buoyancy,
+uplift ratio and arm, gyration, crest) and the point (k, mu) of the design
+wave marked, as `regimemap caisson` computes them; the file gives the block,
+so --gamma, --kprime and the loads may not be given too.
+
 A window needs a display (and a GUI backend of matplotlib, e.g. TkAgg).
 Without one the command stops with exit status 1; -o FILE saves the first
 view without a window instead (for scripts and CI).  In Jupyter, use
@@ -113,6 +120,7 @@ Examples:
   regimemap explore
   regimemap explore --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
   regimemap explore --gamma 3 --kprime 0.4 -o start.png
+  regimemap explore --design goda.toml -o goda-map.png
 """
 
 
@@ -125,13 +133,20 @@ Examples:
 @click.option("-o", "--output", metavar="FILE",
               help="Save the first view (as regimemap plot draws it; .png, .svg or .pdf) and "
                    "exit without opening a window.")
+@click.option("--design", "design", type=click.Path(dir_okay=False), metavar="FILE.toml",
+              help="Start at a caisson's design wave: its loaded block and design point (k, mu) "
+                   "from a design file (instead of --gamma, --kprime and the loads).")
 @load_options
-def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None,
+def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None, design: str | None,
                 loads: dict[str, Any]) -> None:
     from ..drawing.save import format_from_path
     from ..mechanics.block import Parameters
 
-    params = Parameters(gamma, kprime, **loads)
+    point = None
+    if design is not None:
+        params, point = _design_start(design, loads)
+    else:
+        params = Parameters(gamma, kprime, **loads)
     path: Path | None = None
     if output is not None:
         try:
@@ -143,7 +158,7 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
     from ..drawing.explore import window_problem
 
     if path is not None:
-        ex = open_explorer(params, resolution=resolution, echo=None, window=False)
+        ex = open_explorer(params, resolution=resolution, echo=None, window=False, point=point)
         try:
             ex.save(path)
         except OSError as exc:
@@ -155,6 +170,40 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
         raise RunError(f"regimemap explore needs a display to open its window: {problem}. "
                        "Run it on a desktop (or with ssh -X), save the first view with "
                        "-o FILE, or use open_explorer in Jupyter with %matplotlib widget")
-    ex = open_explorer(params, resolution=resolution)
+    ex = open_explorer(params, resolution=resolution, point=point)
     sys.stdout.flush()
-    ex.show(f"regimemap explore ({plot_stem(gamma, kprime, loads)})")
+    ex.show(f"regimemap explore ({Path(design).name if design is not None else _stem(ex)})")
+
+
+def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, DesignPoint]:
+    """The loaded block and the design point of a design file's design wave (--design).
+
+    The file gives the block: --gamma, --kprime or a load given too is a usage error; a bad
+    file is a usage error naming the file, its line and the key, as ``regimemap caisson``
+    reports it; implausible values are warnings on standard error.
+    """
+    from click.core import ParameterSource
+
+    from ..io.design import DesignFileError, read_design
+    from ..maps.caisson import caisson_report
+    from ..maps.points import DesignPoint
+    from ._plausible import check_plausible
+
+    ctx = click.get_current_context()
+    given = [f"--{n.replace('_', '-')}" for n in ("gamma", "kprime")
+             if ctx.get_parameter_source(n) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
+    given += [f"--{n.replace('_', '-')}" for n in loads]
+    if given:
+        raise click.UsageError(f"{', '.join(given)} and --design exclude each other: the design file "
+                               "gives the block (change the design file, or give the block without --design)")
+    try:
+        d = read_design(design)
+    except DesignFileError as exc:
+        raise click.BadParameter(str(exc), param_hint="'--design'") from None
+    try:
+        report = caisson_report(d.analysis_inputs())
+    except ValueError as exc:
+        check_plausible(d, None, False, design, "'--design'")  # a unit slip may be why
+        raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
+    check_plausible(d, report.analysis, False, design, "'--design'")
+    return report.map.parameters(), DesignPoint(report.k, report.mu)

@@ -18,7 +18,9 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ._check import check_option, exit_on_failure
 from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
+from ._inputs import DESIGN_FILE
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -69,6 +71,12 @@ def _target(text: str) -> float:
     return check_target(text)
 
 
+def _tolerance(text: str) -> float:
+    from ..io.lifetime import check_tolerance
+
+    return check_tolerance(text)
+
+
 def _chunk(text: str) -> int:
     from ..io.lifetime import check_chunk
 
@@ -87,7 +95,7 @@ def _suffix(path: str) -> str:
 
 @click.command("lifetime",
                short_help="Expected sliding distance of a caisson over its design life (Monte Carlo).")
-@click.argument("design", type=click.Path(dir_okay=False), metavar="DESIGN.toml")
+@click.argument("design", type=DESIGN_FILE, metavar="DESIGN.toml")
 @click.option("--trials", type=_Checked("integer", _file_key("trials")), default=None, metavar="N",
               help="Lifetimes to simulate, 1 to 10000000 (default: [lifetime] trials, or 5000).")
 @click.option("--seed", type=_Checked("integer", _file_key("seed")), default=None, metavar="S",
@@ -101,12 +109,15 @@ def _suffix(path: str) -> str:
                    "the width of Goda's deterministic design (SF = 1.2 under the 50-year wave).")
 @click.option("--target", type=_Checked("number", _target), default=None, metavar="ESD",
               help="With --width: the tolerable expected sliding distance in metres, > 0 "
-                   "(default 0.1, Goda & Takagi 2000).")
+                   "(default: [lifetime] target, or 0.1, Goda & Takagi 2000).")
+@click.option("--width-tolerance", "tolerance", type=_Checked("number", _tolerance), default=None,
+              metavar="M", help="With --width: bisect the width for --target to M metres, 0.001 to 10 "
+                                "(default 0.05); its Monte Carlo interval is printed beside it.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
               help="Output file (repeatable), written atomically: .png, .svg or .pdf draws the "
                    "figure (with --width: the design chart), .csv or .npz writes every lifetime "
-                   "(not with --width).")
+                   "(with --width: .csv writes the chart's table).")
 @click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
               help="Worker processes on this machine (default: one per core; 1: this process).")
 @click.option("--chunk", type=_Checked("integer", _chunk), default=None, metavar="N",
@@ -116,10 +127,11 @@ def _suffix(path: str) -> str:
                    "pip install 'regimemap[cluster]'); the numbers are the same as on this machine.")
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
+@check_option
 def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int | None,
-                 widths: list[float] | None, target: float | None, as_json: bool, outputs: tuple[str, ...],
-                 jobs: int | None, chunk: int | None, scheduler: str | None, quiet: bool,
-                 strict: bool) -> None:
+                 widths: list[float] | None, target: float | None, tolerance: float | None, as_json: bool,
+                 outputs: tuple[str, ...], jobs: int | None, chunk: int | None, scheduler: str | None,
+                 quiet: bool, strict: bool, check: bool) -> None:
     """How far a caisson slides over its design life: the expected sliding distance (ESD).
 
     Reads DESIGN.toml -- the caisson and its site as for `regimemap caisson`, and
@@ -134,11 +146,16 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     lifetime sliding, the probabilities that it exceeds each threshold (and that
     one storm alone does), and the share of lifetimes that never slide.  The
     options override the file's [lifetime] values.  The same seed gives the same
-    numbers with any --jobs, --chunk or --scheduler.
+    numbers with any --jobs, --chunk or --scheduler.  Then one line per
+    requirement of [lifetime] (ESD <= target; each allowed exceedance
+    probability), PASS or FAIL, and the probability of sliding off the mound
+    when [lifetime] failure_sliding is given; --check exits 1 when one fails.
 
     With --width A:B:N it draws up a design chart instead: the ESD at N widths
     (the weight in proportion to the width), the narrowest width whose ESD is at
-    most --target, and the width with Goda's sliding safety factor 1.2.
+    most --target, bisected to --width-tolerance, with its 95 % Monte Carlo
+    interval (a bootstrap of the lifetimes), and the width with Goda's sliding
+    safety factor 1.2; the requirement is the design's width against it.
 
     \b
     Examples:
@@ -152,6 +169,9 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     if target is not None and widths is None:
         raise click.UsageError("--target is the tolerable ESD of a design chart: give it with "
                                "--width A:B:N", ctx=ctx)
+    if tolerance is not None and widths is None:
+        raise click.UsageError("--width-tolerance is the tolerance of a design chart's width: give it "
+                               "with --width A:B:N", ctx=ctx)
     if scheduler is not None and jobs is not None:
         raise click.UsageError("--jobs and --scheduler exclude each other: the cluster's workers run "
                                "the lifetimes", ctx=ctx)
@@ -168,8 +188,13 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
         design_chart,
         lifetime_sliding,
     )
+    from ..lifetime.chart import DEFAULT_TOLERANCE, bisection_steps
     from ..lifetime.parallel import DEFAULT_CHUNK
+    from ..lifetime.requirements import Requirements, judge_chart, judge_lifetime
     from ._progress import progress_bar
+
+    req = Requirements(target=spec.target, allowed=spec.allowed, failure_sliding=spec.failure_sliding)
+    tol = DEFAULT_TOLERANCE if tolerance is None else tolerance
 
     workers = 1 if scheduler is not None else (jobs if jobs is not None else available_cores())
     run: dict[str, Any] = dict(chunk=DEFAULT_CHUNK if chunk is None else chunk, jobs=workers,
@@ -180,14 +205,19 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
         if widths is None:
             with progress_bar(n, "lifetimes", quiet, unit=" lifetimes") as step:
                 result = lifetime_sliding(caisson, model, n, root, progress=step, **run)
+            result = judge_lifetime(result, req)
         else:
-            # the chart, then at most WIDTH_STEPS bisection runs for the target's width
-            from ..lifetime.chart import WIDTH_STEPS
-
-            with progress_bar(n * (1 + WIDTH_STEPS), "design chart", quiet, unit=" lifetimes") as step:
+            # the chart, then at most one bisection run per halving of a chart step to the tolerance
+            steps = bisection_steps(widths[1] - widths[0], tol)
+            with progress_bar(n * (1 + steps), "design chart", quiet, unit=" lifetimes") as step:
                 result = design_chart(caisson, model, widths, n, root, progress=step,
-                                      target=0.1 if target is None else target,
-                                      sf_impulsive=d.caisson.impulsive, **run)
+                                      target=req.target if target is None else target,
+                                      sf_impulsive=d.caisson.impulsive, tolerance=tol,
+                                      failure_sliding=req.failure_sliding, **run)
+            problem = result.bracket_problem()
+            if problem is not None:
+                raise click.BadParameter(problem, param_hint="'--width'")
+            result = judge_chart(result, caisson.width)
     except ClusterUnavailable as exc:
         raise RunError(str(exc)) from None
     except ValueError as exc:
@@ -203,10 +233,12 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     # -- the files, then the report ----------------------------------------------------------
     from ..io import lifetime as io_lifetime
 
-    written = _write_outputs(outputs, result, Path(design).name)
+    given = spec.climate_as_written()
+    written = _write_outputs(outputs, result, Path(design).stem)
     if as_json:
-        obj = (io_lifetime.lifetime_json(result, model, source=design) if isinstance(result, LifetimeResult)
-               else io_lifetime.chart_json(result, model, source=design))
+        obj = (io_lifetime.lifetime_json(result, model, source=design, written=given)
+               if isinstance(result, LifetimeResult)
+               else io_lifetime.chart_json(result, model, source=design, written=given))
         if outputs:
             obj["files"] = written
         if band is not None:
@@ -214,15 +246,17 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
 
             obj["climate_band"] = climate_band_json(band)
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
-        return
-    click.echo(io_lifetime.format_lifetime(result, model, source=design) if isinstance(result, LifetimeResult)
-               else io_lifetime.format_chart(result, model, source=design))
-    if band is not None:
-        from ..io.climate import climate_band_lines
+    else:
+        click.echo(io_lifetime.format_lifetime(result, model, source=design, written=given)
+                   if isinstance(result, LifetimeResult)
+                   else io_lifetime.format_chart(result, model, source=design, written=given))
+        if band is not None:
+            from ..io.climate import climate_band_lines
 
-        click.echo("\n".join(climate_band_lines(band)))
-    for path in written:
-        report_written(path)
+            click.echo("\n".join(climate_band_lines(band)))
+        for path in written:
+            report_written(path)
+    exit_on_failure(result.checks, check)
 
 
 def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None:
@@ -231,10 +265,10 @@ def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None
         raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--output'")
     for path in outputs:
         kind = _suffix(path)
-        if kind in SAMPLE_FORMATS and widths is not None:
-            raise click.BadParameter(f"{path!r}: the lifetimes (.csv, .npz) are written for one width, "
-                                     "not with --width (a chart is written as .png, .svg or .pdf)",
-                                     param_hint="'--output'")
+        if kind == "npz" and widths is not None:
+            raise click.BadParameter(f"{path!r}: the lifetimes (.npz) are written for one width, not "
+                                     "with --width (a chart is written as .csv, its table, or as .png, "
+                                     ".svg or .pdf)", param_hint="'--output'")
         if kind not in FIGURE_FORMATS + SAMPLE_FORMATS:
             got = f".{kind}" if kind else "no suffix"
             raise click.BadParameter(f"{path!r} has {got}; the figure is written as .png, .svg or .pdf "
@@ -282,7 +316,8 @@ def _note_run(n: int, years: int, widths: list[float] | None, seconds: float, wo
 
 def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChart,
                    title: str) -> list[str]:
-    """Write the lifetimes (.csv, .npz) or the figure (.png, .svg, .pdf, drawn once) to each file."""
+    """Write the lifetimes (.csv, .npz), the chart's table (.csv) or the figure (.png, .svg, .pdf,
+    drawn once) to each file; ``title`` names the section (the design file's stem)."""
     from ..io import lifetime as io_lifetime
     from ..lifetime import LifetimeResult
 
@@ -290,17 +325,20 @@ def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChar
     fig = None
     for path in outputs:
         with writing(path):
-            if _suffix(path) in SAMPLE_FORMATS:
-                assert isinstance(result, LifetimeResult)  # checked by _check_outputs
+            if _suffix(path) in SAMPLE_FORMATS and not isinstance(result, LifetimeResult):
+                io_lifetime.write_chart(result, path)  # .csv: _check_outputs refuses .npz
+            elif _suffix(path) in SAMPLE_FORMATS:
+                assert isinstance(result, LifetimeResult)
                 io_lifetime.write_samples(result, path)
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.lifetime import lifetime_figure
-                    from ..drawing.lifetime_chart import chart_figure
+                    from ..drawing.lifetime import lifetime_figure, lifetime_title
+                    from ..drawing.lifetime_chart import chart_figure, chart_title
 
-                    fig = (lifetime_figure(result, title) if isinstance(result, LifetimeResult)
-                           else chart_figure(result, title))
+                    fig = (lifetime_figure(result, lifetime_title(title, result))
+                           if isinstance(result, LifetimeResult)
+                           else chart_figure(result, chart_title(title, result)))
                 from ..drawing.save import save_figure
 
                 save_figure(fig, path)

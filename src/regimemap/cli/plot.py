@@ -24,6 +24,7 @@ from ._common import (
     report_written,
     resolution_type,
 )
+from ._inputs import POINTS_FILE
 from ._plot_options import (
     FORMATS,
     Dpi,
@@ -157,7 +158,7 @@ title states the loads, and the default file name carries them.
                    "resolves overlaps (regions may overlap; use with --modes).")
 @click.option("--point", "point_specs", type=PointSpec(), multiple=True,
               help="Mark a design point K,MU or K,MU:NAME (repeatable).")
-@click.option("--points", "points_files", multiple=True, metavar="FILE.csv",
+@click.option("--points", "points_files", type=POINTS_FILE, multiple=True, metavar="FILE.csv",
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
                    "(repeatable); rows with another gamma/kprime are skipped with a warning.")
 @click.option("--show-ambiguity", is_flag=True,

@@ -18,6 +18,7 @@ from ._common import (
     output_path,
     report_written,
 )
+from ._inputs import POINTS_FILE
 from ._writing import writing
 
 if TYPE_CHECKING:
@@ -54,7 +55,7 @@ class _NonNegative(ParamType):
               help="Force F/(mg) >= 0 (one point).")
 @click.option("--mu", "mu", type=_NonNegative("mu"), metavar="MU",
               help="Friction coefficient >= 0 (one point).")
-@click.option("--points", "points_file", type=click.Path(exists=True, dir_okay=False),
+@click.option("--points", "points_file", type=POINTS_FILE,
               metavar="FILE.csv",
               help="Classify every row of a CSV with columns k,mu and optionally gamma,kprime,name.")
 @click.option("--json", "as_json", is_flag=True,

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ._check import CHECK_HELP, exit_on_failure
 from ._common import check_kprime_crest, import_matplotlib
 from ._dynamics_options import (
     DATA_FORMATS,
@@ -22,21 +23,23 @@ from ._dynamics_options import (
     min_rotation_option,
     option_errors,
 )
+from ._inputs import DESIGN_FILE, PULSE_FILE
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..dynamics import Block, Pulse, Simulation
+    from ..mechanics.checks import Check
 
 __all__ = ["simulate_cmd"]
 
 
 @click.command("simulate", short_help="Follow one run after initiation: phases, overturning, residuals.")
 @block_options(swept=False)
-@click.option("--pulse-file", "pulse_file", type=click.Path(dir_okay=False), metavar="FILE.csv",
+@click.option("--pulse-file", "pulse_file", type=PULSE_FILE, metavar="FILE.csv",
               help="Instead of --pulse/--k-peak/--duration: a sampled force history, a CSV with "
                    "columns t (s),k and optionally kprime (then it replaces --kprime).")
-@click.option("--design", "design", type=click.Path(dir_okay=False), metavar="FILE.toml",
+@click.option("--design", "design", type=DESIGN_FILE, metavar="FILE.toml",
               help="Instead of the block and the pulse: a caisson's design file (`regimemap caisson "
                    "--example` prints one).  Runs the caisson's equivalent block under its design "
                    "wave Hmax: a half-sine of peak k = P/(m g) lasting tau0 = (0.5 - Hmax/(8 h)) T1/3 "
@@ -44,6 +47,10 @@ __all__ = ["simulate_cmd"]
                    "--gamma, --half-width, --kprime, --mu, the loads, --gyration and the pulse; "
                    "giving any of them too is an error.  No added mass of water.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP + " (With --design.)")
+@click.option("--check", "check", is_flag=True,
+              help="With --design: the design file's requirements, Goda's sliding and overturning safety "
+                   "factors of its design wave at least [caisson] required_* (1.2), one line each, PASS or "
+                   "FAIL; " + CHECK_HELP[0].lower() + CHECK_HELP[1:])
 @min_rotation_option()
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
@@ -56,8 +63,8 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
                  pulse: str | None, k_peak: float | None, duration: float | None,
                  restitution: float | None, buoyancy: float, uplift: float, uplift_ratio: float,
                  uplift_arm: float, gyration: float | None, pulse_file: str | None, design: str | None,
-                 strict: bool, min_rotation: float, as_json: bool, output: str | None, plot: str | None,
-                 animate: str | None) -> None:
+                 strict: bool, check: bool, min_rotation: float, as_json: bool, output: str | None,
+                 plot: str | None, animate: str | None) -> None:
     """Simulate one block under one force pulse, from rest, past initiation.
 
     The block (half width B, aspect ratio gamma = H/B with H the height of the
@@ -93,6 +100,12 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
     but implausible for a breakwater (likely unit slips: a depth over 100 m,
     a section heavier than 30 kN/m^3 ...) are warnings on stderr, as
     `regimemap caisson` gives them; --strict makes them an error (exit 2).
+    With --design the run lists the file's requirements -- Goda's sliding and
+    overturning safety factors of the design wave against [caisson]
+    required_sliding and required_overturning, the check of `regimemap
+    caisson` -- one line each, PASS or FAIL (--json: "checks"); --check
+    exits 1 when one fails.  The run itself has no limit of its own: what
+    the caisson does beyond the factors is what it shows.
 
     \b
     Examples:
@@ -112,10 +125,14 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
 
     block: Block | None = None
     numbers: dict[str, float] | None = None
+    checks: list[Check] = []
     if strict and design is None:
         raise click.UsageError("--strict checks a design file: give one with --design FILE.toml")
+    if check and design is None:
+        raise click.UsageError("--check checks a design file's requirements: give one with --design "
+                               "FILE.toml")
     if design is not None:  # -- the block and the pulse from a design file -------------------
-        block, pls, values, numbers = _design_run(design, strict)
+        block, pls, values, numbers, checks = _design_run(design, strict)
         gamma, half_width, kprime, mu = values["gamma"], values["half_width"], values["kprime"], values["mu"]
         pulse, k_peak, duration = values["pulse"], values["k_peak"], values["duration"]
         buoyancy, uplift, uplift_ratio = values["buoyancy"], values["uplift"], values["uplift_ratio"]
@@ -155,17 +172,23 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
         "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm, "gyration": gyration, "design": design,
         "min_rotation": min_rotation,
     }
-    eta = float(block.housner_ratio) if restitution is None else restitution
+    housner = float(block.housner_ratio)
+    # Housner's ratio assumes the block rocks on about the other corner after an impact; for a
+    # squat block it is <= 0 and the impact ends the rocking (the block lands flat): no ratio
+    eta = restitution if restitution is not None else (housner if housner > 0.0 else None)
     derived = {"p": float(block.p), "alpha": float(block.alpha), "H": float(block.H),
-               "impact_ratio": eta, "k_peak": float(pls.k_peak), "duration": T,
-               "omega_p": float(pls.omega_p)}
+               "impact_ratio": eta, "housner_ratio": housner, "k_peak": float(pls.k_peak),
+               "duration": T, "omega_p": float(pls.omega_p)}
     import math
 
-    from ..io.dynamics import format_simulation, simulation_record
+    from ..io.dynamics import simulation_record
 
     record = simulation_record(sim, inputs, derived, min_rotation=math.radians(min_rotation))
     if numbers is not None:
+        from ..io.checks import checks_json
+
         record["design"] = _design_record(design, numbers)
+        record["checks"] = checks_json(checks)
     written = _write_outputs(sim, block, T, inputs, output, plot, animate) if want_history else []
     if not (sim.settled[0] or sim.overturned[0]):
         click.echo(f"regimemap: warning: the block is still moving at t = {float(sim.end_time[0]):.6g} s, "
@@ -174,17 +197,32 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
     if sim.unresolved:
         click.echo(f"regimemap: warning: {sim.unresolved} step(s) had no admissible contact state "
                    "(a stuck corner was assumed)", err=True)
+    _echo_run(record, written, as_json, numbers, design, checks)
+    exit_on_failure(checks, check)
+
+
+def _echo_run(record: dict[str, Any], written: list[str], as_json: bool, numbers: dict[str, float] | None,
+              design: str | None, checks: list[Check]) -> None:
+    """Print the run: one JSON object, or the text (the design wave's line, the run, the design
+    check of the file) and the paths written."""
     if as_json:
         import json
 
         record["files"] = written
         click.echo(json.dumps(record, indent=1, allow_nan=False))
         return
+    from ..io.dynamics import format_simulation
+
     if numbers is not None:
         from ..dynamics.design_wave import describe_design_wave
 
         click.echo("design     " + describe_design_wave(numbers, design))
     click.echo(format_simulation(record))
+    if checks:
+        from ..io.checks import checks_lines
+
+        click.echo("design check of the file (--check: exit status 1 when a requirement fails)")
+        click.echo("\n".join(checks_lines(checks)))
     for p in written:
         click.echo(p)
 
@@ -272,8 +310,9 @@ def _run_title(inputs: dict[str, Any], T: float) -> str:
 
 
 def _design_run(design: str, strict: bool = False
-                ) -> tuple[Block, Pulse, dict[str, Any], dict[str, float]]:
-    """The block, the pulse, the inputs and the numbers of a design file's design wave (--design).
+                ) -> tuple[Block, Pulse, dict[str, Any], dict[str, float], list[Check]]:
+    """The block, the pulse, the inputs, the numbers and the requirements (Goda's safety factors
+    against the file's required ones) of a design file's design wave (--design).
 
     Options that the file gives may not be given too; a bad file is a usage error naming the
     file and the key, as ``regimemap caisson`` reports it.  Implausible values (likely unit
@@ -306,5 +345,8 @@ def _design_run(design: str, strict: bool = False
         block, pulse = design_wave_run(a, d.site.depth, d.wave.period)
     except ValueError as exc:
         raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
+    from ..maps.caisson import stability_checks
+
+    checks = stability_checks(a, (d.caisson.required_sliding, d.caisson.required_overturning))
     return (block, pulse, design_wave_inputs(a, d.site.depth, d.wave.period),
-            design_wave_numbers(a, d.site.depth, d.wave.period))
+            design_wave_numbers(a, d.site.depth, d.wave.period), checks)

@@ -23,6 +23,17 @@ __all__ = ["cpu_count", "write_figures"]
 _KEPT: dict[str, Figure] = {}
 
 
+def _leave_ctrl_c() -> None:
+    """A worker's initializer: Ctrl-C (SIGINT to the process group) is the parent's.
+
+    The parent then cancels the figures not started; a worker finishes the
+    figure it is drawing (written whole, atomically) and ends.
+    """
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: float,
                   progress: Callable[[int], None] | None = None, keep: bool = False
                   ) -> list[str]:
@@ -123,11 +134,15 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
     # workers finish together (a fixed deal left one ~0.3 s behind the other); each worker
     # keeps its figure between tasks
     done: dict[str, list[str]] = {}
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx) as pool:
+    with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx, initializer=_leave_ctrl_c) as pool:
         futures = {pool.submit(_render_chunk, [fid], folder_s, tuple(formats), dpi, None, True):
                    fid for fid in _longest_first(ids)}
-        for fut in as_completed(futures):
-            done[futures[fut]] = fut.result()
-            if progress is not None:
-                progress(1)
+        try:
+            for fut in as_completed(futures):
+                done[futures[fut]] = fut.result()
+                if progress is not None:
+                    progress(1)
+        except BaseException:  # Ctrl-C or a failure: the figures not started are not drawn
+            pool.shutdown(wait=True, cancel_futures=True)
+            raise
     return [Path(p) for fid in ids for p in done[fid]]

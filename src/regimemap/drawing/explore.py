@@ -140,6 +140,9 @@ class Explorer:
     echo : callable or None
         Where the text of a click and the path of a saved file are printed
         (default :func:`print`; None: nowhere).
+    point : DesignPoint, optional
+        A point (k, mu) marked from the start, with its answer in the panel, as if
+        clicked (``regimemap explore --design``: the design wave's point), not rounded.
 
     Attributes
     ----------
@@ -171,7 +174,8 @@ class Explorer:
     def __init__(self, params: Parameters | None = None, *, resolution: int = DEFAULT_SAMPLES,
                  fig: Figure | None = None, describe: Describe | None = None,
                  write: Write | None = None, file_stem: Callable[[Parameters], str] | None = None,
-                 echo: Callable[[str], None] | None = print, window: bool = True) -> None:
+                 echo: Callable[[str], None] | None = print, window: bool = True,
+                 point: DesignPoint | None = None) -> None:
         from ..mechanics.validation import check_resolution
 
         p = Parameters(3.0, 0.4) if params is None else params
@@ -185,7 +189,7 @@ class Explorer:
         self._loads_on = p.buoyancy != 0.0 or p.uplift_ratio != 0.0
         self._load_values = {"buoyancy": float(p.buoyancy), "uplift_ratio": float(p.uplift_ratio)}
         self._fixed = {k: v for k, v in p.loads.items() if k not in _SLIDER_LOADS}
-        self._point: DesignPoint | None = None
+        self._point: DesignPoint | None = point
         self.result: PointResult | None = None
         self.info_text = HINT
         self.last_update = 0.0
@@ -265,7 +269,8 @@ class Explorer:
         before = self.params
         Parameters(self._gamma, self._kprime, **{**self._fixed, **extra})
         self._load_values = values
-        if on != self._loads_on:
+        toggled = on != self._loads_on
+        if toggled:
             self._loads_on = on
             check = self.loads_check
             self._syncing, drawon = True, check.drawon
@@ -280,7 +285,8 @@ class Explorer:
         show_load_sliders(self._widgets, self._loads_on)
         moving = ((self.buoyancy_slider,) if buoyancy is not None else ()) + (
             (self.nu_slider,) if uplift_ratio is not None else ())
-        self._update(final, self.params != before, moving)
+        # ticking 'loads' at beta = nu = 0 changes no map but shows (or hides) two sliders: draw
+        self._update(final, toggled or self.params != before, moving)
 
     def click(self, k: float, mu: float) -> PointResult:
         """The answer at (k, mu): shown in the panel, printed, and the point marked on the map.

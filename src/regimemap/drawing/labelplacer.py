@@ -83,7 +83,7 @@ def _tick_labels_in_view(ax: Axes) -> Iterator[Any]:
         lo, hi = min(lim), max(lim)
         tol = 1e-9 * (hi - lo)
         for tick in axis.get_major_ticks() + axis.get_minor_ticks():
-            loc = tick.get_loc()
+            loc: float | None = tick.get_loc()  # None on a tick not yet placed
             if loc is None or not (lo - tol <= loc <= hi + tol):
                 continue
             if axis.get_scale() == "log" and not lo * (1 - 1e-9) <= loc <= hi * (1 + 1e-9):

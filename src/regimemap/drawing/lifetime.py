@@ -28,6 +28,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..lifetime.results import LifetimeResult
+from ..mechanics.checks import Check
 from .labelplacer import Candidate, LabelPlacer, Placed, corner_candidates, make_label, vline_candidates
 from .lifetime_chart import chart_figure
 from .lifetime_style import (
@@ -39,25 +40,31 @@ from .lifetime_style import (
     LIFE_LW,
     LIMIT,
     LIMIT_DASHES,
+    OFF_MOUND,
+    OFF_MOUND_HATCH,
     STORM,
     STORM_DASHES,
     STORM_LW,
     TOLERABLE,
     decade_range,
+    draw_title_block,
     format_log_axis,
+    impulsive_words,
     limit_text,
     percent,
+    title_height,
     value_pm,
 )
 from .save import DEFAULT_DPI
 from .style import style_context
+from .verdict import draw_verdict_badge, verdict_colour
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
 __all__ = ["LIFETIME_FIGSIZE", "TOLERABLE", "chart_figure", "draw_exceedance", "lifetime_figure",
-           "sliding_range"]
+           "lifetime_title", "sliding_range"]
 
 #: Size of :func:`lifetime_figure` in inches (width: a page, two columns; height: without a
 #: title and with a key of three rows, as the figure grows with them).
@@ -116,10 +123,27 @@ def _esd_text(result: LifetimeResult) -> str:
     return f"ESD = {value_pm(result.expected_sliding, result.std_error)} m"
 
 
+def _esd_check(result: LifetimeResult) -> Check | None:
+    """The requirement on the ESD, if the result was judged."""
+    return next((c for c in result.checks if c.name == "expected sliding distance"), None)
+
+
+def lifetime_title(section: str, result: LifetimeResult) -> str:
+    """The title of :func:`lifetime_figure`: the section and its width, then the run's facts."""
+    return (f"{section}: caisson $b$ = {result.width:g} m, {result.years}-year life\n"
+            f"{result.trials} lifetimes, seed {result.seed}, {impulsive_words(result.impulsive)}")
+
+
 
 
 def _reference_lines(ax: Axes, result: LifetimeResult, zorder: float = 2.0) -> None:
-    """The tolerable limits and the ESD (with its band of one standard error), vertical."""
+    """The tolerable limits and the ESD (with its band of one standard error), vertical; the zone
+    off the mound (beyond the sliding limit) shaded and hatched when a lifetime slid into it."""
+    f = result.failure
+    if f is not None and f.probability > 0.0 and f.sliding_limit < ax.get_xlim()[1]:
+        ax.axvspan(f.sliding_limit, ax.get_xlim()[1], facecolor=OFF_MOUND, edgecolor="#999933",
+                   hatch=OFF_MOUND_HATCH, lw=0.0, zorder=0.3)
+        ax.axvline(f.sliding_limit, color="#999933", lw=0.9, zorder=zorder)
     for (lim, _), dashes in zip(TOLERABLE, LIMIT_DASHES):
         ax.axvline(lim, color=LIMIT, lw=0.8, dashes=dashes, zorder=zorder)
     esd, se = result.expected_sliding, result.std_error
@@ -161,8 +185,10 @@ def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
     if labels:  # the ESD's first: it has the most to say
         if result.expected_sliding > 0.0:
             text = _esd_text(result)
+            check = _esd_check(result)
             t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                       fontsize=fontsize - 0.5)
+                           fontsize=fontsize - 0.5,
+                           color="black" if check is None else verdict_colour(check))
             placed.append((t, vline_candidates(result.expected_sliding, side_first=1),
                            [text.replace(" \u00b1", "\n\u00b1", 1)] if "\u00b1" in text else []))
         for lim, _ in TOLERABLE:
@@ -267,6 +293,14 @@ def _legend_handles(result: LifetimeResult, storm: bool = True) -> list[Any]:
     for (lim, source), dashes in zip(TOLERABLE, LIMIT_DASHES):
         h.append(Line2D([], [], color=LIMIT, lw=0.8, dashes=dashes,
                         label=f"tolerable ESD {limit_text(lim, source)}"))
+    f = result.failure
+    if f is not None and f.probability > 0.0:
+        h.append((Patch(facecolor=OFF_MOUND, edgecolor="#999933", hatch=OFF_MOUND_HATCH, lw=0.0),
+                  f"off the mound ($S$ > {f.sliding_limit:g} m): failure "
+                  f"{percent(f.probability)} \u00b1 {percent(f.std_error)}"))
+    elif f is not None:
+        h.append((Patch(facecolor="none", edgecolor="none"),
+                  f"no lifetime slid off the mound ($S$ > {f.sliding_limit:g} m)"))
     return h
 
 
@@ -299,7 +333,8 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     result : LifetimeResult
         From :func:`regimemap.lifetime.lifetime_sliding`.
     title : str, optional
-        Written above the panels (none by default: a paper has a caption).
+        Written at the top left (none by default: a paper has a caption); its first line
+        larger, the others (:func:`lifetime_title`: the run's facts) below it.
     dpi : float
         Resolution of PNG output.
 
@@ -307,6 +342,13 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     -------
     Figure
         Axes labelled ``exceedance`` and ``histogram`` (Agg canvas, no pyplot).
+
+    Notes
+    -----
+    A judged result (:func:`regimemap.lifetime.judge_lifetime`) has a PASS or FAIL badge at
+    the top right and its ESD label in the fail colour when the ESD fails its target; with a
+    sliding limit, the zone off the mound is shaded and hatched and the key gives the
+    probability of failure.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
@@ -315,7 +357,7 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     rows = (len(handles) + 1) // 2
     w = LIFETIME_FIGSIZE[0]
     key = 0.08 + 0.17 * rows
-    top = 0.3 + (0.3 if title else 0.0)
+    top = 0.3 + max(title_height(title), 0.32 if result.checks else 0.0)
     bottom, left, gap, right, ah = 0.45 + key, 0.62, 0.72, 0.25, 2.25
     h = top + ah + bottom
     with style_context():
@@ -330,7 +372,8 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         ax_b.set_title("(b) the lifetimes that slid", fontsize=FS + 0.5, loc="left")
         _add_legend(fig, handles, 0.06 / h, FS - 0.5)
         if title:
-            fig.text(0.5, 1.0 - 0.1 / h, title, fontsize=FS + 1.5, ha="center", va="top")
+            draw_title_block(fig, title, h)
+        draw_verdict_badge(fig, result.checks, x=1.0 - 0.1 / w, y=1.0 - 0.1 / h, fontsize=FS + 1.0)
         never_texts = _never_texts(result, below, ax_a.get_xlim()[0])
         never = make_label(ax_b, never_texts[0], xycoords="axes fraction")
         never_at = corner_candidates()

@@ -35,12 +35,16 @@ from .lifetime_style import (
     TARGET_TEXT,
     TOLERABLE,
     decade_range,
+    draw_title_block,
     format_log_axis,
+    impulsive_words,
     limit_text,
     metres,
+    title_height,
 )
 from .save import DEFAULT_DPI
 from .style import style_context
+from .verdict import draw_verdict_badge, verdict_colour
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -49,7 +53,10 @@ if TYPE_CHECKING:  # pragma: no cover
 
     FloatArray = NDArray[np.float64]
 
-__all__ = ["CHART_FIGSIZE", "chart_figure"]
+__all__ = ["CHART_FIGSIZE", "chart_figure", "chart_title"]
+
+#: Dashes of the design's own width (dotted).
+DESIGN_DASHES = (1.2, 1.6)
 
 #: Size of :func:`chart_figure` in inches (a page wide, as the lifetime figure; the height
 #: without a title and with a key of three rows, as the figure grows with them).
@@ -67,6 +74,14 @@ def _chart_range(chart: DesignChart) -> tuple[float, float]:
     lo = min(float(np.min(esd[pos])), *marks)
     hi = max(float(np.max(upper[pos])), *marks)
     return decade_range(lo / 1.5, hi * 1.5)
+
+
+def chart_title(section: str, chart: DesignChart) -> str:
+    """The title of :func:`chart_figure`: the section and the target, then the run's facts."""
+    design = "" if chart.design_width is None else f" (design $b$ = {chart.design_width:g} m)"
+    return (f"{section}: width for ESD \u2264 {chart.target:g} m{design}\n"
+            f"{chart.widths.size} widths \u00d7 {chart.trials} lifetimes, seed {chart.seed}, "
+            f"{impulsive_words(chart.impulsive)}")
 
 
 def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = DEFAULT_DPI
@@ -87,7 +102,8 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     chart : DesignChart
         From :func:`regimemap.lifetime.design_chart`.
     title : str, optional
-        Written above the axes.
+        Written at the top left; its first line larger, the others (:func:`chart_title`: the
+        run's facts) below it.
     dpi : float
         Resolution of PNG output.
 
@@ -95,6 +111,13 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     -------
     Figure
         One axes labelled ``chart`` (Agg canvas, no pyplot).
+
+    Notes
+    -----
+    The width's Monte Carlo interval is drawn as a bar with end caps on the target line.  A
+    judged chart (:func:`regimemap.lifetime.judge_chart`) shows the design's width as a dotted
+    vertical line labelled in the fail colour when it is narrower than the width for the
+    target, and a PASS or FAIL badge at the top right.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
@@ -111,7 +134,7 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     key = _chart_key(chart, bool(np.all(pos)), on_limit)
     rows = (len(key) + 1) // 2
     w = CHART_FIGSIZE[0]
-    top = 0.15 + (0.32 if title else 0.0)
+    top = 0.15 + max(title_height(title) + 0.05 if title else 0.0, 0.32 if chart.checks else 0.0)
     left, right, ah = 0.66, 0.2, 2.9
     bottom = 0.5 + 0.08 + 0.17 * rows
     h = top + ah + bottom
@@ -140,7 +163,8 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
         ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
         ax.tick_params(labelsize=FS - 0.5)
         if title:
-            fig.text(0.5, 1.0 - 0.1 / h, title, fontsize=FS + 1.5, ha="center", va="top")
+            draw_title_block(fig, title, h)
+        draw_verdict_badge(fig, chart.checks, x=1.0 - 0.1 / w, y=1.0 - 0.1 / h, fontsize=FS + 1.0)
         fig.legend([k for k, _ in key], [v for _, v in key], loc="lower center",
                    bbox_to_anchor=(0.5, 0.06 / h), ncols=2, fontsize=FS - 0.5, frameon=False,
                    handlelength=2.6, columnspacing=1.2, borderaxespad=0.0)
@@ -169,7 +193,13 @@ def _chart_key(chart: DesignChart, all_slid: bool, on_limit: list[bool]) -> list
                     "ESD = 0 (no lifetime slid)"))
     if chart.width_for_target is not None:
         key.append((Line2D([], [], color=TARGET, lw=1.0),
-                    f"narrowest width with ESD \u2264 {chart.target:g} m"))
+                    f"narrowest width with ESD \u2264 {chart.target:g} m (to {chart.tolerance:g} m)"))
+    iv = chart.width_interval
+    if iv is not None:
+        key.append((Line2D([], [], color=TARGET, lw=2.2, marker="|", markersize=7),
+                    f"its {100 * iv.level:g} % Monte Carlo interval (bootstrap)"))
+    if chart.design_width is not None and chart.checks:
+        key.append((Line2D([], [], color="black", lw=1.0, dashes=DESIGN_DASHES), "the design's width"))
     if sf_in:
         key.append((Line2D([], [], color="black", lw=1.0, dashes=SF_DASHES),
                     f"SF = {chart.required_sf:g} under the 50-year wave (Goda 2000)"))
@@ -217,6 +247,16 @@ def _draw_widths(ax: Axes, chart: DesignChart, lo_w: float, hi_w: float) -> tupl
                        fontsize=FS - 0.5, color=TARGET_TEXT)
         vertical.append((t, vline_candidates(wt, side_first=1),
                          [text.replace(": ", ":\n")] if every else []))
+        iv = chart.width_interval
+        if iv is not None:
+            ax.plot([iv.lower, iv.upper], [chart.target, chart.target], color=TARGET, lw=2.2,
+                    marker="|", markersize=7, solid_capstyle="butt", zorder=3.5)
+    dw = chart.design_width
+    if dw is not None and chart.checks and lo_w <= dw <= hi_w:
+        ax.axvline(dw, color="black", lw=1.0, dashes=DESIGN_DASHES, zorder=3)
+        t = make_label(ax, f"design b = {metres(dw)} m", xycoords=ax.get_xaxis_transform(),
+                       rotation=90.0, fontsize=FS - 0.5, color=verdict_colour(chart.checks[0]))
+        vertical.append((t, vline_candidates(dw, side_first=-1), []))
     else:
         notes.append(f"no width of {lo_w:.4g}\u2013{hi_w:.4g} m\n"
                      f"has ESD \u2264 {chart.target:g} m")

@@ -16,12 +16,13 @@ from ..maps.describe import format_significant
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
 
 __all__ = [
     "BAND", "BAR_EDGE", "ESD_LINE", "FILL", "FS", "LIFE", "LIFE_LW", "LIMIT", "LIMIT_DASHES",
-    "SF_DASHES", "STORM", "STORM_DASHES", "STORM_LW", "TARGET", "TARGET_TEXT", "TOLERABLE",
-    "decade_range", "format_log_axis", "limit_text", "metres", "percent", "significant",
-    "value_pm",
+    "OFF_MOUND", "OFF_MOUND_HATCH", "SF_DASHES", "STORM", "STORM_DASHES", "STORM_LW", "TARGET",
+    "TARGET_TEXT", "TOLERABLE", "decade_range", "draw_title_block", "format_log_axis",
+    "impulsive_words", "limit_text", "metres", "percent", "significant", "title_height", "value_pm",
 ]
 
 #: The tolerable expected sliding distances [m] drawn on every figure, with their source.
@@ -51,6 +52,37 @@ SF_DASHES = (6.0, 1.8, 1.2, 1.8, 1.2, 1.8)
 #: Line styles of the tolerable limits (0.1 m, 0.3 m): dashed and dash-dotted.
 LIMIT_DASHES: tuple[tuple[float, ...], ...] = ((5.0, 2.5), (6.0, 2.0, 1.2, 2.0))
 FS = 8.0  # axis labels; tick labels and the lines' labels half a point smaller
+#: The zone beyond the sliding limit, off the mound: Tol's pale yellow with a hatch of his olive
+#: (told apart from the blue fills in any colour vision, and by the hatch in greyscale).
+OFF_MOUND = "#EEEEBB"
+OFF_MOUND_HATCH = "////"
+
+
+def impulsive_words(impulsive: bool) -> str:
+    """The wave force's coefficient in a figure's subtitle (mathtext)."""
+    return (r"impulsive = true ($\alpha^* = \max(\alpha_2, \alpha_I)$)" if impulsive
+            else r"impulsive = false ($\alpha^* = \alpha_2$)")
+
+
+def draw_title_block(fig: Figure, title: str, height: float, fontsize: float = FS) -> None:
+    """The title at the top left: its first line larger, the others (the run's facts) below.
+
+    ``height`` is the figure's height in inches; the block takes 0.1 in above, 0.22 in for the
+    first line and 0.17 in for each further one (:func:`title_height`).
+    """
+    first, *rest = title.split("\n")
+    x = 0.1 / fig.get_figwidth()
+    fig.text(x, 1.0 - 0.1 / height, first, fontsize=fontsize + 1.5, ha="left", va="top",
+             fontweight="bold")
+    for i, line in enumerate(rest):
+        fig.text(x, 1.0 - (0.34 + 0.17 * i) / height, line, fontsize=fontsize - 0.5, ha="left", va="top")
+
+
+def title_height(title: str | None) -> float:
+    """The height in inches :func:`draw_title_block` takes (0 without a title)."""
+    if not title:
+        return 0.0
+    return 0.34 + 0.17 * title.count("\n")
 
 
 # -- numbers ---------------------------------------------------------------------------------

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
@@ -56,11 +57,32 @@ def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> st
     return suffix
 
 
-def metadata(fmt: str) -> dict[str, Any]:
-    """The metadata of a file of format ``fmt``: regimemap's name and version, and no dates."""
-    from .. import __version__
+def figure_version(version: str | None = None) -> str:
+    """The release a figure names: the version's leading numbers, without dev, local or date parts.
 
-    creator = f"regimemap {__version__}"
+    Between two tags every commit has its own version (``0.1.1.dev4+g1a2b3c4``,
+    and ``.d20261128`` on a tree with uncommitted changes); a figure names only
+    the release it belongs to, so that redrawing it from an unchanged computation
+    gives the same bytes on the next commit too.
+
+    Examples
+    --------
+    >>> figure_version("0.1.1.dev4+g1a2b3c4.d20261128")
+    '0.1.1'
+    >>> figure_version("0.2.0")
+    '0.2.0'
+    """
+    if version is None:
+        from .. import __version__
+
+        version = __version__
+    match = re.match(r"\d+(?:\.\d+)*", version)
+    return match.group(0) if match else version
+
+
+def metadata(fmt: str) -> dict[str, Any]:
+    """The metadata of a file of format ``fmt``: regimemap's name and release, and no dates."""
+    creator = f"regimemap {figure_version()}"
     if fmt == "png":
         return {"Software": creator}
     if fmt == "svg":

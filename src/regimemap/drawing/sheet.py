@@ -1,5 +1,8 @@
 """The one-page design sheet of a caisson (A4 portrait): its layout.
 
+The title block carries the verdict of the design check (:mod:`regimemap.drawing.verdict`):
+a PASS or FAIL badge, and each failing number of (f) and (g) in the fail colour.
+
 Panels: (a) the cross-section to scale (still-water level, mound and berm,
 caisson, crest, the forces on the equivalent block); (b) Goda's pressure
 diagram on the wall (``p1``, ``p3``, ``p4``, ``eta*``) and (c) the uplift
@@ -21,16 +24,17 @@ and :func:`regimemap.maps.mapdata.compute_map`); these modules only draw.
 from __future__ import annotations
 
 import textwrap
-from collections.abc import Callable
+from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from .. import __version__
-from ..maps.caisson import CaissonReport, MapView, map_view
+from ..maps.caisson import CaissonReport, MapView, caisson_checks, map_view
 from ..maps.mapdata import MapData, compute_map
-from .save import DEFAULT_DPI
+from ..mechanics.checks import Check
+from .save import DEFAULT_DPI, figure_version
 from .sheet_map import draw_map_panel, map_legend, tidy_map_panel
 from .sheet_panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, fmt, num
 from .style import style_context
+from .verdict import draw_verdict_badge, verdict_colour
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -73,12 +77,19 @@ def _path_note(r: CaissonReport, short: bool) -> str:
             "has the colour of the mode on its own map.  SF \u2265 1 (both) \u21d4 rest on the map.")
 
 
+def _impulsive_words(on: bool | None) -> str:
+    return "" if on is None else (", with \u03b1$_I$" if on else ", without \u03b1$_I$")
+
+
 def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
                      rect: Callable[[float, float, float, float], tuple[float, float, float, float]],
-                     required: tuple[float, float]) -> tuple[Axes, Placed]:
+                     required: tuple[float, float], esd: Check | None,
+                     impulsive: bool | None) -> tuple[Axes, Placed]:
     """(e) shorter, (g) the exceedance curve of the lifetime under it, and the note, shorter.
 
-    Returns (g)'s axes and its labels, to place once the rest of the sheet is drawn.
+    (g)'s title names the lifetime's impulsive setting (``impulsive``, the file's ``[lifetime]
+    impulsive``); its ESD label is in the fail colour when ``esd`` fails.  Returns (g)'s axes and
+    its labels, to place once the rest of the sheet is drawn.
     """
     from .lifetime import draw_exceedance
 
@@ -89,8 +100,12 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
     ax_l.set_ylabel("$P(S > x)$", fontsize=FS)
     ax_l.set_xlabel(f"$x$ (m); $S$ = sliding in {lifetime.years} years", fontsize=FS)
     ax_l.tick_params(labelsize=FS - 0.5)
-    ax_l.set_title(f"(g) over the design life: {lifetime.trials} lifetimes", fontsize=FS + 1,
+    ax_l.set_title(f"(g) {lifetime.trials} lifetimes{_impulsive_words(impulsive)}", fontsize=FS + 1,
                    loc="left")
+    if esd is not None:  # the ESD's label: the failing number in the fail colour
+        for t, _, _ in placed:
+            if t.get_text().startswith("ESD"):
+                t.set_color(verdict_colour(esd))
     fig.text(5.4 / SHEET_SIZE[0], 2.86 / SHEET_SIZE[1],
              "\n".join(textwrap.wrap(_path_note(r, True), 54)), fontsize=FS - 1.0, va="top",
              ha="left", color="0.15", linespacing=1.3)
@@ -126,7 +141,9 @@ def sheet_map_data(report: CaissonReport, view: MapView | None = None) -> MapDat
 
 def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float = DEFAULT_DPI,
                  view: MapView | None = None, lifetime: LifetimeResult | None = None,
-                 required: tuple[float, float] = (1.2, 1.2), data: MapData | None = None) -> Figure:
+                 required: tuple[float, float] = (1.2, 1.2), data: MapData | None = None,
+                 checks: Sequence[Check] | None = None, lifetime_impulsive: bool | None = None,
+                 written: Mapping[str, str] | None = None) -> Figure:
     """The one-page design sheet of a caisson (A4 portrait, no pyplot).
 
     Parameters
@@ -150,6 +167,19 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
     data : MapData, optional
         The design wave's loaded map in ``view``, drawn in (d) (default
         :func:`sheet_map_data`: its exact region polygons and boundary curves).
+    checks : sequence of Check, optional
+        The requirements of the design check, whose verdict the title block's badge
+        shows (PASS, or FAIL and how many); a failing safety factor of (f) and a failing
+        expected sliding distance of (g) are written in the fail colour.  Default:
+        :func:`regimemap.maps.caisson.caisson_checks` of ``required``, and
+        the checks of ``lifetime`` (:func:`regimemap.lifetime.judge_lifetime`) when given.
+    lifetime_impulsive : bool, optional
+        Whether the lifetime simulation included Takahashi's impulsive coefficient (the
+        design file's ``[lifetime] impulsive``), named in (g)'s title.
+    written : mapping, optional
+        The design file's values as it writes them (``{"wave.H0": "6.3"}``,
+        :attr:`regimemap.io.design.Design.written`): the header echoes H0', T1/3, tan theta
+        and mu so.
 
     Returns
     -------
@@ -161,6 +191,9 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
 
     view = map_view(report) if view is None else view
     W, H = SHEET_SIZE
+    if checks is None:
+        checks = [*caisson_checks(report, required), *(() if lifetime is None else lifetime.checks)]
+    by_name = {c.name: c for c in checks}
 
     def rect(x: float, y: float, w: float, h: float) -> tuple[float, float, float, float]:
         return (x / W, y / H, w / W, h / H)
@@ -170,18 +203,29 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         FigureCanvasAgg(fig)
         head = "caisson design sheet" + (f": {title}" if title else "")
         fig.text(0.6 / W, 1.0 - 0.38 / H, head, fontsize=13, fontweight="bold", va="top")
+        draw_verdict_badge(fig, checks, x=1.0 - 0.37 / W, y=1.0 - 0.36 / H, fontsize=12.0)
         a = report.analysis
         inp = report.inputs
-        wave = (f"H\u2080\u2032 = {num(report, 'H0'):g} m" if inp.get("H0") is not None
+        shown = {} if written is None else written
+
+        def value(key: str, name: str) -> str:  # as the design file writes it, else the number
+            return shown.get(key) or f"{num(report, name):g}"
+
+        wave = (f"H\u2080\u2032 = {value('wave.H0', 'H0')} m" if inp.get("H0") is not None
                 else "H\u2081/\u2083, H$_{max}$ given at the wall")
         fig.text(0.6 / W, 1.0 - 0.68 / H,
-                 f"{wave}, T\u2081/\u2083 = {num(report, 'period'):g} s, "
+                 f"{wave}, T\u2081/\u2083 = {value('wave.period', 'period')} s, "
                  f"\u03b2 = {float(a.pressures.beta):g}\u00b0, "
-                 f"tan \u03b8 = {num(report, 'slope'):g}, \u03bc = {report.mu:g}, "
+                 f"tan \u03b8 = {value('site.seabed_slope', 'slope')}, "
+                 f"\u03bc = {shown.get('caisson.friction') or format(report.mu, 'g')}, "
                  f"W\u2032 = {fmt(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
-                 "Goda (2000) with Takahashi's \u03b1$_I$"
-                 + ("" if inp.get("impulsive", True) else " (off)")
-                 + f"; regimemap {__version__}",
+                 + ("Goda (2000) with Takahashi's \u03b1$_I$ (impulsive = true)"
+                    if inp.get("impulsive", True) else
+                    "Goda (2000) without Takahashi's \u03b1$_I$ (impulsive = false)")
+                 + ("" if lifetime is None or lifetime_impulsive is None else
+                    f"; (g) {'with' if lifetime_impulsive else 'without'} it "
+                    f"([lifetime] impulsive = {str(lifetime_impulsive).lower()})")
+                 + f"; regimemap {figure_version()}",
                  fontsize=FS + 0.5, va="top", color="0.2", linespacing=1.4)
 
         ax_sec = fig.add_axes(rect(0.75, 8.55, 4.6, 1.85), label="section")
@@ -204,10 +248,13 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
             fig.text(5.4 / W, 3.95 / H, "\n".join(textwrap.wrap(_path_note(report, False), 47)),
                      fontsize=FS - 0.5, va="top", ha="left", color="0.15", linespacing=1.35)
         else:
-            lifetime_labels = _lifetime_panels(fig, report, lifetime, rect, required)
+            lifetime_labels = _lifetime_panels(fig, report, lifetime, rect, required,
+                                               by_name.get("expected sliding distance"),
+                                               lifetime_impulsive)
 
         ax_t = fig.add_axes(rect(0.6, 0.3, 7.2, 1.95), label="table")
-        draw_table(ax_t, report)
+        draw_table(ax_t, report, {"sliding": by_name.get("sliding safety factor"),
+                                  "overturning": by_name.get("overturning safety factor")})
         tidy_map_panel(fig, ax_map, map_art)  # the map's texts clear of the sheet's
         if lifetime_labels is not None:  # once every other text is on the sheet
             _place_lifetime_labels(fig, *lifetime_labels)

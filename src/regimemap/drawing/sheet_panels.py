@@ -12,6 +12,7 @@ these functions only draw.  Also the sheet's small helpers: its font size
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -19,8 +20,10 @@ import numpy as np
 from ..maps.caisson import CaissonReport
 from ..maps.describe import format_significant
 from ..maps.loadedmap import Margin, mode_label
+from ..mechanics.checks import Check
 from ..mechanics.modes import Mode
 from .style import MODE_STYLE, ModeStyle
+from .verdict import FAIL_COLOUR
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -225,8 +228,11 @@ def draw_path(ax: Axes, r: CaissonReport, required: tuple[float, float] = (1.2, 
     if p.onset is not None and p.onset > float(s[0]):
         ax.axvline(p.onset, color="#b0001c", lw=0.8)
         assert p.onset_mode is not None
-        ax.text(p.onset, 0.11 * ymax, f" {mode_label(p.onset_mode)} from {p.onset:.3f}\u00d7",
-                fontsize=FS - 0.5, color="#b0001c", va="bottom", ha="left")
+        # beside its line, on the side with room for it (the label spans ~40 % of the axis)
+        right = p.onset <= float(s[0]) + 0.6 * (float(s[-1]) - float(s[0]))
+        words = f"{mode_label(p.onset_mode)} from {p.onset:.3f}\u00d7"
+        ax.text(p.onset, 0.11 * ymax, f" {words}" if right else f"{words} ", fontsize=FS - 0.5,
+                color="#b0001c", va="bottom", ha="left" if right else "right")
     ax.set_xlim(float(s[0]), float(s[-1]))
     ax.set_ylim(0.0, ymax)
     ax.set_xlabel("wave-height factor s (H$_{1/3}$, H$_{max}$ \u00d7 s)", fontsize=FS)
@@ -268,7 +274,10 @@ def _onset_text(r: CaissonReport) -> str:
     return f"{mode_label(p.onset_mode)} from {p.onset:.3f}\u00d7 H"
 
 
-def draw_table(ax: Axes, r: CaissonReport) -> None:
+def draw_table(ax: Axes, r: CaissonReport, checks: Mapping[str, Check | None] | None = None) -> None:
+    """(f) the numbers, four columns; a row named in ``checks`` (``"sliding"``, ``"overturning"``)
+    whose check fails has its number in the fail colour, in bold."""
+    checks = {} if checks is None else checks
     a = r.analysis
     h, p, ld, sec, st, b = a.heights, a.pressures, a.loads, a.section, a.stability, a.block
     f = float
@@ -322,5 +331,8 @@ def draw_table(ax: Axes, r: CaissonReport) -> None:
                 ax.text(x, y, value, fontsize=FS, va="center", ha="left")
                 continue
             ax.text(x, y, name, fontsize=FS, va="center")
-            ax.text(x + 0.16, y, value, fontsize=FS, va="center", ha="right")
+            check = checks.get(name)
+            bad = check is not None and not check.passed
+            ax.text(x + 0.16, y, value, fontsize=FS, va="center", ha="right",
+                    color=FAIL_COLOUR if bad else "black", fontweight="bold" if bad else "normal")
             ax.text(x + 0.167, y, unit, fontsize=FS - 0.5, va="center", ha="left", color="0.25")

@@ -143,6 +143,10 @@ class Block:
         """Housner's plastic rocking ratio theta_dot+/theta_dot- (angular momentum about the new pivot).
 
         (I + m (H^2 - B^2)) / (I + m (H^2 + B^2)); 1 - (3/2) sin^2(alpha) when uniform.
+        The formula assumes that the block rocks on about the other corner; for a squat block
+        (I + m H^2 <= m B^2; uniform: gamma <= 1/sqrt(2)) it is <= 0 and does not apply: the
+        impact ends the rocking and the block lands flat (the stepper's plastic impact gives
+        this; ``regimemap simulate`` says "not applicable").
         """
         B = np.asarray(self.B, dtype=np.float64)
         H = self.H

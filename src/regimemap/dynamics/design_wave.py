@@ -16,9 +16,9 @@ and duration ``tau0``; the uplift follows the force in phase because the
 block's uplift is ``U = nu F`` (``u = 0``).
 
 **No added mass.** The block of :mod:`regimemap.dynamics` is rigid and dry:
-its inertia is the caisson's mass ``m`` (and ``I = m B^2 i^2``) alone.  The
+its inertia is the caisson's mass ``m`` (and :math:`I = m B^2 i^2`) alone.  The
 lifetime model adds the mass of the water moved with the caisson,
-``M_a = 1.0855 rho_w h'^2`` per metre (:func:`regimemap.lifetime.added_mass`),
+:math:`M_a = 1.0855 \\rho_w h'^2` per metre (:func:`regimemap.lifetime.added_mass`),
 which slows a slide; a run here slides further than the lifetime model's
 ``half_sine_slide`` of the same wave (by about ``M_a/m``, while both stop
 within the wave).  With ``M = m`` the two agree (tests/dynamics/test_design_wave.py).

@@ -40,7 +40,7 @@ def check_output_path(path: str | os.PathLike[str], param: str = "output") -> Pa
     tell, e.g. for root or on read-only and virtual file systems).  The message
     starts with ``param`` (e.g. ``--output folder 'x' does not exist``).
     """
-    text = os.fspath(path)
+    text: str | bytes = os.fspath(path)  # bytes from an untyped caller's bytes path
     if isinstance(text, bytes):
         text = os.fsdecode(text)
     if not text.strip():

@@ -7,17 +7,20 @@ breakwater), lengths in m; the loaded block's numbers are dimensionless.
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
-from ..maps.caisson import CaissonReport
+from ..maps.caisson import REQUIRED_SF, CaissonReport, caisson_checks
 from ..maps.describe import format_significant as _sig
 from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
+from ..mechanics.checks import Check
 from ._numbers import json_number as round_sig
+from .checks import checks_json, checks_lines
 
 __all__ = ["CONSISTENCY_NOTE", "REQUIRED_SF", "caisson_json", "design_check", "design_check_lines",
-           "format_caisson", "round_sig"]
+           "format_caisson", "impulsive_words", "round_sig"]
 
 #: Why Goda's safety factors and the map agree (docs/waves.md, Sect. 7).
 CONSISTENCY_NOTE = (
@@ -74,8 +77,11 @@ UNITS = {
 }
 
 
-#: The safety factors a design must reach by default, sliding and overturning (Goda 2000, Sect. 4.2).
-REQUIRED_SF = (1.2, 1.2)
+def impulsive_words(r: CaissonReport) -> str:
+    """Whether Goda's pressures include Takahashi's impulsive coefficient, in words (the setting named)."""
+    if r.inputs.get("impulsive", True):
+        return "with Takahashi's impulsive coefficient alpha_I ([caisson] impulsive = true, the default)"
+    return "without Takahashi's impulsive coefficient ([caisson] impulsive = false)"
 
 
 def design_check(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) -> dict[str, Any]:
@@ -91,30 +97,36 @@ def design_check(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) 
     return out
 
 
-def design_check_lines(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) -> list[str]:
-    """The design check in words: one line, and a line per failed safety factor."""
-    check = design_check(r, required)
-    failed = [k for k, v in check.items() if not v["meets"]]
-    if not failed:
-        return [f"design check: both safety factors reach the required ones (sliding "
-                f"{_sig(check['sliding']['value'], 3)} >= {required[0]:g}, overturning "
-                f"{_sig(check['overturning']['value'], 3)} >= {required[1]:g})"]
-    lines = [f"design check: the section FAILS the {' and the '.join(failed)} check"
-             f"{'s' if len(failed) > 1 else ''}"]
-    for k in failed:
-        v = check[k]
-        lines.append(f"  SF {k} {_sig(v['value'], 3)} < required {v['required']:g}"
-                     + ("  (SF >= 1: the caisson stays at rest under the design wave, but without the "
-                        "margin the design asks for)" if v["value"] >= 1.0 else ""))
+def design_check_lines(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF,
+                       checks: Sequence[Check] | None = None) -> list[str]:
+    """The design check: a heading, one line per requirement (PASS or FAIL first) and the verdict.
+
+    ``checks`` defaults to :func:`~regimemap.maps.caisson.caisson_checks` (the safety
+    factors against ``required``); a failed safety factor that is still at least 1 gets a
+    note (the caisson rests under the design wave, without the margin asked for).
+    """
+    checks = caisson_checks(r, required) if checks is None else checks
+    lines = ["design check (--check: exit status 1 when a requirement fails)", *checks_lines(checks)]
+    short = [c.name for c in checks if not c.passed and c.name.endswith("safety factor")
+             and c.value >= 1.0]
+    if short:
+        lines.append(f"  ({' and '.join(short)} >= 1: the caisson stays at rest under the design wave, "
+                     "but without the margin the design asks for)")
     return lines
 
 
 def caisson_json(r: CaissonReport, source: str | None = None,
-                 required: tuple[float, float] = REQUIRED_SF) -> dict[str, Any]:
+                 required: tuple[float, float] = REQUIRED_SF,
+                 checks: Sequence[Check] | None = None) -> dict[str, Any]:
     """One JSON-ready object: heights, pressures, loads, safety factors, block, mode, margins, path.
 
-    ``design_check`` compares the safety factors with the ``required`` ones
-    (sliding, overturning; 1.2 by default).
+    ``checks`` lists the requirements, ``[{"name", "value", "required",
+    "relation", "unit", "pass"}, ...]`` (default
+    :func:`~regimemap.maps.caisson.caisson_checks` of ``required``: the safety
+    factors against the required ones, sliding and overturning, 1.2 by
+    default) and ``verdict`` says ``"PASS"`` or ``"FAIL"``; ``design_check``
+    keeps the older form of the safety factors' check.  ``impulsive`` says
+    whether Goda's pressures include Takahashi's impulsive coefficient.
 
     Numbers are rounded to 12 significant digits (``null`` if not finite);
     ``units`` names the unit of each dimensional key.
@@ -127,6 +139,10 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     out["mode_description"] = mode_description(r.mode)
     out["margin"] = {"k": _margin_dict(r.margin_k), "mu": _margin_dict(r.margin_mu)}
     out["at_rest_by_goda"] = r.safe_by_goda
+    out["impulsive"] = bool(r.inputs.get("impulsive", True))
+    checks = caisson_checks(r, required) if checks is None else checks
+    out["checks"] = checks_json(checks)
+    out["verdict"] = "PASS" if all(c.passed for c in checks) else "FAIL"
     out["design_check"] = design_check(r, required)
     out["consistent"] = r.consistent
     p = r.path
@@ -165,13 +181,33 @@ def _margin_line(m: Margin) -> str:
     return f"    {m.variable:<3} " + ";  ".join(parts)
 
 
+def _inputs_lines(written: Mapping[str, str]) -> list[str]:
+    """The file's values, table by table, as the file writes them (``written``: ``"site.depth"`` ->
+    ``"10.1"``)."""
+    lines = []
+    for table in ("site", "wave", "caisson"):
+        items = [f"{k.split('.', 1)[1]} = {v}" for k, v in written.items() if k.split(".", 1)[0] == table]
+        if items:
+            lines.append(f"  [{table}] " + ", ".join(items))
+    return lines
+
+
 def format_caisson(r: CaissonReport, source: str | None = None,
-                   required: tuple[float, float] = REQUIRED_SF) -> str:
-    """The report for people: heights, pressures, loads, safety factors, block, mode and margins."""
+                   required: tuple[float, float] = REQUIRED_SF, checks: Sequence[Check] | None = None,
+                   written: Mapping[str, str] | None = None) -> str:
+    """The report for people: heights, pressures, loads, safety factors, block, mode and margins.
+
+    ``checks``: the requirements of the design check (default
+    :func:`~regimemap.maps.caisson.caisson_checks` of ``required``); ``written``:
+    the design file's values as it writes them (``{"site.depth": "10.1"}``,
+    :attr:`regimemap.io.design.Design.written`), echoed under the file's name.
+    """
     n = _numbers(r)
     lines: list[str] = []
     if source:
         lines.append(f"caisson design: {source}")
+    if written:
+        lines.extend(_inputs_lines(written))
 
     def row(name: str, value: float, unit: str, what: str, digits: int = 4) -> None:
         lines.append(f"  {name:<14}{_sig(value, digits):>10} {unit:<8} {what}")
@@ -179,9 +215,10 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     lines.append("design wave at the wall (Goda 2000)")
     row("H1/3", n["H13"], "m", "significant height")
     row("Hmax", n["Hmax"], "m", "design (maximum) height")
-    row("L", n["L"], "m", f"wave length of T1/3 at h = {_sig(float(r.inputs['depth']))} m")
+    depth = (written or {}).get("site.depth") or f"{float(r.inputs['depth']):g}"
+    row("L", n["L"], "m", f"wave length of T1/3 at h = {depth} m")
     row("eta*", n["eta_star"], "m", "elevation where the wave pressure vanishes")
-    lines.append("pressures (Goda 1974, Takahashi's impulsive coefficient)")
+    lines.append(f"pressures (Goda 1974, {impulsive_words(r)})")
     which = "alpha_I" if n["alpha_I"] > n["alpha2"] and n["alpha_star"] == n["alpha_I"] else "alpha2"
     lines.append(f"  alpha1 = {_sig(n['alpha1'])}   alpha2 = {_sig(n['alpha2'])}   "
                  f"alpha3 = {_sig(n['alpha3'])}   alpha_I = {_sig(n['alpha_I'])}   (alpha* = {which})")
@@ -199,7 +236,7 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     row("sliding", n["SF_sliding"], "", "mu (W' - U) / P")
     row("overturning", n["SF_overturning"], "", "(W' t - Mu) / Mp, t = B")
     row("heel pressure", n["heel_pressure"], "kPa", "bearing pressure at the heel")
-    lines.extend(design_check_lines(r, required))
+    lines.extend(design_check_lines(r, required, checks))
     lines.append("equivalent loaded block (docs/waves.md, Sect. 7)")
     row("B", n["B"], "m", "half the width of the upright section")
     row("H_C", n["H_C"], "m", "height of the centre of mass above the base")

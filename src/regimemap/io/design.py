@@ -20,9 +20,11 @@ seconds, degrees, kg/m^3; weights in kN per metre of breakwater)::
 :func:`example_design_text` returns a commented example (Goda's worked
 upright breakwater, with a life of 50 years). Every error in a file raises
 :class:`DesignFileError`, whose message names the file, the key with its
-table (``[caisson] base_depth``), the value found and what is accepted; for
-``[lifetime]`` and ``[lifetime.errors]`` also the line of the key
-(``goda.toml, line 45: [lifetime] shape = -1.0: out of range; ...``).  A
+table (``[caisson] base_depth``), the value found, what is accepted and the
+line of the key (``goda.toml, line 45: [lifetime] shape = -1.0: out of range;
+...``); a value beyond the limits physics sets (a significant height over 30
+m, a period outside 1-30 s, a depth outside 0.5-100 m) is refused with the
+reason.  A
 parsed file is a :class:`Design`; :meth:`Design.analysis_inputs` gives the
 inputs of Goda's procedure, :meth:`Design.lifetime_caisson` and
 :meth:`Design.lifetime_model` those of
@@ -34,7 +36,7 @@ from __future__ import annotations
 import re
 import sys
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -59,7 +61,8 @@ from .design_lifetime import (
     read_lifetime,
 )
 from .design_lifetime import lifetime_model as _lifetime_model
-from .toml_lines import key_line
+from .inputs import read_design_text
+from .toml_lines import key_line, key_text
 
 if TYPE_CHECKING:
     from regimemap.lifetime import Caisson, LifetimeModel
@@ -125,6 +128,11 @@ class Design:
     caisson: CaissonSpec
     source: str
     lifetime: LifetimeSpec | None = None
+    written: Mapping[str, str] = field(default_factory=dict)
+
+    def as_written(self, section: str, key: str) -> str | None:
+        """The value of ``[section] key`` as the file writes it (``"10.1"``); None when not set."""
+        return self.written.get(f"{section}.{key}")
 
     def analysis_inputs(self, g: float = 9.81) -> dict[str, Any]:
         """The keyword arguments of :func:`regimemap.waves.analyse_caisson` for this design (SI: N, Pa)."""
@@ -219,10 +227,11 @@ def parse_design(text: str, source: str = "<design>") -> Design:
         On a TOML syntax error (with its line number), an unknown table or key
         (with the closest known one), a missing key, a value of the wrong
         type or out of range, or inconsistent values; in ``[lifetime]`` also
-        a missing or doubly given climate, and the message gives the line of
-        the key (:func:`key_line`).
+        a missing or doubly given climate.  The message gives the line of
+        the key (:func:`key_line`; of the table's header for a missing key)
+        and the value as the file writes it.
     """
-    r = DesignReader(source)
+    r = DesignReader(source, text)
     data = _load_toml(text, r)
     r.check_names(data)
     site = _read_site(data, r)
@@ -230,7 +239,10 @@ def parse_design(text: str, source: str = "<design>") -> Design:
     caisson = _read_caisson(data, r)
     _check_depths(site, caisson, r)
     lifetime = read_lifetime(text, source, data["lifetime"]) if "lifetime" in data else None
-    return Design(site=site, wave=wave, caisson=caisson, source=source, lifetime=lifetime)
+    written = {f"{section}.{key}": key_text(text, section, key) or repr(data[section][key])
+               for section in DESIGN_KEYS for key in DESIGN_KEYS[section] if key in data[section]}
+    return Design(site=site, wave=wave, caisson=caisson, source=source, lifetime=lifetime,
+                  written=written)
 
 
 def _load_toml(text: str, r: DesignReader) -> dict[str, Any]:
@@ -262,16 +274,18 @@ def _read_wave(data: Mapping[str, Any], r: DesignReader) -> WaveSpec:
     H13 = r.number(data, "wave", "H13")
     Hmax = r.number(data, "wave", "Hmax")
     if H0 is not None and (H13 is not None or Hmax is not None):
-        raise r.fail(f"[wave] H0 = {H0!r} together with [wave] H13/Hmax; accepted: either H0 "
-                     "(equivalent deep-water height) or both H13 and Hmax (heights at the wall)")
+        raise r.fail(f"[wave] H0 = {r.written('wave', 'H0', H0)} together with [wave] H13/Hmax; "
+                     "accepted: either H0 (equivalent deep-water height) or both H13 and Hmax "
+                     "(heights at the wall)", "wave", "H0")
     if H0 is None:
         if H13 is None or Hmax is None:
             missing = "H13" if H13 is None and Hmax is not None else (
                 "Hmax" if Hmax is None and H13 is not None else "H0")
             raise r.fail(f"[wave] {missing} is missing; accepted: either H0 (equivalent deep-water "
-                         "height, m) or both H13 and Hmax (heights at the wall, m)")
+                         "height, m) or both H13 and Hmax (heights at the wall, m)", "wave")
         if Hmax < H13:
-            raise r.key_error("wave", "Hmax", Hmax, f"smaller than [wave] H13 = {H13!r}")
+            raise r.key_error("wave", "Hmax", Hmax,
+                              f"smaller than [wave] H13 = {r.written('wave', 'H13', H13)}")
     return WaveSpec(period=r.required(data, "wave", "period"), H0=H0, H13=H13, Hmax=Hmax,
                     angle=r.number(data, "wave", "angle") or 0.0,
                     rotation=r.number(data, "wave", "rotation") or 0.0)
@@ -285,13 +299,14 @@ def _read_caisson(data: Mapping[str, Any], r: DesignReader) -> CaissonSpec:
     above = r.number(data, c, "fill_density_above")
     given = [k for k, v in dens.items() if v is not None]
     if weight is not None and (given or above is not None):
-        raise r.fail(f"[caisson] buoyant_weight = {weight!r} together with densities "
-                     f"({', '.join(given or ['fill_density_above'])}); accepted: either buoyant_weight "
-                     "(kN/m) or concrete_fraction, concrete_density and fill_density")
+        raise r.fail(f"[caisson] buoyant_weight = {r.written(c, 'buoyant_weight', weight)} together with "
+                     f"densities ({', '.join(given or ['fill_density_above'])}); accepted: either "
+                     "buoyant_weight (kN/m) or concrete_fraction, concrete_density and fill_density",
+                     c, "buoyant_weight")
     if weight is None and len(given) < 3:
         absent = [k for k, v in dens.items() if v is None]
         raise r.fail(f"[caisson] {' and '.join(absent)} missing; accepted: either buoyant_weight "
-                     "(kN/m) or all of concrete_fraction, concrete_density, fill_density (kg/m^3)")
+                     "(kN/m) or all of concrete_fraction, concrete_density, fill_density (kg/m^3)", c)
     return CaissonSpec(width=r.required(data, c, "width"),
                        base_depth=r.required(data, c, "base_depth"),
                        crest=r.required(data, c, "crest"),
@@ -307,14 +322,17 @@ def _read_caisson(data: Mapping[str, Any], r: DesignReader) -> CaissonSpec:
 
 def _check_depths(site: SiteSpec, caisson: CaissonSpec, r: DesignReader) -> None:
     """The armour layer no lower than the caisson's base, the base no deeper than the water."""
+    depth = r.written("site", "depth", site.depth)
+    base = r.written("caisson", "base_depth", caisson.base_depth)
     if caisson.base_depth > site.depth:
-        raise r.fail(f"[caisson] base_depth = {caisson.base_depth!r}: the base of the caisson would be "
-                     f"deeper than the water ([site] depth = {site.depth!r}); accepted: "
-                     f"0 < base_depth <= [site] depth = {site.depth!r} (metres)")
+        raise r.fail(f"[caisson] base_depth = {base}: the base of the caisson would be deeper than the "
+                     f"water ([site] depth = {depth}); accepted: 0 < base_depth <= [site] depth = "
+                     f"{depth} (metres)", "caisson", "base_depth")
     if site.armour_depth > caisson.base_depth:
-        raise r.fail(f"[site] armour_depth = {site.armour_depth!r}: the top of the armour layer would be "
-                     f"below the base of the caisson ([caisson] base_depth = {caisson.base_depth!r}); "
-                     f"accepted: 0 < armour_depth <= [caisson] base_depth = {caisson.base_depth!r} (metres)")
+        raise r.fail(f"[site] armour_depth = {r.written('site', 'armour_depth', site.armour_depth)}: the "
+                     "top of the armour layer would be below the base of the caisson ([caisson] "
+                     f"base_depth = {base}); accepted: 0 < armour_depth <= [caisson] base_depth = "
+                     f"{base} (metres)", "site", "armour_depth")
 
 
 def read_design(path: str | Path) -> Design:
@@ -336,7 +354,7 @@ def read_design(path: str | Path) -> Design:
     """
     p = Path(path)
     try:
-        text = p.read_text(encoding="utf-8")
+        text = read_design_text(p)
     except (OSError, UnicodeDecodeError) as exc:
         raise DesignFileError(f"{p}: cannot read the design file: {exc}") from None
     return parse_design(text, source=str(p))

@@ -68,6 +68,11 @@ tide_range = 0.0          # tidal range, m: each storm's water level is (range/2
 thresholds = [0.03, 0.1, 0.3, 1.0, 3.0]  # lifetime slides whose exceedance is reported, m
 # truncate = 3.0          # cut the normal error factors at +-3 standard deviations (default: none)
 impulsive = false         # Takahashi's impulsive coefficient in each wave's force (default false)
+target = 0.1              # the requirement ESD <= target, m (Goda & Takagi 2000; default 0.1)
+# allowed = {"0.1" = 0.2, "0.3" = 0.05}  # the largest allowed P(lifetime sliding > x m)
+                          # (Kim & Suh 2013; default: none)
+# failure_sliding = 5.0   # m the caisson may slide before it is off its mound (the harbour-side
+                          # crest width of the mound): P(S > it) is the probability of failure
 
 # The uncertainty factors, each ratio (1 + cov z) with z standard normal: [ratio, cov] (the
 # mean factor and its coefficient of variation; Takayama & Ikeda 1992 as cited by Shimosako &

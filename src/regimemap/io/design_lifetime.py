@@ -33,6 +33,19 @@ __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_TRIALS", "M
 MAX_TRIALS = 10_000_000
 #: Longest design life [years].
 MAX_YEARS = 1000
+#: Largest deep-water significant height H0' a climate may give [m].  The largest significant
+#: heights measured are about 20 m (19 m, a North Atlantic buoy, February 2013: the WMO record);
+#: above 30 m no sea has been seen, and the value is a unit slip (centimetres for metres).
+MAX_HEIGHT = 30.0
+#: Significant periods of wind seas and swell [s]: outside, not a sea state (tenths of a second,
+#: a frequency for a period).
+PERIOD_RANGE = (1.0, 30.0)
+#: Largest tidal range [m]: the largest on Earth is about 16 m (Bay of Fundy).
+MAX_TIDE_RANGE = 20.0
+#: Most storms a year: more than one a day are not separate storms.
+MAX_STORMS_PER_YEAR = 365.0
+#: Longest peak sea state of one storm [hours]: a week.
+MAX_STORM_HOURS = 168.0
 
 
 @dataclass(frozen=True)
@@ -43,7 +56,12 @@ class LifetimeSpec:
     ``errors`` holds the factors ``[lifetime.errors]`` names, as ``(ratio,
     cov)``: the others take :data:`regimemap.lifetime.DEFAULT_ERRORS`.
     ``thresholds`` None means :data:`regimemap.lifetime.DEFAULT_THRESHOLDS`,
-    ``seed`` None a fresh seed for every run.
+    ``seed`` None a fresh seed for every run.  The requirements: ``target``
+    (the tolerable ESD [m]), ``allowed`` (lifetime sliding [m] -> the largest
+    allowed probability of exceeding it, Kim & Suh 2013) and
+    ``failure_sliding`` (the sliding at which the caisson is off its mound [m],
+    None: not given).  ``written`` holds the climate's values as the file
+    wrote them (TOML's text of the parsed value), for the reports to echo.
     """
 
     years: int = 50
@@ -63,19 +81,50 @@ class LifetimeSpec:
     truncate: float | None = None
     impulsive: bool = False
     errors: Mapping[str, tuple[float, float]] = field(default_factory=dict)
+    target: float = 0.1
+    allowed: Mapping[float, float] = field(default_factory=dict)
+    failure_sliding: float | None = None
+    written: Mapping[str, str] = field(default_factory=dict)
     record: RecordSpec | None = None
     climate_replicates: int = 0
+
+    def climate_as_written(self) -> str:
+        """The climate's keys as the file wrote them (``H0_10 = 5.0 m, H0_50 = 6.3 m``)."""
+        if self.record is not None:
+            return f"[lifetime.record] path = {self.record.path}"
+        keys = ("annual_maxima",) if self.annual_maxima is not None else ("H0_10", "H0_50")
+        return ", ".join(f"{key} = {self.written.get(key, '?')} m" for key in keys)
 
 
 def _positive(x: float) -> bool:
     return x > 0.0
 
 
+def _height(x: float) -> bool:
+    return 0.0 < x <= MAX_HEIGHT
+
+
+def _why_height(x: float) -> str:
+    if x > MAX_HEIGHT:
+        return (f"above {MAX_HEIGHT:g} m, higher than any sea measured (the largest significant "
+                f"heights measured are about 20 m); {x / 100:.4g} m in centimetres for metres?")
+    return "not > 0"
+
+
+def _why_period(x: float) -> str:
+    lo, hi = PERIOD_RANGE
+    if x > hi:
+        return f"above {hi:g} s, longer than any sea wave; {x / 10:.3g} s in tenths of a second?"
+    return f"below {lo:g} s, shorter than any sea wave that loads a breakwater; a frequency for a period?"
+
+
 @dataclass(frozen=True)
 class _LKey:
     accepted: str                      # what is accepted, in words
-    kind: str                          # "int", "number", "text", "bool", "numbers", "pair", "table"
+    kind: str                          # "int", "number", "text", "bool", "numbers", "pair", "limits",
+    #                                    "table"
     check: Callable[[Any], bool] = lambda x: True
+    why: Callable[[float], str] = lambda x: "out of range"   # why a value the check refuses is wrong
 
 
 def _at_least(lo: float) -> Callable[[Any], bool]:
@@ -94,26 +143,41 @@ LIFETIME_KEYS: dict[str, _LKey] = {
                           '(default "weibull")', "text", lambda x: x in ("weibull", "gumbel")),
     "shape": _LKey("a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", "number",
                    _positive),
-    "H0_10": _LKey("the 10-year return value of H0', > 0 in metres", "number", _positive),
-    "H0_50": _LKey("the 50-year return value of H0' in metres, H0_50 > H0_10", "number", _positive),
-    "annual_maxima": _LKey("a list of at least three annual maxima of H0', each > 0 in metres and not "
-                           "all equal (instead of H0_10 and H0_50)", "numbers", _positive),
-    "storms_per_year": _LKey("a mean number of storms a year, storms_per_year > 0.1 (a Poisson number "
-                             "of storms, peaks over a threshold; not with annual_maxima; default: one "
-                             "storm a year, its peak the annual maximum)", "number", lambda x: x > 0.1),
-    "storm_hours": _LKey("a duration > 0 in hours of each storm's peak sea state (default 2)", "number",
-                         _positive),
-    "period": _LKey("a significant period T1/3 > 0 in seconds for every storm (default: Goda's "
-                    "3.3 H0'^0.63); not with steepness", "number", _positive),
+    "H0_10": _LKey(f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
+                   "significant heights measured are about 20 m)", "number", _height, _why_height),
+    "H0_50": _LKey(f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", "number",
+                   _height, _why_height),
+    "annual_maxima": _LKey(f"a list of at least three annual maxima of H0', each 0 < H0' <= "
+                           f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", "numbers",
+                           _height, _why_height),
+    "storms_per_year": _LKey(f"a mean number of storms a year, 0.1 < storms_per_year <= "
+                             f"{MAX_STORMS_PER_YEAR:g} (a Poisson number of storms, peaks over a "
+                             "threshold; not with annual_maxima; default: one storm a year, its peak "
+                             "the annual maximum)", "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR),
+    "storm_hours": _LKey(f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
+                         "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS),
+    "period": _LKey(f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
+                    "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness",
+                    "number", lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period),
     "steepness": _LKey("a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period",
                        "number", lambda x: 0.0 < x <= 0.142),
-    "tide_range": _LKey("a tidal range >= 0 in metres (default 0)", "number", _at_least(0.0)),
+    "tide_range": _LKey(f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
+                        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE),
     "thresholds": _LKey("a list of lifetime slides, each > 0 in metres, whose exceedance probability "
                         "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive),
     "truncate": _LKey("a cut-off > 0 of the normal error factors, in standard deviations (default: "
                       "none)", "number", _positive),
     "impulsive": _LKey("true or false: Takahashi's impulsive coefficient in each wave's force "
                        "(default false)", "bool"),
+    "target": _LKey("the tolerable expected sliding distance, > 0 in metres: the requirement "
+                    "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive),
+    "allowed": _LKey('a table of lifetime slides (m) and the largest allowed probability of '
+                     'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
+                     "default: none)", "limits"),
+    "failure_sliding": _LKey("the sliding in metres at which the caisson is off its mound (the "
+                             "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
+                             "the probability of failure over the life (default: none)", "number",
+                             _positive),
     "errors": _LKey("the table [lifetime.errors] of the uncertainty factors (deepwater, "
                     "transformation, force, friction)", "table"),
     "record": _LKey("the table [lifetime.record] of a measured wave record (path and the options of "
@@ -215,7 +279,7 @@ class _LifetimeReader:
         if not math.isfinite(x):
             raise self.bad(table, key, data[key], f"{which}not a finite number")
         if not spec.check(x):
-            raise self.bad(table, key, data[key], f"{which}out of range")
+            raise self.bad(table, key, data[key], f"{which}{spec.why(x)}")
         return x
 
     def value(self, table: str, data: Mapping[str, Any], key: str) -> Any:
@@ -226,7 +290,7 @@ class _LifetimeReader:
         if kind == "number":
             return self.number(table, data, key, data[key])
         read = {"int": self._int, "text": self._text, "bool": self._bool, "numbers": self._numbers,
-                "pair": self._pair}.get(kind, self._table)
+                "pair": self._pair, "limits": self._limits}.get(kind, self._table)
         return read(table, data, key)
 
     def _int(self, table: str, data: Mapping[str, Any], key: str) -> int:
@@ -273,6 +337,28 @@ class _LifetimeReader:
         if not cov >= 0.0:
             raise self.bad(table, key, v, f"the cov {v[1]!r} is < 0")
         return ratio, cov
+
+    def _limits(self, table: str, data: Mapping[str, Any], key: str) -> dict[float, float]:
+        """``{sliding m: probability}``; a bare key ``0.1`` (TOML's dotted ``0`` . ``1``) reads as 0.1."""
+        v = data[key]
+        if not isinstance(v, dict):
+            raise self.bad(table, key, v,
+                           f"expected a table {{sliding = probability}}, found {_toml_type(v)}")
+        if not v:
+            raise self.bad(table, key, v, "the table is empty")
+        out: dict[float, float] = {}
+        for name, p in _flatten(v):
+            try:
+                x = float(name)
+            except ValueError:
+                raise self.bad(table, key, v,
+                               f"the key {name!r} is not a sliding distance in metres") from None
+            if not (math.isfinite(x) and x > 0.0):
+                raise self.bad(table, key, v, f"the sliding {name!r} is not > 0 m")
+            if isinstance(p, bool) or not isinstance(p, (int, float)) or not 0.0 <= float(p) <= 1.0:
+                raise self.bad(table, key, v, f"the probability {p!r} of {name} m is not in [0, 1]")
+            out[x] = float(p)
+        return dict(sorted(out.items()))
 
     def _table(self, table: str, data: Mapping[str, Any], key: str) -> dict[str, Any]:
         v = data[key]
@@ -340,8 +426,12 @@ class _LifetimeReader:
             period=got["period"], steepness=got["steepness"],
             tide_range=0.0 if got["tide_range"] is None else got["tide_range"],
             thresholds=None if got["thresholds"] is None else tuple(sorted(set(got["thresholds"]))),
-            truncate=got["truncate"], impulsive=bool(got["impulsive"]), errors=errors, record=record,
-            climate_replicates=got["climate_replicates"] or 0)
+            truncate=got["truncate"], impulsive=bool(got["impulsive"]), errors=errors,
+            target=0.1 if got["target"] is None else got["target"],
+            allowed={} if got["allowed"] is None else got["allowed"],
+            failure_sliding=got["failure_sliding"],
+            record=record, climate_replicates=got["climate_replicates"] or 0,
+            written={key: _written(data[key]) for key in ("H0_10", "H0_50", "annual_maxima") if key in data})
         try:  # anything the checks above missed, said the library's way
             lifetime_model(spec)
         except ValueError as exc:
@@ -370,6 +460,22 @@ def _record_table(text: str, source: str, got: Mapping[str, Any], data: Mapping[
     return read_record_table(text, source, got["record"])
 
 
+def _flatten(table: Mapping[str, Any], prefix: str = "") -> list[tuple[str, Any]]:
+    """The items of a table, nested tables joined by ``.`` (``{"0": {"1": p}}`` -> ``("0.1", p)``)."""
+    out: list[tuple[str, Any]] = []
+    for name, value in table.items():
+        full = f"{prefix}.{name}" if prefix else str(name)
+        out += _flatten(value, full) if isinstance(value, dict) else [(full, value)]
+    return out
+
+
+def _written(value: Any) -> str:
+    """A parsed TOML value as the file wrote it (the shortest text that reads back the same)."""
+    if isinstance(value, list):
+        return "[" + ", ".join(_written(x) for x in value) + "]"
+    return repr(value) if isinstance(value, (int, float)) and not isinstance(value, bool) else str(value)
+
+
 def _toml_type(v: Any) -> str:
     """The TOML name of a parsed value's type, for the messages."""
     names = {bool: "a boolean", int: "an integer", float: "a float", str: "a string", list: "an array",
@@ -382,6 +488,8 @@ def lifetime_model(spec: LifetimeSpec, years: int | None = None) -> LifetimeMode
 
     ``years`` is not checked here (:func:`check_lifetime_option` does).
     """
+    import numpy as np
+
     from regimemap.lifetime import DEFAULT_ERRORS, DEFAULT_THRESHOLDS, Climate, ErrorFactor, LifetimeModel
 
     law = None
@@ -391,12 +499,20 @@ def lifetime_model(spec: LifetimeSpec, years: int | None = None) -> LifetimeMode
         climate = record_climate(spec.record)
         if spec.period is None and spec.steepness is None:
             law = record_period_law(spec.record)
-    elif spec.annual_maxima is not None:
-        climate = Climate.fit_annual_maxima(spec.annual_maxima, spec.distribution, spec.shape)
     else:
-        assert spec.H0_10 is not None and spec.H0_50 is not None
-        climate = Climate.from_return_values(spec.H0_10, spec.H0_50, spec.distribution, spec.shape,
-                                             spec.storms_per_year)
+        try:  # an overflow of the fit is named here, not printed by numpy
+            with np.errstate(all="raise"):
+                if spec.annual_maxima is not None:
+                    climate = Climate.fit_annual_maxima(spec.annual_maxima, spec.distribution, spec.shape)
+                else:
+                    assert spec.H0_10 is not None and spec.H0_50 is not None
+                    climate = Climate.from_return_values(spec.H0_10, spec.H0_50, spec.distribution,
+                                                         spec.shape, spec.storms_per_year)
+                climate.return_value(50.0)
+        except (FloatingPointError, OverflowError) as exc:
+            what = "annual_maxima" if spec.annual_maxima is not None else "H0_10 and H0_50"
+            raise ValueError(f"the {spec.distribution} climate of {what} cannot be computed ({exc}): "
+                             "the values are too far apart or too close together") from None
     errors = replace(DEFAULT_ERRORS, **{name: ErrorFactor(*pair) for name, pair in spec.errors.items()})
     return LifetimeModel(climate, years=spec.years if years is None else years,
                          storm_hours=spec.storm_hours, period=spec.period, steepness=spec.steepness,

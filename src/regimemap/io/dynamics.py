@@ -70,7 +70,7 @@ def _json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
     return out
 
 
-def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mapping[str, float],
+def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mapping[str, float | None],
                       run: int = 0, min_rotation: float = 0.0) -> dict[str, Any]:
     """One run of ``sim`` as a JSON-ready dict.
 
@@ -79,7 +79,8 @@ def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mappi
     (rad), ``max_rotation_deg``, ``residual_rotation`` (rad), ``residual_rotation_deg``,
     ``residual_slide`` (m, positive towards O), ``impacts``, ``initial_mode``, ``phases`` (list
     of {``mode``, ``start``} in s), ``settled``, ``end_time`` (s), ``steps``, ``derived``
-    (``derived``: p, alpha, ...) and ``inputs``.  Floats are rounded to :data:`SIGNIFICANT`
+    (``derived``: p, alpha, ..., ``impact_ratio`` None when Housner's ratio does not apply, a
+    squat block's) and ``inputs``.  Floats are rounded to :data:`SIGNIFICANT`
     significant digits.  A run still moving at the time limit (``settled`` false, not
     overturned; category "still moving") has no residuals: the three ``residual_*`` are None.
     """
@@ -104,7 +105,7 @@ def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mappi
         "settled": bool(sim.settled[run]),
         "end_time": round_sig(sim.end_time[run]),
         "steps": int(sim.steps[run]),
-        "derived": {key: round_sig(v) for key, v in derived.items()},
+        "derived": {key: None if v is None else round_sig(v) for key, v in derived.items()},
         "inputs": _json_inputs(inputs),
     }
 
@@ -128,10 +129,15 @@ def format_simulation(record: Mapping[str, Any]) -> str:
     kp = "from the pulse file" if inp.get("kprime") is None else _num(inp["kprime"])
     lines.append(f"block      B = {_num(inp['half_width'])} m, H = {_num(H)} m "
                  f"(gamma = {_num(inp['gamma'])}), mu = {_num(inp['mu'])}, k' = {kp}")
+    if der.get("impact_ratio") is None:  # a squat block: Housner's ratio would be <= 0
+        impact = (f"impact ratio not applicable (a squat block: Housner's (I + m(H^2 - B^2))/(I + "
+                  f"m(H^2 + B^2)) = {_num(der['housner_ratio'], 4)} <= 0, its rocking ends at the "
+                  "first impact: the block lands flat)")
+    else:
+        impact = (f"impact ratio {_num(der['impact_ratio'], 4)}"
+                  + (" (Housner)" if inp.get("restitution") is None else " (--restitution)"))
     lines.append(f"           p = {_num(der['p'], 5)} rad/s, alpha = {_num(der['alpha'], 5)} rad "
-                 f"({_num(math.degrees(der['alpha']), 4)} deg), impact ratio "
-                 f"{_num(der['impact_ratio'], 4)}"
-                 + (" (Housner)" if inp.get("restitution") is None else " (--restitution)"))
+                 f"({_num(math.degrees(der['alpha']), 4)} deg), {impact}")
     loads = [f"{name} = {_num(inp[key])}" for key, name in
              (("buoyancy", "buoyancy"), ("uplift", "uplift"), ("uplift_ratio", "uplift ratio"))
              if inp.get(key)]

@@ -24,11 +24,13 @@ import numpy as np
 from ..lifetime import DesignChart, LifetimeModel, LifetimeResult
 from ._numbers import json_number
 from .atomic import atomic_open
+from .checks import checks_json, checks_lines
 from .design import MAX_TRIALS
+from .plausibility import RANGES
 
-__all__ = ["MAX_WIDTHS", "SAMPLE_FORMATS", "chart_json", "check_chunk", "check_scheduler", "check_target",
-           "format_chart", "format_lifetime", "lifetime_json", "parse_widths", "threshold_key",
-           "write_samples"]
+__all__ = ["MAX_WIDTHS", "SAMPLE_FORMATS", "WIDTH_RANGE", "chart_json", "check_chunk", "check_scheduler",
+           "check_target", "check_tolerance", "format_chart", "format_lifetime", "impulsive_text",
+           "lifetime_json", "parse_widths", "threshold_key", "write_chart", "write_samples"]
 
 #: Formats of :func:`write_samples` (from the file's suffix).
 SAMPLE_FORMATS: tuple[str, ...] = ("csv", "npz")
@@ -36,6 +38,9 @@ SAMPLE_FORMATS: tuple[str, ...] = ("csv", "npz")
 MAX_WIDTHS = 200
 #: Quantiles of the lifetime sliding that are reported.
 _QUANTILES = (0.9, 0.99)
+#: The widths a design chart may span [m]: the plausible widths of a caisson (those of
+#: :data:`regimemap.io.plausibility.RANGES`; real caissons are 10-40 m wide).
+WIDTH_RANGE: tuple[float, float] = (RANGES["width"][0], RANGES["width"][1])
 
 
 # -- the options of `regimemap lifetime` ---------------------------------------------------------
@@ -47,11 +52,13 @@ def parse_widths(text: str) -> list[float]:
     Raises
     ------
     ValueError
-        Unless ``0 < A < B`` are finite numbers and ``N`` a whole number in
-        [2, :data:`MAX_WIDTHS`]; the message names what is accepted.
+        Unless ``A < B`` are finite numbers within :data:`WIDTH_RANGE` and
+        ``N`` a whole number in [2, :data:`MAX_WIDTHS`]; the message names what
+        is accepted.
     """
-    accepted = (f"A:B:N, N widths from A to B metres (0 < A < B, N a whole number from 2 to "
-                f"{MAX_WIDTHS}), e.g. 10:25:16")
+    lo, hi = WIDTH_RANGE
+    accepted = (f"A:B:N, N widths from A to B metres ({lo:g} <= A < B <= {hi:g}, the widths of "
+                f"caissons; N a whole number from 2 to {MAX_WIDTHS}), e.g. 10:25:16")
     parts = str(text).split(":")
     if len(parts) != 3:
         raise ValueError(f"widths must be {accepted}; got {text!r}")
@@ -65,6 +72,9 @@ def parse_widths(text: str) -> list[float]:
         raise ValueError(f"widths must be {accepted}; got {text!r} (N is not a whole number)") from None
     if not (math.isfinite(a) and math.isfinite(b) and 0.0 < a < b):
         raise ValueError(f"widths must be {accepted}; got {text!r} (need 0 < A < B)")
+    if a < lo or b > hi:
+        raise ValueError(f"widths must be {accepted}; got {text!r} (outside the {lo:g}-{hi:g} m "
+                         "of caisson widths)")
     if not 2 <= n <= MAX_WIDTHS:
         raise ValueError(f"widths must be {accepted}; got {text!r} (N = {n})")
     return [float(w) for w in np.linspace(a, b, n)]
@@ -79,6 +89,18 @@ def check_target(value: Any) -> float:
         raise ValueError(f"target must be {accepted}, got {value!r} (not a number)") from None
     if isinstance(value, bool) or not (math.isfinite(x) and x > 0.0):
         raise ValueError(f"target must be {accepted}, got {value!r}")
+    return x
+
+
+def check_tolerance(value: Any) -> float:
+    """The tolerance of the width for the target: a finite number in [0.001, 10] metres."""
+    accepted = "a tolerance of the width for the target, 0.001 <= tolerance <= 10 in metres (default 0.05)"
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise ValueError(f"width-tolerance must be {accepted}, got {value!r} (not a number)") from None
+    if isinstance(value, bool) or not (math.isfinite(x) and 0.001 <= x <= 10.0):
+        raise ValueError(f"width-tolerance must be {accepted}, got {value!r}")
     return x
 
 
@@ -149,8 +171,23 @@ def _model_dict(model: LifetimeModel) -> dict[str, Any]:
     }
 
 
-def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | None = None
-                  ) -> dict[str, Any]:
+def impulsive_text(impulsive: bool) -> str:
+    """The choice of the wave force's coefficient, named: ``impulsive = false (alpha* = alpha2 ...)``."""
+    if impulsive:
+        return "impulsive = true (alpha* = max(alpha2, alpha_I), Takahashi's impulsive coefficient)"
+    return ("impulsive = false (alpha* = alpha2: no impulsive coefficient on the sine pulse, "
+            "docs/lifetime.md Sect. 5.1)")
+
+
+def _failure_json(failure: Any) -> dict[str, Any] | None:
+    if failure is None:
+        return None
+    return {"sliding_limit": json_number(failure.sliding_limit),
+            "probability": json_number(failure.probability), "std_error": json_number(failure.std_error)}
+
+
+def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | None = None,
+                  written: str | None = None) -> dict[str, Any]:
     """One JSON-ready object: the expected sliding distance and the statistics of the lifetimes.
 
     Parameters
@@ -160,11 +197,16 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
         The model that gave ``result`` (its climate and options are reported).
     source : str, optional
         The design file.
+    written : str, optional
+        The climate as the design file wrote it (``climate_as_written``).
 
     Returns
     -------
     dict
-        ``expected_sliding`` and ``std_error`` (m), ``std``, ``median``,
+        ``checks`` (the requirements: ``[{name, value, required, relation,
+        unit, pass}]``), ``failure`` (``{sliding_limit, probability,
+        std_error}`` or null), ``impulsive``, ``expected_sliding`` and
+        ``std_error`` (m), ``std``, ``median``,
         ``quantile_90``, ``quantile_99`` (m), ``exceedance`` and
         ``storm_exceedance`` (threshold in metres as text -> probability),
         ``never_slides``, ``mean_storms``, ``trials``, ``seed``, ``years``,
@@ -175,6 +217,7 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
+    out["checks"] = checks_json(result.checks)
     out.update({
         "expected_sliding": json_number(result.expected_sliding),
         "std_error": json_number(result.std_error),
@@ -186,12 +229,15 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
         "storm_exceedance": {threshold_key(x): json_number(result.storm_exceedance(x))
                              for x in result.thresholds},
         "never_slides": json_number(result.never_slides),
+        "failure": _failure_json(result.failure),
         "mean_storms": json_number(float(np.mean(result.storms))),
         "trials": result.trials,
         "seed": result.seed,
         "years": result.years,
         "width": json_number(result.width),
+        "impulsive": model.impulsive,
         "climate": model.climate.describe(),
+        "climate_as_written": written,
         "model": _model_dict(model),
         "units": {"expected_sliding": "m", "std_error": "m", "std": "m", "median": "m",
                   "quantile_90": "m", "quantile_99": "m", "exceedance": "probability, keys in m",
@@ -201,25 +247,37 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
     return out
 
 
-def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None
-               ) -> dict[str, Any]:
+def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None,
+               written: str | None = None) -> dict[str, Any]:
     """One JSON-ready object: the design chart (ESD against width) and the widths it gives.
 
     Returns
     -------
     dict
+        ``checks`` (the design's width against the width for the target),
         ``chart`` (a list of ``{width, expected_sliding, std_error}``, m),
         ``target`` (m), ``width_for_target`` (m, ``null`` when no width of the
-        chart meets the target), ``required_sf``, ``sf_width`` (m), ``trials``,
-        ``seed``; with ``model`` also ``years``, ``climate`` and ``model``.
+        chart meets the target), ``width_tolerance`` (m), ``width_interval``
+        (``{level, lower, upper, resamples}``, m, or ``null``),
+        ``failure_sliding`` (m or ``null``), ``impulsive``, ``required_sf``,
+        ``sf_width`` (m), ``trials``, ``seed``; with ``model`` also ``years``,
+        ``climate`` and ``model``.
     """
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
+    out["checks"] = checks_json(chart.checks)
     out["chart"] = [{k: json_number(v) for k, v in row.items()} for row in chart.rows()]
     out["target"] = json_number(chart.target)
     out["width_for_target"] = (None if chart.width_for_target is None
                                else json_number(chart.width_for_target))
+    out["width_tolerance"] = json_number(chart.tolerance)
+    iv = chart.width_interval
+    out["width_interval"] = None if iv is None else {
+        "level": json_number(iv.level), "lower": json_number(iv.lower), "upper": json_number(iv.upper),
+        "resamples": iv.resamples}
+    out["failure_sliding"] = None if chart.failure_sliding is None else json_number(chart.failure_sliding)
+    out["impulsive"] = chart.impulsive
     out["required_sf"] = json_number(chart.required_sf)
     out["sf_width"] = json_number(chart.sf_width)
     out["trials"] = chart.trials
@@ -227,9 +285,11 @@ def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: s
     if model is not None:
         out["years"] = model.years
         out["climate"] = model.climate.describe()
+        out["climate_as_written"] = written
         out["model"] = _model_dict(model)
     out["units"] = {"width": "m", "expected_sliding": "m", "std_error": "m", "target": "m",
-                    "width_for_target": "m", "sf_width": "m"}
+                    "width_for_target": "m", "width_tolerance": "m", "width_interval": "m",
+                    "failure_sliding": "m", "sf_width": "m"}
     return out
 
 
@@ -265,13 +325,16 @@ def _percent(p: float) -> str:
     return f"{v:.1f} %" if v >= 10.0 else f"{v:.3g} %"
 
 
-def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | None = None) -> str:
+def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | None = None,
+                    written: str | None = None) -> str:
     """The sliding over the design life for people.
 
     The expected sliding distance with its standard error beside it, the
     median and quantiles, the exceedance probabilities of the lifetime sliding
     and of the largest single-storm sliding, the share of lifetimes that never
-    slide, and the climate and options.
+    slide, and the climate (as the file wrote it, then as fitted) and the
+    options, the coefficient of the wave force named; the probability of
+    failure, given a sliding limit; one line per requirement and the verdict.
     """
     n = result.trials
     lines = []
@@ -280,7 +343,10 @@ def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | 
     lives = f"{n} lifetime{'' if n == 1 else 's'}"
     lines.append(f"caisson {_g(result.width, 4)} m wide, design life {result.years} years, "
                  f"{lives}, seed {result.seed}")
+    if written:
+        lines.append(f"  climate (as given): {written}")
     lines.append(f"  climate: {model.climate.describe()}")
+    lines.append(f"  wave force: {impulsive_text(model.impulsive)}")
     opts = [f"storms of {_g(model.storm_hours)} h",
             (f"T1/3 = {_g(model.period_law[0])} H0'^{_g(model.period_law[1])} (fitted on the record)"
              if model.period_law is not None else
@@ -289,7 +355,6 @@ def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | 
              f"H0'/L0 = {_g(model.steepness or 0.0)}")]
     if model.tide_range > 0.0:
         opts.append(f"tide range {_g(model.tide_range)} m")
-    opts.append("impulsive coefficient" if model.impulsive else "alpha* = alpha2")
     if model.truncate is not None:
         opts.append(f"errors cut at ±{_g(model.truncate)} sd")
     lines.append(f"  model: {', '.join(opts)}")
@@ -307,11 +372,23 @@ def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | 
         lines.append(f"  {_g(x):>8}  {_percent(result.exceedance(x)):>13}  "
                      f"{_percent(result.storm_exceedance(x)):>12}")
     lines.append("  (in one storm: the largest single-storm sliding of the life, Kim & Suh 2013)")
+    if result.failure is not None:
+        f = result.failure
+        lines.append(f"probability of failure (sliding off the mound, S > {_g(f.sliding_limit)} m): "
+                     f"{_percent(f.probability)} ± {_percent(f.std_error)} over the life")
+    if result.checks:
+        lines.append("requirements:")
+        lines += [f"  {line}" for line in checks_lines(result.checks)]
     return "\n".join(lines)
 
 
-def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None) -> str:
-    """The design chart for people: ESD with its standard error at each width, and the widths."""
+def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None,
+                 written: str | None = None) -> str:
+    """The design chart for people: ESD with its standard error at each width, and the widths.
+
+    The width for the target with its tolerance and its Monte Carlo interval,
+    the width of Goda's deterministic design, the requirement and the verdict.
+    """
     lines = []
     if source:
         lines.append(f"design chart: {source}")
@@ -320,7 +397,10 @@ def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source:
         head += f" of {model.years} years"
     lines.append(head + f" at every width, the same random numbers; seed {chart.seed})")
     if model is not None:
+        if written:
+            lines.append(f"  climate (as given): {written}")
         lines.append(f"  climate: {model.climate.describe()}")
+    lines.append(f"  wave force: {impulsive_text(chart.impulsive)}")
     lines.append(f"  {'width [m]':>10}  ESD with its standard error")
     for row in chart.rows():
         lines.append(f"  {_g(row['width'], 5):>10}  {_value_pm(row['expected_sliding'], row['std_error'])}")
@@ -328,11 +408,59 @@ def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source:
         lines.append(f"width for ESD <= {_g(chart.target)} m: none of the chart's widths meets it "
                      "(give wider widths)")
     else:
-        lines.append(f"width for ESD <= {_g(chart.target)} m: {_g(chart.width_for_target, 4)} m")
+        lines.append(f"width for ESD <= {_g(chart.target)} m: {_g(chart.width_for_target, 4)} m "
+                     f"(bisected to {_g(chart.tolerance)} m)")
+        iv = chart.width_interval
+        if iv is not None:
+            lines.append(f"  {100 * iv.level:g} % interval {_g(iv.lower, 4)} - {_g(iv.upper, 4)} m "
+                         f"(Monte Carlo: bootstrap of the {chart.trials} lifetimes, {iv.resamples} "
+                         "resamples)")
     sf = _g(chart.sf_width, 4) + " m" if math.isfinite(chart.sf_width) else "none up to 10 km"
     lines.append(f"width for SF_sliding = {_g(chart.required_sf)} under the 50-year wave "
                  f"(Goda's deterministic design): {sf}")
+    if chart.checks:
+        lines.append("requirements:")
+        lines += [f"  {line}" for line in checks_lines(chart.checks)]
     return "\n".join(lines)
+
+
+# -- the chart's table -----------------------------------------------------------------------------
+
+
+def _csv_number(x: float) -> str:
+    return f"{x + 0.0:.12g}" if math.isfinite(x) else ""
+
+
+def write_chart(chart: DesignChart, path: str | os.PathLike[str]) -> None:
+    """Write the chart's table as CSV, atomically: one row per width.
+
+    Columns: ``width_m``, ``expected_sliding_m``, ``std_error_m``, then
+    ``p_exceed_<x>m`` for each threshold (``P(S > x)``), then ``p_failure``
+    (``P(S > failure_sliding)``) when the chart has a sliding limit; numbers to
+    12 significant digits.
+
+    Raises
+    ------
+    OSError
+        If the file cannot be written (nothing is left behind).
+    """
+    head = ["width_m", "expected_sliding_m", "std_error_m"]
+    head += [f"p_exceed_{threshold_key(x)}m" for x in chart.thresholds]
+    fail = chart.failure_probability
+    if fail is not None:
+        head.append("p_failure")
+    rows = []
+    for i, (w, e, se) in enumerate(zip(chart.widths, chart.expected_sliding, chart.std_error)):
+        cells = [_csv_number(float(w)), _csv_number(float(e)), _csv_number(float(se))]
+        if chart.exceedance is not None:
+            cells += [_csv_number(float(p)) for p in chart.exceedance[i]]
+        if fail is not None:
+            cells.append(_csv_number(float(fail[i])))
+        rows.append(",".join(cells))
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write(",".join(head) + "\n")
+        for row in rows:
+            fh.write(row + "\n")
 
 
 # -- every trial ---------------------------------------------------------------------------------

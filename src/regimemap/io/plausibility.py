@@ -8,9 +8,12 @@ breakwaters fall in, and the slip that most likely explains the value. The
 commands print these as warnings on standard error; ``--strict`` makes them
 errors. Valid inputs are never refused without ``--strict``.
 
-The ranges are generous on purpose (a warning that fires on real designs is
-noise): sea water depth at a breakwater up to 100 m (the deepest caisson
-breakwaters, Kamaishi's, stand in 63 m), significant periods 2-30 s, an
+Values beyond what physics allows are errors of the reader instead
+(:mod:`regimemap.io.design_keys`: a significant height over 30 m, a period
+outside 1-30 s, a depth outside 0.5-100 m); the warnings here are for the
+merely unusual.  The ranges are generous on purpose (a warning that fires on
+real designs is noise): sea water depth at a breakwater up to 70 m (the
+deepest caisson breakwater, Kamaishi's, stands in 63 m), significant periods 2-30 s, an
 implied unit weight of the whole section 5-30 kN/m^3 (water is 10, concrete
 24, a sand-filled caisson 19-21), heel pressure up to 5 MPa (Goda 2000,
 Sect. 4.2: about 400-500 kPa is allowed on a rubble mound), a section
@@ -32,7 +35,7 @@ __all__ = ["Implausible", "implausible_values"]
 
 #: Plausible ranges: (low, high) and the unit they are in.
 RANGES: dict[str, tuple[float, float, str]] = {
-    "depth": (0.5, 100.0, "m"),
+    "depth": (0.5, 70.0, "m"),
     "period": (2.0, 30.0, "s"),
     "unit_weight": (5.0, 30.0, "kN/m^3"),
     "heel_pressure": (0.0, 5000.0, "kPa"),
@@ -81,9 +84,9 @@ def implausible_values(design: Design, analysis: CaissonAnalysis | None = None) 
     >>> from regimemap.io.design import example_design_text, parse_design
     >>> implausible_values(parse_design(example_design_text()))
     []
-    >>> text = example_design_text().replace("depth = 10.1", "depth = 1010")
+    >>> text = example_design_text().replace("buoyant_weight = 2312", "buoyant_weight = 2312000")
     >>> print(implausible_values(parse_design(text))[0])  # doctest: +ELLIPSIS
-    [site] depth = 1010: deeper than 100 m, ... centimetres for metres?
+    [caisson] buoyant_weight = 2312000: implies a unit weight of ... N/m for kN/m?
     """
     w, c = design.wave, design.caisson
     heights: tuple[tuple[str, float | None], ...] = (
@@ -99,11 +102,11 @@ def _item(key: str, value: float, text: str) -> Implausible:
 
 
 def _depths(design: Design) -> list[Implausible]:
-    """Depths over 100 m: centimetres for metres."""
+    """Depths over 70 m: deeper than any caisson breakwater built."""
     s, c = design.site, design.caisson
     hi = RANGES["depth"][1]
-    return [_item(key, depth, f"deeper than {hi:g} m, where no caisson breakwater stands; "
-                              f"{depth / 100:.4g} m in centimetres for metres?")
+    return [_item(key, depth, f"deeper than {hi:g} m, deeper than any caisson breakwater built "
+                              "(Kamaishi's stands in 63 m)")
             for key, depth in (("[site] depth", s.depth), ("[site] armour_depth", s.armour_depth),
                                ("[caisson] base_depth", c.base_depth))
             if depth > hi]
@@ -117,7 +120,7 @@ def _period(key: str, period: float | None, slips: bool = True) -> list[Implausi
     text = f"outside the {lo:g}-{hi:g} s of sea waves"
     if slips:
         text += "; " + (f"{period / 10:.3g} s in tenths of a second?" if period > hi else
-                        "a frequency (1/s) or an angular frequency for a period?")
+                        "a laboratory model's wave, or a frequency (1/s) for a period?")
     return [_item(key, period, text)]
 
 

@@ -19,8 +19,8 @@ __all__ = ["DesignPoint", "PointsTable", "parse_point_spec", "read_points_csv", 
 
 #: Largest number of rows accepted from a points file.
 MAX_POINTS = 1_000_000
-#: Largest points file accepted, in bytes (checked before reading a regular
-#: file, and while reading a pipe or a device).
+#: Largest points file accepted, in bytes (checked before opening it, and again while
+#: reading; a path that is not a regular file is refused: :mod:`regimemap.io.inputs`).
 MAX_POINTS_FILE_BYTES = 128 * 1024 * 1024
 
 

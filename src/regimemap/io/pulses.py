@@ -23,8 +23,8 @@ __all__ = ["read_pulse_csv", "MAX_PULSE_SAMPLES", "MAX_PULSE_FILE_BYTES"]
 
 #: Largest number of samples accepted from a pulse file.
 MAX_PULSE_SAMPLES = 1_000_000
-#: Largest pulse file accepted, in bytes (checked before reading a regular file, and while
-#: reading a pipe or a device).
+#: Largest pulse file accepted, in bytes (checked before opening it, and again while
+#: reading; a path that is not a regular file is refused: :mod:`regimemap.io.inputs`).
 MAX_PULSE_FILE_BYTES = 128 * 1024 * 1024
 
 

@@ -177,7 +177,7 @@ def _choice_note(r: PointResult) -> str:
     return ""
 
 
-def _val(v: float) -> str:
+def _val(v: float | None) -> str:
     if v is None or not math.isfinite(v):
         return "n/a"
     if v == 0.0 or abs(v) < 1e-13:

@@ -1,16 +1,17 @@
 """Reading a user's text file with guards: one helper for the points and the pulse files.
 
-A file that is a folder, too large, unreadable or made of endless lines is
-refused with a message naming the file (and the line), never a traceback.
+A path that is not a regular file (a folder, a FIFO, a device), or a file
+too large, unreadable or made of endless lines, is refused with a message
+naming the file (and the line), never a traceback.
 """
 
 from __future__ import annotations
 
-import os
 import re
-import stat
 from collections.abc import Iterator, Sequence
 from typing import Any, TextIO
+
+from .inputs import InputFileError, check_input_file
 
 __all__ = ["MAX_LINE", "NUMBER", "guarded_lines", "open_text_file", "read_header"]
 
@@ -28,25 +29,26 @@ NUMBER = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?|[+-]?(?:inf|infi
 def open_text_file(path: str, what: str, max_bytes: int) -> TextIO:
     """Open ``path`` (a ``what``, e.g. "points file") as UTF-8 text; ValueError if it cannot be read.
 
-    A regular file larger than ``max_bytes`` is refused before reading.
+    Only a regular file of at most ``max_bytes`` bytes is opened
+    (:func:`regimemap.io.inputs.check_input_file`): a folder, a FIFO, a device
+    or a larger file is refused before anything is read.
+
+    Raises
+    ------
+    InputFileError
+        A ValueError naming the path and the reason.
     """
-    try:
-        st = os.stat(path)
-    except OSError as exc:
-        raise ValueError(f"cannot read {what} {path!r}: {exc.strerror}") from None
-    if stat.S_ISDIR(st.st_mode):
-        raise ValueError(f"{what} {path!r} is a folder, not a file")
-    if stat.S_ISREG(st.st_mode) and st.st_size > max_bytes:
-        raise ValueError(f"{what} {path!r} is {st.st_size} bytes, more than the limit of "
-                         f"{max_bytes} bytes")
+    check_input_file(path, max_bytes=max_bytes, what=what)
     try:
         return open(path, newline="", encoding="utf-8-sig")
     except OSError as exc:
-        raise ValueError(f"cannot read {what} {path!r}: {exc.strerror}") from None
+        raise InputFileError(path, what, exc.strerror or str(exc),
+                             f"cannot read {what} {path!r}: {exc.strerror}") from None
 
 
 def guarded_lines(fh: TextIO, path: str, what: str, max_bytes: int) -> Iterator[str]:
-    """The lines of ``fh``, refusing endless lines and (pipes, devices) more than ``max_bytes``."""
+    """The lines of ``fh``, refusing endless lines and more than ``max_bytes`` (a file that grew
+    since :func:`open_text_file` checked its size)."""
     total = 0
     number = 0
     while True:

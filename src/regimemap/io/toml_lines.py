@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-__all__ = ["key_line"]
+__all__ = ["key_line", "key_text"]
 
 _BARE_KEY = r"(?:[A-Za-z0-9_-]+|\"(?:[^\"\\]|\\.)*\"|'[^']*')"
 _DOTTED = re.compile(rf"\s*({_BARE_KEY}(?:\s*\.\s*{_BARE_KEY})*)\s*")
@@ -56,3 +56,29 @@ def key_line(text: str, table: str, key: str | None = None) -> int | None:
         if header is None and path[:len(head)] == head and len(path) > len(head):
             header = n  # a table made of dotted keys (lifetime.years = 50)
     return inline if inline is not None else header
+
+
+_VALUE = re.compile(r"""=\s*((?:"(?:[^"\\]|\\.)*"|'[^']*'|[^#"'])*?)\s*(?:#.*)?$""")
+
+
+def key_text(text: str, table: str, key: str) -> str | None:
+    """The value of ``key`` in ``table`` as the TOML ``text`` writes it (``"10.1"``, ``"2312"``).
+
+    The text after ``=`` on the key's line (:func:`key_line`), without its
+    comment; None when the key is not set on a line of its own (an inline
+    table, a value over several lines).
+
+    Examples
+    --------
+    >>> key_text("[site]\\ndepth = 10.10   # h\\n", "site", "depth")
+    '10.10'
+    """
+    n = key_line(text, table, key)
+    if n is None:
+        return None
+    line = text.splitlines()[n - 1]
+    if not re.match(rf"^\s*{re.escape(key)}\s*=", line):
+        return None
+    m = _VALUE.search(line)
+    value = m.group(1).strip() if m else ""
+    return value or None

@@ -14,7 +14,12 @@ the source of every default.
 * :func:`lifetime_sliding` -> :class:`LifetimeResult` -- the ESD with its
   standard error, quantiles and exceedance probabilities;
 * :func:`design_chart` -> :class:`DesignChart` -- ESD against width, the
-  width for a target ESD, the width of a required safety factor;
+  width for a target ESD (to a tolerance, with its bootstrap interval), the
+  width of a required safety factor;
+* :class:`Requirements`, :func:`judge_lifetime`, :func:`judge_chart` -- the
+  requirements (target ESD, allowed exceedance probabilities, the sliding
+  limit off the mound) as :class:`~regimemap.mechanics.checks.Check` lists and
+  the probability of failure (:class:`Failure`);
 * :func:`half_sine_slide`, :func:`added_mass` -- the sliding of one wave.
 """
 
@@ -24,13 +29,14 @@ from .chart import DesignChart, design_chart, sf_width
 from .climate import DISTRIBUTIONS, Climate
 from .model import DEFAULT_ERRORS, DEFAULT_THRESHOLDS, Caisson, ErrorFactor, Errors, LifetimeModel
 from .parallel import ClusterUnavailable, available_cores
-from .results import LifetimeResult
+from .requirements import Requirements, judge_chart, judge_lifetime
+from .results import Failure, LifetimeResult
 from .simulate import lifetime_sliding
 from .sliding import ADDED_MASS_COEFFICIENT, added_mass, half_sine_slide, wave_duration
 
 __all__ = [
     "ADDED_MASS_COEFFICIENT", "DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "Caisson",
-    "Climate", "ClusterUnavailable", "DesignChart", "ErrorFactor", "Errors", "LifetimeModel",
-    "LifetimeResult", "added_mass", "available_cores", "design_chart", "half_sine_slide",
-    "lifetime_sliding", "sf_width", "wave_duration",
+    "Climate", "ClusterUnavailable", "DesignChart", "ErrorFactor", "Errors", "Failure", "LifetimeModel",
+    "LifetimeResult", "Requirements", "added_mass", "available_cores", "design_chart", "half_sine_slide",
+    "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
 ]

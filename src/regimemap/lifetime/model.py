@@ -213,7 +213,8 @@ class LifetimeModel:
     thresholds: tuple[float, ...] = DEFAULT_THRESHOLDS
 
     def __post_init__(self) -> None:
-        if not (isinstance(self.years, int) and self.years >= 1):
+        years: object = self.years  # a float or a string from an untyped caller is refused
+        if not (isinstance(years, int) and years >= 1):
             raise ValueError(f"years must be a whole number >= 1, got {self.years!r}")
         if not self.storm_hours > 0.0:
             raise ValueError(f"storm_hours must be > 0, got {self.storm_hours!r}")

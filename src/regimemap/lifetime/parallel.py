@@ -8,11 +8,13 @@ Dask (``distributed``) is imported only when a scheduler address is given.
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import math
 import os
+import signal
 import time
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Generator, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 
@@ -31,6 +33,9 @@ DEFAULT_CHUNK = 500
 
 #: Seconds to wait for a Dask scheduler before giving up (``REGIMEMAP_DASK_TIMEOUT`` overrides).
 DASK_CONNECT_TIMEOUT = 10.0
+
+#: Seconds given to closing the connection to a Dask scheduler.
+DASK_CLOSE_TIMEOUT = 3.0
 
 
 class ClusterUnavailable(RuntimeError):
@@ -92,21 +97,99 @@ def available_cores() -> int:
 
 
 def _serial(caissons: tuple[Caisson, ...], model: LifetimeModel,
-            chunks: Sequence[Chunk], guides: int) -> Iterator[BlockResult]:
+            chunks: Sequence[Chunk], guides: int) -> Generator[BlockResult, None, None]:
     for c in chunks:
         yield run_chunk(caissons, model, c, guides)
 
 
+#: Signals the workers of a process pool leave to the parent (:func:`_worker_start`).
+_STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
+
+#: Seconds a terminated worker is given to end before it is killed.
+STOP_GRACE = 2.0
+
+
+def _block_stop_signals() -> object:
+    """Block SIGINT and SIGTERM in this thread; the previous mask, for :func:`_restore_signals`."""
+    if not hasattr(signal, "pthread_sigmask"):  # pragma: no cover - not POSIX
+        return None
+    return signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
+
+
+def _restore_signals(mask: object) -> None:
+    if mask is not None:
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # type: ignore[arg-type]
+
+
+def _worker_start() -> None:
+    """A worker's initializer: Ctrl-C is the parent's, SIGTERM ends the worker at once.
+
+    Ctrl-C sends SIGINT to the whole process group; the workers ignore it and
+    the parent stops them (:func:`_stop_pool`), so none is left running a
+    chunk nobody waits for, and none prints a traceback.  SIGTERM gets its
+    default action (the parent's handler may raise an exception, which a
+    worker would report as a chunk's result and carry on).  The workers are
+    forked with both signals blocked (:func:`_processes`); they are unblocked
+    here, once the handlers are set.
+    """
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if hasattr(signal, "pthread_sigmask"):
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOP_SIGNALS)
+
+
+def _stop_pool(pool: ProcessPoolExecutor) -> None:
+    """Stop ``pool`` now: cancel the queued chunks, terminate the workers, wait for them to end.
+
+    ``shutdown(wait=True)`` would wait for every queued chunk to run; the
+    workers are therefore terminated (SIGTERM, SIGKILL after
+    :data:`STOP_GRACE` seconds).  Interrupts are held off while this runs.
+    """
+    mask = _block_stop_signals()
+    try:
+        # the executor offers no public handle on its processes
+        processes = list((getattr(pool, "_processes", None) or {}).values())
+        pool.shutdown(wait=False, cancel_futures=True)
+        for proc in processes:
+            if proc.is_alive():
+                proc.terminate()
+        deadline = time.monotonic() + STOP_GRACE
+        for proc in processes:
+            proc.join(max(0.0, deadline - time.monotonic()))
+            if proc.is_alive():  # pragma: no cover - a worker stuck in C code past SIGTERM
+                proc.kill()
+                proc.join(STOP_GRACE)
+    finally:
+        _restore_signals(mask)
+
+
+@contextlib.contextmanager
+def _worker_pool(jobs: int) -> Iterator[ProcessPoolExecutor]:
+    """A process pool of ``jobs`` workers; stopped at once (:func:`_stop_pool`) if the block raises,
+    is interrupted, or is left early (a generator closed before its end)."""
+    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_start)
+    try:
+        yield pool
+    except BaseException:
+        _stop_pool(pool)
+        raise
+    pool.shutdown(wait=True)
+
+
 def _processes(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
-               jobs: int, guides: int) -> Iterator[BlockResult]:
-    with ProcessPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(run_chunk, caissons, model, c, guides) for c in chunks]
+               jobs: int, guides: int) -> Generator[BlockResult, None, None]:
+    with _worker_pool(jobs) as pool:
+        mask = _block_stop_signals()  # the workers start (fork) with the first submit
+        try:
+            futures = [pool.submit(run_chunk, caissons, model, c, guides) for c in chunks]
+        finally:
+            _restore_signals(mask)
         for f in futures:  # in order: the result does not depend on which finishes first
             yield f.result()
 
 
 def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
-          scheduler: str, guides: int) -> Iterator[BlockResult]:
+          scheduler: str, guides: int) -> Generator[BlockResult, None, None]:
     try:
         from distributed import Client
     except ImportError:
@@ -118,13 +201,19 @@ def _dask(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[
     except Exception as exc:  # noqa: BLE001 - any failure to connect: a bad address, a refusal, a timeout
         raise ClusterUnavailable(f"cannot reach the Dask scheduler at {scheduler!r}: "
                                  f"{str(exc) or type(exc).__name__}") from None
+    futures = []
     try:
         futures = client.map(run_chunk, [caissons] * len(chunks), [model] * len(chunks), list(chunks),
                              [guides] * len(chunks), pure=False)
         for f in futures:
             yield f.result()
+    except BaseException:  # an interrupt, an error, or the generator closed early: nothing left running
+        with contextlib.suppress(Exception):
+            client.cancel(futures)
+        raise
     finally:
-        client.close()
+        with contextlib.suppress(Exception):
+            client.close(timeout=DASK_CLOSE_TIMEOUT)
 
 
 def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk], *,
@@ -158,7 +247,7 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
         The lifetimes of all chunks, in order.
     """
     if scheduler is not None:
-        results: Iterator[BlockResult] = _dask(caissons, model, chunks, scheduler, guides)
+        results: Generator[BlockResult, None, None] = _dask(caissons, model, chunks, scheduler, guides)
         where = f"on the Dask scheduler at {scheduler}"
     elif jobs > 1 and len(chunks) > 1:
         results = _processes(caissons, model, chunks, min(jobs, len(chunks)), guides)
@@ -171,14 +260,15 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
               "s" if len(caissons) != 1 else "", len(chunks), "s" if len(chunks) != 1 else "", where)
     parts = []
     t0 = last = time.perf_counter()
-    for i, r in enumerate(results, start=1):
-        parts.append(r)
-        now = time.perf_counter()
-        _log.debug("chunk %d/%d: %d lifetimes, %d sliding waves, %.2f s", i, len(chunks),
-                   int(r.storms.size), r.sliding_waves, now - last)
-        last = now
-        if progress is not None:
-            progress(int(r.storms.size))
+    with contextlib.closing(results):  # an exception here (in progress) stops the workers too
+        for i, r in enumerate(results, start=1):
+            parts.append(r)
+            now = time.perf_counter()
+            _log.debug("chunk %d/%d: %d lifetimes, %d sliding waves, %.2f s", i, len(chunks),
+                       int(r.storms.size), r.sliding_waves, now - last)
+            last = now
+            if progress is not None:
+                progress(int(r.storms.size))
     seconds = time.perf_counter() - t0
     _log.info("%d chunks done in %.2f s (%.0f lifetimes/s)", len(chunks), seconds,
               total / seconds if seconds > 0 else float("inf"))

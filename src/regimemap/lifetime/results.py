@@ -14,10 +14,40 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["LifetimeResult"]
+from ..mechanics.checks import Check
+
+__all__ = ["Failure", "LifetimeResult"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
+
+
+@dataclass(frozen=True)
+class Failure:
+    """The probability that the lifetime sliding passes the limit where the caisson is off its mound.
+
+    Attributes
+    ----------
+    sliding_limit : float
+        The sliding at which the caisson fails [m] (the harbour-side crest
+        width of the mound).
+    probability : float
+        ``P(S > sliding_limit)`` over the design life: the share of lifetimes
+        that slide farther.
+    std_error : float
+        Its binomial standard error ``sqrt(p (1 - p) / n)``.
+    """
+
+    sliding_limit: float
+    probability: float
+    std_error: float
+
+    @classmethod
+    def of(cls, sliding: FloatArray, limit: float) -> Failure:
+        """From the lifetime slides ``sliding`` [m] and the limit [m]."""
+        n = int(np.size(sliding))
+        p = float(np.mean(np.asarray(sliding) > limit)) if n else math.nan
+        return cls(float(limit), p, math.sqrt(p * (1.0 - p) / n) if n else math.nan)
 
 
 @dataclass(frozen=True)
@@ -42,6 +72,14 @@ class LifetimeResult:
         Full width of the caisson [m].
     sliding_waves : int
         Waves whose sliding was computed (those above their storm's threshold).
+    checks : tuple of Check
+        The requirements and their verdicts (empty until
+        :func:`regimemap.lifetime.requirements.judge_lifetime`).
+    failure : Failure or None
+        The probability of sliding off the mound, when a limit is given.
+    impulsive : bool
+        Whether the waves' forces took Takahashi's impulsive coefficient (the
+        model's choice, named in every report).
     """
 
     sliding: FloatArray
@@ -52,6 +90,9 @@ class LifetimeResult:
     thresholds: tuple[float, ...]
     width: float
     sliding_waves: int = 0
+    checks: tuple[Check, ...] = ()
+    failure: Failure | None = None
+    impulsive: bool = False
 
     @property
     def trials(self) -> int:

@@ -19,12 +19,12 @@ together as half a sine,
     v(s) = v(pi) - (s - pi)                           (s >= pi),
 
 it stops at the first root ``s2`` of ``v`` after ``s1``, and in units of
-``R/(M omega^2)`` it has slid
+:math:`R/(M \\omega^2)` it has slid
 
     D(s) = (F/R)[cos s1 (s - s1) - (sin s - sin s1)] - (s - s1)^2/2,
 
-``D(s2)`` when it stops within the wave, ``D(pi) + v(pi)^2/2`` otherwise.  The
-derivation is in docs/lifetime.md, Sect. 6.
+``D(s2)`` when it stops within the wave, :math:`D(\\pi) + v(\\pi)^2/2` otherwise.  The
+derivation is in :doc:`/lifetime`, Sect. 6.
 """
 
 from __future__ import annotations
@@ -40,8 +40,9 @@ __all__ = ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_dura
 
 FloatArray = NDArray[np.float64]
 
-#: ``M_a / (rho h'^2)`` for both faces: ``2 (16/pi^3) sum_{n odd} 1/n^3 = (28/pi^3) zeta(3)``
-#: (incompressible potential flow against a rigid vertical wall; docs/lifetime.md, Sect. 6.2).
+#: :math:`M_a / (\rho_w h'^2)` for both faces:
+#: :math:`2 (16/\pi^3) \sum_{n\ \mathrm{odd}} 1/n^3 = (28/\pi^3) \zeta(3)`
+#: (incompressible potential flow against a rigid vertical wall; :doc:`/lifetime`, Sect. 6.2).
 ADDED_MASS_COEFFICIENT = 28.0 / math.pi**3 * 1.2020569031595942853997
 
 
@@ -58,8 +59,8 @@ def added_mass(base_depth: ArrayLike, rho_w: float) -> FloatArray:
     Returns
     -------
     ndarray
-        ``M_a = 1.0855 rho_w h'^2`` (Shimosako & Takahashi 1999): on each face
-        ``(16/pi^3) rho h'^2 sum_{n odd} 1/n^3 = 0.5428 rho h'^2``, the exact
+        :math:`M_a = 1.0855 \\rho_w h'^2` (Shimosako & Takahashi 1999): on each face
+        :math:`(16/\\pi^3) \\rho_w h'^2 \\sum_{n\\ \\mathrm{odd}} 1/n^3 = 0.5428 \\rho_w h'^2`, the exact
         value of Westergaard's (1933) series for an incompressible fluid.
 
     Examples

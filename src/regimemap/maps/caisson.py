@@ -25,6 +25,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ..mechanics.checks import Check
 from ..mechanics.htmltable import html_table, number
 from ..mechanics.modes import Mode
 from ..waves import CaissonAnalysis, analyse_caisson
@@ -33,18 +34,24 @@ from .query import margin_words
 
 __all__ = [
     "PATH_FACTORS",
+    "REQUIRED_SF",
     "CaissonReport",
     "MapView",
     "WavePath",
+    "caisson_checks",
     "caisson_report",
     "loaded_map_of",
     "map_view",
+    "stability_checks",
 ]
 
 #: Wave-height factors of the path (``H1/3`` and ``Hmax`` times s).
 PATH_FACTORS: NDArray[np.float64] = np.round(np.linspace(0.5, 1.5, 101), 12)
 
 _RE = int(Mode.RE)
+
+#: The safety factors a design must reach by default, sliding and overturning (Goda 2000, Sect. 4.2).
+REQUIRED_SF = (1.2, 1.2)
 
 
 def loaded_map_of(a: CaissonAnalysis, index: Any = ()) -> LoadedMap:
@@ -272,6 +279,30 @@ def caisson_report(inputs: Mapping[str, Any], factors: NDArray[np.float64] | Non
     path = _wave_path(inputs, a, fac, m)
     return CaissonReport(inputs=dict(inputs), analysis=a, map=m, k=k, mu=mu, mode=mode,
                          margin_k=mk, margin_mu=mm, path=path)
+
+
+def caisson_checks(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) -> list[Check]:
+    """The requirements of a caisson's design check: its safety factors at least the required ones.
+
+    Goda's (2000, Sect. 4.2) safety factors against sliding, ``mu (W' - U)/P``, and against
+    overturning, ``(W' t - M_U)/M_P``, of the design wave, each at least ``required``
+    (sliding, overturning; 1.2 and 1.2 by default).
+
+    Examples
+    --------
+    >>> from regimemap.io.design import example_design_text, parse_design
+    >>> r = caisson_report(parse_design(example_design_text()).analysis_inputs())
+    >>> [(c.name, round(c.value, 3), c.verdict) for c in caisson_checks(r)]
+    [('sliding safety factor', 1.16, 'FAIL'), ('overturning safety factor', 2.559, 'PASS')]
+    """
+    return stability_checks(r.analysis, required)
+
+
+def stability_checks(a: CaissonAnalysis, required: tuple[float, float] = REQUIRED_SF) -> list[Check]:
+    """:func:`caisson_checks` of an analysis of one caisson (Goda's procedure alone)."""
+    st = a.stability
+    return [Check.at_least("sliding safety factor", float(st.sliding), required[0]),
+            Check.at_least("overturning safety factor", float(st.overturning), required[1])]
 
 
 @dataclass(frozen=True)

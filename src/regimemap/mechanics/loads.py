@@ -3,18 +3,18 @@
 Besides gravity and the push F = m g k (to the left, at height ``kprime*H``
 above the centre of mass C) the block may carry
 
-* buoyancy ``beta m g`` upward through C's vertical;
-* uplift ``U = (u + nu k) m g`` upward at ``e_u B`` from C towards O' (the
-  seaward corner; ``e_u = 1/3`` is Goda's triangle, zero under O);
-* any inertia ``I = m B^2 i^2`` (``gyration = i``; None is the uniform block,
-  ``i^2 = (1 + gamma^2)/3``).
+* buoyancy :math:`\\beta m g` upward through C's vertical;
+* uplift :math:`U = (u + \\nu k) m g` upward at :math:`e_u B` from C towards O' (the
+  seaward corner; :math:`e_u = 1/3` is Goda's triangle, zero under O);
+* any inertia :math:`I = m B^2 i^2` (``gyration = i``; None is the uniform block,
+  :math:`i^2 = (1 + \\gamma^2)/3`).
 
 Per unit m g (moments per unit m g B) the net downward load is
-``W = 1 - beta - U`` and the applied moment about C (counter-clockwise, i.e.
-lifting O') is ``S = gamma k k' + e_u U``.  The derivation of every constant
-below is in ``docs/derivation.md``.  With ``extra = 3 i^2 - (1 + gamma^2)``
-(exactly 0.0 for the uniform block), ``A0 = 4 + gamma^2 + extra`` and
-``d0 = d + extra``::
+:math:`W = 1 - \\beta - U` and the applied moment about C (counter-clockwise, i.e.
+lifting O') is :math:`S = \\gamma k k' + e_u U`.  The derivation of every constant
+below is in ``docs/derivation.md``.  With :math:`\\mathit{extra} = 3 i^2 - (1 + \\gamma^2)`
+(exactly 0.0 for the uniform block), :math:`A_0 = 4 + \\gamma^2 + \\mathit{extra}` and
+:math:`d_0 = d + \\mathit{extra}`::
 
     P  = gamma(1+k') + nu(1+e_u)       Q  = 1 - beta - u(1+e_u)     rest about O: k P <= Q
     P' = gamma(1+k') - nu(1-e_u)       Q' = 1 - beta - u(1-e_u)     rest about O': Q' + k P' >= 0
@@ -63,7 +63,8 @@ def coefficients(gamma: Num, kprime: Num) -> tuple[Num, Num, Num, Num]:
     Returns
     -------
     (a, b, c, d)
-        ``a = 4 + g^2 - 3 g^2 k'``, ``b = 3 g``, ``c = 3 g (1 + k')``, ``d = 1 + 4 g^2``.
+        :math:`a = 4 + \\gamma^2 - 3 \\gamma^2 k'`, :math:`b = 3 \\gamma`,
+        :math:`c = 3 \\gamma (1 + k')`, :math:`d = 1 + 4 \\gamma^2` (g = :math:`\\gamma`).
     """
     g2 = gamma * gamma
     a = 4.0 + g2 - 3.0 * g2 * kprime

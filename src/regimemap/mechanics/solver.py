@@ -37,16 +37,18 @@ boundary are admissible for the hypotheses on both sides.
 
 Loads (issue 10).  Buoyancy, uplift and another inertia change only the
 right-hand side and the inertia of the three dynamic rows (:func:`dynamic_rows`,
-:func:`applied_loads`): ``Y - fy = -W`` with ``W = 1 - beta - U`` and
-``i^2 T - gamma fx - M = S`` with ``S = gamma k k' + e_u U`` (see
+:func:`applied_loads`): :math:`Y - f_y = -W` with :math:`W = 1 - \\beta - U` and
+:math:`i^2 T - \\gamma f_x - M = S` with :math:`S = \\gamma k k' + e_u U` (see
 :mod:`regimemap.mechanics.loads`).  The contact rows (:func:`contact_rows`) do
 not depend on the loads; a tenth hypothesis, lift-off (no contact:
 ``fx = fy = M = 0``), is admissible when both corners accelerate upward.
 
 Choice.  Where several hypotheses are admissible, :func:`least_constraint`
-takes the one minimising Gauss's constraint ``(a - a_free)^T M (a - a_free)``,
-``M = diag(1, 1, i^2)``, which is ``fx^2 + fy^2 + (gamma fx + M)^2/i^2``; ties
-(boundaries) are broken by :data:`~regimemap.mechanics.modes.SELECTION_ORDER`.
+takes the one minimising Gauss's constraint
+:math:`(a - a_\\mathrm{free})^T \\mathsf{M} (a - a_\\mathrm{free})`,
+:math:`\\mathsf{M} = \\mathrm{diag}(1, 1, i^2)`, which is
+:math:`f_x^2 + f_y^2 + (\\gamma f_x + M)^2/i^2`; ties (boundaries) are broken by
+:data:`~regimemap.mechanics.modes.SELECTION_ORDER`.
 On the report's block this is Section 4.7's choice (:func:`choose`), tested.
 
 Corner accelerations from rest (angular velocity zero)::
@@ -147,7 +149,7 @@ class Response:
         False where the linear system is singular (mu = (4+g^2)/(3g) for
         slide-rock about O slipping left, and its mirror); ``ok`` is False there.
     constraint : ndarray
-        Gauss's constraint ``fx^2 + fy^2 + (gamma fx + M)^2/i^2`` (0 for lift-off).
+        Gauss's constraint :math:`f_x^2 + f_y^2 + (\\gamma f_x + M)^2/i^2` (0 for lift-off).
     """
 
     hypothesis: Hypothesis
@@ -432,7 +434,7 @@ def least_constraint(k: ArrayLike, mu: ArrayLike, gamma: ArrayLike, kprime: Arra
     """The mode chosen by Gauss's principle of least constraint at every point.
 
     Among the admissible hypotheses, the one of least constraint
-    ``fx^2 + fy^2 + (gamma fx + M)^2/i^2``; hypotheses within 1e-9 (relative)
+    :math:`f_x^2 + f_y^2 + (\\gamma f_x + M)^2/i^2`; hypotheses within 1e-9 (relative)
     of the least tie and are decided by :data:`~regimemap.mechanics.modes.SELECTION_ORDER`.
 
     Returns

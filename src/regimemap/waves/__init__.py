@@ -17,7 +17,7 @@ map (numpy only, SI units, vectorised over broadcast arrays):
 * :func:`wave_duration` -- how long a wave pushes: the duration of Shimosako
   & Takahashi's half-sine force profile.
 
-See ``docs/waves.md`` for every formula with its source.
+See :doc:`/waves` (``docs/waves.md``) for every formula with its source.
 """
 
 from __future__ import annotations

@@ -6,18 +6,18 @@ The regime map (Shenton-type rigid block, half width ``B``, centre of mass
 A caisson under Goda's wave load maps onto it as follows (this module's own
 derivation; the wave loads are Goda's, Sect. 4.2 of Goda 2000):
 
-* ``m g`` is the DRY weight, ``W' + rho_w g V_submerged`` (``W'`` is Goda's
+* ``m g`` is the DRY weight, :math:`W' + \\rho_w g V_\\mathrm{sub}` (``W'`` is Goda's
   buoyant weight, Sect. 4.3);
 * ``H = H_C`` (height of the centre of mass above the base), ``gamma = H_C/B``;
 * ``k = P / (m g)``; ``k' = (Mp/P - H_C) / H_C`` (``Mp/P`` is the height of
   the resultant of ``P`` above the base);
-* buoyancy ``beta_b m g = rho_w g V_submerged`` upward through ``C``;
+* buoyancy :math:`\\beta_b m g = \\rho_w g V_\\mathrm{sub}` upward through ``C``;
 * uplift ``U = u m g + nu F`` upward at ``x = e_u B`` from ``C`` toward the
   seaward corner ``O'``: here ``u = 0``, ``nu = U/P`` and, from the uplift
   moment about the leeward heel, ``e_u = (Mu/U - B)/B`` (1/3 for Goda's
   triangle);
 * ``F`` pushes toward the leeward corner ``O``; radius of gyration ``i`` with
-  ``I = m B^2 i^2``.
+  :math:`I = m B^2 i^2`.
 """
 
 from __future__ import annotations
@@ -127,7 +127,7 @@ class EquivalentBlock:
     kprime : ndarray
         ``(Mp/P - H_C)/H_C``.
     beta_b : ndarray
-        Buoyancy fraction ``rho_w g V_submerged / (m g)``.
+        Buoyancy fraction :math:`\\rho_w g V_\\mathrm{sub} / (m g)`.
     nu : ndarray
         ``U / P``.
     e_u : ndarray
@@ -136,8 +136,8 @@ class EquivalentBlock:
     u : ndarray
         Uplift independent of ``F`` (0).
     i : ndarray
-        Radius of gyration in units of ``B``: ``I = m B^2 i^2``
-        (``i^2 = (1 + gamma^2)/3`` for a uniform block).
+        Radius of gyration in units of ``B``: :math:`I = m B^2 i^2`
+        (:math:`i^2 = (1 + \\gamma^2)/3` for a uniform block).
     mu : ndarray
         Friction coefficient.
     mass : ndarray
@@ -170,7 +170,7 @@ def equivalent_block(section: CaissonSection, loads: CaissonLoads, friction: npt
     Parameters
     ----------
     section : CaissonSection
-        Mass properties (its ``buoyancy`` is ``rho_w g V_submerged``).
+        Mass properties (its ``buoyancy`` is :math:`\\rho_w g V_\\mathrm{sub}`).
     loads : CaissonLoads
         ``P``, ``Mp``, ``U``, ``Mu`` per metre.
     friction : array_like

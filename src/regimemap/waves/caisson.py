@@ -69,12 +69,12 @@ def caisson_loads(pressures: GodaPressures, base_depth: npt.ArrayLike,
 
     Notes
     -----
-    Goda (2000, Sect. 4.2), with ``hc* = min(eta*, hc)``:
+    Goda (2000, Sect. 4.2), with :math:`h_c^* = \\min(\\eta^*, h_c)`:
 
-    * ``P = (p1 + p3) h'/2 + (p1 + p4) hc*/2``;
-    * ``Mp = (2 p1 + p3) h'^2/6 + (p1 + p4) h' hc*/2 + (p1 + 2 p4) hc*^2/6``;
-    * ``U = pu width / 2`` (triangle, ``pu`` at the seaward toe);
-    * ``Mu = (2/3) U width``.
+    * :math:`P = (p_1 + p_3) h'/2 + (p_1 + p_4) h_c^*/2`;
+    * :math:`M_P = (2 p_1 + p_3) h'^2/6 + (p_1 + p_4) h' h_c^*/2 + (p_1 + 2 p_4) h_c^{*2}/6`;
+    * :math:`U = p_u\\,\\mathrm{width} / 2` (triangle, ``pu`` at the seaward toe);
+    * :math:`M_U = (2/3)\\, U\\,\\mathrm{width}`.
     """
     hp = as_float(base_depth)
     w = as_float(width)
@@ -102,7 +102,7 @@ class CaissonSection:
     mass : ndarray
         Dry mass ``m`` per metre [kg/m].
     buoyancy : ndarray
-        ``rho_w g width h'`` [N/m], the weight of the displaced water.
+        :math:`\\rho_w g\\,\\mathrm{width}\\, h'` [N/m], the weight of the displaced water.
     buoyant_weight : ndarray
         ``W' = m g - buoyancy`` [N/m].
     height_cg : ndarray
@@ -142,9 +142,9 @@ def section_from_weight(buoyant_weight: npt.ArrayLike, width: npt.ArrayLike,
     Returns
     -------
     CaissonSection
-        Dry weight ``m g = W' + rho_w g 2B h'``; the mass is taken as uniform
+        Dry weight :math:`m g = W' + \\rho_w g\\, 2B h'`; the mass is taken as uniform
         over the rectangle ``2B x (h' + hc)``, so ``H_C = (h' + hc)/2`` and
-        ``I = m (4B^2 + (h' + hc)^2)/12`` (``i^2 = (1 + gamma^2)/3``).
+        :math:`I = m (4B^2 + (h' + h_c)^2)/12` (:math:`i^2 = (1 + \\gamma^2)/3`).
     """
     wp, w, hp, hc = np.broadcast_arrays(as_float(buoyant_weight), as_float(width),
                                         as_float(base_depth), as_float(crest))
@@ -174,7 +174,7 @@ def section_from_densities(width: npt.ArrayLike, base_depth: npt.ArrayLike, cres
         Fraction ``phi`` of the section's area that is concrete (walls, slabs,
         cap), ``0 <= phi <= 1``; the rest is fill.
     concrete_density : array_like
-        ``rho_c`` [kg/m^3] (reinforced concrete about 2400).
+        :math:`\\rho_c` [kg/m^3] (reinforced concrete about 2400).
     fill_density : array_like
         Density of the fill BELOW still water [kg/m^3]: saturated sand or
         gravel, pores full of water (about 2000).
@@ -193,14 +193,14 @@ def section_from_densities(width: npt.ArrayLike, base_depth: npt.ArrayLike, cres
     The section is modelled as two horizontal layers, each homogenised over
     the full width ``2B`` (concrete and fill smeared in the ratio
     ``phi : 1 - phi``): the submerged layer ``0 <= z <= h'`` of density
-    ``rho_b = phi rho_c + (1 - phi) rho_fill`` and the emerged layer
+    :math:`\\rho_b = \\phi \\rho_c + (1 - \\phi) \\rho_\\mathrm{fill}` and the emerged layer
     ``h' <= z <= h' + hc`` of density
-    ``rho_a = phi rho_c + (1 - phi) rho_fill_above``. Per metre:
-    ``m = 2B (rho_b h' + rho_a hc)``, buoyancy ``rho_w g 2B h'`` (the
+    :math:`\\rho_a = \\phi \\rho_c + (1 - \\phi) \\rho_\\mathrm{fill,above}`. Per metre:
+    :math:`m = 2B (\\rho_b h' + \\rho_a h_c)`, buoyancy :math:`\\rho_w g\\, 2B h'` (the
     caisson displaces its whole submerged volume; water in the pores of the
-    fill is part of ``rho_b``), ``W' = m g - rho_w g 2B h'`` (Goda 2000,
-    Sect. 4.3), ``H_C = (m_b h'/2 + m_a (h' + hc/2)) / m`` and
-    ``I = sum m_j ((2B)^2 + t_j^2)/12 + m_j (z_j - H_C)^2`` (rectangles and
+    fill is part of :math:`\\rho_b`), :math:`W' = m g - \\rho_w g\\, 2B h'` (Goda 2000,
+    Sect. 4.3), :math:`H_C = (m_b h'/2 + m_a (h' + h_c/2)) / m` and
+    :math:`I = \\sum_j m_j ((2B)^2 + t_j^2)/12 + m_j (z_j - H_C)^2` (rectangles and
     parallel axes). Horizontally symmetric, so ``t = B``.
     """
     w, hp, hc, phi, rc, rf = np.broadcast_arrays(

@@ -24,7 +24,7 @@ _NEWTON_ITERATIONS = 8
 
 
 def deep_water_wavelength(period: npt.ArrayLike, g: float = G) -> FloatArray:
-    """Deep-water wave length ``L0 = g T^2 / (2 pi)``.
+    """Deep-water wave length :math:`L_0 = g T^2 / (2 \\pi)`.
 
     Parameters
     ----------
@@ -50,7 +50,7 @@ def deep_water_wavelength(period: npt.ArrayLike, g: float = G) -> FloatArray:
 def wavenumber(period: npt.ArrayLike, depth: npt.ArrayLike, g: float = G) -> FloatArray:
     """Wave number ``k`` of the linear dispersion relation, to machine precision.
 
-    Solves ``omega^2 = g k tanh(k h)`` with ``omega = 2 pi / T``
+    Solves :math:`\\omega^2 = g k \\tanh(k h)` with :math:`\\omega = 2 \\pi / T`
     (Dean & Dalrymple 1991, Ch. 4), vectorised over broadcast ``period``
     and ``depth``.
 
@@ -70,14 +70,14 @@ def wavenumber(period: npt.ArrayLike, depth: npt.ArrayLike, g: float = G) -> Flo
 
     Notes
     -----
-    With ``x0 = omega^2 h / g`` the unknown ``y = k h`` solves
+    With :math:`x_0 = \\omega^2 h / g` the unknown ``y = k h`` solves
     ``f(y) = y tanh(y) - x0 = 0``. The start is Guo's (2002) explicit
     approximation ``y = x0 (1 - exp(-x^beta))^(-1/beta)``,
-    ``x = omega sqrt(h/g)``, ``beta = 2.4908`` (Guo, J. 2002, "Simple and
+    :math:`x = \\omega \\sqrt{h/g}`, ``beta = 2.4908`` (Guo, J. 2002, "Simple and
     explicit solution of wave dispersion equation", *Coastal Engineering* 45,
     71-74), within 0.76 % of the root (measured over ``h/L0`` from 1e-6
     to 60); Newton's method
-    ``y <- y - f/f'``, ``f' = tanh y + y / cosh^2 y``, then converges
+    ``y <- y - f/f'``, :math:`f' = \\tanh y + y / \\cosh^2 y`, then converges
     quadratically (``f`` is increasing and convex in ``y > 0``), and a fixed
     number of iterations reaches a relative residual of a few ulp.
     """

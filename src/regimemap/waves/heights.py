@@ -51,7 +51,7 @@ def linear_shoaling_coefficient(period: npt.ArrayLike, depth: npt.ArrayLike,
     Returns
     -------
     ndarray
-        ``Ksi = sqrt(Cg0 / Cg)`` with ``n = (1 + 2kh/sinh 2kh) / 2``
+        :math:`K_{si} = \\sqrt{C_{g0} / C_g}` with :math:`n = (1 + 2kh/\\sinh 2kh) / 2`
         (energy-flux conservation, Dean & Dalrymple 1991, Ch. 4).
     """
     t, h = np.broadcast_arrays(as_float(period), as_float(depth))

@@ -19,7 +19,7 @@ Sources
   upright wall).
 
 The pressure diagram: ``p1`` at the still-water level, decreasing linearly to
-zero at ``eta*`` above it (``p4`` at the crest ``hc`` when ``eta* > hc``) and
+zero at ``eta*`` above it (``p4`` at the crest ``hc`` when :math:`\\eta^* > h_c`) and
 to ``p3`` at the base of the upright section (``h'`` below still water);
 the uplift is triangular, ``pu`` at the seaward toe and zero at the leeward
 heel.
@@ -207,7 +207,7 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
         Modification factors ``(lambda1, lambda2, lambda3)`` (Takahashi 2002;
         all 1 for a plain upright wall).
     rho_w : float, optional
-        Sea-water density [kg/m^3]; ``w0 = rho_w g``.
+        Sea-water density [kg/m^3]; :math:`w_0 = \\rho_w g`.
     g : float, optional
         Gravitational acceleration [m/s^2].
     L : array_like, optional
@@ -221,16 +221,17 @@ def goda_pressures(*, Hmax: npt.ArrayLike, period: npt.ArrayLike, depth: npt.Arr
 
     Notes
     -----
-    Goda (1974; 2000, Sect. 4.2), with ``w0 = rho_w g``:
+    Goda (1974; 2000, Sect. 4.2), with :math:`w_0 = \\rho_w g`:
 
-    * ``eta* = 0.75 (1 + cos beta) lambda1 Hmax``;
-    * ``p1 = 0.5 (1 + cos beta) (lambda1 alpha1 + lambda2 alpha* cos^2 beta) w0 Hmax``;
-    * ``p2 = p1 / cosh(2 pi h / L)``, ``p3 = alpha3 p1``;
-    * ``p4 = p1 (1 - hc/eta*)`` for ``eta* > hc``, else 0;
-    * ``pu = 0.5 (1 + cos beta) lambda3 alpha1 alpha3 w0 Hmax``;
-    * ``alpha1 = 0.6 + 0.5 [(4 pi h/L) / sinh(4 pi h/L)]^2``;
-    * ``alpha2 = min((h_b - d)/(3 h_b) (Hmax/d)^2, 2d/Hmax)``;
-    * ``alpha3 = 1 - (h'/h) [1 - 1/cosh(2 pi h/L)]``.
+    * :math:`\\eta^* = 0.75 (1 + \\cos\\beta) \\lambda_1 H_\\mathrm{max}`;
+    * :math:`p_1 = 0.5 (1 + \\cos\\beta) (\\lambda_1 \\alpha_1 + \\lambda_2 \\alpha^* \\cos^2\\beta)
+      w_0 H_\\mathrm{max}`;
+    * :math:`p_2 = p_1 / \\cosh(2 \\pi h / L)`, :math:`p_3 = \\alpha_3 p_1`;
+    * :math:`p_4 = p_1 (1 - h_c/\\eta^*)` for :math:`\\eta^* > h_c`, else 0;
+    * :math:`p_u = 0.5 (1 + \\cos\\beta) \\lambda_3 \\alpha_1 \\alpha_3 w_0 H_\\mathrm{max}`;
+    * :math:`\\alpha_1 = 0.6 + 0.5 [(4 \\pi h/L) / \\sinh(4 \\pi h/L)]^2`;
+    * :math:`\\alpha_2 = \\min((h_b - d)/(3 h_b) (H_\\mathrm{max}/d)^2, 2d/H_\\mathrm{max})`;
+    * :math:`\\alpha_3 = 1 - (h'/h) [1 - 1/\\cosh(2 \\pi h/L)]`.
     """
     H, t, h, hb_, d, hp, hc, bm, ang, rot = np.broadcast_arrays(
         as_float(Hmax), as_float(period), as_float(depth), as_float(hb), as_float(armour_depth),
@@ -271,7 +272,7 @@ class GodaSeaState:
     half : ndarray
         ``0.5 (1 + cos beta)``.
     cos2 : ndarray
-        ``cos^2 beta``.
+        :math:`\\cos^2\\beta`.
     lam1_alpha1 : ndarray
         ``lambda1 alpha1``.
     eta_factor : ndarray
@@ -279,7 +280,7 @@ class GodaSeaState:
     pu_factor : ndarray
         ``pu / Hmax = 0.5 (1 + cos beta) lambda3 alpha1 alpha3 w0``.
     lam2, w0 : float
-        ``lambda2`` and ``rho_w g``.
+        ``lambda2`` and :math:`\\rho_w g`.
     """
 
     L: FloatArray

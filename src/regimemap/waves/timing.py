@@ -9,7 +9,7 @@ with ``tau0 = (0.5 - H/(8h)) T1/3``.  The formula lives here, beside the
 loads it times, so that both users of the profile -- the expected sliding
 distance over a lifetime (:mod:`regimemap.lifetime`) and the rigid-block run
 under the design wave (:mod:`regimemap.dynamics.design_wave`) -- use the same
-one (docs/lifetime.md, Sect. 5.2).
+one (:doc:`/lifetime`, Sect. 5.2).
 
 Reference
 ---------
