@@ -1,5 +1,6 @@
 # regimemap: `make figures` regenerates figures/, `make test` runs the tests (`make test-fast`
-# the quick ones), `make lint` runs ruff and mypy, `make bench` the benchmarks, `make docs`
+# the quick ones, `make test-portable` those marked portable again at each of numpy's CPU
+# dispatch levels), `make lint` runs ruff and mypy, `make bench` the benchmarks, `make docs`
 # builds the documentation site into docs/_build/html.
 # Both create the virtual environment .venv when it is missing.
 PYTHON ?= python3
@@ -8,7 +9,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.docs-installed
 
-.PHONY: all venv figures test test-fast lint bench docs clean distclean
+.PHONY: all venv figures test test-fast test-portable lint bench docs clean distclean
 
 all: figures
 
@@ -48,6 +49,13 @@ test: $(STAMP)
 
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "$(TEST_FAST)"
+
+# `make test-portable`: the tests marked portable (pinned numbers, the same bits within a run) once
+# per numpy dispatch level of this CPU above the baseline, the highest dropped first
+# (NPY_DISABLE_CPU_FEATURES; on an AVX-512 machine "X86_V4 ...", then "X86_V3 X86_V4 ..."), so that
+# an assertion that holds on this CPU only fails here; it says which levels this CPU lacks.
+test-portable: $(STAMP)
+	$(BIN)/python tests/cpu_levels.py -q -p no:cacheprovider
 
 # ruff's rules (pyproject.toml, [tool.ruff.lint]) include the complexity limits -- C901,
 # PLR0912, PLR0913, PLR0915 -- so a function that outgrows them fails here.  sp-repo-review runs

@@ -200,6 +200,7 @@ _PINNED_SLIDE = [-0.0, 0.06376574494529223, -4.04575600558875e-06, 0.02637448428
                  0.048524618300561706, 52.08241994058089]
 
 
+@pytest.mark.portable
 @pytest.mark.slow
 def test_without_events_the_stepper_is_unchanged() -> None:
     B, gamma, mu, kprime, beta, nu, k, T = _BATCH.T

@@ -147,6 +147,7 @@ def _csv(run_cli, goda: Path, path: Path, *args: str) -> bytes:
     return path.read_bytes()
 
 
+@pytest.mark.portable
 @pytest.mark.subprocess
 def test_the_same_seed_gives_the_same_bytes_with_any_jobs_and_chunk(run_cli, goda: Path,
                                                                     tmp_path: Path) -> None:

@@ -31,6 +31,7 @@ def _run(caisson=GODA, model=MODEL, trials=500, seed=11, **kw):
 
 # -- reproducibility -----------------------------------------------------------------------------
 
+@pytest.mark.portable
 @pytest.mark.subprocess
 def test_same_seed_same_bits_for_any_chunk_and_jobs():
     ref = _run(NARROW, trials=450, chunk=100)
@@ -41,6 +42,7 @@ def test_same_seed_same_bits_for_any_chunk_and_jobs():
         assert np.array_equal(r.storms, ref.storms), kw
 
 
+@pytest.mark.portable
 def test_lifetime_i_depends_only_on_seed_and_i():
     a = _run(NARROW, trials=BLOCK + 37)
     b = _run(NARROW, trials=BLOCK)

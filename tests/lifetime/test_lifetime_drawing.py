@@ -4,7 +4,8 @@ Figures build for a normal result, a result where no lifetime slid, design chart
 width / every width meets the target; their SVG is the same bytes from run to run and at any
 PNG resolution; their PDF embeds no Type 3 font; no text meets another or leaves the figure
 (boxes measured by the renderer, with tests/test_legible.py's check), and the labels of the
-lines stay off the curves.  The sheet without a lifetime is the committed one, byte for byte.
+lines stay off the curves.  The sheet without a lifetime has no panel (g); with one, panel (g) is
+placed the same way twice (the same SVG bytes).
 """
 
 from __future__ import annotations

@@ -34,10 +34,11 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     Makris (2001); D.3 is a caisson under a breaking-wave pulse.  Each is an
     outcome map computed on a grid, its boundaries refined by bisection
     (2 to 25 s each on one core; a progress bar on a terminal); the files
-    are dyn-<ID>.<format>, byte-identical from run to run.  With --cache DIR
-    the maps are kept in DIR and only drawn again next time (the same bytes),
-    until the figures' definitions, regimemap.dynamics or the versions of
-    regimemap or numpy change (make figures uses .cache/dynamics-figures).
+    are dyn-<ID>.<format>, byte-identical from run to run on one machine.
+    With --cache DIR the maps are kept in DIR and only drawn again next time
+    (the same bytes), until the figures' definitions, regimemap.dynamics, the
+    versions of regimemap or numpy or numpy's CPU dispatch level change (make
+    figures uses .cache/dynamics-figures).
 
     \b
     Examples:

@@ -100,7 +100,8 @@ def _suffix(path: str) -> str:
               help="Lifetimes to simulate, 1 to 10000000 (default: [lifetime] trials, or 5000).")
 @click.option("--seed", type=_Checked("integer", _file_key("seed")), default=None, metavar="S",
               help="Root seed, a whole number >= 0: the same seed gives the same numbers, bit for "
-                   "bit (default: [lifetime] seed, or a fresh one, reported).")
+                   "bit on one machine, to 1e-12 on another CPU (default: [lifetime] seed, or a "
+                   "fresh one, reported).")
 @click.option("--years", type=_Checked("integer", _file_key("years")), default=None, metavar="Y",
               help="Design life in years, 1 to 1000 (default: [lifetime] years, or 50).")
 @click.option("--width", "widths", type=_Checked("text", _widths), default=None, metavar="A:B:N",
@@ -124,7 +125,8 @@ def _suffix(path: str) -> str:
               help="Lifetimes per unit of work (default 500); the numbers do not depend on it.")
 @click.option("--scheduler", type=_Checked("text", _scheduler), default=None, metavar="ADDRESS",
               help="Run on an existing Dask cluster, e.g. tcp://host:8786 (needs the 'cluster' extra: "
-                   "pip install 'regimemap[cluster]'); the numbers are the same as on this machine.")
+                   "pip install 'regimemap[cluster]'); the numbers are those of this machine, bit for bit "
+                   "when the workers' CPUs have its feature level (else to 1e-12).")
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
 @click.option("--strict", is_flag=True, help=STRICT_HELP)
 @check_option
@@ -146,10 +148,11 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     lifetime sliding, the probabilities that it exceeds each threshold (and that
     one storm alone does), and the share of lifetimes that never slide.  The
     options override the file's [lifetime] values.  The same seed gives the same
-    numbers with any --jobs, --chunk or --scheduler.  Then one line per
-    requirement of [lifetime] (ESD <= target; each allowed exceedance
-    probability), PASS or FAIL, and the probability of sliding off the mound
-    when [lifetime] failure_sliding is given; --check exits 1 when one fails.
+    numbers with any --jobs, --chunk or --scheduler: bit for bit on one machine,
+    to a relative 1e-12 on another CPU.  Then one line per requirement of
+    [lifetime] (ESD <= target; each allowed exceedance probability), PASS or
+    FAIL, and the probability of sliding off the mound when [lifetime]
+    failure_sliding is given; --check exits 1 when one fails.
 
     With --width A:B:N it draws up a design chart instead: the ESD at N widths
     (the weight in proportion to the width), the narrowest width whose ESD is at

@@ -291,8 +291,9 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
 _FIGURES_HELP = """Draw all 25 figures of the report (and the worked figures W.1 ...) into a folder.
 
 Writes fig-<ID>.<format> for every figure (2.1, 3.1 ... 3.11, 4.2 ... 4.7b) and
-every format, on every core of the machine (--jobs to choose).  The output
-is byte-identical from run to run, whatever the number of processes.
+every format, on every core of the machine (--jobs to choose).  On one
+machine the output is byte-identical from run to run, whatever the number of
+processes.
 PNGs are 150 dpi by default (use --dpi 300 for print; SVG and PDF are vector).
 
 \b

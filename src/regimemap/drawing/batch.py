@@ -3,7 +3,7 @@
 :func:`write_figures` shares the figures out among worker processes; each
 figure is drawn and written by one process alone, atomically
 (:func:`regimemap.drawing.save.save_figure`), so the files are byte-identical
-to a one-process run.
+to a one-process run on the same machine.
 """
 
 from __future__ import annotations

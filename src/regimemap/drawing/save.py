@@ -63,7 +63,7 @@ def figure_version(version: str | None = None) -> str:
     Between two tags every commit has its own version (``0.1.1.dev4+g1a2b3c4``,
     and ``.d20261128`` on a tree with uncommitted changes); a figure names only
     the release it belongs to, so that redrawing it from an unchanged computation
-    gives the same bytes on the next commit too.
+    gives the same bytes on the next commit too (on the same machine).
 
     Examples
     --------
@@ -94,7 +94,8 @@ def metadata(fmt: str) -> dict[str, Any]:
 
 def print_figure(fig: Figure, target: str | os.PathLike[str] | IO[bytes], fmt: str,
                  dpi: float | None = None) -> None:
-    """Write ``fig`` in format ``fmt`` to ``target`` (a path or a binary file), byte-stable.
+    """Write ``fig`` in format ``fmt`` to ``target`` (a path or a binary file), byte-stable (the
+    same bytes every run on one machine; docs/guide/development.md, "Reproducibility").
 
     Parameters
     ----------

@@ -347,16 +347,36 @@ def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, 
 _CACHE_FORMAT = "outcome-map 2 (refined boundaries)"
 
 
+def _numpy_dispatch() -> str:
+    """The CPU dispatch targets numpy runs here, e.g. ``"X86_V3 X86_V4 AVX512_ICL"``.
+
+    numpy picks at import, for each loop (exp, log, sin, power ...), the highest of its compiled
+    targets that the CPU has and ``NPY_DISABLE_CPU_FEATURES`` leaves; the targets' loops differ
+    in the last bits, so numbers computed under one set are not those of another, bit for bit.
+    ``""`` on a CPU with none above numpy's baseline, or a numpy that does not tell.
+    """
+    import importlib
+
+    try:
+        umath = importlib.import_module("numpy._core._multiarray_umath")
+    except ImportError:  # numpy 1.x
+        umath = importlib.import_module("numpy.core._multiarray_umath")
+    dispatch: Sequence[str] = getattr(umath, "__cpu_dispatch__", ())
+    found: Mapping[str, bool] = getattr(umath, "__cpu_features__", {})
+    return " ".join(t for t in dispatch if found.get(t))
+
+
 def _cache_key(spec: str) -> str:
-    """A digest of ``spec``, the cache's layout, regimemap's and numpy's versions and the source of
-    regimemap.dynamics: any change to the stepper makes a new key."""
+    """A digest of ``spec``, the cache's layout, regimemap's and numpy's versions, numpy's CPU
+    dispatch targets (:func:`_numpy_dispatch`) and the source of regimemap.dynamics: any change to
+    the stepper, or a map computed on other loops, makes a new key."""
     import hashlib
 
     from .. import __version__
     from ..dynamics import stepper
 
     h = hashlib.sha256()
-    h.update(f"{_CACHE_FORMAT}\n{spec}\n{__version__}\n{np.__version__}\n".encode())
+    h.update(f"{_CACHE_FORMAT}\n{spec}\n{__version__}\n{np.__version__}\n{_numpy_dispatch()}\n".encode())
     for src in sorted(Path(stepper.__file__).parent.glob("*.py")):
         h.update(src.name.encode())
         h.update(src.read_bytes())
@@ -372,8 +392,10 @@ def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
 
     The file ``<name>-<key>.npz`` holds the map's arrays and its refined crossings exactly
     (float64), so a figure drawn from it is byte-identical to one drawn from a fresh
-    computation.  The key (:func:`_cache_key`) covers ``spec`` (the figure's definition), the
-    layout of the file, the versions of regimemap and numpy and the source of
+    computation on the same machine.  The key (:func:`_cache_key`) covers ``spec`` (the
+    figure's definition), the layout of the file, the versions of regimemap and numpy, numpy's
+    CPU dispatch targets (a cache shared between machines, or filled under another
+    ``NPY_DISABLE_CPU_FEATURES``, is computed again) and the source of
     :mod:`regimemap.dynamics`.  ``folder`` None: no cache.
     Returns the map, x, y and whether it came from the cache.
     """

@@ -4,8 +4,11 @@ numpy only.  A run of ``trials`` lifetimes is cut into blocks of
 :data:`BLOCK` lifetimes; block ``j`` draws every random number it needs from
 the stream ``SeedSequence(seed).spawn(...)[j]``, in a fixed order, and a last,
 partial block is simulated whole and cut.  So lifetime ``i`` depends only on
-``seed`` and ``i``: the results are bit-identical whatever the chunks, the
-processes or the machines the blocks run on (:mod:`regimemap.lifetime.parallel`).
+``seed`` and ``i``: on one machine the results are bit-identical whatever the
+chunks or the processes the blocks run on (:mod:`regimemap.lifetime.parallel`).
+Across machines they agree to a relative 1e-12 or better, not bit for bit: numpy's
+exp, log, sin and power differ in the last bits between CPU feature levels
+(docs/guide/development.md, "Reproducibility").
 
 Inside a block the work follows the sliding waves, not all waves: a wave
 slides only above the storm's sliding height ``H_s``, so the number of

@@ -63,7 +63,8 @@ class LifetimeResult:
     storms : ndarray of int
         Number of storms in each lifetime.
     seed : int
-        The root seed: the same seed gives the same arrays, bit for bit.
+        The root seed: the same seed gives the same arrays, bit for bit on one machine (to a
+        relative 1e-12 or better on another CPU).
     years : int
         Design life.
     thresholds : tuple of float
