@@ -6,7 +6,8 @@ plotting timings of bench/bench_plot.py (``regimemap plot`` against a bare matpl
 drawing the same polygons, and ``regimemap figures --set all``) and the outcome-map benchmark of
 bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics) and the lifetime benchmark of
 bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart) and the
-explorer's redraw of bench/bench_explore.py.  Times are
+explorer's redraw of bench/bench_explore.py, and the climate analysis of a 10-year record
+(``climate``).  Times are
 the best of several runs (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
@@ -66,6 +67,57 @@ def engine() -> list[tuple[str, float, str, str]]:
     return rows
 
 
+#: The record of the climate benchmark: the shared data beside the clone (not in the repository).
+CLIMATE_RECORD = Path(__file__).resolve().parents[2] / "shared" / "data" / "ndbc44007_1996-2005_hs_tz.txt"
+
+
+def climate() -> None:
+    """``regimemap climate`` without drawing: read the 10-year hourly NDBC 44007 record (82,805 rows,
+    2.6 MB), take the storms over the 99.5 % quantile, fit the GPD and 200 bootstrap fits, on one
+    core (target <= 2 s, issue 27); skipped when the shared data is not beside the clone."""
+    if not CLIMATE_RECORD.is_file():
+        print(f"climate: skipped ({CLIMATE_RECORD} not found)")
+        return
+    from regimemap.climate import ClimateOptions, analyse
+    from regimemap.io.records import read_record
+
+    result = {}
+
+    def run() -> None:
+        result["r"] = analyse(read_record(CLIMATE_RECORD), ClimateOptions(bootstrap=200, seed=1))
+
+    t = best_of(run, repeat=3)
+    rv = next(v for v in result["r"].return_values if v["period"] == 50.0)
+    print(f"{'climate: read + POT + GPD + 200 bootstrap fits, 44007 (10 y hourly)':64s} {t:14.2f}  "
+          f"{'s':9s} <= 2 s")
+    print(f"  50-year Hs {rv['value']:.2f} m, 90 % band {rv['lower']:.2f} to {rv['upper']:.2f} m "
+          f"({result['r'].fit.n} storms)")
+
+
+def climate_life() -> None:
+    """The example caisson (``regimemap caisson --example``) at 44007: 200 bootstrap climates x 1000
+    lifetimes on two cores (target <= 20 s, issue 27); skipped without the shared data."""
+    if not CLIMATE_RECORD.is_file():
+        print(f"climate band: skipped ({CLIMATE_RECORD} not found)")
+        return
+    from regimemap.climate import ClimateOptions, analyse
+    from regimemap.climate.life import climate_of, replicate_climates
+    from regimemap.io.design import example_design_text, parse_design
+    from regimemap.io.records import read_record
+    from regimemap.lifetime.replicates import climate_band
+
+    d = parse_design(example_design_text(), "example.toml")
+    caisson = d.lifetime_caisson()
+    result = analyse(read_record(CLIMATE_RECORD), ClimateOptions(bootstrap=200, seed=1))
+    model = d.lifetime_model().with_(climate=climate_of(result.fit))
+    t0 = time.perf_counter()
+    band = climate_band(caisson, model, replicate_climates(result), 1000, seed=2026, jobs=2)
+    t = time.perf_counter() - t0
+    print(f"{'climate band: 200 climates x 1000 lifetimes, 2 processes':64s} {t:14.1f}  {'s':9s} <= 20 s")
+    print(f"  ESD with the climate's uncertainty {band.expected_sliding:.3g} m, 90 % band "
+          f"{band.lower:.3g} to {band.upper:.3g} m")
+
+
 def main() -> int:
     print(f"regimemap {regimemap.__version__}, numpy {np.__version__}, Python "
           f"{platform.python_version()}, {os.cpu_count()} cores, {platform.machine()}")
@@ -73,6 +125,9 @@ def main() -> int:
     print(f"{'benchmark':64s} {'result':>14s}  {'unit':9s} target")
     for name, value, unit, target in engine():
         print(f"{name:64s} {value:14,.0f}  {unit:9s} {target}")
+    print()
+    climate()
+    climate_life()
     plot = Path(__file__).with_name("bench_plot.py")
     if plot.exists():
         spec = importlib.util.spec_from_file_location("bench_plot", plot)

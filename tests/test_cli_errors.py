@@ -508,6 +508,9 @@ VALUE_CHOICES = {
              "{inputs}/a-file/x.png", "/proc/x.png", "{inputs}", "$\\frac{", "α β", "$x^2$"],
     "file": ["{out}.csv", "{out}.json", "{out}.npz", "{out}.gif", "{out}.png", "{out}.txt", "",
              "{missing}/x.csv", "/proc/x.json", "{inputs}/good.csv", "{inputs}/bad.csv", "{inputs}"],
+    # regimemap climate
+    "threshold": ["99.5%", "99%", "4.5", "0%", "100%", "101%", "-1", "0", "%", "50", "1e400"] + NUMBERS,
+    "periods": ["10,50,100", "50", "1", "0.5", "10,,50", "10,x", "", "1e6", "-5", "nan"],
 }
 # the inputs 'outcome' sweeps (lists and ranges)
 VALUE_CHOICES.update({f"{name}-list": ["0.5", "0.1,0.2", "0.1:1:3", "1:2", "a,b", "", "nan", "-1", "0:1:1e9"]
@@ -538,6 +541,7 @@ VALID_BY_TYPE = {
     "uplift_arm": ["0.333333", "0"], "gyration": ["0.7", "1.5"], "crest": ["1", "1.2"],
     "buoyancy-list": ["0", "0,0.3"], "uplift-list": ["0"], "uplift_ratio-list": ["0", "0.2,0.5"],
     "uplift_arm-list": ["0.333333"], "gyration-list": ["0.8"], "crest-list": ["1"],
+    "threshold": ["99.5%", "99%", "4.5"], "periods": ["10,50,100", "50"],
 }
 VALID_BY_NAME = {
     "points_files": ["{inputs}/good.csv"], "points_file": ["{inputs}/good.csv"],

@@ -38,18 +38,27 @@ PUBLIC_API = {
         "OutcomeStyle",
         # a caisson's sliding over its design life (regimemap.lifetime)
         "chart_figure", "lifetime_figure",
+        # a wave record's extremes (regimemap.climate)
+        "climate_figure", "diagnostics_figure",
     ],
     "regimemap.io": [
         "atomic_open", "atomic_path", "export_map", "format_result", "parse_point_spec",
         "read_points_csv", "result_row",
         # simulations after initiation: pulse files, time histories, outcome maps
         "read_pulse_csv", "write_history", "write_outcome",
+        # wave records (regimemap climate)
+        "read_record",
     ],
     "regimemap.lifetime": [
         "ADDED_MASS_COEFFICIENT", "Caisson", "Climate", "ClusterUnavailable", "DEFAULT_ERRORS",
         "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "DesignChart", "ErrorFactor", "Errors", "Failure",
         "LifetimeModel", "LifetimeResult", "Requirements", "added_mass", "available_cores", "design_chart",
         "half_sine_slide", "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
+    ],
+    "regimemap.climate": [
+        "AM_DISTRIBUTIONS", "METHODS", "POT_DISTRIBUTIONS", "AnnualMaxima", "Band", "ClimateOptions",
+        "ClimateResult", "Fit", "Quality", "Record", "Storms", "analyse", "annual_maxima", "bootstrap", "fit",
+        "make_record", "parse_threshold", "storms",
     ],
     "regimemap.dynamics": [
         "Block", "CATEGORY_LABELS", "DESIGN_INPUTS", "DESIGN_UNITS", "FREE_STEP", "G", "History",

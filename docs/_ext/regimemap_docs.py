@@ -397,15 +397,34 @@ class RunCommands(SphinxDirective):
     own.  A command may end with a ``# comment`` (shown, not run).  Options:
     ``:hide-output:`` (show the commands only), ``:max-lines: N`` (the first N
     lines of each output, then ``...``), ``:output-language:`` (the highlighting
-    of the outputs, ``text`` by default).
+    of the outputs, ``text`` by default), ``:copy-first: NAME PATH [PATH ...]`` (copy
+    the first of the PATHs that exists -- relative to the repository, such as the
+    shared data beside a clone -- to NAME in the folder before the commands run;
+    when none exists the commands are shown, marked as not run, and not run).
     """
 
     has_content = True
     option_spec = {"hide-output": directives.flag, "max-lines": directives.nonnegative_int,
-                   "output-language": directives.unchanged}
+                   "output-language": directives.unchanged, "copy-first": directives.unchanged}
+
+    def _copy_first(self, folder: Path) -> bool:
+        name, *paths = self.options["copy-first"].split()
+        root = Path(self.env.app.srcdir).parent
+        for path in paths:
+            if (root / path).is_file():
+                shutil.copyfile(root / path, folder / name)
+                return True
+        logger.info("regimemap-run: none of %s exists: the commands are not run", ", ".join(paths))
+        return False
 
     def run(self) -> list[nodes.Node]:
         folder = _run_folder(self.env.app, self.env.docname)
+        if "copy-first" in self.options and not self._copy_first(folder):
+            text = "\n".join(f"$ {c.strip()}" for c in self.content if c.strip())
+            block = nodes.literal_block(text, text)
+            block["language"] = "console"
+            note = nodes.paragraph(text=f"(Not run here: {self.options['copy-first'].split()[1]} is absent.)")
+            return [block, note]
         blocks: list[tuple[str, list[str]]] = []  # (language, lines)
         for command in (line.strip() for line in self.content):
             if not command:

@@ -1,4 +1,4 @@
-"""The normal quantile (AS 241) against scipy, and truncation."""
+"""The normal quantile (scipy.special.ndtri, wrapped) and the exact truncation."""
 
 from __future__ import annotations
 

@@ -46,6 +46,7 @@ def cli() -> None:
       regimemap lifetime goda.toml -o life.png
       regimemap lifetime goda.toml --width 10:25:16 -o chart.svg
       regimemap -v lifetime goda.toml -o life.png
+      regimemap climate buoy.csv -o return-levels.png
     """
 
 
@@ -57,6 +58,7 @@ def _register(group: click.Group) -> None:
     """
     from .atlas import animate_cmd, atlas_cmd
     from .caisson import caisson_cmd
+    from .climate import climate_cmd
     from .dynamics_figures import dynamics_figures_cmd
     from .explore import explore_cmd
     from .export import export_cmd
@@ -71,6 +73,7 @@ def _register(group: click.Group) -> None:
         group.add_command(command)
     group.add_command(caisson_cmd)
     group.add_command(lifetime_cmd)
+    group.add_command(climate_cmd)
     group.add_command(simulate_cmd)
     group.add_command(outcome_cmd)
     group.add_command(dynamics_figures_cmd)

@@ -228,6 +228,10 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     seconds = time.perf_counter() - t0
     if not quiet:
         _note_run(n, model.years, widths, seconds, workers, run["chunk"], scheduler, root, result.seed)
+    from ._climate_band import run_climate_band
+
+    band = (run_climate_band(spec, caisson, model, n, result.seed, run, quiet, design)
+            if isinstance(result, LifetimeResult) else None)
 
     # -- the files, then the report ----------------------------------------------------------
     from ..io import lifetime as io_lifetime
@@ -240,11 +244,19 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
                else io_lifetime.chart_json(result, model, source=design, written=given))
         if outputs:
             obj["files"] = written
+        if band is not None:
+            from ..io.climate import climate_band_json
+
+            obj["climate_band"] = climate_band_json(band)
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
     else:
         click.echo(io_lifetime.format_lifetime(result, model, source=design, written=given)
                    if isinstance(result, LifetimeResult)
                    else io_lifetime.format_chart(result, model, source=design, written=given))
+        if band is not None:
+            from ..io.climate import climate_band_lines
+
+            click.echo("\n".join(climate_band_lines(band)))
         for path in written:
             report_written(path)
     exit_on_failure(result.checks, check)

@@ -26,6 +26,7 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .animation import write_animation
     from .artists import MapArtists
     from .atlas import atlas_figure, write_atlas
+    from .climate import climate_figure, diagnostics_figure
     from .figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
     from .lifetime import lifetime_figure
     from .lifetime_chart import chart_figure
@@ -44,7 +45,9 @@ __all__ = [
     "OutcomeStyle",
     "atlas_figure",
     "chart_figure",
+    "climate_figure",
     "default_title",
+    "diagnostics_figure",
     "draw_ambiguity",
     "draw_design_points",
     "draw_map",
@@ -90,6 +93,8 @@ _WHERE = {
     "motion_figure": "motion",
     "lifetime_figure": "lifetime",
     "chart_figure": "lifetime_chart",
+    "climate_figure": "climate",
+    "diagnostics_figure": "climate",
 }
 
 

@@ -20,6 +20,7 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .export import export_map
     from .points import parse_point_spec, read_points_csv
     from .pulses import read_pulse_csv
+    from .records import read_record
     from .tables import format_result, result_row
 
 __all__ = [
@@ -30,6 +31,7 @@ __all__ = [
     "parse_point_spec",
     "read_points_csv",
     "read_pulse_csv",
+    "read_record",
     "result_row",
     "write_history",
     "write_outcome",
@@ -44,6 +46,7 @@ _WHERE = {
     "read_points_csv": "points",
     "result_row": "tables",
     "read_pulse_csv": "pulses",
+    "read_record": "records",
     "write_history": "dynamics",
     "write_outcome": "dynamics",
 }

@@ -58,6 +58,9 @@ H0_50 = 6.3               # 50-year return value of H0', m (the design wave abov
                           # maxima of H0', m (at least three; Weibull needs shape > 1)
 # storms_per_year = 4     # a Poisson number of storms a year (peaks over a threshold;
                           # not with annual_maxima); default: one storm a year, the annual maximum
+# record = { path = "buoy.txt", threshold = "99.5%" }  # instead of the climate above: a
+                          # measured offshore record and the options of `regimemap climate`
+# climate_replicates = 200  # with record: the ESD under 200 bootstrap climates, and its band
 storm_hours = 2.0         # duration of each storm's peak sea state, hours
 # period = 11.4           # a fixed T1/3 for every storm, s (default: Goda's 3.3 H0'^0.63)
 # steepness = 0.035       # or a fixed deep-water steepness H0'/L0 (not with period)

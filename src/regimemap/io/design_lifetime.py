@@ -24,6 +24,8 @@ from .toml_lines import key_line, key_text
 if TYPE_CHECKING:
     from regimemap.lifetime import LifetimeModel
 
+    from .design_record import RecordSpec
+
 __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_TRIALS", "MAX_YEARS", "LifetimeSpec",
            "check_lifetime_option", "lifetime_model", "read_lifetime"]
 
@@ -83,9 +85,13 @@ class LifetimeSpec:
     allowed: Mapping[float, float] = field(default_factory=dict)
     failure_sliding: float | None = None
     written: Mapping[str, str] = field(default_factory=dict)
+    record: RecordSpec | None = None
+    climate_replicates: int = 0
 
     def climate_as_written(self) -> str:
         """The climate's keys as the file wrote them (``H0_10 = 5.0 m, H0_50 = 6.3 m``)."""
+        if self.record is not None:
+            return f"[lifetime.record] path = {self.record.path}"
         keys = ("annual_maxima",) if self.annual_maxima is not None else ("H0_10", "H0_50")
         return ", ".join(f"{key} = {self.written.get(key, '?')} m" for key in keys)
 
@@ -175,6 +181,11 @@ LIFETIME_KEYS: dict[str, _LKey] = {
                              _positive),
     "errors": _LKey("the table [lifetime.errors] of the uncertainty factors (deepwater, "
                     "transformation, force, friction)", "table"),
+    "record": _LKey("the table [lifetime.record] of a measured wave record (path and the options of "
+                    "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table"),
+    "climate_replicates": _LKey("a number of bootstrap climates of [lifetime.record], 2 to 10000, each "
+                                "run for the ESD's climate band (default: none)", "int",
+                                lambda x: 2 <= x <= 10_000),
 }
 
 _PAIR = "a pair [ratio, cov] with ratio > 0 and cov >= 0, the factor ratio (1 + cov z) "
@@ -358,18 +369,8 @@ class _LifetimeReader:
             raise self.bad(table, key, v, f"expected a table, found {_toml_type(v)}")
         return v
 
-    def read(self, data: Mapping[str, Any]) -> LifetimeSpec:
-        t = "lifetime"
-        self.check_names(t, data)
-        got = {key: self.value(t, data, key) for key in LIFETIME_KEYS}
-        errors: dict[str, tuple[float, float]] = {}
-        if got["errors"] is not None:
-            self.check_names("lifetime.errors", got["errors"])
-            for key in ERROR_FACTORS:
-                pair = self.value("lifetime.errors", got["errors"], key)
-                if pair is not None:
-                    errors[key] = pair
-
+    def check_climate(self, t: str, got: Mapping[str, Any], data: Mapping[str, Any]) -> None:
+        """The climate of return values or annual maxima: complete, consistent."""
         h10, h50, maxima = got["H0_10"], got["H0_50"], got["annual_maxima"]
         if maxima is not None and (h10 is not None or h50 is not None):
             raise self.fail(t, "annual_maxima", "[lifetime] annual_maxima together with "
@@ -397,6 +398,23 @@ class _LifetimeReader:
             if got["distribution"] != "gumbel" and got["shape"] is not None and not got["shape"] > 1.0:
                 raise self.bad(t, "shape", data["shape"], "fitting annual_maxima with a Weibull "
                                "distribution needs k > 1 (the likelihood is unbounded for k <= 1)")
+
+    def read(self, data: Mapping[str, Any]) -> LifetimeSpec:
+        t = "lifetime"
+        self.check_names(t, data)
+        got = {key: self.value(t, data, key) for key in LIFETIME_KEYS}
+        errors: dict[str, tuple[float, float]] = {}
+        if got["errors"] is not None:
+            self.check_names("lifetime.errors", got["errors"])
+            for key in ERROR_FACTORS:
+                pair = self.value("lifetime.errors", got["errors"], key)
+                if pair is not None:
+                    errors[key] = pair
+
+        h10, h50, maxima = got["H0_10"], got["H0_50"], got["annual_maxima"]
+        record = _record_table(self.text, self.source, got, data)
+        if record is None:
+            self.check_climate(t, got, data)
         if got["period"] is not None and got["steepness"] is not None:
             raise self.fail(t, "steepness", f"[lifetime] steepness = {data['steepness']!r} together with "
                             f"[lifetime] period = {data['period']!r}; accepted: one of them, or neither "
@@ -415,12 +433,34 @@ class _LifetimeReader:
             target=0.1 if got["target"] is None else got["target"],
             allowed={} if got["allowed"] is None else got["allowed"],
             failure_sliding=got["failure_sliding"],
+            record=record, climate_replicates=got["climate_replicates"] or 0,
             written={key: _written(data[key]) for key in ("H0_10", "H0_50", "annual_maxima") if key in data})
         try:  # anything the checks above missed, said the library's way
             lifetime_model(spec)
         except ValueError as exc:
             raise self.fail(t, None, f"[lifetime]: {exc}") from None
         return spec
+
+
+def _record_table(text: str, source: str, got: Mapping[str, Any], data: Mapping[str, Any]
+                  ) -> RecordSpec | None:
+    """``[lifetime.record]`` read by :func:`regimemap.io.design_record.read_record_table`; refused
+    beside another climate; ``climate_replicates`` only with it."""
+    from .design_record import read_record_table
+
+    if got["record"] is None:
+        if got["climate_replicates"] is not None:
+            raise DesignFileError(f"{source}: [lifetime] climate_replicates needs a [lifetime.record] "
+                                  "table (the replicates are the bootstrap of the record's fit)")
+        return None
+    others = [k for k in ("H0_10", "H0_50", "annual_maxima", "storms_per_year", "distribution", "shape")
+              if k in data]
+    if others:
+        line = key_line(text, "lifetime", others[0])
+        where = source if line is None else f"{source}, line {line}"
+        raise DesignFileError(f"{where}: [lifetime] {others[0]} together with [lifetime.record]; "
+                              "accepted: the record alone (its fit gives the climate and the storm rate)")
+    return read_record_table(text, source, got["record"])
 
 
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> list[tuple[str, Any]]:
@@ -455,23 +495,32 @@ def lifetime_model(spec: LifetimeSpec, years: int | None = None) -> LifetimeMode
 
     from regimemap.lifetime import DEFAULT_ERRORS, DEFAULT_THRESHOLDS, Climate, ErrorFactor, LifetimeModel
 
-    try:  # an overflow of the fit is named here, not printed by numpy
-        with np.errstate(all="raise"):
-            if spec.annual_maxima is not None:
-                climate = Climate.fit_annual_maxima(spec.annual_maxima, spec.distribution, spec.shape)
-            else:
-                assert spec.H0_10 is not None and spec.H0_50 is not None
-                climate = Climate.from_return_values(spec.H0_10, spec.H0_50, spec.distribution, spec.shape,
-                                                     spec.storms_per_year)
-            climate.return_value(50.0)
-    except (FloatingPointError, OverflowError) as exc:
-        what = "annual_maxima" if spec.annual_maxima is not None else "H0_10 and H0_50"
-        raise ValueError(f"the {spec.distribution} climate of {what} cannot be computed ({exc}): "
-                         "the values are too far apart or too close together") from None
+    law = None
+    if spec.record is not None:
+        from .design_record import record_climate, record_period_law
+
+        climate = record_climate(spec.record)
+        if spec.period is None and spec.steepness is None:
+            law = record_period_law(spec.record)
+    else:
+        try:  # an overflow of the fit is named here, not printed by numpy
+            with np.errstate(all="raise"):
+                if spec.annual_maxima is not None:
+                    climate = Climate.fit_annual_maxima(spec.annual_maxima, spec.distribution, spec.shape)
+                else:
+                    assert spec.H0_10 is not None and spec.H0_50 is not None
+                    climate = Climate.from_return_values(spec.H0_10, spec.H0_50, spec.distribution,
+                                                         spec.shape, spec.storms_per_year)
+                climate.return_value(50.0)
+        except (FloatingPointError, OverflowError) as exc:
+            what = "annual_maxima" if spec.annual_maxima is not None else "H0_10 and H0_50"
+            raise ValueError(f"the {spec.distribution} climate of {what} cannot be computed ({exc}): "
+                             "the values are too far apart or too close together") from None
     errors = replace(DEFAULT_ERRORS, **{name: ErrorFactor(*pair) for name, pair in spec.errors.items()})
     return LifetimeModel(climate, years=spec.years if years is None else years,
                          storm_hours=spec.storm_hours, period=spec.period, steepness=spec.steepness,
                          tide_range=spec.tide_range, impulsive=spec.impulsive, truncate=spec.truncate,
+                         period_law=law,
                          errors=errors,
                          thresholds=DEFAULT_THRESHOLDS if spec.thresholds is None else spec.thresholds)
 

@@ -154,6 +154,7 @@ def _model_dict(model: LifetimeModel) -> dict[str, Any]:
         "years": model.years,
         "storm_hours": json_number(model.storm_hours),
         "period": None if model.period is None else json_number(model.period),
+        "period_law": None if model.period_law is None else [json_number(v) for v in model.period_law],
         "steepness": None if model.steepness is None else json_number(model.steepness),
         "tide_range": json_number(model.tide_range),
         "impulsive": model.impulsive,
@@ -347,7 +348,9 @@ def format_lifetime(result: LifetimeResult, model: LifetimeModel, source: str | 
     lines.append(f"  climate: {model.climate.describe()}")
     lines.append(f"  wave force: {impulsive_text(model.impulsive)}")
     opts = [f"storms of {_g(model.storm_hours)} h",
-            ("T1/3 = 3.3 H0'^0.63" if model.period is None and model.steepness is None else
+            (f"T1/3 = {_g(model.period_law[0])} H0'^{_g(model.period_law[1])} (fitted on the record)"
+             if model.period_law is not None else
+             "T1/3 = 3.3 H0'^0.63" if model.period is None and model.steepness is None else
              f"T1/3 = {_g(model.period)} s" if model.period is not None else
              f"H0'/L0 = {_g(model.steepness or 0.0)}")]
     if model.tide_range > 0.0:

@@ -246,7 +246,8 @@ def sf_width(caisson: Caisson, model: LifetimeModel, required_sf: float = 1.2,
     elif model.steepness is not None:
         T = math.sqrt(2.0 * math.pi * H0 / (caisson.g * model.steepness))
     else:
-        T = PERIOD_COEFFICIENT * H0**PERIOD_EXPONENT
+        a, b = model.period_law or (PERIOD_COEFFICIENT, PERIOD_EXPONENT)
+        T = a * H0**b
 
     def sf(width: float) -> float:
         c = caisson.with_width(width)

@@ -1,7 +1,7 @@
 """The wave climate of a site: the distribution of storm peaks ``H0'``, fitted or given.
 
-numpy only.  A storm's peak equivalent deep-water significant height follows
-a Weibull distribution
+numpy; the fits on scipy.stats and scipy.optimize.  A storm's peak equivalent deep-water
+significant height follows a Weibull distribution
 
     F(H) = 1 - exp(-((H - B)/A)^k),   H >= B,
 
@@ -24,13 +24,18 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+from scipy import optimize, stats
 
-__all__ = ["DISTRIBUTIONS", "Climate"]
+__all__ = ["DISTRIBUTIONS", "FITTED_DISTRIBUTIONS", "Climate"]
 
 FloatArray = NDArray[np.float64]
 
-#: The storm-peak distributions.
+#: The storm-peak distributions of two return values or of annual maxima (the design file's).
 DISTRIBUTIONS: tuple[str, ...] = ("weibull", "gumbel")
+#: The distributions a record's fit gives too (:mod:`regimemap.climate`): the generalised Pareto
+#: of storm peaks over the threshold ``B`` and the generalised extreme value of annual maxima;
+#: for both ``shape`` is ``xi`` (any sign).
+FITTED_DISTRIBUTIONS: tuple[str, ...] = ("gpd", "gev")
 
 
 def _reduced(distribution: str, shape: float, p_exceed: float) -> float:
@@ -47,13 +52,13 @@ class Climate:
     Attributes
     ----------
     distribution : str
-        ``"weibull"`` or ``"gumbel"``.
+        ``"weibull"`` or ``"gumbel"``; ``"gpd"`` or ``"gev"`` from a record's fit.
     scale : float
         ``A`` [m], > 0.
     location : float
         ``B`` [m].
     shape : float
-        Weibull ``k`` (> 0; unused by Gumbel).
+        Weibull ``k`` (> 0; unused by Gumbel); ``xi`` of ``gpd`` and ``gev``.
     storms_per_year : float or None
         ``lambda``: a Poisson number of storms a year with peaks from this
         distribution (peaks over a threshold); None: one storm a year whose
@@ -73,14 +78,17 @@ class Climate:
     storms_per_year: float | None = None
 
     def __post_init__(self) -> None:
-        if self.distribution not in DISTRIBUTIONS:
-            raise ValueError(f"distribution must be one of {', '.join(DISTRIBUTIONS)}, "
-                             f"got {self.distribution!r}")
+        if self.distribution not in DISTRIBUTIONS + FITTED_DISTRIBUTIONS:
+            known = ", ".join(DISTRIBUTIONS + FITTED_DISTRIBUTIONS)
+            raise ValueError(f"distribution must be one of {known}, got {self.distribution!r}")
         if not (self.scale > 0.0 and math.isfinite(self.scale)):
             raise ValueError(f"scale A must be a finite number > 0, got {self.scale!r}")
         if not math.isfinite(self.location):
             raise ValueError(f"location B must be finite, got {self.location!r}")
-        if not self.shape > 0.0:
+        if self.distribution in FITTED_DISTRIBUTIONS:
+            if not math.isfinite(self.shape):
+                raise ValueError(f"shape xi must be finite, got {self.shape!r}")
+        elif not self.shape > 0.0:
             raise ValueError(f"shape k must be > 0, got {self.shape!r}")
         if self.storms_per_year is not None and not self.storms_per_year > 0.0:
             raise ValueError(f"storms_per_year must be > 0, got {self.storms_per_year!r}")
@@ -149,10 +157,10 @@ class Climate:
         Notes
         -----
         Gumbel: ``A`` solves ``A = mean(x) - sum(x e^(-x/A)) / sum(e^(-x/A))`` and
-        ``B = -A ln mean(e^(-x/A))``.  Weibull with ``k`` given: for a location
+        ``B = -A ln mean(e^(-x/A))`` (``scipy.stats.gumbel_r.fit``).  Weibull with ``k`` given: for a location
         ``B`` the scale is ``A^k = mean((x - B)^k)``, and ``B`` maximises the
         profile log-likelihood ``-n ln mean((x - B)^k) + (k - 1) sum ln(x - B)``
-        over ``B < min(x)`` (a grid, then golden-section search).
+        over ``B < min(x)`` (a grid, then ``scipy.optimize.minimize_scalar``).
         """
         x = np.sort(np.asarray(maxima, dtype=np.float64).ravel())
         if x.size < 3 or not np.all(np.isfinite(x)):
@@ -176,6 +184,8 @@ class Climate:
     def cdf(self, H: ArrayLike) -> FloatArray:
         """``F(H)``, the non-exceedance probability of a storm peak."""
         y = (np.asarray(H, dtype=np.float64) - self.location) / self.scale
+        if self.distribution in FITTED_DISTRIBUTIONS:
+            return _fitted_cdf(self.distribution, self.shape, y)
         if self.distribution == "weibull":
             return np.asarray(-np.expm1(-np.maximum(y, 0.0) ** self.shape), dtype=np.float64)
         return np.asarray(np.exp(-np.exp(-y)), dtype=np.float64)
@@ -184,7 +194,9 @@ class Climate:
         """Storm peaks from uniforms: ``F^-1(u)`` [m]."""
         uu = np.asarray(u, dtype=np.float64)
         with np.errstate(divide="ignore"):
-            if self.distribution == "weibull":
+            if self.distribution in FITTED_DISTRIBUTIONS:
+                y = _fitted_reduced(self.distribution, self.shape, 1.0 - uu)
+            elif self.distribution == "weibull":
                 y = (-np.log1p(-uu)) ** (1.0 / self.shape)
             else:
                 y = -np.log(-np.log(uu))
@@ -195,41 +207,52 @@ class Climate:
         p = 1.0 / (self.rate * float(years))
         if not 0.0 < p < 1.0:
             raise ValueError(f"no {years!r}-year return value with {self.rate!r} storms a year")
+        if self.distribution in FITTED_DISTRIBUTIONS:
+            return float(self.location + self.scale * _fitted_reduced(self.distribution, self.shape,
+                                                                      np.array(p)))
         return self.location + self.scale * _reduced(self.distribution, self.shape, p)
 
     def describe(self) -> str:
         """One line: the distribution, its parameters and its 10/50-year values."""
-        k = f", k = {self.shape:g}" if self.distribution == "weibull" else ""
+        k = (f", k = {self.shape:g}" if self.distribution == "weibull" else
+             f", xi = {self.shape:.4g}" if self.distribution in FITTED_DISTRIBUTIONS else "")
         storms = ("one storm a year" if self.storms_per_year is None
                   else f"{self.storms_per_year:g} storms a year (Poisson)")
-        return (f"{self.distribution.capitalize()} A = {self.scale:.4g} m, B = {self.location:.4g} m{k}; "
+        name = self.distribution.upper() if self.distribution in FITTED_DISTRIBUTIONS else \
+            self.distribution.capitalize()
+        return (f"{name} A = {self.scale:.4g} m, B = {self.location:.4g} m{k}; "
                 f"{storms}; H0'_10 = {self.return_value(10):.3f} m, "
                 f"H0'_50 = {self.return_value(50):.3f} m")
 
 
-def _fit_gumbel(x: FloatArray) -> tuple[float, float]:
-    mean = float(x.mean())
-    xs = x - mean
+def _fitted_reduced(distribution: str, xi: float, p_exceed: FloatArray) -> FloatArray:
+    """``y = (H - B)/A`` exceeded with probability ``p_exceed``: generalised Pareto
+    ``((p^-xi) - 1)/xi`` (``-ln p`` at ``xi = 0``), generalised extreme value
+    ``((-ln(1 - p))^-xi - 1)/xi`` (``-ln(-ln(1 - p))`` at ``xi = 0``)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = -np.log(p_exceed) if distribution == "gpd" else -np.log(-np.log1p(-p_exceed))
+        if abs(xi) < 1e-12:
+            return np.asarray(t, dtype=np.float64)
+        return np.asarray(np.expm1(xi * t) / xi, dtype=np.float64)
 
-    def resid(A: float) -> float:
-        w = np.exp(-(xs - xs[0]) / A)  # x is sorted: exponents <= 0, no overflow
-        return float(A - (-(w * xs).sum() / w.sum()))  # A - (mean - weighted mean) in shifted units
 
-    # A - mean(x) + sum(x w)/sum(w) is increasing in A; bracket it and bisect
-    lo, hi = 1e-6 * float(x.std() + 1e-300), 10.0 * float(x.std()) + 1e-12
-    while resid(hi) < 0.0:
-        hi *= 2.0
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if resid(mid) < 0.0:
-            lo = mid
+def _fitted_cdf(distribution: str, xi: float, y: FloatArray) -> FloatArray:
+    """``F`` of the reduced variate ``y`` of :func:`_fitted_reduced` (0 below, 1 above the support)."""
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        if abs(xi) < 1e-12:
+            t = y
         else:
-            hi = mid
-        if hi - lo <= 4e-16 * hi:
-            break
-    A = 0.5 * (lo + hi)
-    B = mean + float(xs[0]) - A * math.log(float(np.mean(np.exp(-(xs - xs[0]) / A))))
-    return A, B
+            z = 1.0 + xi * y
+            t = np.where(z > 0.0, np.log(np.where(z > 0.0, z, 1.0)) / xi, np.inf if xi < 0 else -np.inf)
+        if distribution == "gpd":
+            return np.asarray(np.where(y < 0.0, 0.0, -np.expm1(-np.maximum(t, 0.0))), dtype=np.float64)
+        return np.asarray(np.exp(-np.exp(-t)), dtype=np.float64)
+
+
+def _fit_gumbel(x: FloatArray) -> tuple[float, float]:
+    """Gumbel maximum likelihood (``scipy.stats.gumbel_r.fit``): ``(A, B)``."""
+    B, A = stats.gumbel_r.fit(x)
+    return float(A), float(B)
 
 
 def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
@@ -238,21 +261,18 @@ def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
 
 
 def _fit_weibull(x: FloatArray, k: float) -> tuple[float, float]:
+    """Weibull maximum likelihood with ``k`` given: the profile over ``B`` on a grid, then Brent's
+    bounded search (``scipy.optimize.minimize_scalar``) around its best point: ``(A, B)``."""
     spread = float(x[-1] - x[0])
     x0 = float(x[0])
-    # B = x0 - exp(t): t from a thousandth of the spread to a hundred spreads below the minimum
+    # B = x0 - exp(t): t from a millionth of the spread to a hundred spreads below the minimum
     ts = np.linspace(math.log(1e-6 * spread), math.log(100.0 * spread), 400)
     vals = [_weibull_profile(x, k, x0 - math.exp(t)) for t in ts]
     i = int(np.argmax(vals))
-    lo, hi = ts[max(i - 1, 0)], ts[min(i + 1, ts.size - 1)]
-    golden = (math.sqrt(5.0) - 1.0) / 2.0
-    for _ in range(100):
-        a = hi - golden * (hi - lo)
-        b = lo + golden * (hi - lo)
-        if _weibull_profile(x, k, x0 - math.exp(a)) >= _weibull_profile(x, k, x0 - math.exp(b)):
-            hi = b
-        else:
-            lo = a
-    B = x0 - math.exp(0.5 * (lo + hi))
+    lo, hi = float(ts[max(i - 1, 0)]), float(ts[min(i + 1, ts.size - 1)])
+    best = optimize.minimize_scalar(lambda t: -_weibull_profile(x, k, x0 - math.exp(t)), bounds=(lo, hi),
+                                    method="bounded", options={"xatol": 1e-12})
+    t = float(best.x) if -best.fun >= vals[i] else float(ts[i])
+    B = x0 - math.exp(t)
     A = float(np.mean((x - B) ** k)) ** (1.0 / k)
     return A, B

@@ -178,6 +178,10 @@ class LifetimeModel:
     steepness : float or None
         A fixed ``H0'/L0`` for every storm (``T1/3 = sqrt(2 pi H0'/(g s))``);
         None: Goda's relation.  Not with ``period``.
+    period_law : (float, float) or None
+        ``(a, b)``: ``T1/3 = a H0'^b`` (fitted on a record's storm peaks,
+        :func:`regimemap.climate.life.period_law`); None: Goda's ``(3.3, 0.63)``.
+        Not with ``period`` or ``steepness``.
     tide_range : float
         Range of the tide [m]; each storm's level is ``(range/2) sin 2 pi phi``,
         ``phi`` uniform (0: no tide).
@@ -202,6 +206,7 @@ class LifetimeModel:
     period: float | None = None
     steepness: float | None = None
     tide_range: float = 0.0
+    period_law: tuple[float, float] | None = None
     impulsive: bool = False
     truncate: float | None = None
     errors: Errors = field(default_factory=Errors)
@@ -217,6 +222,11 @@ class LifetimeModel:
             raise ValueError("give period or steepness, not both")
         if self.period is not None and not self.period > 0.0:
             raise ValueError(f"period must be > 0, got {self.period!r}")
+        if self.period_law is not None and (self.period is not None or self.steepness is not None
+                                            or not self.period_law[0] > 0.0
+                                            or not math.isfinite(self.period_law[1])):
+            raise ValueError(f"period_law (a, b) needs a > 0 and a finite b, without period or steepness, "
+                             f"got {self.period_law!r}")
         if self.steepness is not None and not 0.0 < self.steepness <= 0.142:
             raise ValueError(f"steepness must be in (0, 0.142], got {self.steepness!r}")
         if not self.tide_range >= 0.0:

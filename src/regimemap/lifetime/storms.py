@@ -83,7 +83,8 @@ def sea_states(caissons: tuple[Caisson, ...], model: LifetimeModel, H0: FloatArr
     elif model.steepness is not None:
         T = np.sqrt(2.0 * np.pi * h0 / (c.g * model.steepness))
     else:
-        T = PERIOD_COEFFICIENT * h0**PERIOD_EXPONENT
+        a, b = model.period_law or (PERIOD_COEFFICIENT, PERIOD_EXPONENT)
+        T = a * h0**b
     h = c.depth + tide
     hp = c.base_depth + tide
     d = c.armour_depth + tide

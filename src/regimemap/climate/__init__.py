@@ -1,0 +1,24 @@
+"""Wave records to extreme sea states: readers' records, storms, annual maxima, extreme-value fits
+with bootstrap bands (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`).
+
+* :class:`Record`, :func:`make_record` -- a record and its quality control (the files are read by
+  :func:`regimemap.io.records.read_record`);
+* :func:`storms`, :func:`annual_maxima` -- peaks over a threshold (runs declustering) and the
+  maxima of well-observed years;
+* :func:`fit`, :func:`bootstrap` -- GPD, Weibull, Gumbel and GEV by maximum likelihood, and the
+  non-parametric bootstrap of their return values;
+* :func:`analyse` -- all of it, with :class:`ClimateOptions`, to a :class:`ClimateResult`.
+"""
+
+from __future__ import annotations
+
+from .analysis import METHODS, ClimateOptions, ClimateResult, analyse
+from .fit import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit
+from .record import Quality, Record, make_record
+from .storms import AnnualMaxima, Storms, annual_maxima, parse_threshold, storms
+
+__all__ = [
+    "AM_DISTRIBUTIONS", "METHODS", "POT_DISTRIBUTIONS", "AnnualMaxima", "Band", "ClimateOptions",
+    "ClimateResult", "Fit", "Quality", "Record", "Storms", "analyse", "annual_maxima", "bootstrap", "fit",
+    "make_record", "parse_threshold", "storms",
+]

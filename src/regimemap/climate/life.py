@@ -1,0 +1,76 @@
+"""A record's fit as the lifetime's climate, and the bootstrap's fits as replicate climates.
+
+numpy; builds :class:`regimemap.lifetime.Climate` objects (this package may import
+:mod:`regimemap.lifetime`, never the reverse).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..lifetime.climate import Climate
+from .analysis import ClimateResult
+from .fit import Fit
+from .storms import Storms
+
+__all__ = ["MIN_PERIODS", "climate_of", "period_law", "replicate_climates"]
+
+#: Fewest storm peaks with a period for :func:`period_law`.
+MIN_PERIODS = 5
+
+
+def climate_of(fit: Fit) -> Climate:
+    """The lifetime's :class:`~regimemap.lifetime.Climate` of a fit.
+
+    Storm peaks (``gpd``, ``weibull``) are a Poisson number of storms a year, ``lambda`` =
+    the fit's rate, with their location at the threshold; annual maxima (``gumbel``, ``gev``)
+    one storm a year whose peak is the annual maximum.
+
+    Examples
+    --------
+    >>> from regimemap.climate.fit import Fit
+    >>> c = climate_of(Fit("gpd", {"sigma": 1.3, "xi": -0.3}, threshold=4.0, rate=6.0, n=60))
+    >>> round(c.return_value(50), 6) == round(Fit("gpd", {"sigma": 1.3, "xi": -0.3}, 4.0, 6.0, 60)
+    ...                                         .return_value(50), 6)
+    True
+    """
+    p = fit.parameters
+    if fit.distribution == "gpd":
+        assert fit.threshold is not None
+        return Climate("gpd", scale=p["sigma"], location=fit.threshold, shape=p["xi"],
+                       storms_per_year=fit.rate)
+    if fit.distribution == "weibull":
+        assert fit.threshold is not None
+        return Climate("weibull", scale=p["A"], location=fit.threshold, shape=p["k"],
+                       storms_per_year=fit.rate)
+    if fit.distribution == "gumbel":
+        return Climate("gumbel", scale=p["A"], location=p["B"])
+    return Climate("gev", scale=p["sigma"], location=p["mu"], shape=p["xi"])
+
+
+def replicate_climates(result: ClimateResult) -> list[Climate]:
+    """The climates of the bootstrap's fits, in replicate order (each with its own storm rate)."""
+    if result.band is None:
+        return []
+    return [climate_of(f) for f in result.band.fits]
+
+
+def period_law(storms: Storms) -> tuple[float, float] | None:
+    """``(a, b)`` of ``T = a H^b`` fitted to the storm peaks and the periods at them (least squares of
+    ``ln T`` on ``ln H``); None without periods or with fewer than :data:`MIN_PERIODS` of them.
+
+    Examples
+    --------
+    >>> t = np.datetime64("2000-01-01", "s") + np.arange(6) * np.timedelta64(99 * 3600, "s")
+    >>> h = np.array([4.0, 5.0, 6.0, 7.0, 4.5, 5.5])
+    >>> s = Storms(3.0, 48.0, h, t, 3.3 * h**0.63, np.ones(6), 1.0)
+    >>> tuple(round(v, 9) for v in period_law(s))
+    (3.3, 0.63)
+    """
+    if storms.period is None:
+        return None
+    ok = np.isfinite(storms.period) & (storms.peak > 0.0)
+    if np.count_nonzero(ok) < MIN_PERIODS:
+        return None
+    b, ln_a = np.polyfit(np.log(storms.peak[ok]), np.log(storms.period[ok]), 1)
+    return float(np.exp(ln_a)), float(b)

@@ -1,0 +1,278 @@
+"""A wave record -- times, significant wave heights, periods -- and its quality control.
+
+numpy only.  The readers of :mod:`regimemap.io.records` parse a file into
+arrays and call :func:`make_record`, which sorts the times, drops repeated
+times, finds the sampling step, the gaps, the isolated spikes and the
+coverage of each calendar year, and reports all of it in a :class:`Quality`:
+nothing is changed silently.  A spike is flagged and listed, and dropped only
+when asked (``drop_spikes``).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["HS_MAX", "PERIOD_MAX", "SPIKE_JUMP", "SPIKE_RATIO", "Quality", "Record", "find_spikes",
+           "make_record"]
+
+FloatArray = NDArray[np.float64]
+TimeArray = NDArray[np.datetime64]
+
+#: Largest physically possible significant wave height [m] (the largest measured are about 19 m;
+#: a value above this is an error in the file, not a storm).
+HS_MAX = 30.0
+#: Largest plausible wave period [s].
+PERIOD_MAX = 40.0
+#: An isolated spike: a value ``SPIKE_RATIO`` times the larger of its two neighbours ...
+SPIKE_RATIO = 1.8
+#: ... and at least ``SPIKE_JUMP`` metres above it.
+SPIKE_JUMP = 1.5
+
+_HOUR = np.timedelta64(3600, "s")
+
+
+@dataclass(frozen=True)
+class Quality:
+    """What the quality control found in a record.
+
+    Attributes
+    ----------
+    missing : int
+        Samples without a height (missing codes such as NDBC's ``99.00``, empty fields, NaN).
+    duplicates : int
+        Samples dropped because their time repeats an earlier one (the first is kept).
+    unsorted : int
+        Samples whose time is earlier than the one before them in the file (the record is sorted).
+    gaps : list of (str, str, float)
+        Gaps longer than 1.5 sampling steps: start, end (ISO) and length in hours, longest first.
+    spikes : list of (str, float)
+        Isolated spikes (a value at least :data:`SPIKE_RATIO` times and :data:`SPIKE_JUMP` metres
+        above both neighbours): time and height.
+    spikes_dropped : bool
+        Whether the spikes were removed from the record (else they are kept and flagged).
+    coverage : dict of int to float
+        Share of each calendar year's hours that are observed (0 to 1).
+    """
+
+    missing: int
+    duplicates: int
+    unsorted: int
+    gaps: list[tuple[str, str, float]] = field(default_factory=list)
+    spikes: list[tuple[str, float]] = field(default_factory=list)
+    spikes_dropped: bool = False
+    coverage: dict[int, float] = field(default_factory=dict)
+
+    def warnings(self, min_coverage: float | None = None) -> list[str]:
+        """The findings a careful user must see (``--strict`` makes them errors); the calendar
+        years below ``min_coverage`` too when it is given (annual maxima)."""
+        out = []
+        if self.duplicates:
+            out.append(f"{self.duplicates} repeated time(s) dropped (the first value of each kept)")
+        if self.unsorted:
+            out.append(f"{self.unsorted} sample(s) out of time order (the record was sorted)")
+        if self.spikes:
+            what = "dropped" if self.spikes_dropped else "kept and flagged"
+            first = ", ".join(f"{t} {h:.2f} m" for t, h in self.spikes[:3])
+            more = f" and {len(self.spikes) - 3} more" if len(self.spikes) > 3 else ""
+            out.append(f"{len(self.spikes)} isolated spike(s) {what}: {first}{more}")
+        short = [] if min_coverage is None else [y for y, c in self.coverage.items() if c < min_coverage]
+        if short:
+            out.append(f"{len(short)} calendar year(s) below {100 * (min_coverage or 0.0):g} % coverage "
+                       "left out of the annual maxima: "
+                       + ", ".join(f"{y} ({100 * self.coverage[y]:.0f} %)" for y in short))
+        return out
+
+
+@dataclass(frozen=True)
+class Record:
+    """A record of sea states (sorted, times unique).
+
+    Attributes
+    ----------
+    source : str
+        The file it came from.
+    time : ndarray of datetime64[s]
+        Times (UTC).
+    hs : ndarray
+        Significant wave height [m] (NaN: missing).
+    period : ndarray or None
+        A wave period [s] (NaN: missing), or None when the record has none.
+    period_name : str or None
+        The period's column as the file names it (``Tz``, ``DPD`` ...).
+    step_hours : float
+        The sampling step [h]: the most common spacing of the times.
+    quality : Quality
+        What the quality control found.
+    """
+
+    source: str
+    time: TimeArray
+    hs: FloatArray
+    period: FloatArray | None
+    period_name: str | None
+    step_hours: float
+    quality: Quality
+
+    @property
+    def observed(self) -> int:
+        """Samples with a height."""
+        return int(np.count_nonzero(np.isfinite(self.hs)))
+
+    @property
+    def years(self) -> float:
+        """Record length in years: observed samples x sampling step / 365.25 days."""
+        return self.observed * self.step_hours / (24.0 * 365.25)
+
+    @property
+    def start(self) -> str:
+        """The first time (ISO, UTC)."""
+        return _iso(self.time[0])
+
+    @property
+    def end(self) -> str:
+        """The last time (ISO, UTC)."""
+        return _iso(self.time[-1])
+
+    @property
+    def coverage(self) -> float:
+        """Observed samples over the samples the span from start to end would hold."""
+        span = (self.time[-1] - self.time[0]) / _HOUR / self.step_hours + 1.0
+        return float(self.observed / span)
+
+    def hours(self) -> FloatArray:
+        """Times as hours since the first sample."""
+        return np.asarray((self.time - self.time[0]) / _HOUR, dtype=np.float64)
+
+
+def _iso(t: np.datetime64) -> str:
+    return str(np.datetime_as_string(t, unit="m")) + "Z"
+
+
+def _step_hours(time: TimeArray) -> float:
+    d = np.diff(time) / np.timedelta64(1, "s")
+    d = d[d > 0]
+    if d.size == 0:
+        raise ValueError("the record has fewer than two distinct times")
+    values, counts = np.unique(d, return_counts=True)
+    return float(values[int(np.argmax(counts))]) / 3600.0
+
+
+def _gaps(time: TimeArray, observed: NDArray[np.bool_], step: float) -> list[tuple[str, str, float]]:
+    t = time[observed]
+    if t.size < 2:
+        return []
+    d = np.diff(t) / _HOUR
+    where = np.flatnonzero(d > 1.5 * step)
+    order = where[np.argsort(-d[where], kind="stable")]
+    return [(_iso(t[i]), _iso(t[i + 1]), float(d[i])) for i in order]
+
+
+def find_spikes(hs: FloatArray, hours: FloatArray, step: float) -> NDArray[np.bool_]:
+    """Isolated spikes: a height at least :data:`SPIKE_RATIO` times and :data:`SPIKE_JUMP` metres
+    above both its neighbours, the neighbours observed and at most 1.5 steps away.
+
+    Parameters
+    ----------
+    hs : ndarray
+        Heights [m] (NaN: missing), in time order.
+    hours : ndarray
+        Their times [h].
+    step : float
+        The sampling step [h].
+
+    Returns
+    -------
+    ndarray of bool
+        True at the spikes.
+
+    Examples
+    --------
+    >>> hs = np.array([1.0, 1.1, 4.0, 1.2, 1.3])
+    >>> find_spikes(hs, np.arange(5.0), 1.0).tolist()
+    [False, False, True, False, False]
+    """
+    out = np.zeros(hs.shape, dtype=bool)
+    if hs.size < 3:
+        return out
+    mid, before, after = hs[1:-1], hs[:-2], hs[2:]
+    close = (np.diff(hours)[:-1] <= 1.5 * step) & (np.diff(hours)[1:] <= 1.5 * step)
+    with np.errstate(invalid="ignore"):
+        top = np.fmax(before, after)
+        spike = (close & np.isfinite(before) & np.isfinite(after) & (mid >= SPIKE_RATIO * top)
+                 & (mid - top >= SPIKE_JUMP))
+    out[1:-1] = spike
+    return out
+
+
+def _coverage(time: TimeArray, observed: NDArray[np.bool_], step: float) -> dict[int, float]:
+    years = time.astype("datetime64[Y]").astype(np.int64) + 1970
+    out: dict[int, float] = {}
+    for y in range(int(years[0]), int(years[-1]) + 1):
+        start = np.datetime64(f"{y:04d}-01-01T00:00:00", "s")
+        end = np.datetime64(f"{y + 1:04d}-01-01T00:00:00", "s")
+        hours_in_year = float((end - start) / _HOUR)
+        n = int(np.count_nonzero(observed[years == y]))
+        out[y] = min(n * step / hours_in_year, 1.0)
+    return out
+
+
+def make_record(source: str, time: TimeArray, hs: FloatArray, period: FloatArray | None = None,
+                period_name: str | None = None, drop_spikes: bool = False) -> Record:
+    """A :class:`Record` from parsed arrays, with its quality control.
+
+    Parameters
+    ----------
+    source : str
+        The file (for the messages).
+    time : ndarray of datetime64
+        Times as read (any order; repeats allowed and reported).
+    hs : ndarray
+        Heights [m], NaN where missing; no negative value (the readers refuse them).
+    period : ndarray, optional
+        Periods [s], NaN where missing.
+    period_name : str, optional
+        The period's column name.
+    drop_spikes : bool, optional
+        Remove the isolated spikes (:func:`find_spikes`) instead of only flagging them.
+
+    Returns
+    -------
+    Record
+
+    Raises
+    ------
+    ValueError
+        No sample with a height, or fewer than two distinct times.
+    """
+    t = np.asarray(time, dtype="datetime64[s]")
+    h = np.asarray(hs, dtype=np.float64)
+    p = None if period is None else np.asarray(period, dtype=np.float64)
+    unsorted = int(np.count_nonzero(np.diff(t) < np.timedelta64(0, "s")))
+    order = np.argsort(t, kind="stable")
+    t, h = t[order], h[order]
+    p = None if p is None else p[order]
+    keep = np.ones(t.size, dtype=bool)
+    keep[1:] = t[1:] != t[:-1]
+    duplicates = int(t.size - np.count_nonzero(keep))
+    t, h = t[keep], h[keep]
+    p = None if p is None else p[keep]
+    missing = int(np.count_nonzero(~np.isfinite(h)))
+    if missing == h.size:
+        raise ValueError(f"{source}: every significant wave height is missing")
+    step = _step_hours(t)
+    hours = np.asarray((t - t[0]) / _HOUR, dtype=np.float64)
+    spikes = find_spikes(h, hours, step)
+    spike_list = [(_iso(t[i]), float(h[i])) for i in np.flatnonzero(spikes)]
+    if drop_spikes and spike_list:
+        h = np.where(spikes, np.nan, h)
+    observed = np.isfinite(h)
+    quality = Quality(missing=missing, duplicates=duplicates, unsorted=unsorted,
+                      gaps=_gaps(t, observed, step), spikes=spike_list, spikes_dropped=drop_spikes,
+                      coverage=_coverage(t, observed, step))
+    if p is not None and not np.any(np.isfinite(p)):
+        p, period_name = None, None
+    return Record(source=source, time=t, hs=h, period=p, period_name=period_name, step_hours=step,
+                  quality=quality)

@@ -1,0 +1,125 @@
+"""The extreme-value analysis of a record as JSON and as text (``regimemap climate``)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from ..climate.analysis import ClimateResult
+from ._numbers import json_number
+
+if TYPE_CHECKING:
+    from ..lifetime.replicates import ClimateBand
+
+__all__ = ["climate_band_json", "climate_band_lines", "climate_json", "format_climate", "parameter_text"]
+
+_NAMES = {"gpd": "generalised Pareto", "weibull": "Weibull (shape fixed)", "gumbel": "Gumbel",
+          "gev": "generalised extreme value"}
+
+
+def _num(v: float | None) -> float | None:
+    return None if v is None else json_number(v)
+
+
+def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, Any]:
+    """The analysis as one JSON object.
+
+    Keys: ``record`` {``source``, ``start``, ``end``, ``years``, ``step_hours``, ``coverage``,
+    ``coverage_by_year``, ``missing``, ``duplicates``, ``unsorted``, ``gaps``, ``flagged`` (the
+    spikes: ``[{time, hs}]``), ``spikes_dropped``, ``period``}, ``method``, ``threshold`` (m;
+    null for annual maxima), ``gap_hours``, ``storms`` (count; for annual maxima the years used),
+    ``rate_per_year``, ``distribution``, ``parameters``, ``return_values`` [{``period``,
+    ``value``, ``lower``, ``upper``}], ``confidence``, ``bootstrap`` (replicates drawn),
+    ``bootstrap_fitted`` (those with enough values to fit), ``seed``, ``warnings``.
+    """
+    r, o, q = result.record, result.options, result.record.quality
+    pot = result.storms is not None
+    return {
+        "record": {
+            "source": source if source is not None else r.source,
+            "start": r.start, "end": r.end, "years": json_number(r.years),
+            "step_hours": json_number(r.step_hours), "coverage": json_number(r.coverage),
+            "coverage_by_year": {str(y): json_number(c) for y, c in q.coverage.items()},
+            "missing": q.missing, "duplicates": q.duplicates, "unsorted": q.unsorted,
+            "gaps": len(q.gaps),
+            "flagged": [{"time": t, "hs": json_number(h)} for t, h in q.spikes],
+            "spikes_dropped": q.spikes_dropped, "period": r.period_name,
+        },
+        "method": o.method,
+        "threshold": _num(result.fit.threshold),
+        "gap_hours": json_number(o.gap_hours) if pot else None,
+        "storms": result.fit.n,
+        "rate_per_year": json_number(result.fit.rate),
+        "distribution": result.fit.distribution,
+        "parameters": {k: json_number(v) for k, v in result.fit.parameters.items()},
+        "return_values": [{k: _num(v) for k, v in rv.items()} for rv in result.return_values],
+        "confidence": json_number(o.confidence),
+        "bootstrap": 0 if result.band is None else result.band.requested,
+        "bootstrap_fitted": 0 if result.band is None else len(result.band.fits),
+        "seed": o.seed,
+        "warnings": result.warnings(),
+    }
+
+
+def parameter_text(result: ClimateResult) -> str:
+    """``sigma = 1.28 m, xi = -0.317`` (the shapes without a unit)."""
+    return ", ".join(f"{k} = {v:.4g}" + ("" if k in ("xi", "k") else " m")
+                     for k, v in result.fit.parameters.items())
+
+
+def format_climate(result: ClimateResult, source: str | None = None) -> str:
+    """The analysis for people: the record and its quality, the extremes, the fit, the return values
+    with their bands, and the warnings."""
+    r, o, q, f = result.record, result.options, result.record.quality, result.fit
+    lines = [f"wave climate: {source if source is not None else r.source}"]
+    period = f", period {r.period_name}" if r.period_name else ", no period"
+    lines.append(f"  record {r.start} to {r.end}: {r.years:.2f} years observed, step {r.step_hours:g} h, "
+                 f"coverage {100 * r.coverage:.1f} %{period}")
+    lines.append(f"  quality: {q.missing} missing, {q.duplicates} repeated, {q.unsorted} out of order, "
+                 f"{len(q.gaps)} gaps, {len(q.spikes)} spikes flagged"
+                 + (" (dropped)" if q.spikes_dropped and q.spikes else ""))
+    if result.storms is not None:
+        s = result.storms
+        threshold = (f"{100 * o.threshold[1]:g} % quantile" if o.threshold[0] == "quantile" else "given")
+        lines.append(f"  peaks over threshold: u = {s.threshold:.3f} m ({threshold}), gap {o.gap_hours:g} h: "
+                     f"{s.count} storms, {s.rate:.3g} a year; largest {s.peak.max():.2f} m")
+    else:
+        assert result.maxima is not None
+        m = result.maxima
+        skipped = f"; skipped {', '.join(str(y) for y in m.skipped)}" if m.skipped else ""
+        lines.append(f"  annual maxima: {m.years.size} years with >= {100 * m.coverage:g} % coverage"
+                     f"{skipped}; largest {m.maxima.max():.2f} m")
+    lines.append(f"  fit: {_NAMES[f.distribution]}, maximum likelihood: {parameter_text(result)}")
+    if result.band is not None:
+        b = result.band
+        fitted = f", {len(b.fits)} fitted" if b.failed else ""
+        lines.append(f"  band: {100 * o.confidence:g} % percentile interval of {b.requested} non-parametric "
+                     f"bootstrap replicates{fitted} (seed {b.seed})")
+    lines.append("")
+    lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % band" if result.band else ""))
+    for rv in result.return_values:
+        value = rv["value"]
+        assert value is not None
+        band = ("" if rv["lower"] is None or rv["upper"] is None
+                else f"{rv['lower']:.2f} to {rv['upper']:.2f} m")
+        lines.append(f"  {rv['period']:>5g} years  {value:6.2f} m  {band}")
+    warnings = result.warnings()
+    if warnings:
+        lines.append("")
+        lines.extend(f"warning: {w}" for w in warnings)
+    return "\n".join(lines)
+
+
+def climate_band_json(band: ClimateBand) -> dict[str, Any]:
+    """``{level, lower, upper, replicates, expected_sliding, std_error, trials, seed}``: the ESD
+    over the replicate climates (the climate's uncertainty included) and its band [m]."""
+    return {"level": json_number(band.level), "lower": json_number(band.lower),
+            "upper": json_number(band.upper), "replicates": band.replicates,
+            "expected_sliding": json_number(band.expected_sliding), "std_error": json_number(band.std_error),
+            "trials": band.trials, "seed": band.seed}
+
+
+def climate_band_lines(band: ClimateBand) -> list[str]:
+    """The band for people: two lines."""
+    return [f"ESD with the climate's uncertainty {band.expected_sliding:.3g} m ± {band.std_error:.2g} m "
+            f"({band.replicates} bootstrap climates x {band.trials} lifetimes)",
+            f"  {100 * band.level:g} % climate band: {band.lower:.3g} m to {band.upper:.3g} m"]

@@ -1,0 +1,168 @@
+"""The record readers on real files (excerpts of the shared data), on the NDBC sample and on broken
+copies: every unreadable or impossible value names the file, the line and the column."""
+
+from __future__ import annotations
+
+import gzip
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from regimemap.climate.record import SPIKE_JUMP, SPIKE_RATIO, find_spikes, make_record
+from regimemap.io.records import RecordError, read_record
+
+DATA = Path(__file__).parent / "data"
+NDBC44007 = DATA / "ndbc44007_1996_hs_tz.txt.gz"
+OREGON = DATA / "oregon_hindcast_1990_hs.csv.gz"
+STDMET = DATA / "ndbc_stdmet_sample.txt"
+
+
+def _lines(path: Path) -> list[str]:
+    raw = path.read_bytes()
+    return (gzip.decompress(raw) if raw[:2] == b"\x1f\x8b" else raw).decode().splitlines()
+
+
+def _write(tmp_path: Path, name: str, lines: list[str]) -> Path:
+    p = tmp_path / name
+    p.write_text("\n".join(lines) + "\n")
+    return p
+
+
+def test_semicolon_record_as_in_the_file():
+    lines = _lines(NDBC44007)
+    r = read_record(NDBC44007)
+    rows = [line.split(";") for line in lines[1:]]
+    assert r.time.size == len(rows)
+    assert r.start == "1996-01-01T00:00Z"
+    assert r.step_hours == 1.0
+    np.testing.assert_array_equal(r.hs, [float(x[1]) for x in rows])
+    np.testing.assert_array_equal(r.period, [float(x[2]) for x in rows])
+    assert r.period_name == "Tz"
+    # years = observed samples x step / 365.25 days
+    assert r.years == pytest.approx(len(rows) / (24 * 365.25))
+
+
+def test_csv_with_zone_and_three_hour_step():
+    r = read_record(OREGON)
+    lines = _lines(OREGON)[1:]
+    assert r.time.size == len(lines)
+    assert r.step_hours == 3.0
+    assert r.period is None
+    assert str(r.time[1]) == "1990-01-01T03:00:00"
+    assert r.hs[0] == pytest.approx(float(lines[0].split(",")[1]))
+
+
+def test_csv_zone_converted_to_utc(tmp_path):
+    p = _write(tmp_path, "r.csv", ["time,Hm0,Tp", "2000-01-01T02:00+02:00,1.0,8", "2000-01-01T01:00+00:00,1.5,9",
+                                   "2000-01-01T02:00Z,1.2,8"])
+    r = read_record(p)
+    assert [str(t) for t in r.time] == ["2000-01-01T00:00:00", "2000-01-01T01:00:00", "2000-01-01T02:00:00"]
+    assert r.quality.unsorted == 0  # in order once the zones are applied
+    assert r.period_name == "Tp"
+
+
+def test_csv_named_columns_and_missing(tmp_path):
+    p = _write(tmp_path, "r.csv", ["when,height,per", "2000-01-01 00:00,1.0,", "2000-01-01 01:00,,7",
+                                   "2000-01-01 02:00,-999,7", "2000-01-01 03:00,2.0,8"])
+    with pytest.raises(RecordError, match="no time column"):
+        read_record(p)
+    r = read_record(p, time="when", hs="height", period="per")
+    assert r.quality.missing == 2
+    assert np.isnan(r.period[0])
+
+
+def test_ndbc_stdmet_sample():
+    r = read_record(STDMET)
+    body = [line.split() for line in _lines(STDMET)[2:]]
+    assert r.time.size == len(body)
+    assert str(r.time[0]) == "2003-01-01T00:50:00"
+    expect = [np.nan if x[8] == "99.00" else float(x[8]) for x in body]
+    np.testing.assert_array_equal(r.hs, expect)
+    assert r.quality.missing == 2
+    assert r.period_name == "DPD"
+    assert read_record(STDMET, period="APD").period_name == "APD"
+
+
+def test_netcdf_cf_time(tmp_path):
+    xr = pytest.importorskip("xarray")
+    t = np.datetime64("2001-01-01T00", "s") + np.arange(48) * np.timedelta64(3600, "s")
+    hs = np.linspace(1.0, 3.0, 48)
+    ds = xr.Dataset({"VHM0": ("time", hs), "VTPK": ("time", hs * 3)}, coords={"time": t})
+    ds["time"].encoding["units"] = "hours since 2001-01-01"
+    path = tmp_path / "r.nc"
+    ds.to_netcdf(path, engine="scipy")
+    r = read_record(path)
+    np.testing.assert_allclose(r.hs, hs)
+    assert r.time[5] == t[5]
+    assert r.period is None
+    assert read_record(path, period="VTPK").period is not None
+
+
+@pytest.mark.parametrize(("line", "match"), [
+    ("1996-01-01-05; abc; 4.7", r"line 7, column 'Hs': cannot read 'abc' as a number"),
+    ("1996-13-01-05; 1.0; 4.7", r"line 7, column 'time': cannot read '1996-13-01T05'"),
+    ("1996-01-01-05; -0.5; 4.7", r"line 7, column 'Hs': significant wave height -0.5 m is impossible"),
+    ("1996-01-01-05; 45; 4.7", r"line 7, column 'Hs': significant wave height 45 m is impossible"),
+    ("1996-01-01-05; 1.0; 0", r"line 7, column 'Tz': period 0 s is impossible"),
+])
+def test_broken_copies_name_line_and_column(tmp_path, line, match):
+    lines = _lines(NDBC44007)[:200]
+    lines[6] = line
+    p = _write(tmp_path, "broken.txt", lines)
+    with pytest.raises(RecordError, match=match):
+        read_record(p)
+
+
+def test_broken_ndbc_and_csv(tmp_path):
+    lines = _lines(STDMET)
+    lines[5] = lines[5].replace("2003 01 01", "2003 01 xx")
+    with pytest.raises(RecordError, match=r"line 6, columns YY MM DD hh mm"):
+        read_record(_write(tmp_path, "n.txt", lines))
+    with pytest.raises(RecordError, match=r"no significant wave height column"):
+        read_record(_write(tmp_path, "c.csv", ["time,wind", "2000-01-01,3"]))
+    with pytest.raises(RecordError, match=r"line 3: 1 fields, the header has 2"):
+        read_record(_write(tmp_path, "c.csv", ["time,hs", "2000-01-01,3", "2000-01-02"]))
+    with pytest.raises(RecordError, match=r"every significant wave height is missing"):
+        read_record(_write(tmp_path, "c.csv", ["time,hs", "2000-01-01,99.0", "2000-01-02,"]))
+    with pytest.raises(RecordError, match=r"broken gzip"):
+        (tmp_path / "b.gz").write_bytes(NDBC44007.read_bytes()[:500])
+        read_record(tmp_path / "b.gz")
+    with pytest.raises(RecordError, match=r"cannot read"):
+        read_record(tmp_path / "absent.csv")
+
+
+def test_duplicates_and_sorting(tmp_path):
+    p = _write(tmp_path, "r.csv", ["time,hs", "2000-01-01 02:00,1.2", "2000-01-01 00:00,1.0",
+                                   "2000-01-01 01:00,1.1", "2000-01-01 01:00,9.9"])
+    r = read_record(p)
+    assert r.quality.duplicates == 1 and r.quality.unsorted == 1
+    np.testing.assert_array_equal(r.hs, [1.0, 1.1, 1.2])
+    assert any("repeated" in w for w in r.quality.warnings())
+
+
+def test_spikes_flagged_then_dropped_on_request():
+    rng = np.random.default_rng(4)
+    t = np.datetime64("2000-01-01T00", "s") + np.arange(500) * np.timedelta64(3600, "s")
+    hs = 1.0 + 0.3 * np.sin(np.arange(500) / 20.0) + 0.01 * rng.random(500)
+    hs[[100, 333]] = [6.0, 5.0]
+    r = make_record("x", t, hs)
+    assert [s[0] for s in r.quality.spikes] == ["2000-01-05T04:00Z", "2000-01-14T21:00Z"]
+    assert np.isfinite(r.hs[100])
+    dropped = make_record("x", t, hs, drop_spikes=True)
+    assert np.isnan(dropped.hs[100]) and dropped.quality.spikes_dropped
+    # brute force of the definition
+    brute = [i for i in range(1, 499) if hs[i] >= SPIKE_RATIO * max(hs[i - 1], hs[i + 1])
+             and hs[i] - max(hs[i - 1], hs[i + 1]) >= SPIKE_JUMP]
+    assert np.flatnonzero(find_spikes(hs, np.arange(500.0), 1.0)).tolist() == brute
+
+
+def test_coverage_per_calendar_year():
+    t = np.datetime64("2000-01-01T00", "s") + np.arange(0, 2 * 8784, 2) * np.timedelta64(3600, "s")
+    hs = np.ones(t.size)
+    hs[: t.size // 4] = np.nan
+    r = make_record("x", t, hs)
+    assert r.step_hours == 2.0
+    assert r.quality.coverage[2000] == pytest.approx((8784 // 2 - t.size // 4) * 2 / 8784)
+    assert r.quality.gaps == []  # missing values are not gaps in time ... but observed gaps are
+    assert make_record("x", t, np.where(np.arange(t.size) == 10, np.nan, 1.0)).quality.gaps[0][2] == 4.0
