@@ -203,3 +203,25 @@ def test_ctrl_c_ends_the_figures_pool(tmp_path: Path) -> None:
         time.sleep(0.05)  # the two workers are up
     _interrupt(proc, signal.SIGINT, b"", out, 130, "regimemap: interrupted", delay=1.0, finished=True)
     assert len(os.listdir(out)) < 60, "every figure was drawn after Ctrl-C"
+
+
+def test_ctrl_c_during_a_climate_band(tmp_path: Path) -> None:
+    """The replicate climates of ``[lifetime.record]`` run on the same stoppable pool."""
+    import shutil
+
+    record = Path(__file__).resolve().parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
+    d = tmp_path / "design"
+    d.mkdir()
+    shutil.copy(record, d / "buoy.txt.gz")
+    text = example_design_text()
+    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
+    climate = ("H0_10", "H0_50", "annual_maxima", "distribution", "shape", "storms_per_year")
+    kept = [ln for ln in text[i:j].splitlines() if ln.split("=")[0].strip() not in climate]
+    life = ("\n".join(kept) + "\nclimate_replicates = 400\n\n[lifetime.record]\npath = \"buoy.txt.gz\"\n"
+            "threshold = \"98%\"\n\n")
+    (d / "site.toml").write_text(text[:i] + life + text[j:], encoding="utf-8")
+    out = tmp_path / "out"
+    out.mkdir()
+    proc = _start(["lifetime", str(d / "site.toml"), "--trials", "20000", "--jobs", "2", "-o", "band.png"], out)
+    started = _wait_for(proc, "lifetimes of", "in this process")  # a replicate, whole in a worker
+    _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted")

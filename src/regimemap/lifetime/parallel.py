@@ -14,9 +14,10 @@ import math
 import os
 import signal
 import time
-from collections.abc import Callable, Generator, Iterator, Sequence
-from concurrent.futures import ProcessPoolExecutor
+from collections.abc import Callable, Generator, Iterable, Iterator, Sequence
+from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -24,7 +25,9 @@ from .engine import BLOCK, BlockResult, simulate_blocks
 from .model import Caisson, LifetimeModel
 
 __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
-           "root_seed"]
+           "root_seed", "submit_all", "worker_pool"]
+
+_T = TypeVar("_T")
 
 _log = logging.getLogger(__name__)
 
@@ -164,9 +167,13 @@ def _stop_pool(pool: ProcessPoolExecutor) -> None:
 
 
 @contextlib.contextmanager
-def _worker_pool(jobs: int) -> Iterator[ProcessPoolExecutor]:
+def worker_pool(jobs: int) -> Iterator[ProcessPoolExecutor]:
     """A process pool of ``jobs`` workers; stopped at once (:func:`_stop_pool`) if the block raises,
-    is interrupted, or is left early (a generator closed before its end)."""
+    is interrupted, or is left early (a generator closed before its end).
+
+    Submit to it with :func:`submit_all`, which starts the workers with Ctrl-C and
+    SIGTERM held off, as :func:`_worker_start` expects.
+    """
     pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_start)
     try:
         yield pool
@@ -176,14 +183,21 @@ def _worker_pool(jobs: int) -> Iterator[ProcessPoolExecutor]:
     pool.shutdown(wait=True)
 
 
+def submit_all(pool: ProcessPoolExecutor, fn: Callable[..., _T],
+               arguments: Iterable[tuple[Any, ...]]) -> list[Future[_T]]:
+    """``pool.submit(fn, *args)`` for each ``args``, with Ctrl-C and SIGTERM held off meanwhile
+    (the workers start, by fork, with the first submit: they inherit the blocked signals)."""
+    mask = _block_stop_signals()
+    try:
+        return [pool.submit(fn, *args) for args in arguments]
+    finally:
+        _restore_signals(mask)
+
+
 def _processes(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],
                jobs: int, guides: int) -> Generator[BlockResult, None, None]:
-    with _worker_pool(jobs) as pool:
-        mask = _block_stop_signals()  # the workers start (fork) with the first submit
-        try:
-            futures = [pool.submit(run_chunk, caissons, model, c, guides) for c in chunks]
-        finally:
-            _restore_signals(mask)
+    with worker_pool(jobs) as pool:
+        futures = submit_all(pool, run_chunk, ((caissons, model, c, guides) for c in chunks))
         for f in futures:  # in order: the result does not depend on which finishes first
             yield f.result()
 

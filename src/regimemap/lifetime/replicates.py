@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Sequence
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import as_completed
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -22,7 +22,7 @@ from numpy.typing import NDArray
 
 from .climate import Climate
 from .model import Caisson, LifetimeModel
-from .parallel import DEFAULT_CHUNK
+from .parallel import DEFAULT_CHUNK, submit_all, worker_pool
 from .simulate import lifetime_sliding
 
 __all__ = ["ClimateBand", "climate_band"]
@@ -114,11 +114,12 @@ def climate_band(caisson: Caisson, model: LifetimeModel, climates: Sequence[Clim
     if jobs > 1 and run.get("scheduler") is None and len(climates) > 1:
         # one pool for all the replicates, each run whole in a worker (as with jobs = 1: its numbers
         # depend only on its seed)
-        with ProcessPoolExecutor(max_workers=min(jobs, len(climates))) as pool:
-            futures = {pool.submit(_one, caisson, model.with_(climate=c), trials, s, chunk): i
-                       for i, (c, s) in enumerate(zip(climates, seeds))}
+        with worker_pool(min(jobs, len(climates))) as pool:
+            futures = submit_all(pool, _one, ((caisson, model.with_(climate=c), trials, s, chunk)
+                                              for c, s in zip(climates, seeds)))
+            index = {f: i for i, f in enumerate(futures)}
             for future in as_completed(futures):
-                esd[futures[future]] = future.result()
+                esd[index[future]] = future.result()
                 if progress is not None:
                     progress(trials)
     else:
