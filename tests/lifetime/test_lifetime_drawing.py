@@ -128,6 +128,7 @@ def test_chart_figure(chart: DesignChart) -> None:
     text = _all_text(fig)
     assert chart.width_for_target is not None
     assert f"b = {chart.width_for_target:.3g} m" in text
+    assert "no width of" not in text  # the note is for charts without a width for the target
     assert f"b = {chart.sf_width:.3g} m" in text
     assert "SF = 1.2 under the 50-year wave" in text
     assert "0.1 m: target" in text and "0.3 m" in text

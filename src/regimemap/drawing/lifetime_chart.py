@@ -251,15 +251,15 @@ def _draw_widths(ax: Axes, chart: DesignChart, lo_w: float, hi_w: float) -> tupl
         if iv is not None:
             ax.plot([iv.lower, iv.upper], [chart.target, chart.target], color=TARGET, lw=2.2,
                     marker="|", markersize=7, solid_capstyle="butt", zorder=3.5)
+    else:
+        notes.append(f"no width of {lo_w:.4g}\u2013{hi_w:.4g} m\n"
+                     f"has ESD \u2264 {chart.target:g} m")
     dw = chart.design_width
     if dw is not None and chart.checks and lo_w <= dw <= hi_w:
         ax.axvline(dw, color="black", lw=1.0, dashes=DESIGN_DASHES, zorder=3)
         t = make_label(ax, f"design b = {metres(dw)} m", xycoords=ax.get_xaxis_transform(),
                        rotation=90.0, fontsize=FS - 0.5, color=verdict_colour(chart.checks[0]))
         vertical.append((t, vline_candidates(dw, side_first=-1), []))
-    else:
-        notes.append(f"no width of {lo_w:.4g}\u2013{hi_w:.4g} m\n"
-                     f"has ESD \u2264 {chart.target:g} m")
     if math.isfinite(sfw) and lo_w <= sfw <= hi_w:
         ax.axvline(sfw, color="black", lw=1.0, dashes=SF_DASHES, zorder=3)
         t = make_label(ax, f"b = {metres(sfw)} m", xycoords=ax.get_xaxis_transform(),
