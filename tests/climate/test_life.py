@@ -166,3 +166,20 @@ def test_model_refuses_period_law_with_period():
 
     with pytest.raises(ValueError, match="period_law"):
         LifetimeModel(Climate.from_return_values(5.0, 6.3), period=10.0, period_law=(3.0, 0.6))
+
+
+@pytest.mark.subprocess
+def test_the_chart_gains_the_width_at_the_bands_upper_level(run_cli, tmp_path):
+    p = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "98%"', "climate_replicates = 3")
+    args = ["lifetime", str(p), "--trials", "100", "--seed", "3", "--width", "12:30:4", "--json", "-q"]
+    one = run_cli([*args, "--jobs", "1"])
+    assert one.code in (0, 1), one.output  # 1: the design's width may fail its requirement
+    two = run_cli([*args, "--jobs", "2", "--chunk", "50"])
+    assert one.stdout == two.stdout
+    band = json.loads(one.stdout)["climate_band"]
+    assert band["replicates"] == 3 and band["widths"] == [12, 18, 24, 30]
+    assert all(lo <= hi for lo, hi in zip(band["lower"], band["upper"]))
+    text = run_cli([*args[:-2], "-q"]).stdout
+    assert "at the upper end of the 90 % climate band" in text
+    w = band["width_for_target"]
+    assert (f"{w:.2f} m" in text) if w is not None else "no width of the chart" in text

@@ -149,3 +149,39 @@ def test_a_chart_that_does_not_bracket_the_target_says_both_ends() -> None:
     assert msg is not None and "no width meets it" in msg
     assert f"{c.expected_sliding[0]:.4g} m at 9 m" in msg and f"{c.expected_sliding[1]:.4g} m at 10 m" in msg
     assert c.width_interval is None
+
+
+# -- the chart under a record's replicate climates -------------------------------------------------
+
+
+def test_the_chart_band_is_the_quantile_of_the_climates_charts_and_its_width_crosses_it() -> None:
+    from regimemap.lifetime import Climate
+    from regimemap.lifetime.chart import crossing_width
+    from regimemap.lifetime.replicates import climate_band_chart
+
+    climates = [Climate.from_return_values(5.0, h) for h in (5.8, 6.3, 6.9)]
+    widths = np.array([12.0, 16.0, 20.0, 24.0])
+    a = climate_band_chart(GODA, MODEL, climates, widths, 200, seed=4, target=0.1, chunk=100)
+    b = climate_band_chart(GODA, MODEL, climates, widths, 200, seed=4, target=0.1, chunk=200)
+    np.testing.assert_array_equal(a.esd, b.esd)  # the same numbers in any chunks
+    assert a.esd.shape == (3, 4) and a.replicates == 3
+    assert np.all(a.esd[0] <= a.esd[2])  # the larger 50-year wave slides further at every width
+    np.testing.assert_allclose(a.upper, np.quantile(a.esd, 0.95, axis=0))
+    assert np.all(a.lower <= a.upper)
+    assert a.width_for_target == crossing_width(widths, a.upper, 0.1)
+    # row i is climate i's design chart, on child i of the root seed (climate_band's seeds)
+    seeds = [int(c.generate_state(1, np.uint32)[0]) for c in np.random.SeedSequence(4).spawn(3)]
+    for row, climate, s in zip(a.esd, climates, seeds):
+        chart = design_chart(GODA, MODEL.with_(climate=climate), widths, trials=200, seed=s, chunk=100)
+        np.testing.assert_array_equal(row, chart.expected_sliding)
+    with pytest.raises(ValueError, match="at least two"):
+        climate_band_chart(GODA, MODEL, climates[:1], widths, 10, seed=1, target=0.1)
+
+
+def test_crossing_width_interpolates_in_log_esd() -> None:
+    from regimemap.lifetime.chart import crossing_width
+
+    w = np.array([10.0, 12.0, 14.0])
+    assert crossing_width(w, np.array([1.0, 0.01, 0.001]), 0.1) == pytest.approx(11.0)
+    assert crossing_width(w, np.array([0.05, 0.01, 0.001]), 0.1) == 10.0  # every width meets it
+    assert crossing_width(w, np.array([5.0, 2.0, 1.0]), 0.1) == 14.0  # clamped to the last

@@ -395,3 +395,26 @@ def test_the_chart_draws_the_interval_the_design_width_and_the_verdict(chart: De
     passed = judge_chart(chart, 24.0)
     assert passed.checks[0].passed
     assert "PASS" in [t.get_text() for t in chart_figure(passed, "goda").texts]
+
+
+def test_the_chart_draws_the_climate_bands_upper_curve_and_its_width(chart: DesignChart) -> None:
+    from regimemap.drawing.lifetime_chart import BAND_LINE
+    from regimemap.lifetime.replicates import ChartBand
+
+    w = np.asarray(chart.widths)
+    esd = np.vstack([chart.expected_sliding * f for f in (0.5, 1.0, 3.0)])
+    band = ChartBand(widths=w, esd=esd, level=0.9, target=0.1, seed=1, trials=chart.trials)
+    assert band.width_for_target is not None and band.width_for_target > chart.width_for_target
+    fig = chart_figure(chart, "goda", band=band)
+    _check_figure(fig)
+    ax = fig.axes[0]
+    upper = [ln for ln in ax.lines if len(ln.get_xdata()) == w.size and ln.get_color() == BAND_LINE]
+    assert len(upper) == 1
+    np.testing.assert_allclose(np.asarray(upper[0].get_ydata(), dtype=float),
+                               np.where(band.upper > 0, band.upper, np.nan))  # 0 is off the log axis
+    text = _all_text(fig)
+    assert f"b = {band.width_for_target:.3g} m (band)" in text
+    assert "upper end of the 90 % climate band (3 climates)" in text
+    never = ChartBand(widths=w, esd=esd * 1e6 + 1.0, level=0.9, target=0.1, seed=1, trials=chart.trials)
+    assert never.width_for_target is None
+    assert "(band)" not in _all_text(chart_figure(chart, "goda", band=never))

@@ -27,6 +27,7 @@ from ._writing import writing
 if TYPE_CHECKING:
     from ..io.design import Design, LifetimeSpec
     from ..lifetime import Caisson, DesignChart, LifetimeModel, LifetimeResult
+    from ..lifetime.replicates import ChartBand, ClimateBand
 
 __all__ = ["lifetime_cmd"]
 
@@ -228,16 +229,17 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     seconds = time.perf_counter() - t0
     if not quiet:
         _note_run(n, model.years, widths, seconds, workers, run["chunk"], scheduler, root, result.seed)
+    from ..lifetime.replicates import ClimateBand
     from ._climate_band import run_climate_band
 
-    band = (run_climate_band(spec, caisson, model, n, result.seed, run, quiet, design)
-            if isinstance(result, LifetimeResult) else None)
+    band = run_climate_band(spec, caisson, model, n, result.seed, run, quiet, design,
+                            None if isinstance(result, LifetimeResult) else result)
 
     # -- the files, then the report ----------------------------------------------------------
     from ..io import lifetime as io_lifetime
 
     given = spec.climate_as_written()
-    written = _write_outputs(outputs, result, Path(design).stem)
+    written = _write_outputs(outputs, result, Path(design).stem, band)
     if as_json:
         obj = (io_lifetime.lifetime_json(result, model, source=design, written=given)
                if isinstance(result, LifetimeResult)
@@ -245,18 +247,20 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
         if outputs:
             obj["files"] = written
         if band is not None:
-            from ..io.climate import climate_band_json
+            from ..io.climate import chart_band_json, climate_band_json
 
-            obj["climate_band"] = climate_band_json(band)
+            obj["climate_band"] = (climate_band_json(band) if isinstance(band, ClimateBand)
+                                   else chart_band_json(band))
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
     else:
         click.echo(io_lifetime.format_lifetime(result, model, source=design, written=given)
                    if isinstance(result, LifetimeResult)
                    else io_lifetime.format_chart(result, model, source=design, written=given))
         if band is not None:
-            from ..io.climate import climate_band_lines
+            from ..io.climate import chart_band_lines, climate_band_lines
 
-            click.echo("\n".join(climate_band_lines(band)))
+            click.echo("\n".join(climate_band_lines(band) if isinstance(band, ClimateBand)
+                                 else chart_band_lines(band)))
         for path in written:
             report_written(path)
     exit_on_failure(result.checks, check)
@@ -318,11 +322,12 @@ def _note_run(n: int, years: int, widths: list[float] | None, seconds: float, wo
 
 
 def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChart,
-                   title: str) -> list[str]:
+                   title: str, band: ClimateBand | ChartBand | None = None) -> list[str]:
     """Write the lifetimes (.csv, .npz), the chart's table (.csv) or the figure (.png, .svg, .pdf,
     drawn once) to each file; ``title`` names the section (the design file's stem)."""
     from ..io import lifetime as io_lifetime
     from ..lifetime import LifetimeResult
+    from ..lifetime.replicates import ChartBand
 
     written: list[str] = []
     fig = None
@@ -341,7 +346,8 @@ def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChar
 
                     fig = (lifetime_figure(result, lifetime_title(title, result))
                            if isinstance(result, LifetimeResult)
-                           else chart_figure(result, chart_title(title, result)))
+                           else chart_figure(result, chart_title(title, result),
+                                             band=band if isinstance(band, ChartBand) else None))
                 from ..drawing.save import save_figure
 
                 save_figure(fig, path)

@@ -51,12 +51,17 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
     from numpy.typing import NDArray
 
+    from ..lifetime.replicates import ChartBand
+
     FloatArray = NDArray[np.float64]
 
 __all__ = ["CHART_FIGSIZE", "chart_figure", "chart_title"]
 
 #: Dashes of the design's own width (dotted).
 DESIGN_DASHES = (1.2, 1.6)
+#: The climate band's upper curve and its width: Paul Tol's green, long dashes.
+BAND_LINE = "#228833"
+BAND_DASHES = (6.0, 2.0)
 
 #: Size of :func:`chart_figure` in inches (a page wide, as the lifetime figure; the height
 #: without a title and with a key of three rows, as the figure grows with them).
@@ -84,8 +89,8 @@ def chart_title(section: str, chart: DesignChart) -> str:
             f"{impulsive_words(chart.impulsive)}")
 
 
-def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = DEFAULT_DPI
-                 ) -> Figure:
+def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = DEFAULT_DPI,
+                 band: ChartBand | None = None) -> Figure:
     """The design chart: expected sliding distance against the caisson's width.
 
     The ESD of each width (log axis) with a band of two standard errors; the tolerable limits
@@ -106,6 +111,10 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
         run's facts) below it.
     dpi : float
         Resolution of PNG output.
+    band : ChartBand, optional
+        The chart under a record's replicate climates
+        (:func:`regimemap.lifetime.replicates.climate_band_chart`): its upper curve is drawn
+        dashed, with the width for the target at that level as a vertical line.
 
     Returns
     -------
@@ -131,7 +140,7 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     lo_w, hi_w = float(widths[0]), float(widths[-1])
     pad = 0.02 * (hi_w - lo_w)
     on_limit = [math.isclose(lim, chart.target, rel_tol=1e-9) for lim, _ in TOLERABLE]
-    key = _chart_key(chart, bool(np.all(pos)), on_limit)
+    key = _chart_key(chart, bool(np.all(pos)), on_limit) + _band_key(band)
     rows = (len(key) + 1) // 2
     w = CHART_FIGSIZE[0]
     top = 0.15 + max(title_height(title) + 0.05 if title else 0.0, 0.32 if chart.checks else 0.0)
@@ -158,6 +167,7 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
                     markeredgewidth=1.0, zorder=5)
         horizontal = _draw_limits(ax, chart, on_limit)
         vertical, notes = _draw_widths(ax, chart, lo_w, hi_w)
+        vertical += _draw_band(ax, band)
         format_log_axis(ax, "y")
         ax.set_xlabel("caisson width $b$ (m)", fontsize=FS)
         ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
@@ -171,9 +181,41 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
         note = None
         if notes:
             note = make_label(ax, "\n".join(notes), xycoords="axes fraction", fontsize=FS - 0.5)
-        band = (np.where(pos, np.maximum(lower, y0), np.nan), np.where(pos, esd + 2.0 * se0, np.nan))
-        _place_labels(fig, ax, widths, band, note, vertical + horizontal)
+        se_band = (np.where(pos, np.maximum(lower, y0), np.nan), np.where(pos, esd + 2.0 * se0, np.nan))
+        _place_labels(fig, ax, widths, se_band, note, vertical + horizontal)
     return fig
+
+
+def _band_key(band: ChartBand | None) -> list[tuple[Any, str]]:
+    """The key of the climate band's upper curve and its width, when drawn."""
+    if band is None:
+        return []
+    from matplotlib.lines import Line2D
+
+    key: list[tuple[Any, str]] = [(Line2D([], [], color=BAND_LINE, lw=1.2, dashes=BAND_DASHES),
+                                   f"ESD, upper end of the {100 * band.level:g} % climate band "
+                                   f"({band.replicates} climates)")]
+    if band.width_for_target is not None:
+        key.append((Line2D([], [], color=BAND_LINE, lw=1.0),
+                    f"narrowest width with that ESD \u2264 {band.target:g} m"))
+    return key
+
+
+def _draw_band(ax: Axes, band: ChartBand | None) -> Placed:
+    """The climate band's upper curve and the width where it meets the target; its label."""
+    if band is None:
+        return []
+    upper = np.asarray(band.upper, dtype=np.float64)
+    ax.plot(band.widths, np.where(upper > 0.0, upper, np.nan), color=BAND_LINE, lw=1.2,
+            dashes=BAND_DASHES, zorder=3.8)
+    wb = band.width_for_target
+    if wb is None:
+        return []
+    ax.axvline(wb, color=BAND_LINE, lw=1.0, zorder=3)
+    text = f"b = {metres(wb)} m (band)"
+    t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0, fontsize=FS - 0.5,
+                   color=BAND_LINE)
+    return [(t, vline_candidates(wb, side_first=1), [])]
 
 
 def _chart_key(chart: DesignChart, all_slid: bool, on_limit: list[bool]) -> list[tuple[Any, str]]:

@@ -8,7 +8,7 @@ from ..climate.analysis import ClimateResult
 from ._numbers import json_number
 
 if TYPE_CHECKING:
-    from ..lifetime.replicates import ClimateBand
+    from ..lifetime.replicates import ChartBand, ClimateBand
 
 __all__ = ["climate_band_json", "climate_band_lines", "climate_json", "format_climate", "parameter_text"]
 
@@ -123,3 +123,28 @@ def climate_band_lines(band: ClimateBand) -> list[str]:
     return [f"ESD with the climate's uncertainty {band.expected_sliding:.3g} m ± {band.std_error:.2g} m "
             f"({band.replicates} bootstrap climates x {band.trials} lifetimes)",
             f"  {100 * band.level:g} % climate band: {band.lower:.3g} m to {band.upper:.3g} m"]
+
+
+def chart_band_json(band: ChartBand) -> dict[str, Any]:
+    """``{level, replicates, trials, seed, widths, lower, upper, width_for_target}``: the design
+    chart under the replicate climates -- the band's curves at each width [m] and the narrowest
+    width whose ESD at the band's upper level meets the target (``null``: none does)."""
+    return {"level": json_number(band.level), "replicates": band.replicates, "trials": band.trials,
+            "seed": band.seed, "target": json_number(band.target),
+            "widths": [json_number(float(w)) for w in band.widths],
+            "lower": [json_number(float(x)) for x in band.lower],
+            "upper": [json_number(float(x)) for x in band.upper],
+            "width_for_target": (None if band.width_for_target is None
+                                 else json_number(band.width_for_target))}
+
+
+def chart_band_lines(band: ChartBand) -> list[str]:
+    """The chart's climate band for people: the width for the target at the band's upper level."""
+    top = f"{100 * (0.5 + 0.5 * band.level):g} %"
+    head = (f"at the upper end of the {100 * band.level:g} % climate band ({top} quantile of "
+            f"{band.replicates} bootstrap climates x {band.trials} lifetimes per width):")
+    w = band.width_for_target
+    if w is None:
+        return [head, f"  no width of the chart has ESD <= {band.target:g} m"]
+    return [head, f"  width for ESD <= {band.target:g} m: {w:.2f} m "
+                  "(interpolated between the chart's widths)"]

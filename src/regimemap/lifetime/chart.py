@@ -21,6 +21,7 @@ from .model import PERIOD_COEFFICIENT, PERIOD_EXPONENT, Caisson, LifetimeModel
 from .parallel import DEFAULT_CHUNK, make_chunks, root_seed, run_chunks
 
 __all__ = ["BOOTSTRAP_RESAMPLES", "BOOTSTRAP_STREAM", "DEFAULT_TOLERANCE", "INTERVAL_LEVEL", "DesignChart",
+           "crossing_width",
            "WidthInterval", "bisection_steps", "design_chart", "sf_width", "width_interval"]
 
 FloatArray = NDArray[np.float64]
@@ -148,9 +149,15 @@ def bisection_steps(step: float, tolerance: float) -> int:
     return max(0, math.ceil(math.log2(step / tolerance))) if step > tolerance else 0
 
 
-def _crossing(widths: FloatArray, esd: FloatArray, target: float) -> float:
+def crossing_width(widths: FloatArray, esd: FloatArray, target: float) -> float:
     """Where ``esd`` (at increasing ``widths``) first falls to ``target``: linear in log ESD between
-    the two widths around it (linear in ESD when one is 0); clamped to the ends."""
+    the two widths around it (linear in ESD when one is 0); clamped to the ends.
+
+    Examples
+    --------
+    >>> crossing_width(np.array([10.0, 12.0]), np.array([1.0, 0.01]), 0.1)
+    11.0
+    """
     ok = np.flatnonzero(esd <= target)
     if ok.size == 0:
         return float(widths[-1])
@@ -220,7 +227,7 @@ def width_interval(widths: ArrayLike, sliding: ArrayLike, target: float, seed: i
         np.add.at(counts, (np.repeat(np.arange(b), groups), pick.ravel()), 1.0)
         esd = (counts @ sums.T) / (counts @ sizes)[:, None]         # (b, k)
         for j in range(b):
-            found[first + j] = _crossing(w, esd[j], target)
+            found[first + j] = crossing_width(w, esd[j], target)
     tail = 0.5 * (1.0 - level)
     lower, upper = np.quantile(found, [tail, 1.0 - tail])
     return WidthInterval(level=level, lower=float(lower), upper=float(upper), resamples=resamples)
