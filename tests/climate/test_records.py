@@ -166,3 +166,19 @@ def test_coverage_per_calendar_year():
     assert r.quality.coverage[2000] == pytest.approx((8784 // 2 - t.size // 4) * 2 / 8784)
     assert r.quality.gaps == []  # missing values are not gaps in time ... but observed gaps are
     assert make_record("x", t, np.where(np.arange(t.size) == 10, np.nan, 1.0)).quality.gaps[0][2] == 4.0
+
+
+def test_a_gzip_record_that_decompresses_past_the_limit_is_refused(tmp_path, monkeypatch):
+    import gzip
+
+    import regimemap.io.records as records
+
+    f = tmp_path / "bomb.txt.gz"
+    f.write_bytes(gzip.compress(b"0" * 100_000))  # 100 kB of text in a few hundred bytes
+    monkeypatch.setattr(records, "MAX_RECORD_FILE_BYTES", 50_000)
+    with pytest.raises(records.RecordError, match="decompresses to more than the limit"):
+        records.read_record(f)
+    f.write_bytes(gzip.compress(b"0" * 100_000)[:-12])  # cut short
+    monkeypatch.setattr(records, "MAX_RECORD_FILE_BYTES", 1_000_000)
+    with pytest.raises(records.RecordError, match="broken gzip"):
+        records.read_record(f)

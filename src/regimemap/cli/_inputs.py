@@ -18,15 +18,21 @@ import click
 
 from ._common import ParamType
 
-__all__ = ["InputFile", "DESIGN_FILE", "POINTS_FILE", "PULSE_FILE"]
+__all__ = ["InputFile", "DESIGN_FILE", "POINTS_FILE", "PULSE_FILE", "RECORD_FILE"]
 
 
 def _check(kind: str, path: str) -> None:
-    """Refuse ``path`` as an input of ``kind`` ("design", "points" or "pulse"); ValueError if so."""
+    """Refuse ``path`` as an input of ``kind`` ("design", "points", "pulse" or "record"); ValueError
+    if so."""
     if kind == "design":
         from ..io.inputs import check_design_file
 
         check_design_file(path)
+        return
+    if kind == "record":
+        from ..io.records import check_record_file
+
+        check_record_file(path)
         return
     from ..io.inputs import check_input_file
 
@@ -44,8 +50,8 @@ class InputFile(ParamType):
     """An input file of one kind: a regular file below its size limit; the path (str) is kept."""
 
     def __init__(self, kind: str):
-        if kind not in ("design", "points", "pulse"):
-            raise ValueError(f"kind must be 'design', 'points' or 'pulse', got {kind!r}")
+        if kind not in ("design", "points", "pulse", "record"):
+            raise ValueError(f"kind must be 'design', 'points', 'pulse' or 'record', got {kind!r}")
         self.kind = kind
         self.name = "file"  # as click.Path(dir_okay=False) names itself
 
@@ -66,3 +72,5 @@ DESIGN_FILE = InputFile("design")
 POINTS_FILE = InputFile("points")
 #: A pulse file (CSV): ``simulate --pulse-file``.
 PULSE_FILE = InputFile("pulse")
+#: A wave record (CSV, text, NDBC, NetCDF; gzip): ``climate``.
+RECORD_FILE = InputFile("record")

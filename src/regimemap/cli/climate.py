@@ -14,6 +14,7 @@ from typing import Any
 import click
 
 from ._common import ParamType, import_matplotlib, output_path, report_written
+from ._inputs import RECORD_FILE
 from ._writing import writing
 
 __all__ = ["climate_cmd"]
@@ -66,7 +67,7 @@ def _figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 
 
 @click.command("climate", short_help="Return values of Hs with confidence bands from a wave record.")
-@click.argument("record", type=click.Path(dir_okay=False), metavar="RECORD")
+@click.argument("record", type=RECORD_FILE, metavar="RECORD")
 @click.option("--method", type=click.Choice(["pot", "annual-maxima"]), default="pot", show_default=True,
               help="Peaks over a threshold (storms) or the maxima of the calendar years.")
 @click.option("--threshold", type=_Threshold(), default="99.5%", show_default=True, metavar="U",

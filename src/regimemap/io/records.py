@@ -22,9 +22,9 @@ a missing code (:data:`MISSING_CODES`) or empty are missing, and counted.
 from __future__ import annotations
 
 import csv
-import gzip
 import io
 import math
+import zlib
 from collections.abc import Sequence
 from datetime import datetime, timezone
 from pathlib import Path
@@ -33,6 +33,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..climate.record import HS_MAX, PERIOD_MAX, Record, make_record
+from .inputs import InputFileError, check_input_file, read_limited
 
 __all__ = ["HS_NAMES", "MISSING_CODES", "PERIOD_NAMES", "TIME_NAMES", "RecordError", "read_record"]
 
@@ -51,6 +52,37 @@ _MISSING_TEXT = {"", "nan", "na", "n/a", "null", "mm", "-"}
 
 class RecordError(ValueError):
     """A record that cannot be read: the message names the file, the line and the column."""
+
+
+#: The largest wave record read, compressed or not [bytes]: 128 MiB, some five centuries of
+#: hourly sea states written as text (a ten-year hourly record is 2.6 MB).
+MAX_RECORD_FILE_BYTES = 128 * 1024 * 1024
+
+
+def check_record_file(path: str | Path) -> None:
+    """Refuse ``path`` unless it is a regular file of at most :data:`MAX_RECORD_FILE_BYTES`.
+
+    Raises
+    ------
+    InputFileError
+        Naming the path and the reason (a folder, a FIFO, a device, too large).
+    """
+    check_input_file(path, max_bytes=MAX_RECORD_FILE_BYTES, what="wave record")
+
+
+def _gunzip(p: str, raw: bytes) -> bytes:
+    """The gzip file ``raw`` decompressed, at most :data:`MAX_RECORD_FILE_BYTES` of it."""
+    d = zlib.decompressobj(16 + zlib.MAX_WBITS)
+    try:
+        out = d.decompress(raw, MAX_RECORD_FILE_BYTES + 1)
+    except zlib.error as exc:
+        raise RecordError(f"{p}: a broken gzip file ({exc})") from None
+    if len(out) > MAX_RECORD_FILE_BYTES or d.unconsumed_tail:
+        raise RecordError(f"{p}: decompresses to more than the limit of "
+                          f"{MAX_RECORD_FILE_BYTES // (1024 * 1024)} MiB of a wave record")
+    if not d.eof:
+        raise RecordError(f"{p}: a broken gzip file (it ends before its end of stream)")
+    return out
 
 
 def _float(text: str, where: str) -> float:
@@ -282,14 +314,13 @@ def read_record(path: str | Path, time: str | None = None, hs: str | None = None
     """
     p = str(path)
     try:
-        raw = Path(p).read_bytes()
+        raw = read_limited(p, max_bytes=MAX_RECORD_FILE_BYTES, what="wave record")
+    except InputFileError as exc:
+        raise RecordError(str(exc)) from None
     except OSError as exc:
         raise RecordError(f"{p}: cannot read ({exc.strerror or exc})") from None
     if raw[:2] == b"\x1f\x8b":
-        try:
-            raw = gzip.decompress(raw)
-        except (OSError, EOFError) as exc:
-            raise RecordError(f"{p}: a broken gzip file ({exc})") from None
+        raw = _gunzip(p, raw)
     try:
         if Path(p).suffix.lower() in (".nc", ".nc4", ".cdf", ".netcdf") or raw[:3] == b"CDF" \
                 or raw[:4] == b"\x89HDF":
