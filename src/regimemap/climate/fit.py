@@ -2,19 +2,20 @@
 
 numpy and scipy.stats, by maximum likelihood:
 
-* ``gpd`` -- storm peaks over the threshold ``u``: the generalised Pareto distribution
-  ``F(H) = 1 - (1 + xi (H - u)/sigma)^(-1/xi)`` (``scipy.stats.genpareto``, ``c = xi``, location
-  fixed at ``u``).  With ``lambda`` storms a year the ``R``-year value is
-  ``H_R = u + sigma/xi ((lambda R)^xi - 1)`` (``u + sigma ln(lambda R)`` at ``xi = 0``; Coles
-  2001, Eq. 4.13);
-* ``weibull`` -- storm peaks, ``F(H) = 1 - exp(-((H - u)/A)^k)`` with the shape ``k`` given and the
-  location at ``u`` (Goda 2000, Sect. 11.2: ``k`` from 0.75 to 2 chosen, not fitted);
-  ``H_R = u + A (ln lambda R)^(1/k)``, ``A^k = mean((H - u)^k)`` (``scipy.stats.weibull_min``);
-* ``gumbel`` -- annual maxima, ``F(H) = exp(-exp(-(H - B)/A))`` (``scipy.stats.gumbel_r``);
-* ``gev`` -- annual maxima, ``F(H) = exp(-(1 + xi (H - mu)/sigma)^(-1/xi))``
-  (``scipy.stats.genextreme``, whose shape is ``c = -xi``).
+* ``gpd`` -- storm peaks over the threshold :math:`u`: the generalised Pareto distribution
+  :math:`F(H) = 1 - (1 + \\xi (H - u)/\\sigma)^{-1/\\xi}` (``scipy.stats.genpareto``,
+  :math:`c = \\xi`, location fixed at :math:`u`).  With :math:`\\lambda` storms a year the
+  :math:`R`-year value is :math:`H_R = u + \\frac{\\sigma}{\\xi}((\\lambda R)^\\xi - 1)`
+  (:math:`u + \\sigma \\ln(\\lambda R)` at :math:`\\xi = 0`; Coles 2001, Eq. 4.13);
+* ``weibull`` -- storm peaks, :math:`F(H) = 1 - \\exp(-((H - u)/A)^k)` with the shape :math:`k`
+  given and the location at :math:`u` (Goda 2000, Sect. 11.2: :math:`k` from 0.75 to 2 chosen,
+  not fitted); :math:`H_R = u + A (\\ln \\lambda R)^{1/k}`,
+  :math:`A^k = \\overline{(H - u)^k}` (``scipy.stats.weibull_min``);
+* ``gumbel`` -- annual maxima, :math:`F(H) = \\exp(-\\exp(-(H - B)/A))` (``scipy.stats.gumbel_r``);
+* ``gev`` -- annual maxima, :math:`F(H) = \\exp(-(1 + \\xi (H - \\mu)/\\sigma)^{-1/\\xi})`
+  (``scipy.stats.genextreme``, whose shape is :math:`c = -\\xi`).
 
-In every case ``F(H_R) = 1 - 1/(lambda R)`` (``lambda = 1`` for annual maxima).
+In every case :math:`F(H_R) = 1 - 1/(\\lambda R)` (:math:`\\lambda = 1` for annual maxima).
 
 The confidence intervals are a non-parametric bootstrap with percentile intervals (Efron &
 Tibshirani 1993, Ch. 13): each replicate resamples the observed peaks with replacement -- their

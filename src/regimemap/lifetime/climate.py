@@ -14,7 +14,7 @@ year (the default) ``F`` is the distribution of the annual maxima and the
 ``R``-year return value solves ``F(H_R) = 1 - 1/R``; with ``storms_per_year =
 lambda`` the storms are a Poisson process and ``F`` is a peaks-over-threshold
 distribution, ``F(H_R) = 1 - 1/(lambda R)`` (Goda 2000, Ch. 11), so that for
-Weibull ``H_R = B + A (ln lambda R)^(1/k)``.  See docs/lifetime.md, Sect. 2.
+Weibull :math:`H_R = B + A (\\ln \\lambda R)^{1/k}`.  See docs/lifetime.md, Sect. 2.
 """
 
 from __future__ import annotations

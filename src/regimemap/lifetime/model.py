@@ -18,7 +18,7 @@ from .climate import Climate
 __all__ = ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "FRICTION_SIGMAS", "Caisson", "ErrorFactor", "Errors",
            "LifetimeModel", "PERIOD_COEFFICIENT", "PERIOD_EXPONENT"]
 
-#: Goda's storm relation ``T1/3 = 3.3 H0'^0.63`` (Goda 2000, Sect. 4.2 and 11;
+#: Goda's storm relation :math:`T_{1/3} = 3.3 \, {H_0'}^{0.63}` (Goda 2000, Sect. 4.2 and 11;
 #: docs/lifetime.md, Sect. 3).
 PERIOD_COEFFICIENT = 3.3
 PERIOD_EXPONENT = 0.63
