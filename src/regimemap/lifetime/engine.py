@@ -15,7 +15,8 @@ slides only above the storm's sliding height ``H_s``, so the number of
 sliding waves of a storm of :math:`N` waves is
 :math:`\\mathrm{Binomial}(N, e^{-2 (H_s/H_{1/3})^2})` and their heights are the
 Rayleigh tail :math:`\\sqrt{H_s^2 + H_{1/3}^2 E/2}`, :math:`E` standard exponential,
-each capped at the breaker limit -- the same distribution as drawing all :math:`N` heights (docs/lifetime.md, Sect. 8).
+each capped at the breaker limit -- the same distribution as drawing all :math:`N` heights
+(docs/lifetime.md, Sect. 8).
 """
 
 from __future__ import annotations
