@@ -103,7 +103,7 @@ class _PresetMaps(dict):
     (its preset's block, view, modes and raw flag), computed on first use and kept for the session."""
 
     def __missing__(self, fid: str):
-        from regimemap.drawing.presets import get_preset
+        from regimemap.drawing.maps.presets import get_preset
         from regimemap.maps.mapdata import compute_map
 
         pr = get_preset(fid)

@@ -7,8 +7,8 @@ import pytest
 from PIL import Image
 
 from regimemap import Parameters
-from regimemap.drawing.animation import MAX_FRAMES, write_animation
-from regimemap.drawing.atlas import MAX_PANELS, atlas_figure, write_atlas
+from regimemap.drawing.maps.animation import MAX_FRAMES, write_animation
+from regimemap.drawing.maps.atlas import MAX_PANELS, atlas_figure, write_atlas
 from regimemap.maps.designer_view import view_extent as auto_extent  # the default view of export and atlas
 from regimemap.maps.sweeps import (
     atlas_extents,
@@ -108,7 +108,7 @@ def test_animation_frames_and_size(tmp_path):
 
 def test_animation_fixed_axes(tmp_path, monkeypatch):
     """Every frame is drawn on the same view."""
-    import regimemap.drawing.animation as animation
+    import regimemap.drawing.maps.animation as animation
 
     seen = []
     real = animation.draw_map

@@ -121,7 +121,7 @@ def _texts(fig):
 def test_the_sheet_shows_the_verdict(text):
     import matplotlib.colors as mcolors
 
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.drawing.verdict import FAIL_COLOUR, PASS_COLOUR
 
     r = caisson_report(parse_design(text).analysis_inputs())
@@ -149,7 +149,7 @@ def test_the_sheet_shows_the_verdict(text):
 def test_the_sheet_flags_the_lifetime_esd(tmp_path):
     import matplotlib.colors as mcolors
 
-    from regimemap.drawing.sheet import LIFETIME_PANEL, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, sheet_figure
     from regimemap.drawing.verdict import FAIL_COLOUR
     from regimemap.lifetime import Requirements, judge_lifetime, lifetime_sliding
 
@@ -198,7 +198,7 @@ def test_simulate_check_needs_a_design_file(run_cli):
 @pytest.mark.render
 @pytest.mark.parametrize("text", [NO_LIFE, WIDE])
 def test_the_onset_label_stays_inside_panel_e(text):
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
 
     fig = sheet_figure(caisson_report(parse_design(text).analysis_inputs()))
     (ax,) = [a for a in fig.axes if a.get_label() == "path"]
@@ -210,7 +210,7 @@ def test_the_onset_label_stays_inside_panel_e(text):
 
 @pytest.mark.render
 def test_the_sheet_header_echoes_the_file():
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
 
     d = parse_design(NO_LIFE.replace("H0 = 6.3 ", "H0 = 6.30 ").replace("friction = 0.6 ", "friction = 0.60 "))
     fig = sheet_figure(caisson_report(d.analysis_inputs()), written=d.written)

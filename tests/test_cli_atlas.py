@@ -8,7 +8,7 @@ from PIL import Image
 
 from regimemap.cli import atlas as cli_atlas
 from regimemap.cli import cli
-from regimemap.drawing import atlas as atlas_mod
+from regimemap.drawing.maps import atlas as atlas_mod
 
 
 def run(*args: str):
@@ -27,7 +27,7 @@ def test_help(cmd, example, flag):
 
 
 def test_limits_match_library():
-    from regimemap.drawing import animation
+    from regimemap.drawing.maps import animation
 
     assert cli_atlas.MAX_PANELS == atlas_mod.MAX_PANELS
     assert cli_atlas.MAX_FRAMES == animation.MAX_FRAMES
@@ -164,7 +164,7 @@ def test_atlas_and_animate_take_kprime_up_to_the_crest(tmp_path):
 
 
 def test_the_library_takes_kprime_up_to_the_crest():
-    from regimemap.drawing.atlas import checked_values
+    from regimemap.drawing.maps.atlas import checked_values
 
     assert checked_values([3], [0.5, 1.5], "kprime", {"crest": 1.5}) == ([3.0], [0.5, 1.5])
     with pytest.raises(ValueError, match=r"kprime must be a number in \[-1, 1\], got 1.5"):

@@ -172,7 +172,7 @@ def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
 
 @pytest.mark.render
 def test_sheet_has_its_panels() -> None:
-    from regimemap.drawing.sheet import PANELS, SHEET_SIZE, sheet_figure
+    from regimemap.drawing.sheet.page import PANELS, SHEET_SIZE, sheet_figure
     from regimemap.maps.caisson import caisson_report
 
     report = caisson_report(parse_design(EXAMPLE).analysis_inputs())
@@ -247,7 +247,7 @@ LIGHT = EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 1300")
 @pytest.mark.parametrize("text", [EXAMPLE, DEEP, LIGHT], ids=["goda", "deep-filled", "light"])
 def test_sheet_texts_do_not_collide(text: str) -> None:
     """No two labels, titles or notes of the sheet overlap (tick labels aside), all on the page."""
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.maps.caisson import caisson_report
 
     fig = sheet_figure(caisson_report(parse_design(text).analysis_inputs()), title="breakwater.toml")

@@ -259,7 +259,7 @@ def test_figures_bad_out_folder(tmp_path, inputs, make, pattern):
 @pytest.mark.render
 def test_figures_creates_a_missing_out_folder_whose_parent_exists(tmp_path, monkeypatch):
     needs("figures")
-    import regimemap.drawing.presets as figs
+    import regimemap.drawing.maps.presets as figs
 
     # two of the report's figures are enough to see the folder made and filled (test_cli_plot.py
     # draws all of them)
@@ -630,8 +630,8 @@ def test_random_arguments_never_crash(name, tmp_path_factory, monkeypatch):
         # keep a valid 'figures' run short: of the report's 24 figures and of the worked figures
         # (--set worked, --set all: W.4 is an atlas), one each -- with the model's figure, still two
         # figures, so that --jobs starts a pool
-        import regimemap.drawing.presets as figs
-        import regimemap.drawing.worked as worked
+        import regimemap.drawing.maps.presets as figs
+        import regimemap.drawing.maps.worked as worked
 
         monkeypatch.setattr(figs, "PRESETS", dict(list(figs.PRESETS.items())[:1]))
         monkeypatch.setattr(worked, "WORKED", dict(list(worked.WORKED.items())[:1]))

@@ -193,7 +193,7 @@ def test_animate_sweeps_the_uplift_ratio(run_cli, tmp_path):
 
 @pytest.mark.render
 def test_atlas_figure_panel_titles_and_key_with_loads():
-    from regimemap.drawing.atlas import atlas_figure
+    from regimemap.drawing.maps.atlas import atlas_figure
 
     fig = atlas_figure([0.7], [0.0, 0.5], sweep="uplift_ratio",
                        fixed={"kprime": -0.018, "buoyancy": 0.318}, samples=101, k_max=6.0)

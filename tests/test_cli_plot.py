@@ -148,7 +148,7 @@ def test_plot_warns_about_points_outside_the_view(runner, tmp_path):
 
 @pytest.mark.render
 def test_show_ambiguity_when_available(runner, tmp_path):
-    pytest.importorskip("regimemap.drawing.ambiguity")
+    pytest.importorskip("regimemap.drawing.maps.ambiguity")
     _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "-0.3", "--show-ambiguity",
                             "-o", str(tmp_path / "m.png"), "--dpi", "40"]))
     assert (tmp_path / "m.png").read_bytes().startswith(PNG)
@@ -157,7 +157,7 @@ def test_show_ambiguity_when_available(runner, tmp_path):
 @pytest.mark.render
 def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkeypatch):
     """The overlay rebuilds the legend; the map's MapArtists then holds the new one."""
-    import regimemap.drawing.figure as render
+    import regimemap.drawing.maps.figure as render
 
     seen = []
     original = render.map_figure

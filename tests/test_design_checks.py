@@ -48,7 +48,7 @@ def test_the_sheet_draws_the_required_line(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.maps.caisson import caisson_report
 
     report = caisson_report(parse_design(EXAMPLE).analysis_inputs())

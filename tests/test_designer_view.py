@@ -59,7 +59,7 @@ def test_exports_round_for_people(tmp_path):
 @pytest.mark.render
 def test_model_figure_draws_the_block():
     pytest.importorskip("matplotlib")
-    from regimemap.drawing.model import model_figure
+    from regimemap.drawing.maps.model import model_figure
 
     fig = model_figure(dpi=40)
     texts = " ".join(t.get_text() for ax in fig.axes for t in ax.texts) + " ".join(

@@ -1,4 +1,4 @@
-"""``regimemap explore`` and :class:`regimemap.drawing.explore.Explorer`, under Agg.
+"""``regimemap explore`` and :class:`regimemap.drawing.explore.explorer.Explorer`, under Agg.
 
 The widgets' callbacks call plain methods (set_gamma, set_kprime, set_loads,
 click, save); the tests drive those methods and, through synthetic mouse
@@ -18,9 +18,9 @@ import pytest
 
 from regimemap import Parameters
 from regimemap.cli.explore import open_explorer, plot_command_line
-from regimemap.drawing.explore import Explorer, KeyImage, TextPanel
-from regimemap.drawing.explore_images import WidgetsImage
-from regimemap.drawing.figure import map_figure
+from regimemap.drawing.explore.explorer import Explorer, KeyImage, TextPanel
+from regimemap.drawing.explore.images import WidgetsImage
+from regimemap.drawing.maps.figure import map_figure
 from regimemap.mechanics.modes import Mode
 
 pytestmark = pytest.mark.render
@@ -132,7 +132,7 @@ def test_set_loads_and_the_toggle(explorer: Explorer) -> None:
 def test_ticking_loads_shows_their_sliders_at_once(explorer: Explorer, monkeypatch) -> None:
     """Ticking 'loads' with both sliders at 0 changes no map, yet their sliders appear: the figure
     is redrawn at once (not only after the next drag of gamma)."""
-    import regimemap.drawing.explore as explore_module
+    import regimemap.drawing.explore.explorer as explore_module
 
     draws: list[object] = []
     monkeypatch.setattr(explore_module, "request_draw", draws.append)
@@ -488,8 +488,8 @@ def test_explore_is_a_command(run_cli) -> None:
 
 
 def test_drag_title_reads_as_plots() -> None:
-    from regimemap.drawing.explore import drag_title
-    from regimemap.drawing.mapplot import default_title
+    from regimemap.drawing.explore.explorer import drag_title
+    from regimemap.drawing.maps.mapplot import default_title
 
     # the drag title's symbols are Unicode, read back as plot's mathtext
     tex_of = {"\u03b3": r"\gamma", "k\u2032": "k'", "\u03b2": r"\beta", "\u03bd": r"\nu",

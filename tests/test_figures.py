@@ -1,4 +1,4 @@
-"""regimemap.drawing.presets: the 24 presets of the report's figures."""
+"""regimemap.drawing.maps.presets: the 24 presets of the report's figures."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import math
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters
-from regimemap.drawing.presets import FIGURE_IDS, PRESETS, get_preset, suggest_ids
+from regimemap.drawing.maps.presets import FIGURE_IDS, PRESETS, get_preset, suggest_ids
 from regimemap.maps.view import auto_extent
 from regimemap.mechanics.block import Case
 

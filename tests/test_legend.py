@@ -1,4 +1,4 @@
-"""regimemap.drawing.key: the map key (swatch, symbol column, plain descriptions)."""
+"""regimemap.drawing.maps.key: the map key (swatch, symbol column, plain descriptions)."""
 
 from __future__ import annotations
 
@@ -6,8 +6,8 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters
-from regimemap.drawing.figure import map_figure
-from regimemap.drawing.mapplot import MODE_STYLE
+from regimemap.drawing.maps.figure import map_figure
+from regimemap.drawing.maps.mapplot import MODE_STYLE
 
 pytestmark = pytest.mark.render
 
@@ -34,7 +34,7 @@ def test_map_key_entries_swatch_symbol_description():
     from matplotlib.lines import Line2D
     from matplotlib.text import Text
 
-    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.maps.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, 0.4))
     labels = [t.get_text() for t in art.legend.get_texts()]
@@ -64,7 +64,7 @@ def test_every_symbol_sits_between_its_swatch_and_the_descriptions():
     from matplotlib.figure import Figure
     from matplotlib.text import Text
 
-    from regimemap.drawing.key import ModeSwatch, key_handles, key_legend
+    from regimemap.drawing.maps.key import ModeSwatch, key_handles, key_legend
     from regimemap.drawing.style import style_context
 
     for fontsize in (7.0, 8.5, 11.0):
@@ -100,7 +100,7 @@ def test_every_symbol_sits_between_its_swatch_and_the_descriptions():
 def test_line_samples_are_as_long_as_the_swatches():
     from matplotlib.lines import Line2D
 
-    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.maps.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, -0.3))
     fig.canvas.draw()
@@ -117,7 +117,7 @@ def test_line_samples_are_as_long_as_the_swatches():
 
 def test_swatch_colour_in_the_raster():
     """The PNG shows each swatch in its mode's colour (between the hatch lines)."""
-    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.maps.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, -0.3), dpi=100)
     fig.canvas.draw()
@@ -143,8 +143,8 @@ def test_ambiguity_overlay_keeps_the_key():
     """draw_ambiguity rebuilds the legend with one more entry; swatches and symbols stay."""
     from matplotlib.text import Text
 
-    from regimemap.drawing.ambiguity import LEGEND_LABEL, draw_ambiguity
-    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.maps.ambiguity import LEGEND_LABEL, draw_ambiguity
+    from regimemap.drawing.maps.key import ModeSwatch
 
     fig, ax, art = map_figure(Parameters(3.0, -0.6), k_max=4.0, mu_max=3.0)
     before = [(type(c[0]), [x.get_text() for x in c if isinstance(x, Text)])
@@ -157,8 +157,8 @@ def test_ambiguity_overlay_keeps_the_key():
 
 
 def test_atlas_key_has_every_mode():
-    from regimemap.drawing.atlas import atlas_figure
-    from regimemap.drawing.key import ModeSwatch
+    from regimemap.drawing.maps.atlas import atlas_figure
+    from regimemap.drawing.maps.key import ModeSwatch
 
     fig = atlas_figure([3.0], [-0.3, 0.4], samples=101)
     (leg,) = fig.legends

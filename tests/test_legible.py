@@ -21,11 +21,11 @@ pytest.importorskip("matplotlib")
 from matplotlib.path import Path  # noqa: E402
 
 from regimemap import Mode, Parameters  # noqa: E402
-from regimemap.drawing.animation import draw_frame, frame_figure  # noqa: E402
-from regimemap.drawing.atlas import atlas_figure  # noqa: E402
-from regimemap.drawing.figure import map_figure  # noqa: E402
-from regimemap.drawing.presets import FIGURE_IDS  # noqa: E402
-from regimemap.drawing.tidy import MEASURE_DPI, text_boxes  # noqa: E402
+from regimemap.drawing.maps.animation import draw_frame, frame_figure  # noqa: E402
+from regimemap.drawing.maps.atlas import atlas_figure  # noqa: E402
+from regimemap.drawing.maps.figure import map_figure  # noqa: E402
+from regimemap.drawing.maps.presets import FIGURE_IDS  # noqa: E402
+from regimemap.drawing.text.tidy import MEASURE_DPI, text_boxes  # noqa: E402
 from regimemap.maps import DesignPoint, classify  # noqa: E402
 
 pytestmark = pytest.mark.render
@@ -197,8 +197,8 @@ def test_animation_frames_never_collide(kprime):
 @pytest.mark.parametrize("fid", FIGURE_IDS)
 def test_report_figures_never_collide(fid):
     """The report's 24 figures keep their views and get the same tidy pass (Figs 3.8, 3.9a, 4.7b)."""
-    from regimemap.drawing.figure import preset_figure
-    from regimemap.drawing.presets import get_preset
+    from regimemap.drawing.maps.figure import preset_figure
+    from regimemap.drawing.maps.presets import get_preset
 
     fig, ax, art = preset_figure(fid, dpi=DPI, samples=201)
     preset = get_preset(fid)
@@ -213,12 +213,12 @@ def test_report_figures_never_collide(fid):
 @pytest.mark.slow
 @pytest.mark.parametrize("wid", ["W.1", "W.2", "W.3", "W.4"])
 def test_worked_figures_never_collide(wid):
-    from regimemap.drawing.worked import render_worked
+    from regimemap.drawing.maps.worked import render_worked
 
     fig = render_worked(wid, dpi=DPI, samples=151)
     arts = getattr(fig, "_regimemap_maps", None)
     if arts is None:  # a single map: its artists are those of the one axes
-        from regimemap.drawing.worked import WORKED
+        from regimemap.drawing.maps.worked import WORKED
 
         w = WORKED[wid]
         fig, ax, art = map_figure(w.params, dpi=DPI, k_max=w.k_max, mu_max=w.mu_max,

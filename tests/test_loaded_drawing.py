@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from regimemap import LOADED_MAP_MODES, MAP_MODES, Mode, Parameters, classify
-from regimemap.drawing.figure import map_figure
-from regimemap.drawing.mapplot import default_title
+from regimemap.drawing.maps.figure import map_figure
+from regimemap.drawing.maps.mapplot import default_title
 from regimemap.drawing.style import MODE_STYLE
 from regimemap.maps.describe import format_value, loads_text
 
@@ -75,7 +75,7 @@ def test_report_block_keeps_its_title_and_key():
 
 @pytest.mark.render
 def test_overlay_names_least_constraint():
-    from regimemap.drawing.ambiguity import draw_ambiguity
+    from regimemap.drawing.maps.ambiguity import draw_ambiguity
 
     # {LO, RO, SRO-} lies above mu = 1.2: in the report's view, not the designer's
     fig, ax, art = map_figure(GODA, samples=201, view="report")
@@ -96,8 +96,8 @@ def test_loads_text():
 @pytest.mark.subprocess
 @pytest.mark.slow
 def test_worked_figures_ids_and_files(run_cli, tmp_path):
-    from regimemap.drawing.presets import FIGURE_IDS
-    from regimemap.drawing.worked import WORKED, WORKED_IDS
+    from regimemap.drawing.maps.presets import FIGURE_IDS
+    from regimemap.drawing.maps.worked import WORKED, WORKED_IDS
 
     assert WORKED_IDS == ("W.1", "W.2", "W.3", "W.4")
     assert not set(WORKED_IDS) & set(FIGURE_IDS)

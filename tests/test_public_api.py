@@ -227,11 +227,11 @@ def test_split_modules_keep_their_old_import_paths():
 
 
 def test_outcome_style_is_exported_by_the_drawing_package():
-    """``regimemap.drawing.OutcomeStyle`` is the frozen dataclass of :mod:`regimemap.drawing.outcome`."""
+    """``regimemap.drawing.OutcomeStyle`` is the frozen dataclass of :mod:`regimemap.drawing.outcome.figure`."""
     import dataclasses
 
     import regimemap.drawing
-    from regimemap.drawing.outcome import OutcomeStyle
+    from regimemap.drawing.outcome.figure import OutcomeStyle
 
     assert regimemap.drawing.OutcomeStyle is OutcomeStyle
     assert dataclasses.is_dataclass(OutcomeStyle) and OutcomeStyle.__dataclass_params__.frozen

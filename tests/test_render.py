@@ -1,4 +1,4 @@
-"""regimemap.drawing.mapplot: fills where the modes are, vector and byte-stable output, no pyplot."""
+"""regimemap.drawing.maps.mapplot: fills where the modes are, vector and byte-stable output, no pyplot."""
 
 from __future__ import annotations
 
@@ -12,10 +12,10 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
-from regimemap.drawing.artists import MapArtists
-from regimemap.drawing.figure import map_data, map_figure, new_figure, render_map, render_preset
-from regimemap.drawing.mapplot import MapStyle, draw_design_points, draw_map
-from regimemap.drawing.presets import PRESETS
+from regimemap.drawing.maps.artists import MapArtists
+from regimemap.drawing.maps.figure import map_data, map_figure, new_figure, render_map, render_preset
+from regimemap.drawing.maps.mapplot import MapStyle, draw_design_points, draw_map
+from regimemap.drawing.maps.presets import PRESETS
 from regimemap.drawing.save import FORMATS, format_from_path, save_figure
 from regimemap.drawing.style import MODE_STYLE
 from regimemap.io.points import DesignPoint
@@ -302,7 +302,7 @@ def test_no_pyplot_and_no_global_rcparams():
         "keys = [k for k in rc if k != 'backend']  # reading 'backend' would import pyplot\n"
         "before = {k: rc[k] for k in keys}\n"
         "from regimemap import Parameters\n"
-        "from regimemap.drawing.figure import render_map\nfrom regimemap.drawing.save import save_figure\n"
+        "from regimemap.drawing.maps.figure import render_map\nfrom regimemap.drawing.save import save_figure\n"
         "import io\n"
         "fig = render_map(Parameters(3, 0.4), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"
@@ -351,11 +351,11 @@ def test_point_names_never_overlap(gamma):
 def test_point_offsets_for_crowded_axis_points():
     from types import SimpleNamespace as P
 
-    from regimemap.drawing.labels import ABOVE as _ABOVE
-    from regimemap.drawing.labels import LEFT_OF as _LEFT_OF
-    from regimemap.drawing.labels import POINT_OFFSET as _POINT_OFFSET
-    from regimemap.drawing.labels import RIGHT_OF as _RIGHT_OF
-    from regimemap.drawing.labels import point_offsets as _point_offsets
+    from regimemap.drawing.text.labels import ABOVE as _ABOVE
+    from regimemap.drawing.text.labels import LEFT_OF as _LEFT_OF
+    from regimemap.drawing.text.labels import POINT_OFFSET as _POINT_OFFSET
+    from regimemap.drawing.text.labels import RIGHT_OF as _RIGHT_OF
+    from regimemap.drawing.text.labels import point_offsets as _point_offsets
 
     frame = P(k_max=1.0, w_pt=400.0)  # 1 unit of k = 400 points
     pts = {"O": P(k=0.0, mu=0.0), "F": P(k=0.50, mu=0.0), "E": P(k=0.51, mu=0.0),

@@ -30,7 +30,7 @@ def test_panel_d_fills_are_the_maps_exact_polygons(text: str) -> None:
     """Each region of (d) is a Polygon patch whose vertices are compute_map's, mode by mode."""
     from matplotlib.patches import Polygon
 
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.drawing.style import MODE_STYLE
     from regimemap.maps.caisson import map_view
     from regimemap.maps.mapdata import compute_map
@@ -62,7 +62,7 @@ def test_panel_d_draws_no_contours() -> None:
     from matplotlib.collections import PathCollection
     from matplotlib.contour import ContourSet
 
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
 
     fig = sheet_figure(_report(example_design_text()))
     (ax,) = [a for a in fig.axes if a.get_label() == "map"]
@@ -71,7 +71,7 @@ def test_panel_d_draws_no_contours() -> None:
 
 
 def test_panel_d_keys_the_modes_in_view_and_the_lines() -> None:
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
 
     fig = sheet_figure(_report(example_design_text()))
     (ax,) = [a for a in fig.axes if a.get_label() == "map"]
@@ -86,7 +86,7 @@ def test_panel_d_keys_the_modes_in_view_and_the_lines() -> None:
 
 
 def test_sheet_map_data_is_compute_map_in_the_view() -> None:
-    from regimemap.drawing.sheet import sheet_map_data
+    from regimemap.drawing.sheet.page import sheet_map_data
     from regimemap.maps.caisson import map_view
 
     report = _report(example_design_text())
@@ -99,7 +99,7 @@ def test_sheet_map_data_is_compute_map_in_the_view() -> None:
 
 def _overlaps(fig) -> list[tuple[str, str]]:
     """Pairs of texts of the sheet that overlap: every text, the keys' and tick labels too."""
-    from regimemap.drawing.labelplacer import figure_texts
+    from regimemap.drawing.text.labelplacer import figure_texts
 
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
@@ -111,7 +111,7 @@ def _overlaps(fig) -> list[tuple[str, str]]:
 def test_the_lifetime_sheet_draws_the_required_factors_and_no_text_overlaps() -> None:
     """With panel (g), (e) is drawn shorter: it still draws the file's required safety factors;
     no text of the sheet (the key of (d) included) meets another, with or without (g)."""
-    from regimemap.drawing.sheet import sheet_figure
+    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.lifetime import lifetime_sliding
 
     d = parse_design(example_design_text())

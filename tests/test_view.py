@@ -12,7 +12,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from regimemap import Mode, Parameters, classify
-from regimemap.drawing.placement import (
+from regimemap.drawing.text.placement import (
     box_hits,
     curve_label_anchor,
     interior_point,
@@ -292,7 +292,7 @@ def test_curve_label_anchor_keeps_clear_of_lines():
 
 @pytest.mark.subprocess
 def test_view_does_not_import_matplotlib():
-    code = ("import sys, regimemap.maps.view, regimemap.drawing.presets; "
+    code = ("import sys, regimemap.maps.view, regimemap.drawing.maps.presets; "
             "print(any(m.startswith('matplotlib') for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"

@@ -12,9 +12,9 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from regimemap.drawing.dynamics_presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # noqa: E402
-from regimemap.drawing.outcome import outcome_figure, outcome_title  # noqa: E402
-from regimemap.drawing.outcome_text import outcome_text_boxes  # noqa: E402
+from regimemap.drawing.motion.presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # noqa: E402
+from regimemap.drawing.outcome.figure import outcome_figure, outcome_title  # noqa: E402
+from regimemap.drawing.outcome.text import outcome_text_boxes  # noqa: E402
 from regimemap.drawing.save import save_figure  # noqa: E402
 from regimemap.dynamics import OutcomeMap  # noqa: E402
 from regimemap.dynamics.boundaries import refine_crossings  # noqa: E402

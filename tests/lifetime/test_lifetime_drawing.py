@@ -17,11 +17,11 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from regimemap.drawing.labelplacer import figure_texts  # noqa: E402
-from regimemap.drawing.lifetime import lifetime_figure  # noqa: E402
-from regimemap.drawing.lifetime_chart import chart_figure  # noqa: E402
+from regimemap.drawing.lifetime.chart import chart_figure  # noqa: E402
+from regimemap.drawing.lifetime.exceedance import lifetime_figure  # noqa: E402
 from regimemap.drawing.save import print_figure  # noqa: E402
-from regimemap.drawing.tidy import MEASURE_DPI  # noqa: E402
+from regimemap.drawing.text.labelplacer import figure_texts  # noqa: E402
+from regimemap.drawing.text.tidy import MEASURE_DPI  # noqa: E402
 from regimemap.lifetime import (  # noqa: E402
     Caisson,
     Climate,
@@ -298,7 +298,7 @@ def _goda_report():
 
 
 def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
-    from regimemap.drawing.sheet import LIFETIME_PANEL, PANELS, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS, sheet_figure
 
     fig = sheet_figure(_goda_report(), title="goda.toml")
     labels = [ax.get_label() for ax in fig.axes]
@@ -307,7 +307,7 @@ def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
 
 
 def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResult) -> None:
-    from regimemap.drawing.sheet import LIFETIME_PANEL, PANELS, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS, sheet_figure
 
     report = _goda_report()
     fig = sheet_figure(report, title="goda.toml", lifetime=goda)
@@ -343,7 +343,7 @@ def test_the_lifetime_figure_says_pass_or_fail_and_colours_a_failing_esd(goda: L
                                                                          word: str) -> None:
     from matplotlib.colors import to_hex
 
-    from regimemap.drawing.lifetime import lifetime_title
+    from regimemap.drawing.lifetime.exceedance import lifetime_title
     from regimemap.drawing.verdict import FAIL_COLOUR
 
     result = _judged(goda, target, failure=5.0)
@@ -374,7 +374,7 @@ def test_no_zone_off_the_mound_without_a_lifetime_beyond_it(wide: LifetimeResult
 def test_the_chart_draws_the_interval_the_design_width_and_the_verdict(chart: DesignChart) -> None:
     from matplotlib.colors import to_hex
 
-    from regimemap.drawing.lifetime_chart import chart_title
+    from regimemap.drawing.lifetime.chart import chart_title
     from regimemap.drawing.verdict import FAIL_COLOUR
     from regimemap.lifetime import judge_chart
 

@@ -22,16 +22,16 @@ import importlib
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
-    from .ambiguity import draw_ambiguity
-    from .animation import write_animation
-    from .artists import MapArtists
-    from .atlas import atlas_figure, write_atlas
-    from .figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
-    from .lifetime import lifetime_figure
-    from .lifetime_chart import chart_figure
-    from .mapplot import MapStyle, default_title, draw_design_points, draw_map
-    from .motion import motion_figure
-    from .outcome import OutcomeStyle, draw_outcome_map, outcome_figure
+    from .maps.ambiguity import draw_ambiguity
+    from .maps.animation import write_animation
+    from .maps.artists import MapArtists
+    from .maps.atlas import atlas_figure, write_atlas
+    from .maps.figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
+    from .lifetime.exceedance import lifetime_figure
+    from .lifetime.chart import chart_figure
+    from .maps.mapplot import MapStyle, default_title, draw_design_points, draw_map
+    from .motion.history import motion_figure
+    from .outcome.figure import OutcomeStyle, draw_outcome_map, outcome_figure
     from .save import save_figure
     from .style import MODE_STYLE, OUTCOME_STYLE, style_context
 
@@ -65,31 +65,31 @@ __all__ = [
 ]
 
 _WHERE = {
-    "FIGSIZE": "figure",
-    "MapArtists": "artists",
-    "MapStyle": "mapplot",
-    "default_title": "mapplot",
-    "draw_design_points": "mapplot",
-    "draw_map": "mapplot",
-    "fit_figure": "figure",
-    "map_figure": "figure",
-    "new_figure": "figure",
-    "render_map": "figure",
-    "render_preset": "figure",
+    "FIGSIZE": "maps.figure",
+    "MapArtists": "maps.artists",
+    "MapStyle": "maps.mapplot",
+    "default_title": "maps.mapplot",
+    "draw_design_points": "maps.mapplot",
+    "draw_map": "maps.mapplot",
+    "fit_figure": "maps.figure",
+    "map_figure": "maps.figure",
+    "new_figure": "maps.figure",
+    "render_map": "maps.figure",
+    "render_preset": "maps.figure",
     "MODE_STYLE": "style",
     "style_context": "style",
-    "atlas_figure": "atlas",
-    "write_atlas": "atlas",
-    "write_animation": "animation",
-    "draw_ambiguity": "ambiguity",
+    "atlas_figure": "maps.atlas",
+    "write_atlas": "maps.atlas",
+    "write_animation": "maps.animation",
+    "draw_ambiguity": "maps.ambiguity",
     "save_figure": "save",
     "OUTCOME_STYLE": "style",
-    "OutcomeStyle": "outcome",
-    "draw_outcome_map": "outcome",
-    "outcome_figure": "outcome",
-    "motion_figure": "motion",
-    "lifetime_figure": "lifetime",
-    "chart_figure": "lifetime_chart",
+    "OutcomeStyle": "outcome.figure",
+    "draw_outcome_map": "outcome.figure",
+    "outcome_figure": "outcome.figure",
+    "motion_figure": "motion.history",
+    "lifetime_figure": "lifetime.exceedance",
+    "chart_figure": "lifetime.chart",
 }
 
 

@@ -1,14 +1,14 @@
 """The regime map, live: sliders for gamma and k' (and the loads), a click for the physics.
 
 :class:`Explorer` builds one matplotlib figure: the map of ``regimemap plot``
-on the left, drawn by the same functions (:func:`~regimemap.drawing.figure.map_data`
-and :func:`~regimemap.drawing.mapplot.draw_map`: the same view, the same
+on the left, drawn by the same functions (:func:`~regimemap.drawing.maps.figure.map_data`
+and :func:`~regimemap.drawing.maps.mapplot.draw_map`: the same view, the same
 polygons); on the right, sliders for the aspect ratio gamma (log scale) and
 the force height k', a check box that shows two more sliders for the
 buoyancy beta and the uplift ratio nu, a *Save* button, and a text panel.
 A click on the map shows in the panel (and prints) the mode at that point,
 its margins and the physics at initiation; *Save* writes the current view as
-``regimemap plot`` draws it (the same :func:`~regimemap.drawing.figure.map_figure`,
+``regimemap plot`` draws it (the same :func:`~regimemap.drawing.maps.figure.map_figure`,
 the same bytes).
 
 Only matplotlib's own widgets are used (``Slider``, ``CheckButtons``,
@@ -24,19 +24,19 @@ from exactly ``plot``'s data (the same polygons and lines, at the same
 resolution), but without the mode symbols in the regions, with a title
 without mathtext (:func:`drag_title`), with the key and the widgets that do
 not move drawn from bitmaps
-(:class:`~regimemap.drawing.explore_images.KeyImage`,
-:class:`~regimemap.drawing.explore_images.WidgetsImage`) and with the panel's
+(:class:`~regimemap.drawing.explore.images.KeyImage`,
+:class:`~regimemap.drawing.explore.images.WidgetsImage`) and with the panel's
 answer left for later; when the mouse is released (and after every call from
 code) the map is drawn whole, with ``plot``'s legibility pass
-(:func:`~regimemap.drawing.tidy.tidy_figure`), and the panel is brought up to
+(:func:`~regimemap.drawing.text.tidy.tidy_figure`), and the panel is brought up to
 date.  The panel's text is drawn from a bitmap made once per text
-(:class:`~regimemap.drawing.explore_images.TextPanel`).
+(:class:`~regimemap.drawing.explore.images.TextPanel`).
 ``bench/bench_explore.py`` measures both kinds of update.
 
 The figure's layout and widgets are built by
-:mod:`~regimemap.drawing.explore_layout`, the bitmap artists live in
-:mod:`~regimemap.drawing.explore_images`, the texts and rounding in
-:mod:`~regimemap.drawing.explore_text`; this module wires them to
+:mod:`~regimemap.drawing.explore.layout`, the bitmap artists live in
+:mod:`~regimemap.drawing.explore.images`, the texts and rounding in
+:mod:`~regimemap.drawing.explore.text`; this module wires them to
 :class:`Explorer` and re-exports their public names.  It uses pyplot (to
 open a window or a notebook canvas) when no figure is given; it never
 changes matplotlib's global settings.
@@ -50,14 +50,18 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..io.tables import format_result
-from ..maps.geometry import DEFAULT_SAMPLES
-from ..maps.points import DesignPoint
-from ..maps.query import PointResult, query_points
-from ..mechanics.block import LOAD_DEFAULTS, Parameters
-from .artists import MapArtists
-from .explore_images import KeyImage, TextPanel, WidgetsImage
-from .explore_layout import (
+from ...io.tables import format_result
+from ...maps.geometry import DEFAULT_SAMPLES
+from ...maps.points import DesignPoint
+from ...maps.query import PointResult, query_points
+from ...mechanics.block import LOAD_DEFAULTS, Parameters
+from ..maps.artists import MapArtists
+from ..maps.figure import map_data, map_figure
+from ..maps.mapplot import MapStyle, draw_design_points, draw_map
+from ..save import DEFAULT_DPI, format_from_path, save_figure
+from ..style import style_context
+from .images import KeyImage, TextPanel, WidgetsImage
+from .layout import (
     BUOYANCY_RANGE,
     EXPLORER_FIGSIZE,
     GAMMA_RANGE,
@@ -70,7 +74,7 @@ from .explore_layout import (
     show_load_sliders,
     tidy_in_place,
 )
-from .explore_text import (
+from .text import (
     HINT,
     default_file_stem,
     drag_title,
@@ -80,10 +84,6 @@ from .explore_text import (
     snap_load,
     window_problem,
 )
-from .figure import map_data, map_figure
-from .mapplot import MapStyle, draw_design_points, draw_map
-from .save import DEFAULT_DPI, format_from_path, save_figure
-from .style import style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -163,7 +163,7 @@ class Explorer:
     In Jupyter, after ``%matplotlib widget``::
 
         from regimemap import Parameters
-        from regimemap.drawing.explore import Explorer
+        from regimemap.drawing.explore.explorer import Explorer
 
         ex = Explorer(Parameters(gamma=3, kprime=0.4))
         ex.set_gamma(2.5)          # what the slider does
@@ -176,7 +176,7 @@ class Explorer:
                  write: Write | None = None, file_stem: Callable[[Parameters], str] | None = None,
                  echo: Callable[[str], None] | None = print, window: bool = True,
                  point: DesignPoint | None = None) -> None:
-        from ..mechanics.validation import check_resolution
+        from ...mechanics.validation import check_resolution
 
         p = Parameters(3.0, 0.4) if params is None else params
         self.resolution = check_resolution("resolution", resolution)
@@ -318,7 +318,7 @@ class Explorer:
     def save(self, path: str | Path | None = None) -> Path:
         """Write the current view as ``regimemap plot`` draws it; return the path.
 
-        The same function as ``plot`` (:func:`~regimemap.drawing.figure.map_figure`
+        The same function as ``plot`` (:func:`~regimemap.drawing.maps.figure.map_figure`
         with its defaults, ``--resolution``, the loads and the clicked point
         as ``--point K,MU``) and the same writer, so the file has ``plot``'s
         bytes.  Default path: ``file_stem(params) + ".png"`` in the current folder.

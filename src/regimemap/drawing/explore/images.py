@@ -1,6 +1,6 @@
 """Artists of ``regimemap explore`` drawn from bitmaps: the text panel, the key and the widgets.
 
-Split from :mod:`regimemap.drawing.explore`.  A figure is drawn whole on
+Split from :mod:`regimemap.drawing.explore.explorer`.  A figure is drawn whole on
 every change of a slider and matplotlib renders text glyph by glyph; these
 artists render their text once per content (with matplotlib, at the canvas's
 resolution) and then draw the cached pixels.
@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from matplotlib.artist import Artist
 
-from .style import style_context
+from ..style import style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from collections.abc import Hashable, Sequence

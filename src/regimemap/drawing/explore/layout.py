@@ -1,9 +1,9 @@
 """The figure and widgets of ``regimemap explore``: where everything sits, and the ranges.
 
-Split from :mod:`regimemap.drawing.explore` (which re-exports the public
+Split from :mod:`regimemap.drawing.explore.explorer` (which re-exports the public
 names): :func:`build_widgets` lays out the map's axes, the sliders, the
 check box, the Save button and the text panel on the explorer's figure;
-:class:`~regimemap.drawing.explore.Explorer` wires them to its methods.
+:class:`~regimemap.drawing.explore.explorer.Explorer` wires them to its methods.
 The other functions act on that figure: show or hide the load sliders,
 draw the still widgets from bitmaps during a drag, clear the map, run
 ``plot``'s legibility pass in place and ask the canvas for a draw.
@@ -15,16 +15,16 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from .explore_images import KeyImage, TextPanel, WidgetsImage
-from .style import style_context
-from .tidy import tidy_figure
+from ..style import style_context
+from ..text.tidy import tidy_figure
+from .images import KeyImage, TextPanel, WidgetsImage
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
     from matplotlib.widgets import Button, CheckButtons, Slider
 
-    from .artists import MapArtists
+    from ..maps.artists import MapArtists
 
 __all__ = [
     "BUOYANCY_RANGE",
@@ -202,7 +202,7 @@ def request_draw(fig: Figure) -> None:
 
 
 def clear_map(ax: Axes) -> None:
-    """Remove what :func:`~regimemap.drawing.mapplot.draw_map` drew on ``ax`` (the axes stay)."""
+    """Remove what :func:`~regimemap.drawing.maps.mapplot.draw_map` drew on ``ax`` (the axes stay)."""
     for a in [*ax.patches, *ax.lines, *ax.texts, *ax.collections, *ax.artists]:
         a.remove()
     legend = ax.get_legend()
@@ -211,7 +211,7 @@ def clear_map(ax: Axes) -> None:
 
 
 def tidy_in_place(fig: Figure, art: MapArtists) -> None:
-    """``plot``'s legibility pass (:func:`~regimemap.drawing.tidy.tidy_figure`) on a live figure.
+    """``plot``'s legibility pass (:func:`~regimemap.drawing.text.tidy.tidy_figure`) on a live figure.
 
     It measures the texts at its own resolution and restores the figure's:
     with the window manager detached meanwhile, so that the window is not

@@ -1,6 +1,6 @@
 """The words and numbers of ``regimemap explore``: file names, rounding, titles, the hint.
 
-Split from :mod:`regimemap.drawing.explore` (which re-exports the public
+Split from :mod:`regimemap.drawing.explore.explorer` (which re-exports the public
 names): what the explorer writes and how it rounds what the widgets give
 (matplotlib is imported only by :func:`window_problem` and
 :func:`drag_title`, when called).
@@ -12,7 +12,7 @@ import math
 import os
 import sys
 
-from ..mechanics.block import Parameters
+from ...mechanics.block import Parameters
 
 __all__ = [
     "HINT",
@@ -109,8 +109,8 @@ def drag_title(params: Parameters) -> str:
     case only, and matplotlib caches its parse).  The release draws ``plot``'s
     title again.
     """
-    from ..maps.describe import LOAD_SYMBOLS, format_value, load_items
-    from .mapplot import default_title
+    from ...maps.describe import LOAD_SYMBOLS, format_value, load_items
+    from ..maps.mapplot import default_title
 
     def num(text: str) -> str:
         return text.replace("-", "\u2212")

@@ -4,8 +4,8 @@
 width with a band of two standard errors, the tolerable limits and the target, the width
 meeting the target and the width of Goda's deterministic design (SF = 1.2 under the 50-year
 wave).  Labels are placed once the figure is laid out
-(:class:`~regimemap.drawing.labelplacer.LabelPlacer`); colours, limits and numbers are
-:mod:`regimemap.drawing.lifetime_style`'s, shared with :mod:`regimemap.drawing.lifetime`.
+(:class:`~regimemap.drawing.text.labelplacer.LabelPlacer`); colours, limits and numbers are
+:mod:`regimemap.drawing.lifetime.style`'s, shared with :mod:`regimemap.drawing.lifetime.exceedance`.
 """
 
 from __future__ import annotations
@@ -15,8 +15,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..lifetime.chart import DesignChart
-from .labelplacer import (
+from ...lifetime.chart import DesignChart
+from ..save import DEFAULT_DPI
+from ..style import style_context
+from ..text.labelplacer import (
     LabelPlacer,
     Placed,
     corner_candidates,
@@ -24,7 +26,8 @@ from .labelplacer import (
     make_label,
     vline_candidates,
 )
-from .lifetime_style import (
+from ..verdict import draw_verdict_badge, verdict_colour
+from .style import (
     ESD_LINE,
     FILL,
     FS,
@@ -42,9 +45,6 @@ from .lifetime_style import (
     metres,
     title_height,
 )
-from .save import DEFAULT_DPI
-from .style import style_context
-from .verdict import draw_verdict_badge, verdict_colour
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes

@@ -6,16 +6,16 @@
   (b) the histogram of the lifetimes that slid (log-spaced bins; those that did not are counted
   in words);
 * :func:`draw_exceedance` -- the exceedance panel on any axes (the design sheet uses it);
-* :func:`~regimemap.drawing.lifetime_chart.chart_figure` -- the design chart, ESD against
-  width (in :mod:`regimemap.drawing.lifetime_chart`; importable from here too).
+* :func:`~regimemap.drawing.lifetime.chart.chart_figure` -- the design chart, ESD against
+  width (in :mod:`regimemap.drawing.lifetime.chart`; importable from here too).
 
 ``make figures`` draws Goda's caisson with ``regimemap lifetime`` into
 ``figures/lifetime-goda.*`` and ``figures/lifetime-chart-goda.*``.
 
 Most lifetimes do not slide at all and those that do spread over several decades, so the
 sliding is drawn on logarithmic axes.  Labels are placed once the figure is laid out
-(:class:`~regimemap.drawing.labelplacer.LabelPlacer`); colours, limits and numbers are
-:mod:`regimemap.drawing.lifetime_style`'s.  Nothing is computed here beyond the empirical
+(:class:`~regimemap.drawing.text.labelplacer.LabelPlacer`); colours, limits and numbers are
+:mod:`regimemap.drawing.lifetime.style`'s.  Nothing is computed here beyond the empirical
 curves of the arrays.
 """
 
@@ -27,11 +27,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..lifetime.results import LifetimeResult
-from ..mechanics.checks import Check
-from .labelplacer import Candidate, LabelPlacer, Placed, corner_candidates, make_label, vline_candidates
-from .lifetime_chart import chart_figure
-from .lifetime_style import (
+from ...lifetime.results import LifetimeResult
+from ...mechanics.checks import Check
+from ..save import DEFAULT_DPI
+from ..style import style_context
+from ..text.labelplacer import Candidate, LabelPlacer, Placed, corner_candidates, make_label, vline_candidates
+from ..verdict import draw_verdict_badge, verdict_colour
+from .chart import chart_figure
+from .style import (
     BAND,
     BAR_EDGE,
     FILL,
@@ -55,9 +58,6 @@ from .lifetime_style import (
     title_height,
     value_pm,
 )
-from .save import DEFAULT_DPI
-from .style import style_context
-from .verdict import draw_verdict_badge, verdict_colour
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes

@@ -1,7 +1,7 @@
 """The look of the lifetime figures: colours, line styles, the tolerable limits, numbers, log axes.
 
-Shared by the exceedance figure (:mod:`regimemap.drawing.lifetime`), the design
-chart (:mod:`regimemap.drawing.lifetime_chart`) and the design sheet's lifetime
+Shared by the exceedance figure (:mod:`regimemap.drawing.lifetime.exceedance`), the design
+chart (:mod:`regimemap.drawing.lifetime.chart`) and the design sheet's lifetime
 panel.  No matplotlib at import time.
 """
 
@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..maps.describe import format_significant
+from ...maps.describe import format_significant
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes

@@ -27,9 +27,9 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
-from ..maps.ambiguity import AmbiguousRegion, ambiguous_regions
-from ..maps.geometry import DEFAULT_SAMPLES
-from ..mechanics.block import Parameters
+from ...maps.ambiguity import AmbiguousRegion, ambiguous_regions
+from ...maps.geometry import DEFAULT_SAMPLES
+from ...mechanics.block import Parameters
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.backend_bases import RendererBase
@@ -134,7 +134,7 @@ def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
     -----
     A legend cannot take a new entry in place: the axes' legend is replaced
     by a new one with the same entries, placement and handlers, plus this one.
-    A :class:`~regimemap.drawing.artists.MapArtists` of the map then still holds the
+    A :class:`~regimemap.drawing.maps.artists.MapArtists` of the map then still holds the
     old legend; set its ``legend`` to ``ax.get_legend()``.
     """
     st = AMBIGUITY_STYLE
@@ -178,7 +178,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
     ``placed`` holds the boxes (axes fractions x0, y0, x1, y1) of labels
     already written; an outside label avoids them.
     """
-    from .placement import label_anchor
+    from ..text.placement import label_anchor
 
     st = AMBIGUITY_STYLE
     text = r.tex
@@ -211,7 +211,7 @@ def _annotate(ax: Axes, r: AmbiguousRegion, k_max: float, mu_max: float,
 def _label_size(ax: Axes, r: AmbiguousRegion, fs: float) -> tuple[float, float]:
     """The size of the region's label (two lines, with a margin) as fractions of the axes
     (approximate text metrics)."""
-    from .style import text_size
+    from ..style import text_size
 
     fig = ax.figure
     if not isinstance(fig, Figure):  # a SubFigure has no size of its own

@@ -1,7 +1,7 @@
 """An animation of the map: a GIF as k' (or a load) sweeps a range, on fixed axes.
 
 :func:`render_animation` draws every frame (:func:`draw_frame`: the all-mode map
-of :func:`regimemap.drawing.mapplot.draw_map`, its caption, the frame's value in
+of :func:`regimemap.drawing.maps.mapplot.draw_map`, its caption, the frame's value in
 a box, the key) on one figure and writes the GIF with matplotlib's
 ``PillowWriter`` (no pyplot); :func:`write_animation` writes it to a file
 atomically.  The frames' values and their shared view come from
@@ -17,13 +17,13 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..maps.describe import loads_text
-from ..maps.sweeps import sweep_extent, sweep_params
-from ..mechanics.block import Parameters
-from ..mechanics.modes import MAP_MODES, Mode
-from ..mechanics.validation import check_gamma
+from ...maps.describe import loads_text
+from ...maps.sweeps import sweep_extent, sweep_params
+from ...mechanics.block import Parameters
+from ...mechanics.modes import MAP_MODES, Mode
+from ...mechanics.validation import check_gamma
+from ..limits import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
 from .atlas import SAMPLES, checked_values, key_modes, sweep_text
-from .limits import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
 from .mapplot import MapStyle, draw_map
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -32,7 +32,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
     from PIL.Image import Image
 
-    from ..maps.mapdata import MapData
+    from ...maps.mapdata import MapData
     from .artists import MapArtists
 
 __all__ = [
@@ -122,7 +122,7 @@ def frame_figure(figsize: tuple[float, float] | None = None, dpi: float = ANIMAT
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from .style import style_context
+    from ..style import style_context
 
     w, h = figsize or FRAME_SIZE
     with style_context():
@@ -142,14 +142,14 @@ def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float,
     The caption states the report's case (or the block's loads) above the map,
     the frame's gamma and k' (or ``swept``, the swept load, in mathtext) sit in
     a box beside it (outside the map), and the key below lists the modes, sized
-    to the frame; then :func:`regimemap.drawing.tidy.tidy_figure` keeps every
+    to the frame; then :func:`regimemap.drawing.text.tidy.tidy_figure` keeps every
     text clear of the others.  ``block`` is the frame's block with loads
     (default ``Parameters(gamma, kprime)``) and ``data`` its precomputed map.
     """
-    from ..maps.mapdata import compute_map
+    from ...maps.mapdata import compute_map
+    from ..style import style_context
+    from ..text.tidy import fit_title, tidy_figure
     from .key import key_legend
-    from .style import style_context
-    from .tidy import fit_title, tidy_figure
 
     p = Parameters(gamma, kprime) if block is None else block
     loads = loads_text(p, tex=True)
@@ -217,7 +217,7 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
         Called as ``progress(i, n)`` after frame i of n.
     sweep, fixed : str, dict
         What the frames vary (k' or a load) and what they share, as in
-        :func:`regimemap.drawing.atlas.atlas_figure`.
+        :func:`regimemap.drawing.maps.atlas.atlas_figure`.
 
     Returns
     -------
@@ -230,8 +230,8 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     the case, a box outside the map gives gamma and k', and the key lists all
     six modes in every frame, so it does not jump.
     """
-    from ..maps.mapdata import compute_map
-    from .style import style_context
+    from ...maps.mapdata import compute_map
+    from ..style import style_context
 
     _check_frames(gamma, kprimes, fps, sweep, fixed)
     (g,), kps = checked_values([gamma], kprimes, sweep, fixed)  # k' up to the crest, if given
@@ -287,7 +287,7 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     OSError
         If the file cannot be written (nothing is left behind).
     """
-    from ..io.atomic import atomic_path
+    from ...io.atomic import atomic_path
 
     check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0),
                     sweep=kwargs.get("sweep", "kprime"), fixed=kwargs.get("fixed"))

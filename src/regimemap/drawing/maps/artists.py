@@ -1,8 +1,8 @@
 """What a map drawing returns: :class:`MapArtists`, the artists of one map and its data.
 
 A data type of its own, so that the code that reads a drawn map (the tidy pass,
-:mod:`regimemap.drawing.tidy`; the atlas; the explorer) depends on this type, not
-on the renderer (:mod:`regimemap.drawing.mapplot`).  No matplotlib at run time.
+:mod:`regimemap.drawing.text.tidy`; the atlas; the explorer) depends on this type, not
+on the renderer (:mod:`regimemap.drawing.maps.mapplot`).  No matplotlib at run time.
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ..maps.mapdata import MapData
-from ..mechanics.modes import Mode
+from ...maps.mapdata import MapData
+from ...mechanics.modes import Mode
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
@@ -27,7 +27,7 @@ __all__ = ["MapArtists"]
 
 @dataclass
 class MapArtists:
-    """What :func:`~regimemap.drawing.mapplot.draw_map` drew, and the data behind it.
+    """What :func:`~regimemap.drawing.maps.mapplot.draw_map` drew, and the data behind it.
 
     Attributes
     ----------

@@ -1,11 +1,11 @@
 """Many maps at once: an atlas of small multiples, rows gamma and columns k' (or a load).
 
-:func:`atlas_figure` draws the all-mode map (:func:`regimemap.drawing.mapplot.draw_map`)
+:func:`atlas_figure` draws the all-mode map (:func:`regimemap.drawing.maps.mapplot.draw_map`)
 for every pair of a list of gamma (rows) and a list of k' (columns), on
 shared axes, with one legend and each panel titled with its gamma and k';
 :func:`write_atlas` writes it to a file atomically.  What the panels sweep and
 the views they share are chosen in :mod:`regimemap.maps.sweeps` (no
-matplotlib); the animation over k' is :mod:`regimemap.drawing.animation`.
+matplotlib); the animation over k' is :mod:`regimemap.drawing.maps.animation`.
 Limit: :data:`MAX_PANELS` panels.
 
 matplotlib is imported inside the functions that draw, never at import time.
@@ -19,17 +19,17 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..maps.describe import format_value
-from ..maps.sweeps import SWEEPS, resolve_share, sweep_params
-from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
-from ..mechanics.validation import check_gamma, check_kprime
-from .limits import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
+from ...maps.describe import format_value
+from ...maps.sweeps import SWEEPS, resolve_share, sweep_params
+from ...mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
+from ...mechanics.validation import check_gamma, check_kprime
+from ..limits import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ..maps.mapdata import MapData
+    from ...maps.mapdata import MapData
     from .artists import MapArtists
     from .mapplot import MapStyle
 
@@ -74,7 +74,7 @@ def sweep_text(sweep: str, value: float) -> str:
 
 
 def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
-    """The map key's handles (:func:`regimemap.drawing.key.key_handles`) for every mode."""
+    """The map key's handles (:func:`regimemap.drawing.maps.key.key_handles`) for every mode."""
     from .key import key_handles
 
     return key_handles(modes, dotted_label=r"dotted line $\mu = k|k'|$ (4.22)" if dotted else None)
@@ -262,11 +262,11 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     view : {"designer", "report"}
         The panels' own views (:func:`regimemap.maps.designer_view.view_extent`).
     style : MapStyle, optional
-        How each panel is drawn (:class:`~regimemap.drawing.mapplot.MapStyle`):
+        How each panel is drawn (:class:`~regimemap.drawing.maps.mapplot.MapStyle`):
         its ``curves`` (boundary curves and named points), ``labels`` (mode
         symbols), ``hatches`` and ``tidy`` (mark the points off view and move any
-        text that collides, :func:`regimemap.drawing.tidy.tidy_figure`; False
-        leaves every label where :func:`~regimemap.drawing.mapplot.draw_map` put
+        text that collides, :func:`regimemap.drawing.text.tidy.tidy_figure`; False
+        leaves every label where :func:`~regimemap.drawing.maps.mapplot.draw_map` put
         it).  Each panel has its own title and no key: the figure has one.
     caption : str, optional
         A first line of the title (a figure's number and caption); the top
@@ -299,10 +299,10 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from ..maps.mapdata import compute_map
+    from ...maps.mapdata import compute_map
+    from ..style import style_context
     from .key import key_legend
     from .mapplot import MapStyle
-    from .style import style_context
 
     panel_size, extents = _layout_options(layout)
     style = MapStyle() if style is None else style
@@ -338,7 +338,7 @@ def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: st
                    handleheight=1.1, columnspacing=1.5)
         fig.suptitle(title, fontsize=10.5, y=1.0 - 0.15 / frame.fh, va="top")
         if style.tidy:
-            from .tidy import tidy_figure
+            from ..text.tidy import tidy_figure
 
             tidy_figure(fig, arts)
     fig._regimemap_maps = arts  # type: ignore[attr-defined]  # what each panel drew
@@ -394,7 +394,7 @@ def write_atlas(path: str | os.PathLike[str], gammas: Sequence[float], kprimes: 
     OSError
         If the file cannot be written (nothing is left behind).
     """
-    from .save import format_from_path, save_figure
+    from ..save import format_from_path, save_figure
 
     fmt = format_from_path(path, fmt)
     fig = atlas_figure(gammas, kprimes, **kwargs)

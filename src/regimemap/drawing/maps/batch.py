@@ -42,10 +42,10 @@ def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: 
     One Figure is reused for all the maps: its renderer keeps the text caches warm.  With
     ``keep`` (a worker process) it is also kept for the worker's next task.
     """
+    from ..save import save_figure
     from .figure import render_preset
     from .model import MODEL_FIGURE_ID, model_figure
     from .presets import get_preset
-    from .save import save_figure
     from .worked import WORKED, render_worked
 
     fig: Figure | None = _KEPT.pop("fig", None) if keep else None
@@ -98,8 +98,8 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
         An existing folder.
     ids : sequence of str
         The report's numbers: ``"2.1"`` (the model) and those of
-        :data:`regimemap.drawing.presets.PRESETS`, and the worked figures of
-        :data:`regimemap.drawing.worked.WORKED` (``"W.1"`` ...).
+        :data:`regimemap.drawing.maps.presets.PRESETS`, and the worked figures of
+        :data:`regimemap.drawing.maps.worked.WORKED` (``"W.1"`` ...).
     formats : sequence of str
         ``"png"``, ``"svg"``, ``"pdf"``.
     dpi : float

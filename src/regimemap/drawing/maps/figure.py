@@ -2,7 +2,7 @@
 
 :func:`map_data` computes what the map of a block shows in the designer's or
 the report's view; :func:`map_figure` makes a Figure (Agg canvas, no pyplot)
-with one map drawn by :func:`regimemap.drawing.mapplot.draw_map` and sized to
+with one map drawn by :func:`regimemap.drawing.maps.mapplot.draw_map` and sized to
 its key; :func:`render_preset` draws one of the report's figures.
 """
 
@@ -14,21 +14,21 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.geometry import DEFAULT_SAMPLES
-from ..maps.mapdata import MapData, compute_map
-from ..mechanics.block import Parameters
-from ..mechanics.modes import MAP_MODES, Mode
+from ...maps.geometry import DEFAULT_SAMPLES
+from ...maps.mapdata import MapData, compute_map
+from ...mechanics.block import Parameters
+from ...mechanics.modes import MAP_MODES, Mode
+from ..save import DEFAULT_DPI
+from ..style import style_context
+from ..text.tidy import tidy_figure
 from .artists import MapArtists
 from .mapplot import MapStyle, draw_design_points, draw_map
-from .save import DEFAULT_DPI
-from .style import style_context
-from .tidy import tidy_figure
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ..maps.points import DesignPoint
+    from ...maps.points import DesignPoint
     from .presets import FigurePreset
 
 __all__ = ["FIGSIZE", "fit_figure", "map_data", "map_figure", "new_figure", "preset_figure",
@@ -161,7 +161,7 @@ def map_data(params: Parameters, *, view: str = "designer", k_max: float | None 
     """
     include = list(include)
     if k_max is None or mu_max is None:
-        from ..maps.designer_view import view_extent
+        from ...maps.designer_view import view_extent
 
         modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
         if modes is not None:  # None: every mode the block shows (LO with loads)
@@ -190,7 +190,7 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
     params : Parameters
         The block.
     style : MapStyle, optional
-        How the map is drawn (:func:`~regimemap.drawing.mapplot.draw_map`).
+        How the map is drawn (:func:`~regimemap.drawing.maps.mapplot.draw_map`).
     data : MapData, optional
         The map, computed beforehand (``view`` ... ``include`` are then ignored).
     view, k_max, mu_max, modes, raw, samples, include
@@ -200,12 +200,12 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
         figure's height is fitted to the key.
     dpi : float
     points : sequence of DesignPoint
-        Design points, marked with :func:`~regimemap.drawing.mapplot.draw_design_points`
+        Design points, marked with :func:`~regimemap.drawing.maps.mapplot.draw_design_points`
         and kept in the automatic view.
     fig : Figure, optional
         A figure to reuse (see :func:`new_figure`).
     **style_fields
-        Fields of :class:`~regimemap.drawing.mapplot.MapStyle` (``title=``,
+        Fields of :class:`~regimemap.drawing.maps.mapplot.MapStyle` (``title=``,
         ``legend=`` ...), over those of ``style``.
 
     Returns
@@ -215,7 +215,7 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
     Notes
     -----
     With ``tidy`` (the default) the title is fitted to the figure and any
-    text that collides is moved (:func:`regimemap.drawing.tidy.tidy_figure`).
+    text that collides is moved (:func:`regimemap.drawing.text.tidy.tidy_figure`).
     """
     style = replace(style or MapStyle(), **style_fields)
     fig, ax = new_figure(figsize, dpi, fig)
@@ -242,7 +242,7 @@ def render_map(params: Parameters, **kwargs: Any) -> Figure:
 def preset_figure(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
                   samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
                   ) -> tuple[Figure, Axes, MapArtists]:
-    """One of the report's figures (:mod:`regimemap.drawing.presets`): figure, axes and artists.
+    """One of the report's figures (:mod:`regimemap.drawing.maps.presets`): figure, axes and artists.
 
     The preset's own view (the report's, with its explicit axes) and the tidy
     pass of every map.  Pass the previous figure as ``fig`` to reuse it.

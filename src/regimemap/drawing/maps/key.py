@@ -11,8 +11,8 @@ descriptions are plain text.  (A whole label such as
 ``"$SRO_{-}$  slide-rock about O"`` is one more mathtext parse per entry, and
 its parts could not be aligned.)
 
-This module imports matplotlib; :mod:`regimemap.drawing.mapplot` and
-:mod:`regimemap.drawing.atlas` import it only when they draw.
+This module imports matplotlib; :mod:`regimemap.drawing.maps.mapplot` and
+:mod:`regimemap.drawing.maps.atlas` import it only when they draw.
 """
 
 from __future__ import annotations
@@ -25,8 +25,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
 from matplotlib.text import Text
 
-from ..mechanics.modes import Mode
-from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol
+from ...mechanics.modes import Mode
+from ..style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE, mode_symbol
 
 if TYPE_CHECKING:
     from matplotlib.axes import Axes

@@ -3,10 +3,10 @@
 :func:`draw_map` draws one :class:`~regimemap.maps.mapdata.MapData` (region
 polygons, curves, named points: :func:`regimemap.maps.mapdata.compute_map`) on
 an :class:`~matplotlib.axes.Axes`, as a :class:`MapStyle` asks; it computes
-nothing (the figure functions of :mod:`regimemap.drawing.figure` compute the
+nothing (the figure functions of :mod:`regimemap.drawing.maps.figure` compute the
 data of a block and its view).  The texts are written by
-:mod:`regimemap.drawing.labels`; what was drawn comes back as
-:class:`~regimemap.drawing.artists.MapArtists`.
+:mod:`regimemap.drawing.text.labels`; what was drawn comes back as
+:class:`~regimemap.drawing.maps.artists.MapArtists`.
 
 >>> from regimemap import Parameters
 >>> from regimemap.drawing import render_map, save_figure
@@ -27,15 +27,15 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.describe import loads_text
-from ..maps.geometry import area_in_view
-from ..maps.mapdata import CurveData, MapData
-from ..mechanics.block import Parameters
-from ..mechanics.modes import MAP_MODES, Mode
+from ...maps.describe import loads_text
+from ...maps.geometry import area_in_view
+from ...maps.mapdata import CurveData, MapData
+from ...mechanics.block import Parameters
+from ...mechanics.modes import MAP_MODES, Mode
+from ..style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE
+from ..text.labels import Frame, curve_labels, mark_off_view, name_points, region_labels
+from ..text.placement import Box, view_points
 from .artists import MapArtists
-from .labels import Frame, curve_labels, mark_off_view, name_points, region_labels
-from .placement import Box, view_points
-from .style import CONSTRUCTION, DOTTED, HATCH_LW, LINE_LW, MODE_STYLE
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
@@ -43,7 +43,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
-    from ..maps.points import DesignPoint
+    from ...maps.points import DesignPoint
 
 __all__ = [
     "MODE_STYLE",
@@ -82,7 +82,7 @@ class MapStyle:
         marked at the frame's edge with an arrow and their coordinates, a thin
         region's symbol is framed on the band, and a dotted line that coincides
         with a boundary is left out (and out of the key).
-        :func:`regimemap.drawing.tidy.tidy_figure` then moves any text that
+        :func:`regimemap.drawing.text.tidy.tidy_figure` then moves any text that
         collides; the report's figures are drawn with ``tidy=False``.
     legend_kw : mapping, optional
         Extra keyword arguments of :meth:`~matplotlib.axes.Axes.legend`.
@@ -155,7 +155,7 @@ def draw_map(ax: Axes, data: MapData, style: MapStyle | None = None) -> MapArtis
         The axes of a :class:`~matplotlib.figure.Figure`; their limits become the view.
     data : MapData
         What the map shows (:func:`regimemap.maps.mapdata.compute_map`, or
-        :func:`regimemap.drawing.figure.map_data` for the designer's or the
+        :func:`regimemap.drawing.maps.figure.map_data` for the designer's or the
         report's view of a block).
     style : MapStyle, optional
         Which layers, the title and the key (default :class:`MapStyle()`).
@@ -316,7 +316,7 @@ def draw_design_points(ax: Axes, points: Sequence[DesignPoint], *, fontsize: flo
     points : sequence of DesignPoint
         Points (k, mu, name); unnamed points get no text.
     tagged : bool
-        Give the artists the ids :func:`regimemap.drawing.tidy.tidy_figure`
+        Give the artists the ids :func:`regimemap.drawing.text.tidy.tidy_figure`
         knows them by (``design-dots``, ``design-name``; default).  False
         draws them as the report's figures are drawn.
 

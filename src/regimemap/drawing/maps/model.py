@@ -14,8 +14,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from .save import DEFAULT_DPI
-from .style import style_context
+from ..save import DEFAULT_DPI
+from ..style import style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes

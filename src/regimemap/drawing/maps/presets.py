@@ -12,7 +12,7 @@ Captions lost from the source text (Figs 3.1, 3.3a, 3.4, 3.8, 4.4a-b, 4.5a,
 4.6a, 4.7a-b) are reconstructed from the report's wording of their companion
 captions and of the text that cites them; :attr:`FigurePreset.caption_source`
 says which.  This module does not import matplotlib; drawing is
-:func:`regimemap.drawing.figure.render_preset`.
+:func:`regimemap.drawing.maps.figure.render_preset`.
 """
 
 from __future__ import annotations
@@ -22,8 +22,8 @@ import math
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from ..mechanics.block import Case, Parameters
-from ..mechanics.modes import MAP_MODES, Mode
+from ...mechanics.block import Case, Parameters
+from ...mechanics.modes import MAP_MODES, Mode
 
 __all__ = ["FigurePreset", "PRESETS", "FIGURE_IDS", "get_preset", "normalise_id", "suggest_ids"]
 

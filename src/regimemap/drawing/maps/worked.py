@@ -27,9 +27,9 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from ..maps.describe import load_items, loads_text
-from ..maps.points import DesignPoint
-from ..mechanics.block import Parameters
+from ...maps.describe import load_items, loads_text
+from ...maps.points import DesignPoint
+from ...mechanics.block import Parameters
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -110,8 +110,8 @@ WORKED_IDS: tuple[str, ...] = tuple(WORKED)
 def render_worked(worked: WorkedFigure | str, *, dpi: float | None = None,
                   fig: Figure | None = None, **kwargs: Any) -> Figure:
     """A Figure of one worked figure (pass the previous ``fig`` of a single map to reuse it)."""
+    from ..save import DEFAULT_DPI
     from .figure import map_figure
-    from .save import DEFAULT_DPI
 
     w = WORKED[worked.upper()] if isinstance(worked, str) else worked
     dpi = DEFAULT_DPI if dpi is None else dpi

@@ -19,10 +19,10 @@ from typing import IO, TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..dynamics.stepper import History, Phase
-from ..mechanics.modes import Mode
-from .save import DEFAULT_DPI
-from .style import phase_style, style_context
+from ...dynamics.stepper import History, Phase
+from ...mechanics.modes import Mode
+from ..save import DEFAULT_DPI
+from ..style import phase_style, style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -306,7 +306,7 @@ def write_block_animation(path: str | os.PathLike[str], history: History, **kwar
     """
     from pathlib import Path
 
-    from ..io.atomic import atomic_path
+    from ...io.atomic import atomic_path
 
     if Path(path).suffix.lower() != ".gif":
         raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")

@@ -28,9 +28,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..dynamics import Block, OutcomeMap, from_dimensionless
-from ..dynamics.outcome import Bars, MapRuns, dimensionless_values, staged_outcome_map
-from .save import DEFAULT_DPI
+from ...dynamics import Block, OutcomeMap, from_dimensionless
+from ...dynamics.outcome import Bars, MapRuns, dimensionless_values, staged_outcome_map
+from ..save import DEFAULT_DPI
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -117,7 +117,7 @@ class DynamicsFigure:
     def render(self, dpi: float = DEFAULT_DPI, fig: Figure | None = None,
                data: tuple[OutcomeMap, np.ndarray, np.ndarray] | None = None) -> Figure:
         """The figure (computing the map unless ``data`` is given)."""
-        from .outcome import axis_label, outcome_figure
+        from ..outcome.figure import axis_label, outcome_figure
 
         m, x, y = self.compute() if data is None else data
         if self.dimensionless:

@@ -2,8 +2,8 @@
 carries (:class:`CategoryLookup`, the category at points of the drawing; :class:`TextReport`,
 what the text placement did).
 
-Data types of their own, so that the renderer (:mod:`regimemap.drawing.outcome`) and the text
-placement that reads what it drew (:mod:`regimemap.drawing.outcome_text`) both depend on them
+Data types of their own, so that the renderer (:mod:`regimemap.drawing.outcome.figure`) and the text
+placement that reads what it drew (:mod:`regimemap.drawing.outcome.text`) both depend on them
 and not on each other.  No matplotlib at run time.
 """
 
@@ -37,7 +37,7 @@ class CategoryLookup:
     def __init__(self, category: NDArray[Any], xs: NDArray[np.float64], ys: NDArray[np.float64],
                  regions: dict[int, MplPath] | None = None):
         self.category = np.asarray(category)
-        from .placement import cell_edges
+        from ..text.placement import cell_edges
 
         self.xe, self.ye = cell_edges(xs), cell_edges(ys)
         self.regions = regions
@@ -59,7 +59,7 @@ class CategoryLookup:
 
 @dataclass
 class TextReport:
-    """What :func:`~regimemap.drawing.outcome_text.place_outcome_text` did: the texts it placed
+    """What :func:`~regimemap.drawing.outcome.text.place_outcome_text` did: the texts it placed
     and those it left out."""
 
     placed: list[str] = field(default_factory=list)
@@ -69,7 +69,7 @@ class TextReport:
 
 @dataclass
 class OutcomeArtists:
-    """What :func:`~regimemap.drawing.outcome.draw_outcome_map` drew.
+    """What :func:`~regimemap.drawing.outcome.figure.draw_outcome_map` drew.
 
     Attributes
     ----------
@@ -85,7 +85,7 @@ class OutcomeArtists:
         The same keys -> the unit written after a level.
     labels : list of Text
         Region labels (those with room;
-        :func:`~regimemap.drawing.outcome_text.place_outcome_text` removes the others).
+        :func:`~regimemap.drawing.outcome.text.place_outcome_text` removes the others).
     contour_labels : list of Text
         One label per contour level that has room for it.
     title : Text or None

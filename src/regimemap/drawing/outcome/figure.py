@@ -13,8 +13,8 @@ as polygons bounded by its refined boundaries (:meth:`OutcomeMap.geometry`),
 the contours clipped on them; a map that was not refined is drawn as its cells
 (each node the centre of a cell reaching half-way to its neighbours: a
 staircase at the grid's pitch).  The text is placed by
-:mod:`regimemap.drawing.outcome_text`; the words (axis labels, title) are
-:mod:`regimemap.drawing.outcome_words`'s.
+:mod:`regimemap.drawing.outcome.text`; the words (axis labels, title) are
+:mod:`regimemap.drawing.outcome.words`'s.
 """
 
 from __future__ import annotations
@@ -27,14 +27,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ..dynamics.outcome import OutcomeMap
-from ..dynamics.regions import MapGeometry
-from ..dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK, STILL_MOVING
-from .outcome_artists import CategoryLookup, OutcomeArtists
-from .outcome_words import AXIS_LABELS, axis_label, outcome_title, rotation_text
-from .placement import cell_edges
-from .save import DEFAULT_DPI
-from .style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context
+from ...dynamics.outcome import OutcomeMap
+from ...dynamics.regions import MapGeometry
+from ...dynamics.stepper import OVERTURN, ROCK, SLIDE, SLIDE_ROCK, STILL_MOVING
+from ..save import DEFAULT_DPI
+from ..style import HATCH_LW, LINE_LW, OUTCOME_STYLE, style_context
+from ..text.placement import cell_edges
+from .artists import CategoryLookup, OutcomeArtists
+from .words import AXIS_LABELS, axis_label, outcome_title, rotation_text
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -236,7 +236,7 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
     Notes
     -----
     The labels of the regions and of the contours, and the title, are fitted once the axes
-    are drawn (:func:`regimemap.drawing.outcome_text.place_outcome_text`, with the figure's
+    are drawn (:func:`regimemap.drawing.outcome.text.place_outcome_text`, with the figure's
     layout as it is then): none overlaps another text or leaves the figure.
     """
     from matplotlib.collections import LineCollection
@@ -301,7 +301,7 @@ def draw_outcome_map(ax: Axes, m: OutcomeMap, *, x: Sequence[float] | NDArray[np
                                    handleheight=1.1, columnspacing=1.4, borderaxespad=0.0)
         fig = ax.get_figure()
         if isinstance(fig, Figure):
-            from .outcome_text import place_outcome_text
+            from .text import place_outcome_text
 
             out.report = place_outcome_text(fig, ax, out, cat, xs, ys)
     return out
@@ -413,7 +413,7 @@ def outcome_figure(m: OutcomeMap, *, dpi: float = DEFAULT_DPI, figsize: tuple[fl
 
     The artists are also kept as the figure's ``_regimemap_outcome`` (for the tests of its text).
     """
-    from .figure import new_figure
+    from ..maps.figure import new_figure
 
     fig, ax = new_figure(figsize or OUTCOME_FIGSIZE, dpi, fig)
     w, h = fig.get_size_inches()

@@ -1,12 +1,12 @@
 """The text of an outcome map, placed so that it fits: the title, the region names, the contour labels.
 
 :func:`place_outcome_text` runs once the axes of an outcome map are drawn
-(:func:`regimemap.drawing.outcome.draw_outcome_map` calls it) and measures every text with the
-renderer (window extents, in pixels, at :data:`regimemap.drawing.tidy.MEASURE_DPI`, so that the
+(:func:`regimemap.drawing.outcome.figure.draw_outcome_map` calls it) and measures every text with the
+renderer (window extents, in pixels, at :data:`regimemap.drawing.text.tidy.MEASURE_DPI`, so that the
 layout does not depend on the resolution of a file):
 
 * the title is wrapped at its commas, then made smaller, until it fits the width of the axes
-  and the top of the figure (:func:`regimemap.drawing.tidy.fit_title`): never clipped;
+  and the top of the figure (:func:`regimemap.drawing.text.tidy.fit_title`): never clipped;
 * the fixed texts -- tick and axis labels, the title, the key -- are taken first;
 * a region's name goes where its box lies inside its region and inside the axes, clear of every
   text placed before: among those places, the one farthest from the lines (boundaries and
@@ -18,7 +18,7 @@ layout does not depend on the resolution of a file):
   level with no such place is left out, line and all (crowded lines cannot be read).
 
 :func:`outcome_text_boxes` lists the boxes that the tests check, as
-:func:`regimemap.drawing.tidy.text_boxes` does for the regime maps.
+:func:`regimemap.drawing.text.tidy.text_boxes` does for the regime maps.
 """
 
 from __future__ import annotations
@@ -30,9 +30,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .outcome_artists import CategoryLookup, OutcomeArtists, TextReport
-from .style import OUTCOME_STYLE
-from .tidy import MEASURE_DPI, fit_title
+from ..style import OUTCOME_STYLE
+from ..text.tidy import MEASURE_DPI, fit_title
+from .artists import CategoryLookup, OutcomeArtists, TextReport
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -100,7 +100,7 @@ def outcome_text_boxes(fig: Figure, art: OutcomeArtists) -> dict[str, list[tuple
     """Every text of an outcome map as drawn (pixels), by kind.
 
     ``fixed``: tick and axis labels, the title and the key; ``labels``: the region names and the
-    contour labels; ``markers``: none (the kinds of :func:`regimemap.drawing.tidy.text_boxes`).
+    contour labels; ``markers``: none (the kinds of :func:`regimemap.drawing.text.tidy.text_boxes`).
     """
     renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
     fixed: list[tuple[str, Box]] = []
@@ -127,7 +127,7 @@ def place_outcome_text(fig: Figure, ax: Axes, art: OutcomeArtists, category: NDA
     fig, ax : Figure, Axes
         The figure, laid out (its size and the axes' position final), and the map's axes.
     art : OutcomeArtists
-        What :func:`regimemap.drawing.outcome.draw_outcome_map` drew; its ``labels`` hold the
+        What :func:`regimemap.drawing.outcome.figure.draw_outcome_map` drew; its ``labels`` hold the
         region names (``gid`` ``region-<code>``) and get their places, ``contour_labels`` gets
         the contour labels.
     category, xs, ys : ndarray

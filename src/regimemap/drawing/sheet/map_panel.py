@@ -1,7 +1,7 @@
 """Panel (d) of the caisson design sheet: the loaded map of the design wave, and the path.
 
 The regions are the loaded map's exact polygons, drawn by
-:func:`regimemap.drawing.mapplot.draw_map` as ``regimemap plot`` draws them (its
+:func:`regimemap.drawing.maps.mapplot.draw_map` as ``regimemap plot`` draws them (its
 fills, boundary curves and named points, from
 :func:`regimemap.maps.mapdata.compute_map` in the sheet's view); on them the design
 point, the path it follows as the wave grows (0.5 to 1.5 times the design heights,
@@ -15,23 +15,23 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.caisson import CaissonReport, MapView
-from ..maps.geometry import area_in_view
-from ..maps.mapdata import MapData
-from ..mechanics.modes import Mode
-from .mapplot import MapStyle, draw_map
-from .sheet_panels import FS, fmt, mode_style
-from .style import text_size
+from ...maps.caisson import CaissonReport, MapView
+from ...maps.geometry import area_in_view
+from ...maps.mapdata import MapData
+from ...mechanics.modes import Mode
+from ..maps.mapplot import MapStyle, draw_map
+from ..style import text_size
+from .panels import FS, fmt, mode_style
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from .artists import MapArtists
+    from ..maps.artists import MapArtists
 
 __all__ = ["MAP_STYLE", "draw_map_panel", "map_legend", "modes_in_view", "tidy_map_panel"]
 
-#: How the sheet draws the map (:class:`~regimemap.drawing.mapplot.MapStyle`): fills,
+#: How the sheet draws the map (:class:`~regimemap.drawing.maps.mapplot.MapStyle`): fills,
 #: boundary curves and named points, as ``regimemap plot`` draws them (``tidy``: no dotted
 #: line drawn over a boundary, arrows to the points off view); no mode symbols, key or
 #: title of its own (the sheet writes them).
@@ -53,7 +53,7 @@ def draw_map_panel(ax: Axes, r: CaissonReport, view: MapView, data: MapData
     """Draw (d): the map ``data`` (the design wave's loaded map in ``view``), the path, the labels.
 
     Returns the modes seen in the view (for :func:`map_legend`) and what
-    :func:`~regimemap.drawing.mapplot.draw_map` drew.
+    :func:`~regimemap.drawing.maps.mapplot.draw_map` drew.
     """
     art = draw_map(ax, data, MAP_STYLE)
     p = r.path
@@ -87,8 +87,8 @@ def draw_map_panel(ax: Axes, r: CaissonReport, view: MapView, data: MapData
 def tidy_map_panel(fig: Figure, ax: Axes, art: MapArtists) -> None:
     """Move the map's own texts (point names, line names, arrows to points off view) clear of
     the path's labels and of every other text, as the tidy pass of a map does
-    (:func:`regimemap.drawing.tidy.tidy_figure`); call it once the sheet is laid out."""
-    from .tidy import tidy_figure
+    (:func:`regimemap.drawing.text.tidy.tidy_figure`); call it once the sheet is laid out."""
+    from ..text.tidy import tidy_figure
 
     own = {id(t) for t in [*art.point_labels.values(), *art.curve_labels.values(),
                            *art.off_view.values()]}
@@ -168,11 +168,11 @@ def _place_path_labels(ax: Axes, labels: list[tuple[str, float, dict[str, Any]]]
 
 
 def map_legend(ax: Axes, modes: list[Mode], data: MapData) -> None:
-    """The key of (d) below it, as a map's (:func:`regimemap.drawing.key.key_handles`): the
+    """The key of (d) below it, as a map's (:func:`regimemap.drawing.maps.key.key_handles`): the
     modes seen, the line styles drawn, then the path."""
     from matplotlib.lines import Line2D
 
-    from .key import key_handles, key_legend
+    from ..maps.key import key_handles, key_legend
 
     plain = [c for c in data.curves.values() if not c.dotted]
     dotted = [c for c in data.curves.values() if c.dotted]

@@ -12,11 +12,11 @@ design point and the path it follows as the wave grows (0.5 to 1.5 times the
 design heights); (e) the safety factors along that path with the mode of
 each point on its own map; (f) the numbers; and, when a lifetime simulation is
 given, (g) the exceedance curve of the caisson's sliding over its design life
-(:func:`regimemap.drawing.lifetime.draw_exceedance`), under (e).
+(:func:`regimemap.drawing.lifetime.exceedance.draw_exceedance`), under (e).
 
 This module places the panels on the page and writes the notes; the panels are
-drawn by :mod:`regimemap.drawing.sheet_panels` ((a), (b), (c), (e), (f)) and
-:mod:`regimemap.drawing.sheet_map` ((d)).  Everything drawn is computed beforehand
+drawn by :mod:`regimemap.drawing.sheet.panels` ((a), (b), (c), (e), (f)) and
+:mod:`regimemap.drawing.sheet.map_panel` ((d)).  Everything drawn is computed beforehand
 (:func:`regimemap.maps.caisson.caisson_report`, :func:`regimemap.maps.caisson.map_view`
 and :func:`regimemap.maps.mapdata.compute_map`); these modules only draw.
 """
@@ -27,21 +27,21 @@ import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from ..maps.caisson import CaissonReport, MapView, caisson_checks, map_view
-from ..maps.mapdata import MapData, compute_map
-from ..mechanics.checks import Check
-from .save import DEFAULT_DPI, figure_version
-from .sheet_map import draw_map_panel, map_legend, tidy_map_panel
-from .sheet_panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, fmt, num
-from .style import style_context
-from .verdict import draw_verdict_badge, verdict_colour
+from ...maps.caisson import CaissonReport, MapView, caisson_checks, map_view
+from ...maps.mapdata import MapData, compute_map
+from ...mechanics.checks import Check
+from ..save import DEFAULT_DPI, figure_version
+from ..style import style_context
+from ..verdict import draw_verdict_badge, verdict_colour
+from .map_panel import draw_map_panel, map_legend, tidy_map_panel
+from .panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, fmt, num
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-    from ..lifetime.results import LifetimeResult
-    from .labelplacer import Placed
+    from ...lifetime.results import LifetimeResult
+    from ..text.labelplacer import Placed
 
 __all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure", "sheet_map_data"]
 
@@ -91,7 +91,7 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
     impulsive``); its ESD label is in the fail colour when ``esd`` fails.  Returns (g)'s axes and
     its labels, to place once the rest of the sheet is drawn.
     """
-    from .lifetime import draw_exceedance
+    from ..lifetime.exceedance import draw_exceedance
 
     ax_path = fig.add_axes(rect(5.55, 5.1, 2.35, 1.35), label="path")
     draw_path(ax_path, r, required)
@@ -114,7 +114,7 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
 
 def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
     """Place the labels of (g) clear of every text of the sheet and of (g)'s lines."""
-    from .labelplacer import LabelPlacer
+    from ..text.labelplacer import LabelPlacer
 
     placer = LabelPlacer(fig)
     try:

@@ -1,10 +1,10 @@
-"""The panels of the caisson design sheet (:mod:`regimemap.drawing.sheet`), but the map.
+"""The panels of the caisson design sheet (:mod:`regimemap.drawing.sheet.page`), but the map.
 
 One function per panel, each drawing on the axes it is given: (a) the
 cross-section to scale (:func:`draw_section`), (b) Goda's pressures on the wall
 (:func:`draw_pressure`), (c) the uplift under the base (:func:`draw_uplift`),
 (e) the safety factors as the wave grows (:func:`draw_path`) and (f) the numbers
-(:func:`draw_table`); the loaded map (d) is :mod:`regimemap.drawing.sheet_map`.
+(:func:`draw_table`); the loaded map (d) is :mod:`regimemap.drawing.sheet.map_panel`.
 Everything drawn is computed beforehand (:func:`regimemap.maps.caisson.caisson_report`);
 these functions only draw.  Also the sheet's small helpers: its font size
 :data:`FS`, :func:`fmt` for numbers and :func:`mode_style` for a mode's fill.
@@ -17,13 +17,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.caisson import CaissonReport
-from ..maps.describe import format_significant
-from ..maps.loadedmap import Margin, mode_label
-from ..mechanics.checks import Check
-from ..mechanics.modes import Mode
-from .style import MODE_STYLE, ModeStyle
-from .verdict import FAIL_COLOUR
+from ...maps.caisson import CaissonReport
+from ...maps.describe import format_significant
+from ...maps.loadedmap import Margin, mode_label
+from ...mechanics.checks import Check
+from ...mechanics.modes import Mode
+from ..style import MODE_STYLE, ModeStyle
+from ..verdict import FAIL_COLOUR
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes

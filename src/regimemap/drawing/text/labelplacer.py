@@ -1,12 +1,12 @@
 """Labels placed once a figure is laid out: each at the first free one of its candidate places.
 
 :class:`LabelPlacer` measures the texts of a figure (:func:`figure_texts`) with
-the renderer, at :data:`regimemap.drawing.tidy.MEASURE_DPI` (so an SVG or PDF
+the renderer, at :data:`regimemap.drawing.text.tidy.MEASURE_DPI` (so an SVG or PDF
 does not depend on the resolution of a PNG), and moves each annotation made by
 :func:`make_label` to the first of its :class:`Candidate` places that is inside
 its axes, clear of every other text and clear of the curves.  Used by the
 lifetime figures and the design sheet; the maps have their own tidy pass
-(:mod:`regimemap.drawing.tidy`).
+(:mod:`regimemap.drawing.text.tidy`).
 """
 
 from __future__ import annotations
@@ -123,7 +123,7 @@ class LabelPlacer:
     Create it once the figure's axes, curves and fixed texts are drawn; the texts already in the
     figure (:func:`figure_texts`) are taken.  :meth:`avoid` adds curves (lines and the outlines
     of bars); :meth:`place` moves an annotation (offset in points from a point ``xy``) to the first
-    free one of its candidates.  Measured at :data:`~regimemap.drawing.tidy.MEASURE_DPI`: call
+    free one of its candidates.  Measured at :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call
     :meth:`close` to restore the figure's resolution.
     """
 

@@ -1,12 +1,12 @@
 """The texts of a map: names of the points, labels of the curves, mode symbols, arrows off view.
 
-:func:`~regimemap.drawing.mapplot.draw_map` calls these once the fills and the
+:func:`~regimemap.drawing.maps.mapplot.draw_map` calls these once the fills and the
 lines are drawn.  Each works in one :class:`Frame` of conversions (data, view
 fractions, points) and keeps a list of *obstacles* -- the boxes (view fractions)
 of the texts written so far -- so that a later text keeps clear of the earlier
-ones; where a text goes is decided by :mod:`regimemap.drawing.placement`.
+ones; where a text goes is decided by :mod:`regimemap.drawing.text.placement`.
 Text sizes come from the size model :func:`regimemap.drawing.style.text_size`
-(no renderer): :func:`regimemap.drawing.tidy.tidy_figure` measures and moves
+(no renderer): :func:`regimemap.drawing.text.tidy.tidy_figure` measures and moves
 them afterwards.
 """
 
@@ -17,9 +17,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.mapdata import CurveData, MapData
-from ..mechanics.block import Parameters
-from ..mechanics.modes import Mode
+from ...maps.mapdata import CurveData, MapData
+from ...mechanics.block import Parameters
+from ...mechanics.modes import Mode
+from ..style import mode_symbol, text_size
 from .placement import (
     Box,
     band_columns,
@@ -30,7 +31,6 @@ from .placement import (
     overlaps,
     point_along,
 )
-from .style import mode_symbol, text_size
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -246,7 +246,7 @@ def mark_off_view(ax: Axes, params: Parameters, frame: Frame, obstacles: list[Bo
     dict[str, Text]
         The annotation of each point off view (shared by the points of one arrow).
     """
-    from ..maps.designer_view import points_off_view
+    from ...maps.designer_view import points_off_view
 
     k_max, mu_max = frame.k_max, frame.mu_max
     groups: dict[tuple[float, float], list[Any]] = {}
@@ -293,7 +293,7 @@ def curve_labels(ax: Axes, data: MapData, frame: Frame, obstacles: list[Box],
     """Label every curve that has a label, beside it, clear of the lines and of the other texts.
 
     ``lines`` are the curves as dense polylines in view fractions
-    (:func:`~regimemap.drawing.placement.view_points`).  Returns the labels by curve name.
+    (:func:`~regimemap.drawing.text.placement.view_points`).  Returns the labels by curve name.
     """
     out: dict[str, Text] = {}
     for name, cd in data.curves.items():
@@ -382,7 +382,7 @@ def _band_label(ax: Axes, frame: Frame, mode: Mode, poly: np.ndarray, obstacles:
 
     The label's centre lies inside its region, at the thickest part of the
     band in view, so that it can never be read as the label of a neighbour;
-    :func:`regimemap.drawing.tidy.tidy_figure` moves it along the band if it
+    :func:`regimemap.drawing.text.tidy.tidy_figure` moves it along the band if it
     meets another text.
     """
     xs, lo, hi = band_columns(poly, frame.k_max, frame.mu_max, 400)

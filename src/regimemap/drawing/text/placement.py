@@ -2,8 +2,8 @@
 
 The one label-placement model of the drawings: every function works in
 fractions of the view (``[0, 1] x [0, 1]``), with text boxes measured by the
-caller, so the map (:mod:`regimemap.drawing.labels`), its tidy pass
-(:mod:`regimemap.drawing.tidy`), the ambiguity overlay, the atlas and the
+caller, so the map (:mod:`regimemap.drawing.text.labels`), its tidy pass
+(:mod:`regimemap.drawing.text.tidy`), the ambiguity overlay, the atlas and the
 animation place their labels by the same rules.
 """
 

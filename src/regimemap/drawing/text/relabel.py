@@ -1,6 +1,6 @@
 """Moving one label of a map to a free place: the candidates of each kind of label.
 
-:func:`regimemap.drawing.tidy.tidy_figure` keeps the boxes already taken in a
+:func:`regimemap.drawing.text.tidy.tidy_figure` keeps the boxes already taken in a
 :class:`Placer` and, for each label that meets another text or leaves the
 figure, calls the mover of its kind:
 
@@ -9,10 +9,10 @@ figure, calls the mover of its kind:
 * the text of an arrow to a point off view (:func:`place_off_view`): farther
   in, or along the edge;
 * a line's name (:func:`place_curve_label`): beside the line
-  (:func:`regimemap.drawing.placement.curve_label_anchor`), then away from it
+  (:func:`regimemap.drawing.text.placement.curve_label_anchor`), then away from it
   with a leader to it;
 * a mode symbol (:func:`place_region_label`): inside its region
-  (:func:`regimemap.drawing.placement.label_anchor`), then anywhere on the
+  (:func:`regimemap.drawing.text.placement.label_anchor`), then anywhere on the
   region (a thin band).
 
 Each returns the label (a new artist when its kind of annotation changed) and
@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .artists import MapArtists
+from ..maps.artists import MapArtists
 from .placement import (
     band_columns,
     box_hits,
@@ -82,7 +82,7 @@ def axes_bounds(ax: Axes) -> Box:
 
 
 def _fractions(ax: Axes, boxes: Iterable[Box]) -> list[Box]:
-    """Pixel boxes as fractions of the axes (the units of :mod:`regimemap.drawing.placement`)."""
+    """Pixel boxes as fractions of the axes (the units of :mod:`regimemap.drawing.text.placement`)."""
     inv = ax.transAxes.inverted()
     out = []
     for b in boxes:

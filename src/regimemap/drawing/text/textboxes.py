@@ -1,8 +1,8 @@
 """Boxes of drawn texts, in pixels: measured with the renderer, compared, kept apart.
 
 The primitives of the passes that keep the texts of a figure legible: the map's
-tidy pass (:mod:`regimemap.drawing.tidy`, :mod:`regimemap.drawing.relabel`) and
-the labels of the other figures (:mod:`regimemap.drawing.labelplacer`).
+tidy pass (:mod:`regimemap.drawing.text.tidy`, :mod:`regimemap.drawing.text.relabel`) and
+the labels of the other figures (:mod:`regimemap.drawing.text.labelplacer`).
 """
 
 from __future__ import annotations

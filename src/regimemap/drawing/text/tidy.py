@@ -1,7 +1,7 @@
 """Keep every text of a map figure legible: nothing overlaps, nothing leaves the figure.
 
-:func:`regimemap.drawing.mapplot.draw_map` places its labels
-(:mod:`regimemap.drawing.labels`) with a size model of the text
+:func:`regimemap.drawing.maps.mapplot.draw_map` places its labels
+(:mod:`regimemap.drawing.text.labels`) with a size model of the text
 (:func:`regimemap.drawing.style.text_size`) and knows nothing of the tick
 labels, the title, the key or the design points drawn after it.
 :func:`tidy_figure` runs once the figure is laid out: it measures
@@ -10,12 +10,12 @@ to the figure (wrapped at commas, then smaller), and moves each label that
 meets another text or leaves the figure, in order of importance — the names
 of the report's points, the names of design points, the arrows to points
 outside the view, the names of the lines, the mode symbols — to the first
-free place among its candidates (:mod:`regimemap.drawing.relabel`):
+free place among its candidates (:mod:`regimemap.drawing.text.relabel`):
 
 * a point's name: around the point, then farther with a leader line;
-* a line's name: beside the line (:func:`regimemap.drawing.placement.curve_label_anchor`),
+* a line's name: beside the line (:func:`regimemap.drawing.text.placement.curve_label_anchor`),
   then away from it with a leader to it;
-* a mode symbol: inside its region (:func:`regimemap.drawing.placement.label_anchor`),
+* a mode symbol: inside its region (:func:`regimemap.drawing.text.placement.label_anchor`),
   then anywhere on the region (a thin band), framed.
 
 A label with no free place is hidden (and listed in the report); none is
@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .artists import MapArtists
+from ..maps.artists import MapArtists
 from .relabel import (
     Placer,
     axes_bounds,
@@ -257,7 +257,7 @@ def tidy_figure(fig: Figure, maps: Sequence[MapArtists], *, fixed: Iterable[Arti
     fig : Figure
         With an Agg canvas; its size and the axes' positions are final.
     maps : sequence of MapArtists
-        What :func:`regimemap.drawing.mapplot.draw_map` drew, one per map.
+        What :func:`regimemap.drawing.maps.mapplot.draw_map` drew, one per map.
     fixed : iterable of Artist
         Other texts that must stay where they are (e.g. the k' of an animation frame).
     fit_titles : bool
