@@ -11,7 +11,7 @@ import pytest
 
 from regimemap.io.design import example_design_text, parse_design
 
-from .conftest import invoke_cli
+from ..conftest import invoke_cli
 
 EXAMPLE = example_design_text()
 
@@ -192,7 +192,7 @@ def test_sheet_has_its_panels() -> None:
     assert "as the wave grows" in texts["path"]
     for number in ("97.64", "940.6", "1.160", "2.559", "0.2776", "RE", "+12.2% \u2192 SL"):
         assert number in texts["table"], number
-    # the map: filled regions (the map's polygons, tests/test_sheet_map.py) and the path (a
+    # the map: filled regions (the map's polygons, tests/drawing/test_sheet_map.py) and the path (a
     # line through the design point at mu)
     ax = axes["map"]
     assert ax.patches

@@ -30,7 +30,7 @@ from hypothesis import strategies as st
 
 from regimemap.cli import cli, main
 
-from ._writers import (
+from .._writers import (
     FAILURES,
     OLD,
     SINGLE_FILE_WRITERS,
@@ -41,7 +41,7 @@ from ._writers import (
     writer_args,
     writer_params,
 )
-from .conftest import invoke_cli
+from ..conftest import invoke_cli
 
 # Where each command is defined (for the skip message while it is being written).
 COMMAND_MODULES = {"plot": "plot", "figure": "plot", "figures": "plot", "classify": "query",
@@ -188,7 +188,7 @@ def test_help_and_version():
 @pytest.mark.parametrize("key", writer_params())
 def test_writer_goes_through_the_atomic_path_and_leaves_only_its_file(tmp_path, inputs, monkeypatch, key):
     """Each writer's file is renamed into place from a temporary file beside it (what
-    tests/test_atomic.py proves safe against every failure), and is whole."""
+    tests/io/test_atomic.py proves safe against every failure), and is whole."""
     needs(SINGLE_FILE_WRITERS[key][0])
     out_dir = tmp_path / "out"
     out_dir.mkdir()
@@ -393,7 +393,7 @@ def test_console_script_in_a_subprocess(tmp_path):
 def test_writer_failing_half_way_keeps_the_old_file(tmp_path, inputs, monkeypatch, key):
     """One real failure per writer: the disk fills up half-way through the file.  The old file is
     byte-identical, nothing else in the folder changed, and the one error line names the file.
-    (Every kind of failure, once: tests/test_atomic.py.)"""
+    (Every kind of failure, once: tests/io/test_atomic.py.)"""
     needs(SINGLE_FILE_WRITERS[key][0])
     out_dir = tmp_path / "out"
     out_dir.mkdir()

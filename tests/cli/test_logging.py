@@ -16,9 +16,9 @@ import pytest
 
 from regimemap.io.design import example_design_text
 
-from .conftest import invoke_cli
+from ..conftest import invoke_cli
 
-SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
+SRC = Path(__file__).resolve().parents[2] / "src" / "regimemap"
 #: A line of ``-v`` on standard error: ``regimemap: [  312 ms] INFO regimemap.io.atomic: wrote ...``.
 RECORD = re.compile(r"^regimemap: \[ *\d+ ms\] (DEBUG|INFO|WARNING|ERROR) (regimemap(\.\w+)*): ")
 

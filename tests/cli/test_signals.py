@@ -18,7 +18,7 @@ import regimemap.io.design
 from regimemap.cli._common import Terminated, stop_signals
 from regimemap.io.design import example_design_text
 
-from .conftest import invoke_cli
+from ..conftest import invoke_cli
 
 pytestmark = pytest.mark.skipif(not hasattr(signal, "SIGTERM") or os.name != "posix", reason="POSIX signals")
 

@@ -197,14 +197,14 @@ def test_check_output_path_unwritable_by_access(tmp_path, monkeypatch):
 
 # -- every failure kind through a command, once --------------------------------------------------------
 #
-# The commands write through atomic_path/atomic_open (tests/test_cli_errors.py checks each writer
+# The commands write through atomic_path/atomic_open (tests/cli/test_cli_errors.py checks each writer
 # does, and survives one real failure); here every kind of failure -- the disk full before the first
 # byte with no old file, the disk full half-way with an old file, Ctrl-C half-way -- through two
 # writers of different kinds (zipfile's npz, matplotlib's png): the old file or none, nothing else
 # in the folder, one error line and the exit code of the failure.
 
-from ._writers import FAILURES, WriteFailure, folder_state, writer_args, writer_params  # noqa: E402
-from .conftest import invoke_cli  # noqa: E402
+from .._writers import FAILURES, WriteFailure, folder_state, writer_args, writer_params  # noqa: E402
+from ..conftest import invoke_cli  # noqa: E402
 
 
 @pytest.mark.parametrize("failure", sorted(FAILURES))

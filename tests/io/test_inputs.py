@@ -28,7 +28,7 @@ from regimemap.io.inputs import (
 from regimemap.io.points import MAX_POINTS_FILE_BYTES, read_points_csv
 from regimemap.io.pulses import MAX_PULSE_FILE_BYTES, read_pulse_csv
 
-from .conftest import invoke_cli
+from ..conftest import invoke_cli
 
 BIG = 200 * 1024 * 1024
 

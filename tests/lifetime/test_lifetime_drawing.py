@@ -3,7 +3,7 @@
 Figures build for a normal result, a result where no lifetime slid, design charts where no
 width / every width meets the target; their SVG is the same bytes from run to run and at any
 PNG resolution; their PDF embeds no Type 3 font; no text meets another or leaves the figure
-(boxes measured by the renderer, with tests/test_legible.py's check), and the labels of the
+(boxes measured by the renderer, with tests/drawing/test_legible.py's check), and the labels of the
 lines stay off the curves.  The sheet without a lifetime is the committed one, byte for byte.
 """
 
@@ -31,7 +31,7 @@ from regimemap.lifetime import (  # noqa: E402
     design_chart,
     lifetime_sliding,
 )
-from tests.test_legible import _check_boxes  # noqa: E402
+from tests.drawing.test_legible import _check_boxes  # noqa: E402
 
 pytestmark = pytest.mark.render
 
@@ -181,7 +181,7 @@ def test_chart_with_a_target_off_the_limits(chart: DesignChart) -> None:
 
 
 def _boxes(fig) -> dict[str, list]:
-    """Every text of the figure (a key as one box) for tests/test_legible.py's check."""
+    """Every text of the figure (a key as one box) for tests/drawing/test_legible.py's check."""
     renderer = fig.canvas.get_renderer()
     legends = [leg for leg in [*fig.legends, *(ax.get_legend() for ax in fig.axes)] if leg is not None]
     in_key = {id(t) for leg in legends for t in leg.get_texts()}

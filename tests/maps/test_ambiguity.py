@@ -17,7 +17,7 @@ from regimemap.maps.ambiguity import (
 )
 from regimemap.mechanics.solver import admissible
 
-from ._sweep import sweep, tiered
+from .._sweep import sweep, tiered
 
 H = 1e-6
 

@@ -10,7 +10,7 @@ from regimemap.mechanics.curves import lower_line, mu_star, upper_line
 from regimemap.mechanics.regions import RAW_REGIONS
 from regimemap.mechanics.solver import admissible, choose
 
-from ._sweep import sample_points, sweep, tiered
+from .._sweep import sample_points, sweep, tiered
 
 H = 1e-6
 

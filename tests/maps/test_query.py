@@ -20,7 +20,7 @@ from regimemap.maps.query import (
 )
 from regimemap.mechanics.solver import Hypothesis, admissible, solve
 
-from ._sweep import sample_points, sweep
+from .._sweep import sample_points, sweep
 
 
 def _modes_along(queries: list) -> list[Mode]:

@@ -23,8 +23,8 @@ from regimemap.mechanics.curves import named_points
 from regimemap.mechanics.regions import RAW_REGIONS
 from regimemap.mechanics.solver import least_constraint
 
+from .._sweep import tiered
 from ._loaded_sweep import loaded_sweep, sample, view
-from ._sweep import tiered
 
 SWEEP = loaded_sweep(100, seed=0)
 

@@ -18,7 +18,7 @@ from regimemap.mechanics.curves import map_curves, mu_star, named_points, upper_
 from regimemap.mechanics.modes import PRIORITY, SELECTION_ORDER
 from regimemap.mechanics.solver import admissible, choose, least_constraint
 
-from ._sweep import sample_points, sweep
+from .._sweep import sample_points, sweep
 
 _RE, _SL, _RO, _SM, _SP, _SPM = (np.uint8(m) for m in (
     Mode.RE, Mode.SL, Mode.RO, Mode.SRO_MINUS, Mode.SRO_PLUS, Mode.SRO_PRIME_MINUS))

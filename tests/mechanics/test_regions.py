@@ -14,7 +14,7 @@ from regimemap import Mode, Parameters
 from regimemap.mechanics.regions import RAW_REGIONS, raw_region
 from regimemap.mechanics.solver import admissible
 
-from ._sweep import sample_points, sweep, tiered
+from .._sweep import sample_points, sweep, tiered
 
 H = 1e-6
 

@@ -8,7 +8,7 @@ import pytest
 from regimemap import Mode
 from regimemap.mechanics.solver import Hypothesis, admissible, admissible_hypotheses, solve
 
-from ._sweep import sample_points, sweep
+from .._sweep import sample_points, sweep
 
 
 def residuals(r, k, mu, gamma, kprime):
