@@ -218,15 +218,13 @@ def test_lazy_names_are_the_objects_not_their_modules():
         assert not isinstance(getattr(maps, name), types.ModuleType), name
 
 
-def test_split_modules_keep_their_old_import_paths():
-    """Names moved to modules of their own are still importable from where they were."""
-    from regimemap.io import design, design_example, design_keys
+def test_modules_export_the_types_of_their_results():
+    """The point query exports the type it returns, the design reader the example it documents."""
+    from regimemap.io import design, design_example
     from regimemap.maps import point_result, query
 
     assert query.PointResult is point_result.PointResult
-    assert query.margin_words is point_result.margin_words
     assert design.example_design_text is design_example.example_design_text
-    assert design._SPEC is design_keys.DESIGN_KEYS  # read by docs/_ext (the table of the keys)
 
 
 def test_outcome_style_is_exported_by_the_drawing_package():

@@ -18,8 +18,8 @@ import pytest
 
 from regimemap import Parameters
 from regimemap.cli.explore import open_explorer, plot_command_line
-from regimemap.drawing.explore.explorer import Explorer, KeyImage, TextPanel
-from regimemap.drawing.explore.images import WidgetsImage
+from regimemap.drawing.explore.explorer import Explorer
+from regimemap.drawing.explore.images import KeyImage, TextPanel, WidgetsImage
 from regimemap.drawing.maps.figure import map_figure
 from regimemap.mechanics.modes import Mode
 
@@ -488,7 +488,7 @@ def test_explore_is_a_command(run_cli) -> None:
 
 
 def test_drag_title_reads_as_plots() -> None:
-    from regimemap.drawing.explore.explorer import drag_title
+    from regimemap.drawing.explore.text import drag_title
     from regimemap.drawing.maps.mapplot import default_title
 
     # the drag title's symbols are Unicode, read back as plot's mathtext

@@ -155,7 +155,7 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
             raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
         path = output_path(output, "--output")
     import_matplotlib()
-    from ..drawing.explore.explorer import window_problem
+    from ..drawing.explore.text import window_problem
 
     if path is not None:
         ex = open_explorer(params, resolution=resolution, echo=None, window=False, point=point)

@@ -7,7 +7,7 @@ left, x_O'' <= 0), SRO+ (slide-rock about O with O slipping right) and SRO'-
 hypotheses exist for the equations-of-motion solver: rock about O' (RO') and
 slide-rock about O' with O' slipping right (SRO'+).  The report shows (4.57)
 that RO' is never possible; the solver confirms that neither ever wins on the
-report's block.  With vertical loads (issue 10) both can win, and a ninth mode
+report's block.  With vertical loads (buoyancy, uplift) both can win, and a ninth mode
 appears: lift-off (LO), no contact at all.
 
 Codes are small integers so that whole maps fit in ``uint8`` arrays, after the

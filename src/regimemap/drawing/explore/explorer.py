@@ -37,7 +37,7 @@ The figure's layout and widgets are built by
 :mod:`~regimemap.drawing.explore.layout`, the bitmap artists live in
 :mod:`~regimemap.drawing.explore.images`, the texts and rounding in
 :mod:`~regimemap.drawing.explore.text`; this module wires them to
-:class:`Explorer` and re-exports their public names.  It uses pyplot (to
+:class:`Explorer`.  It uses pyplot (to
 open a window or a notebook canvas) when no figure is given; it never
 changes matplotlib's global settings.
 """
@@ -62,10 +62,6 @@ from ..save import DEFAULT_DPI, format_from_path, save_figure
 from ..style import style_context
 from .images import KeyImage, TextPanel, WidgetsImage
 from .layout import (
-    BUOYANCY_RANGE,
-    EXPLORER_FIGSIZE,
-    GAMMA_RANGE,
-    UPLIFT_RATIO_RANGE,
     build_widgets,
     clear_map,
     freeze_widgets,
@@ -82,7 +78,6 @@ from .text import (
     snap_gamma,
     snap_kprime,
     snap_load,
-    window_problem,
 )
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -91,16 +86,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
     from matplotlib.widgets import Button, CheckButtons, Slider
 
-__all__ = [
-    "BUOYANCY_RANGE",
-    "EXPLORER_FIGSIZE",
-    "Explorer",
-    "GAMMA_RANGE",
-    "UPLIFT_RATIO_RANGE",
-    "default_file_stem",
-    "drag_title",
-    "window_problem",
-]
+__all__ = ["Explorer"]
 
 #: Loads that the sliders set; the others (uplift, arm, gyration, crest) stay as given.
 _SLIDER_LOADS = ("buoyancy", "uplift_ratio")

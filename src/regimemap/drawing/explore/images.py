@@ -1,6 +1,6 @@
 """Artists of ``regimemap explore`` drawn from bitmaps: the text panel, the key and the widgets.
 
-Split from :mod:`regimemap.drawing.explore.explorer`.  A figure is drawn whole on
+Used by :class:`~regimemap.drawing.explore.explorer.Explorer`.  A figure is drawn whole on
 every change of a slider and matplotlib renders text glyph by glyph; these
 artists render their text once per content (with matplotlib, at the canvas's
 resolution) and then draw the cached pixels.

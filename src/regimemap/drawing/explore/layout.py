@@ -1,7 +1,6 @@
 """The figure and widgets of ``regimemap explore``: where everything sits, and the ranges.
 
-Split from :mod:`regimemap.drawing.explore.explorer` (which re-exports the public
-names): :func:`build_widgets` lays out the map's axes, the sliders, the
+:func:`build_widgets` lays out the map's axes, the sliders, the
 check box, the Save button and the text panel on the explorer's figure;
 :class:`~regimemap.drawing.explore.explorer.Explorer` wires them to its methods.
 The other functions act on that figure: show or hide the load sliders,

@@ -1,7 +1,6 @@
 """The words and numbers of ``regimemap explore``: file names, rounding, titles, the hint.
 
-Split from :mod:`regimemap.drawing.explore.explorer` (which re-exports the public
-names): what the explorer writes and how it rounds what the widgets give
+What :class:`~regimemap.drawing.explore.explorer.Explorer` writes and how it rounds what the widgets give
 (matplotlib is imported only by :func:`window_problem` and
 :func:`drag_title`, when called).
 """

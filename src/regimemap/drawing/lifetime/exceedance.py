@@ -5,9 +5,9 @@
   the expected sliding distance (ESD) with its standard error and the tolerable limits, and
   (b) the histogram of the lifetimes that slid (log-spaced bins; those that did not are counted
   in words);
-* :func:`draw_exceedance` -- the exceedance panel on any axes (the design sheet uses it);
-* :func:`~regimemap.drawing.lifetime.chart.chart_figure` -- the design chart, ESD against
-  width (in :mod:`regimemap.drawing.lifetime.chart`; importable from here too).
+* :func:`draw_exceedance` -- the exceedance panel on any axes (the design sheet uses it).
+
+The design chart, ESD against width, is :mod:`regimemap.drawing.lifetime.chart`.
 
 ``make figures`` draws Goda's caisson with ``regimemap lifetime`` into
 ``figures/lifetime-goda.*`` and ``figures/lifetime-chart-goda.*``.
@@ -33,7 +33,6 @@ from ..save import DEFAULT_DPI
 from ..style import style_context
 from ..text.labelplacer import Candidate, LabelPlacer, Placed, corner_candidates, make_label, vline_candidates
 from ..verdict import draw_verdict_badge, verdict_colour
-from .chart import chart_figure
 from .style import (
     BAND,
     BAR_EDGE,
@@ -63,7 +62,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["LIFETIME_FIGSIZE", "TOLERABLE", "chart_figure", "draw_exceedance", "lifetime_figure",
+__all__ = ["LIFETIME_FIGSIZE", "TOLERABLE", "draw_exceedance", "lifetime_figure",
            "lifetime_title", "sliding_range"]
 
 #: Size of :func:`lifetime_figure` in inches (width: a page, two columns; height: without a
