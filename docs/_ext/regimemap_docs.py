@@ -110,7 +110,11 @@ def _public_submodules(package: Any) -> list[Any]:
     for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda i: i.name):
         if info.name.startswith("_"):
             continue
-        out.append(importlib.import_module(f"{package.__name__}.{info.name}"))
+        module = importlib.import_module(f"{package.__name__}.{info.name}")
+        out.append(module)
+        # a subpackage without a public API of its own (drawing's rooms): its modules here too
+        if info.ispkg and not hasattr(module, "__all__"):
+            out += _public_submodules(module)
     return out
 
 
