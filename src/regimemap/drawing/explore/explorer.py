@@ -39,7 +39,9 @@ The figure's layout and widgets are built by
 :mod:`~regimemap.drawing.explore.text`; this module wires them to
 :class:`Explorer`.  It uses pyplot (to
 open a window or a notebook canvas) when no figure is given; it never
-changes matplotlib's global settings.
+changes matplotlib's global settings.  The module is one class, whose methods
+share the window's state (the block, the sliders, the map drawn, the panel),
+hence its length.
 """
 
 from __future__ import annotations

@@ -14,7 +14,9 @@ the contours clipped on them; a map that was not refined is drawn as its cells
 (each node the centre of a cell reaching half-way to its neighbours: a
 staircase at the grid's pitch).  The text is placed by
 :mod:`regimemap.drawing.outcome.text`; the words (axis labels, title) are
-:mod:`regimemap.drawing.outcome.words`'s.
+:mod:`regimemap.drawing.outcome.words`'s.  The two ways of drawing the regions
+(polygons or cells) and their contours share the figure's style and key, hence
+one module of some length.
 """
 
 from __future__ import annotations

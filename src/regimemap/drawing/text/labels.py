@@ -7,7 +7,8 @@ of the texts written so far -- so that a later text keeps clear of the earlier
 ones; where a text goes is decided by :mod:`regimemap.drawing.text.placement`.
 Text sizes come from the size model :func:`regimemap.drawing.style.text_size`
 (no renderer): :func:`regimemap.drawing.text.tidy.tidy_figure` measures and moves
-them afterwards.
+them afterwards.  The four kinds of text share the frame and the obstacles, hence one
+module of some length.
 """
 
 from __future__ import annotations
