@@ -36,7 +36,7 @@ import matplotlib
 matplotlib.use("Agg")
 
 from regimemap import Parameters  # noqa: E402
-from regimemap.drawing.explore import Explorer  # noqa: E402
+from regimemap.drawing.explore.explorer import Explorer  # noqa: E402
 
 TARGET_MS = 100.0
 

@@ -137,7 +137,7 @@ def export_floor(path: Path) -> dict[str, Any]:
     import numpy as np
 
     from regimemap import Parameters
-    from regimemap.drawing.figure import map_figure
+    from regimemap.drawing.maps.figure import map_figure
     from regimemap.drawing.save import DEFAULT_DPI
     from regimemap.drawing.style import CONSTRUCTION, DOTTED, LINE_LW, MODE_STYLE
 

@@ -1,7 +1,7 @@
 """The commands that write one file, and a harness that makes their writes fail half-way.
 
-Shared by the atomicity tests: ``tests/test_atomic.py`` proves every failure
-kind once; ``tests/test_cli_errors.py`` checks each writer goes through the
+Shared by the atomicity tests: ``tests/io/test_atomic.py`` proves every failure
+kind once; ``tests/cli/test_cli_errors.py`` checks each writer goes through the
 atomic path and survives one real failure.
 """
 

@@ -1,4 +1,9 @@
-"""Shared test settings: hypothesis profiles and a headless matplotlib.
+"""Shared test settings: hypothesis profiles, a headless matplotlib, and the fixtures of every folder.
+
+The tests mirror the packages (``tests/<package>/``: mechanics, waves, maps, dynamics, lifetime,
+io, drawing, cli); the tests of the whole package stay at the top (the layers, the public API,
+the lazy loader, the README, the packaging, the notebook reprs), with the helpers shared across
+folders (``_sweep.py``, ``_writers.py``).
 
 Hypothesis profiles (choose with ``HYPOTHESIS_PROFILE=name`` in the
 environment, or ``pytest --hypothesis-profile=name``):
@@ -103,7 +108,7 @@ class _PresetMaps(dict):
     (its preset's block, view, modes and raw flag), computed on first use and kept for the session."""
 
     def __missing__(self, fid: str):
-        from regimemap.drawing.presets import get_preset
+        from regimemap.drawing.maps.presets import get_preset
         from regimemap.maps.mapdata import compute_map
 
         pr = get_preset(fid)

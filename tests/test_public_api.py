@@ -94,7 +94,7 @@ def test_every_public_name_resolves(package):
 
 
 @pytest.mark.subprocess
-@pytest.mark.parametrize("package", ["regimemap.drawing", "regimemap.io"])
+@pytest.mark.parametrize("package", ["regimemap.drawing", "regimemap.io", "regimemap.lifetime"])
 def test_lazy_packages_list_their_names_in_dir(package):
     """``dir()`` of a lazy package shows its public names before any of them is imported."""
     import subprocess
@@ -107,6 +107,18 @@ def test_lazy_packages_list_their_names_in_dir(package):
     assert out.stdout.strip() == "False"  # listing the names imports none of them
 
 
+@pytest.mark.subprocess
+def test_reading_a_record_does_not_import_scipy():
+    """The readers and the record's quality control need numpy only: a record refused at the
+    command line is refused before scipy's second of imports."""
+    import subprocess
+    import sys
+
+    code = "import regimemap.io.records, regimemap.climate.record, sys\nprint('scipy' in sys.modules)\n"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "False"
+
+
 @pytest.mark.parametrize("package", sorted(PUBLIC_API))
 def test_dir_lists_every_public_name(package):
     """``dir(package)`` (what IDEs and tab completion show) lists the whole ``__all__``, lazy names too."""
@@ -115,24 +127,29 @@ def test_dir_lists_every_public_name(package):
     assert not missing, f"{package}: not in dir(): {sorted(missing)}"
 
 
-def _typing_view(package: str) -> tuple[set[str], set[str], bool]:
-    """(names bound when the module runs, names imported under ``if TYPE_CHECKING:``, has __getattr__)."""
+def _lazy_view(package: str) -> tuple[set[str], dict[str, set[str]], dict[str, set[str]], bool]:
+    """What a package's ``__init__`` says, read from its source: (names bound when the module runs,
+    names imported under ``if TYPE_CHECKING:`` by submodule, names given to
+    :func:`regimemap._lazy.attach` by submodule, ``attach`` called under ``if not TYPE_CHECKING:``)."""
     import ast
     from pathlib import Path
 
     path = Path(importlib.import_module(package).__file__)
     tree = ast.parse(path.read_text(encoding="utf-8"))
     bound: set[str] = set()
-    typed: set[str] = set()
-    lazy = False
-    for node in ast.walk(tree):
-        if isinstance(node, ast.FunctionDef) and node.name == "__getattr__":
-            lazy = True
+    typed: dict[str, set[str]] = {}
+    lazy: dict[str, set[str]] = {}
+    hidden = False
     for node in tree.body:
         if isinstance(node, ast.If) and isinstance(node.test, ast.Name) and node.test.id == "TYPE_CHECKING":
             for n in ast.walk(node):
-                if isinstance(n, (ast.Import, ast.ImportFrom)):
-                    typed |= {a.asname or a.name for a in n.names}
+                if isinstance(n, ast.ImportFrom):
+                    typed.setdefault(n.module or "", set()).update(a.asname or a.name for a in n.names)
+        elif isinstance(node, ast.If) and isinstance(node.test, ast.UnaryOp) and isinstance(node.test.op, ast.Not):
+            for n in ast.walk(node):
+                if isinstance(n, ast.Call) and getattr(n.func, "id", None) == "attach":
+                    hidden = True
+                    lazy = {k: set(v) for k, v in ast.literal_eval(n.args[1]).items()}
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             bound |= {a.asname or a.name.split(".")[0] for a in node.names}
         elif isinstance(node, (ast.Assign, ast.AnnAssign)):
@@ -140,43 +157,42 @@ def _typing_view(package: str) -> tuple[set[str], set[str], bool]:
             bound |= {t.id for t in targets if isinstance(t, ast.Name)}
         elif isinstance(node, (ast.FunctionDef, ast.ClassDef)):
             bound.add(node.name)
-    return bound, typed, lazy
+    return bound, typed, lazy, hidden
 
 
 @pytest.mark.parametrize("package", sorted(PUBLIC_API))
 def test_type_checkers_see_every_lazy_name(package):
-    """A name that PEP 562's ``__getattr__`` imports on first use is imported under ``if TYPE_CHECKING:``,
-    so mypy and IDEs see its real type (not ``Any`` from ``__getattr__``)."""
-    bound, typed, lazy = _typing_view(package)
-    unseen = set(importlib.import_module(package).__all__) - bound - typed
-    assert not unseen, f"{package}: lazy names without a TYPE_CHECKING import: {sorted(unseen)}"
-    if not lazy:
-        assert not typed - bound, f"{package}: TYPE_CHECKING names but no __getattr__ to import them"
+    """Each name imported on first use is imported from the same submodule under ``if TYPE_CHECKING:``,
+    so mypy and IDEs see its real type (not ``Any``), and every public name is one or the other."""
+    bound, typed, lazy, _hidden = _lazy_view(package)
+    assert typed == lazy, f"{package}: TYPE_CHECKING imports and lazy names differ"
+    lazy_names = set().union(*lazy.values()) if lazy else set()
+    unseen = set(importlib.import_module(package).__all__) - bound - lazy_names
+    assert not unseen, f"{package}: public names neither bound nor lazy: {sorted(unseen)}"
 
 
-@pytest.mark.parametrize("package", ["regimemap", "regimemap.maps", "regimemap.dynamics", "regimemap.drawing",
-                                     "regimemap.io"])
+@pytest.mark.parametrize("package", sorted(set(PUBLIC_API) - {"regimemap.cli"}))
 def test_getattr_is_hidden_from_type_checkers(package):
-    """``__getattr__`` sits under ``if not TYPE_CHECKING:``: for mypy an unknown name is an error, not Any."""
-    import ast
-    from pathlib import Path
-
-    tree = ast.parse(Path(importlib.import_module(package).__file__).read_text(encoding="utf-8"))
-    assert not any(isinstance(n, ast.FunctionDef) and n.name == "__getattr__" for n in tree.body)
-    hidden = [n for n in tree.body if isinstance(n, ast.If) and isinstance(n.test, ast.UnaryOp)
-              and isinstance(n.test.op, ast.Not) and getattr(n.test.operand, "id", None) == "TYPE_CHECKING"]
-    assert any(isinstance(f, ast.FunctionDef) and f.name == "__getattr__" for n in hidden for f in n.body)
+    """Every package's lazy names come from :func:`regimemap._lazy.attach`, called under
+    ``if not TYPE_CHECKING:``: for mypy an unknown name is an error, not Any."""
+    _bound, _typed, lazy, hidden = _lazy_view(package)
+    assert hidden and lazy, f"{package}: no attach(...) under `if not TYPE_CHECKING:`"
 
 
 def test_unknown_names_raise_attribute_error():
     import regimemap
+    import regimemap.climate
     import regimemap.drawing
     import regimemap.dynamics
     import regimemap.io
+    import regimemap.lifetime
     import regimemap.maps
+    import regimemap.mechanics
+    import regimemap.waves
 
-    for mod in (regimemap, regimemap.drawing, regimemap.io, regimemap.maps, regimemap.dynamics):
-        with pytest.raises(AttributeError, match="no attribute 'nope'"):
+    for mod in (regimemap, regimemap.drawing, regimemap.io, regimemap.maps, regimemap.dynamics,
+                regimemap.lifetime, regimemap.mechanics, regimemap.waves, regimemap.climate):
+        with pytest.raises(AttributeError, match=f"module '{mod.__name__}' has no attribute 'nope'"):
             mod.nope  # noqa: B018
 
 
@@ -224,23 +240,21 @@ def test_lazy_names_are_the_objects_not_their_modules():
         assert not isinstance(getattr(maps, name), types.ModuleType), name
 
 
-def test_split_modules_keep_their_old_import_paths():
-    """Names moved to modules of their own are still importable from where they were."""
-    from regimemap.io import design, design_example, design_keys
+def test_modules_export_the_types_of_their_results():
+    """The point query exports the type it returns, the design reader the example it documents."""
+    from regimemap.io import design, design_example
     from regimemap.maps import point_result, query
 
     assert query.PointResult is point_result.PointResult
-    assert query.margin_words is point_result.margin_words
     assert design.example_design_text is design_example.example_design_text
-    assert design._SPEC is design_keys.DESIGN_KEYS  # read by docs/_ext (the table of the keys)
 
 
 def test_outcome_style_is_exported_by_the_drawing_package():
-    """``regimemap.drawing.OutcomeStyle`` is the frozen dataclass of :mod:`regimemap.drawing.outcome`."""
+    """``regimemap.drawing.OutcomeStyle`` is the frozen dataclass of :mod:`regimemap.drawing.outcome.figure`."""
     import dataclasses
 
     import regimemap.drawing
-    from regimemap.drawing.outcome import OutcomeStyle
+    from regimemap.drawing.outcome.figure import OutcomeStyle
 
     assert regimemap.drawing.OutcomeStyle is OutcomeStyle
     assert dataclasses.is_dataclass(OutcomeStyle) and OutcomeStyle.__dataclass_params__.frozen

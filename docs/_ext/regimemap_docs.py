@@ -110,7 +110,11 @@ def _public_submodules(package: Any) -> list[Any]:
     for info in sorted(pkgutil.iter_modules(package.__path__), key=lambda i: i.name):
         if info.name.startswith("_"):
             continue
-        out.append(importlib.import_module(f"{package.__name__}.{info.name}"))
+        module = importlib.import_module(f"{package.__name__}.{info.name}")
+        out.append(module)
+        # a subpackage without a public API of its own (drawing's rooms): its modules here too
+        if info.ispkg and not hasattr(module, "__all__"):
+            out += _public_submodules(module)
     return out
 
 
@@ -297,10 +301,7 @@ class DesignKeys(SphinxDirective):
 
     def run(self) -> list[nodes.Node]:
         from regimemap.io import design
-
-        spec = getattr(design, "_SPEC", None)
-        if not isinstance(spec, dict) or not spec:
-            raise self.error("regimemap.io.design._SPEC is gone: update docs/_ext/regimemap_docs.py")
+        from regimemap.io.design_keys import DESIGN_KEYS as spec
         classes = {"site": design.SiteSpec, "wave": design.WaveSpec, "caisson": design.CaissonSpec}
         lines: list[str] = []
         for table, keys in spec.items():
@@ -309,9 +310,8 @@ class DesignKeys(SphinxDirective):
                 (key, "required" if getattr(k, "required", True) else "optional", k.accepted,
                  _default_text(defaults.get(key)))
                 for key, k in keys.items()])
-        lifetime_tables = getattr(design, "_TABLE_KEYS", None) or {
-            "lifetime": getattr(design, "LIFETIME_KEYS", {}),
-            "lifetime.errors": getattr(design, "ERROR_FACTORS", {})}
+        from regimemap.io.design_lifetime import LIFETIME_TABLES as lifetime_tables
+
         if lifetime_tables:
             spec_defaults = _defaults(design.LifetimeSpec)
             from regimemap.lifetime import DEFAULT_ERRORS

@@ -14,8 +14,9 @@ when they are used.
 from __future__ import annotations
 
 import logging
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
+from ._lazy import attach
 from ._version import __version__
 from .maps.classify import PRIORITY, classify, label_grid
 from .mechanics.block import Case, Parameters
@@ -44,25 +45,12 @@ __all__ = [
     "__version__",
 ]
 
-_LAZY = {"PointResult", "margin", "query_point", "query_points"}
-
 # Diagnostics go to logging.getLogger("regimemap") and its children (one per module), never to
 # print: silent unless the application shows them (``regimemap -v``, or logging.basicConfig).
 logging.getLogger(__name__).addHandler(logging.NullHandler())
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-
-    def __getattr__(name: str) -> Any:  # PEP 562: the point query is imported on first use
-        if name in _LAZY:
-            from .maps import query
-
-            value = getattr(query, name)
-            globals()[name] = value
-            return value
-        raise AttributeError(f"module 'regimemap' has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    """The public names (imported or not yet) and the module's own: what IDEs and ``dir()`` list."""
-    return sorted(set(globals()) | set(__all__))
+    __getattr__, __dir__ = attach(__name__, {
+        "maps.query": ["PointResult", "margin", "query_point", "query_points"],
+    })

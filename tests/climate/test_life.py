@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 from scipy import stats
 
-from regimemap.climate.fit import Fit
+from regimemap.climate.fits import Fit
 from regimemap.climate.life import climate_of
 from regimemap.io.design import DesignFileError, example_design_text, read_design
 from regimemap.lifetime import Climate
@@ -103,7 +103,7 @@ def test_design_record_gives_the_fitted_climate(tmp_path):
     ('path = "buoy.txt.gz"\nthreshold = "200%"', "", r"threshold = '200%': neither a height"),
     ('path = "buoy.txt.gz"\nmethod = "annual-maxima"\ndistribution = "gpd"', "", r"not a distribution of annual-maxima"),
     ('path = "buoy.txt.gz"', "H0_10 = 5.0", r"\[lifetime\] H0_10 together with \[lifetime.record\]"),
-    ('path = "absent.csv"', "", r"absent.csv: cannot read"),
+    ('path = "absent.csv"', "", r"cannot read wave record '.*absent.csv': No such file"),
     ('path = "buoy.txt.gz"\nthreshold = 6.5', "", r"a fit needs at least 10"),
 ])
 def test_design_record_refused(tmp_path, record, extra, match):
@@ -135,7 +135,7 @@ def test_lifetime_command_climate_band_same_bytes_any_jobs(run_cli, tmp_path):
 
 def test_period_law_fitted_only_with_period_ratio(tmp_path):
     from regimemap.climate import storms
-    from regimemap.climate.storms import resolve_threshold
+    from regimemap.climate.peaks import resolve_threshold
     from regimemap.io.records import read_record
 
     plain = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "98%"')

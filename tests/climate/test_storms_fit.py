@@ -10,7 +10,7 @@ import pytest
 from scipy import stats
 
 from regimemap.climate import ClimateOptions, analyse, annual_maxima, bootstrap, fit, make_record, storms
-from regimemap.climate.storms import parse_threshold, resolve_threshold
+from regimemap.climate.peaks import parse_threshold, resolve_threshold
 from regimemap.io.records import read_record
 
 DATA = Path(__file__).parent / "data"
@@ -189,7 +189,7 @@ def test_analyse_real_excerpt():
     ("gev", {"mu": 6.0, "sigma": 0.9, "xi": 0.15}, None, 1.0),
 ])
 def test_closed_form_return_values_equal_scipy_isf(dist, params, u, rate):
-    from regimemap.climate.fit import Fit
+    from regimemap.climate.fits import Fit
 
     f = Fit(distribution=dist, parameters=params, threshold=u, rate=rate, n=20)
     for R in (2.0, 10.0, 50.0, 1000.0):

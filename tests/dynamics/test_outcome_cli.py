@@ -129,7 +129,7 @@ def test_library_progress_counts_every_run():
 def test_dynamics_figures_progress_and_quiet(tmp_path, terminal, monkeypatch):
     import dataclasses
 
-    import regimemap.drawing.dynamics_presets as dp
+    import regimemap.drawing.motion.presets as dp
 
     f = dp.DYNAMICS_FIGURES["D.3"]
     monkeypatch.setattr(dp, "DYNAMICS_FIGURES", {"D.3": dataclasses.replace(f, first=f.first[:3] + (6,),
@@ -154,7 +154,7 @@ def test_figures_progress(tmp_path, terminal):
 @pytest.mark.subprocess
 @pytest.mark.slow
 def test_write_figures_reports_each_figure_from_the_workers(tmp_path):
-    from regimemap.drawing.batch import write_figures
+    from regimemap.drawing.maps.batch import write_figures
 
     done: list[int] = []
     written = write_figures(tmp_path, ["W.1", "W.2", "W.3"], ["png"], 40, jobs=2, progress=done.append)
@@ -170,7 +170,7 @@ def test_min_rotation_in_the_categories_title_key_and_json(tmp_path):
     d = json.loads(out.read_text())
     assert d["min_rotation"] == pytest.approx(np.radians(0.5)) and d["inputs"]["min_rotation"] == 0.5
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
-    from regimemap.drawing.outcome import outcome_figure, outcome_title
+    from regimemap.drawing.outcome.figure import outcome_figure, outcome_title
 
     m = outcome_map(blk, "half-sine", ("k_peak", np.linspace(0.3, 1.5, 5)), ("duration", [0.25, 0.5]),
                     min_rotation=np.radians(0.5), refine=False)

@@ -1,4 +1,4 @@
-"""regimemap.drawing.outcome and .motion: what an outcome map and a motion figure draw (no simulation)."""
+"""regimemap.drawing.outcome.figure and .motion: what an outcome map and a motion figure draw (no simulation)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import io
 import numpy as np
 import pytest
 
-from regimemap.drawing.outcome import (
+from regimemap.drawing.outcome.figure import (
     category_rectangles,
     cell_edges,
     draw_outcome_map,
@@ -115,7 +115,7 @@ def test_svg_is_byte_stable():
 
 @pytest.mark.render
 def test_motion_figure_shades_the_phases():
-    from regimemap.drawing.motion import motion_figure, phase_runs
+    from regimemap.drawing.motion.history import motion_figure, phase_runs
     from regimemap.dynamics import Block, Pulse, simulate
 
     sim = simulate(Block(B=0.2, gamma=3.0, mu=0.35), Pulse.half_sine(0.6, 0.5), history=0)

@@ -1,7 +1,7 @@
 """The text of outcome maps fits: no two texts overlap, none leaves the figure, titles wrap.
 
 Every committed outcome figure (D.1-D.3, as ``make figures`` draws them) is checked on its PNG and
-its PDF with the renderer's text boxes (the helpers of tests/test_legible.py), and so are maps made
+its PDF with the renderer's text boxes (the helpers of tests/drawing/test_legible.py), and so are maps made
 to crowd: many contour levels in a thin band, a long title.
 """
 
@@ -12,15 +12,15 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from regimemap.drawing.dynamics_presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # noqa: E402
-from regimemap.drawing.outcome import outcome_figure, outcome_title  # noqa: E402
-from regimemap.drawing.outcome_text import outcome_text_boxes  # noqa: E402
+from regimemap.drawing.motion.presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # noqa: E402
+from regimemap.drawing.outcome.figure import outcome_figure, outcome_title  # noqa: E402
+from regimemap.drawing.outcome.text import outcome_text_boxes  # noqa: E402
 from regimemap.drawing.save import save_figure  # noqa: E402
 from regimemap.dynamics import OutcomeMap  # noqa: E402
 from regimemap.dynamics.boundaries import refine_crossings  # noqa: E402
 from regimemap.io.dynamics import cached_outcome  # noqa: E402
 
-from ..test_legible import _check_boxes  # noqa: E402
+from ..drawing.test_legible import _check_boxes  # noqa: E402
 
 
 def _check_labels(fig, art) -> None:

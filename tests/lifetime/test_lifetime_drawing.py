@@ -3,7 +3,7 @@
 Figures build for a normal result, a result where no lifetime slid, design charts where no
 width / every width meets the target; their SVG is the same bytes from run to run and at any
 PNG resolution; their PDF embeds no Type 3 font; no text meets another or leaves the figure
-(boxes measured by the renderer, with tests/test_legible.py's check), and the labels of the
+(boxes measured by the renderer, with tests/drawing/test_legible.py's check), and the labels of the
 lines stay off the curves.  The sheet without a lifetime has no panel (g); with one, panel (g) is
 placed the same way twice (the same SVG bytes).
 """
@@ -18,11 +18,11 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from regimemap.drawing.labelplacer import figure_texts  # noqa: E402
-from regimemap.drawing.lifetime import lifetime_figure  # noqa: E402
-from regimemap.drawing.lifetime_chart import chart_figure  # noqa: E402
+from regimemap.drawing.lifetime.chart import chart_figure  # noqa: E402
+from regimemap.drawing.lifetime.exceedance import lifetime_figure  # noqa: E402
 from regimemap.drawing.save import print_figure  # noqa: E402
-from regimemap.drawing.tidy import MEASURE_DPI  # noqa: E402
+from regimemap.drawing.text.labelplacer import figure_texts  # noqa: E402
+from regimemap.drawing.text.tidy import MEASURE_DPI  # noqa: E402
 from regimemap.lifetime import (  # noqa: E402
     Caisson,
     Climate,
@@ -32,7 +32,7 @@ from regimemap.lifetime import (  # noqa: E402
     design_chart,
     lifetime_sliding,
 )
-from tests.test_legible import _check_boxes  # noqa: E402
+from tests.drawing.test_legible import _check_boxes  # noqa: E402
 
 pytestmark = pytest.mark.render
 
@@ -183,7 +183,7 @@ def test_chart_with_a_target_off_the_limits(chart: DesignChart) -> None:
 
 
 def _boxes(fig) -> dict[str, list]:
-    """Every text of the figure (a key as one box) for tests/test_legible.py's check."""
+    """Every text of the figure (a key as one box) for tests/drawing/test_legible.py's check."""
     renderer = fig.canvas.get_renderer()
     legends = [leg for leg in [*fig.legends, *(ax.get_legend() for ax in fig.axes)] if leg is not None]
     in_key = {id(t) for leg in legends for t in leg.get_texts()}
@@ -300,7 +300,7 @@ def _goda_report():
 
 
 def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
-    from regimemap.drawing.sheet import LIFETIME_PANEL, PANELS, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS, sheet_figure
 
     fig = sheet_figure(_goda_report(), title="goda.toml")
     labels = [ax.get_label() for ax in fig.axes]
@@ -309,7 +309,7 @@ def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
 
 
 def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResult) -> None:
-    from regimemap.drawing.sheet import LIFETIME_PANEL, PANELS, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS, sheet_figure
 
     report = _goda_report()
     fig = sheet_figure(report, title="goda.toml", lifetime=goda)
@@ -345,7 +345,7 @@ def test_the_lifetime_figure_says_pass_or_fail_and_colours_a_failing_esd(goda: L
                                                                          word: str) -> None:
     from matplotlib.colors import to_hex
 
-    from regimemap.drawing.lifetime import lifetime_title
+    from regimemap.drawing.lifetime.exceedance import lifetime_title
     from regimemap.drawing.verdict import FAIL_COLOUR
 
     result = _judged(goda, target, failure=5.0)
@@ -376,7 +376,7 @@ def test_no_zone_off_the_mound_without_a_lifetime_beyond_it(wide: LifetimeResult
 def test_the_chart_draws_the_interval_the_design_width_and_the_verdict(chart: DesignChart) -> None:
     from matplotlib.colors import to_hex
 
-    from regimemap.drawing.lifetime_chart import chart_title
+    from regimemap.drawing.lifetime.chart import chart_title
     from regimemap.drawing.verdict import FAIL_COLOUR
     from regimemap.lifetime import judge_chart
 
@@ -398,7 +398,7 @@ def test_the_chart_draws_the_interval_the_design_width_and_the_verdict(chart: De
 
 
 def test_the_chart_draws_the_climate_bands_upper_curve_and_its_width(chart: DesignChart) -> None:
-    from regimemap.drawing.lifetime_chart import BAND_LINE
+    from regimemap.drawing.lifetime.chart import BAND_LINE
     from regimemap.lifetime.replicates import ChartBand
 
     w = np.asarray(chart.widths)

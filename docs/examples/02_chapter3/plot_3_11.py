@@ -13,7 +13,7 @@ Command line: ``regimemap figure 3.11``.
 """
 
 from regimemap.drawing import render_preset
-from regimemap.drawing.presets import get_preset
+from regimemap.drawing.maps.presets import get_preset
 
 preset = get_preset("3.11")
 print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "

@@ -16,7 +16,7 @@ Command line::
 
 import regimemap
 from regimemap.drawing import map_figure
-from regimemap.drawing.worked import WORKED
+from regimemap.drawing.maps.worked import WORKED
 from regimemap.maps import DesignPoint
 
 block = regimemap.Parameters(0.70, -0.018, buoyancy=0.318, uplift_ratio=0.524)

@@ -9,7 +9,7 @@ rest reaches μ = 1.45, and there is no lift-off.
 
 import regimemap
 from regimemap.drawing import map_figure
-from regimemap.drawing.worked import WORKED
+from regimemap.drawing.maps.worked import WORKED
 from regimemap.maps import DesignPoint
 
 block = regimemap.Parameters(0.70, -0.018)

@@ -9,7 +9,7 @@ beyond G, and the block lifts off beyond L.
 
 import regimemap
 from regimemap.drawing import map_figure
-from regimemap.drawing.worked import WORKED
+from regimemap.drawing.maps.worked import WORKED
 
 block = regimemap.Parameters(3.0, 0.4, uplift_ratio=1.0)
 fig, ax, artists = map_figure(block, view="report", title=WORKED["W.3"].title)

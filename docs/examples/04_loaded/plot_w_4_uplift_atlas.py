@@ -13,7 +13,7 @@ Command line::
 """
 
 from regimemap.drawing import atlas_figure
-from regimemap.drawing.worked import WORKED
+from regimemap.drawing.maps.worked import WORKED
 
 fig = atlas_figure([0.70], [0.0, 0.524, 1.0], sweep="uplift_ratio",
                    fixed={"kprime": -0.018, "buoyancy": 0.318, "uplift_arm": 1 / 3},

@@ -17,7 +17,7 @@ Command line::
 The command simulates the file's 5000 lifetimes; the docs simulate 2000.
 """
 
-from regimemap.drawing.sheet import sheet_figure
+from regimemap.drawing.sheet.page import sheet_figure
 from regimemap.io.design import example_design_text, parse_design
 from regimemap.lifetime import lifetime_sliding
 from regimemap.maps.caisson import caisson_report

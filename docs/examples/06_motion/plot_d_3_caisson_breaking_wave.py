@@ -10,7 +10,7 @@ the residual slide.  The map of ``make figures`` (61 × 45 runs).
 
 import numpy as np
 
-from regimemap.drawing.dynamics_presets import DYNAMICS_FIGURES
+from regimemap.drawing.motion.presets import DYNAMICS_FIGURES
 
 figure = DYNAMICS_FIGURES["D.3"]
 print(figure.make_block())

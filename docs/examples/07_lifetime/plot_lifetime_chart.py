@@ -15,7 +15,7 @@ Command line::
 
 import numpy as np
 
-from regimemap.drawing.lifetime import chart_figure
+from regimemap.drawing.lifetime.chart import chart_figure
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, design_chart
 
 goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,

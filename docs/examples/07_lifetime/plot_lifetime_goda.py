@@ -15,7 +15,7 @@ Command line::
     regimemap lifetime goda.toml --trials 2000 -o life.png
 """
 
-from regimemap.drawing.lifetime import lifetime_figure
+from regimemap.drawing.lifetime.exceedance import lifetime_figure
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, lifetime_sliding
 
 goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,

@@ -17,7 +17,7 @@ Command line::
 from pathlib import Path
 
 from regimemap.climate import ClimateOptions, analyse
-from regimemap.drawing.climate import climate_figure
+from regimemap.drawing.climate.figures import climate_figure
 from regimemap.io.records import read_record
 
 

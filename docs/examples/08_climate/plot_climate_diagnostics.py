@@ -16,8 +16,8 @@ Command line::
 from pathlib import Path
 
 from regimemap.climate.analysis import diagnostics
-from regimemap.climate.storms import resolve_threshold
-from regimemap.drawing.climate import diagnostics_figure
+from regimemap.climate.peaks import resolve_threshold
+from regimemap.drawing.climate.figures import diagnostics_figure
 from regimemap.io.records import read_record
 
 

@@ -135,7 +135,7 @@ def kprime_option(**kwargs: Any) -> Callable[[FC], FC]:
                         **kwargs)
 
 
-# -- the loads of a block (issue 10) -------------------------------------------------------
+# -- the loads of a block (buoyancy, uplift, inertia) --------------------------------------
 
 #: The load options of the commands: (keyword of Parameters, option, metavar, help).
 LOAD_OPTIONS: tuple[tuple[str, str, str, str], ...] = (

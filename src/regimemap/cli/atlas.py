@@ -190,7 +190,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
     blocks = _checked_blocks(gammas, sweep, values, fixed)
     fmt = _figure_output(output)
     import_matplotlib()
-    from ..drawing.atlas import write_atlas
+    from ..drawing.maps.atlas import write_atlas
     from ..maps.sweeps import points_outside, resolve_share
 
     used, ext, crammed = resolve_share(gammas, values, share, k_max, mu_max, view=view,
@@ -265,7 +265,7 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
     blocks = _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()
-    from ..drawing.animation import write_animation
+    from ..drawing.maps.animation import write_animation
     from ..maps.sweeps import points_outside, sweep_extent
 
     if k_max is None or mu_max is None:

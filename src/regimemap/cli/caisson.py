@@ -108,7 +108,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     if output is not None:  # the sheet first: a failure leaves no report half-printed
         import_matplotlib()
         from ..drawing.save import save_figure
-        from ..drawing.sheet import sheet_figure
+        from ..drawing.sheet.page import sheet_figure
 
         life = None
         if d.lifetime is not None:  # the file's [lifetime]: the sheet gains the lifetime panel

@@ -28,7 +28,7 @@ class _Threshold(ParamType):
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
         if not isinstance(value, str):
             return value
-        from ..climate.storms import parse_threshold
+        from ..climate.peaks import parse_threshold
 
         try:
             return parse_threshold(value)
@@ -176,7 +176,7 @@ def _write(result: Any, outputs: tuple[str, ...], diagnostics: str | None, title
     if not outputs and diagnostics is None:
         return written
     import_matplotlib()
-    from ..drawing.climate import climate_figure, diagnostics_figure
+    from ..drawing.climate.figures import climate_figure, diagnostics_figure
     from ..drawing.save import save_figure
 
     if outputs:

@@ -45,7 +45,7 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
       regimemap dynamics-figures --out figures --format png,svg
       regimemap dynamics-figures --list
     """
-    from ..drawing.dynamics_presets import DYNAMICS_FIGURES
+    from ..drawing.motion.presets import DYNAMICS_FIGURES
 
     if list_only:
         for f in DYNAMICS_FIGURES.values():

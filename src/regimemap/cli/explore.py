@@ -1,6 +1,6 @@
 """``regimemap explore``: the regime map, live (sliders for gamma and k', a click, Save).
 
-The window is :class:`regimemap.drawing.explore.Explorer`; this module only
+The window is :class:`regimemap.drawing.explore.explorer.Explorer`; this module only
 parses the options, wires the explorer to the rest of the command line (the
 file names of ``regimemap plot``, and the ``plot`` command that writes the
 same file, on standard error) and opens the window.  :func:`open_explorer` does the same
@@ -30,7 +30,7 @@ from .plot import DEFAULT_SAMPLES, plot_stem
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-    from ..drawing.explore import Explorer
+    from ..drawing.explore.explorer import Explorer
     from ..maps.points import DesignPoint
     from ..mechanics.block import Parameters
 
@@ -52,7 +52,7 @@ def plot_command_line(explorer: Explorer) -> str:
 def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT_SAMPLES,
                   fig: Figure | None = None, echo: Any = click.echo, window: bool = True,
                   point: DesignPoint | None = None) -> Explorer:
-    """An :class:`~regimemap.drawing.explore.Explorer` wired as ``regimemap explore`` wires it.
+    """An :class:`~regimemap.drawing.explore.explorer.Explorer` wired as ``regimemap explore`` wires it.
 
     A click shows the text of ``regimemap classify``
     (:func:`regimemap.io.format_result`); *Save* writes atomically
@@ -67,7 +67,7 @@ def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT
 
         ex = open_explorer(Parameters(gamma=3, kprime=0.4))
     """
-    from ..drawing.explore import Explorer
+    from ..drawing.explore.explorer import Explorer
     from ..drawing.save import save_figure
     from ..io.tables import format_result
 
@@ -155,7 +155,7 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
             raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
         path = output_path(output, "--output")
     import_matplotlib()
-    from ..drawing.explore import window_problem
+    from ..drawing.explore.text import window_problem
 
     if path is not None:
         ex = open_explorer(params, resolution=resolution, echo=None, window=False, point=point)

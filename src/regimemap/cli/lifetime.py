@@ -341,8 +341,8 @@ def _write_outputs(outputs: tuple[str, ...], result: LifetimeResult | DesignChar
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.lifetime import lifetime_figure, lifetime_title
-                    from ..drawing.lifetime_chart import chart_figure, chart_title
+                    from ..drawing.lifetime.chart import chart_figure, chart_title
+                    from ..drawing.lifetime.exceedance import lifetime_figure, lifetime_title
 
                     fig = (lifetime_figure(result, lifetime_title(title, result))
                            if isinstance(result, LifetimeResult)

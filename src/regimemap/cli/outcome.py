@@ -162,7 +162,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.outcome import axis_label, outcome_figure, outcome_title
+                    from ..drawing.outcome.figure import axis_label, outcome_figure, outcome_title
 
                     fig, _, _ = outcome_figure(
                         m, x=dim.get(swept[0]), y=dim.get(swept[1]),

@@ -40,7 +40,7 @@ from ._plot_options import number_text as _num
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..drawing.artists import MapArtists
+    from ..drawing.maps.artists import MapArtists
     from ..io.points import DesignPoint
     from ..mechanics.block import Parameters
 
@@ -50,7 +50,7 @@ __all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figu
 _LO, _HI = DPI_RANGE
 
 DEFAULT_SAMPLES = 801
-#: The number of the report's model figure (repeated from regimemap.drawing.model).
+#: The number of the report's model figure (repeated from regimemap.drawing.maps.model).
 MODEL_ID = "2.1"
 
 
@@ -178,8 +178,8 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     modes = check_modes_on_map(modes, params.loaded)
     points = read_points(points_files, point_specs, params.gamma, params.kprime, loads)
     import_matplotlib()
-    from ..drawing.figure import map_figure
-    from ..drawing.mapplot import MapStyle
+    from ..drawing.maps.figure import map_figure
+    from ..drawing.maps.mapplot import MapStyle
     from ..drawing.save import save_figure
 
     style = MapStyle(curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title)
@@ -197,10 +197,10 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
 def _draw_ambiguity(fig: Any, ax: Any, artists: MapArtists, params: Parameters) -> None:
     """``--show-ambiguity``: the overlay of where several modes are admissible, drawn on the map
     with its legend entries, the figure refitted and its labels tidied around the overlay."""
-    from ..drawing.ambiguity import draw_ambiguity
-    from ..drawing.figure import fit_figure
+    from ..drawing.maps.ambiguity import draw_ambiguity
+    from ..drawing.maps.figure import fit_figure
     from ..drawing.style import style_context
-    from ..drawing.tidy import tidy_figure
+    from ..drawing.text.tidy import tidy_figure
 
     with style_context():
         overlay = draw_ambiguity(ax, params, artists.data.k_max, artists.data.mu_max) or []
@@ -240,8 +240,8 @@ Examples:
 
 
 def _preset_or_usage_error(fid: str) -> Any:
-    from ..drawing.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
-    from ..drawing.worked import WORKED
+    from ..drawing.maps.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
+    from ..drawing.maps.worked import WORKED
 
     if normalise_id(fid) == MODEL_ID:
         return None
@@ -270,15 +270,15 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     path, fmt = resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
 
     import_matplotlib()
-    from ..drawing.figure import render_preset
+    from ..drawing.maps.figure import render_preset
     from ..drawing.save import save_figure
 
     if preset is None:
-        from ..drawing.model import model_figure
+        from ..drawing.maps.model import model_figure
 
         fig = model_figure(dpi=dpi)
     elif preset.id.startswith("W"):
-        from ..drawing.worked import render_worked
+        from ..drawing.maps.worked import render_worked
 
         fig = render_worked(preset, dpi=dpi)
     else:
@@ -328,8 +328,8 @@ W.4: the uplift ratio swept); --set all draws both.
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar on standard error.")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
                     which: str, jobs: int | None, quiet: bool) -> None:
-    from ..drawing.presets import PRESETS
-    from ..drawing.worked import WORKED
+    from ..drawing.maps.presets import PRESETS
+    from ..drawing.maps.worked import WORKED
 
     report = {} if which == "worked" else PRESETS
     if list_only:
@@ -351,7 +351,7 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
-    from ..drawing.batch import write_figures
+    from ..drawing.maps.batch import write_figures
 
     ids = [] if which == "worked" else [MODEL_ID, *PRESETS]
     if which != "report":

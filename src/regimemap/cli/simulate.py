@@ -260,7 +260,7 @@ def _write_outputs(sim: Simulation, block: Block, T: float, inputs: dict[str, An
     import_matplotlib()
     title = _run_title(inputs, T)
     if plot is not None:
-        from ..drawing.motion import motion_figure
+        from ..drawing.motion.history import motion_figure
         from ..drawing.save import save_figure
 
         fig = motion_figure(hist, H=H, alpha=float(block.alpha), duration=T, title=title)
@@ -268,7 +268,7 @@ def _write_outputs(sim: Simulation, block: Block, T: float, inputs: dict[str, An
             save_figure(fig, plot)
         written.append(plot)
     if animate is not None:
-        from ..drawing.motion import write_block_animation
+        from ..drawing.motion.history import write_block_animation
 
         kprime = inputs["kprime"]
         with writing(animate):

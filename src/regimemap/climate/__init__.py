@@ -1,5 +1,6 @@
 """Wave records to extreme sea states: readers' records, storms, annual maxima, extreme-value fits
-with bootstrap bands (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`).
+with bootstrap bands (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`).  Names are
+imported on first use (:func:`regimemap._lazy.attach`): reading a record does not import scipy.
 
 * :class:`Record`, :func:`make_record` -- a record and its quality control (the files are read by
   :func:`regimemap.io.records.read_record`);
@@ -12,13 +13,26 @@ with bootstrap bands (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`
 
 from __future__ import annotations
 
-from .analysis import METHODS, ClimateOptions, ClimateResult, analyse
-from .fit import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit
-from .record import Quality, Record, make_record
-from .storms import AnnualMaxima, Storms, annual_maxima, parse_threshold, storms
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .analysis import METHODS, ClimateOptions, ClimateResult, analyse
+    from .fits import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit
+    from .peaks import AnnualMaxima, Storms, annual_maxima, parse_threshold, storms
+    from .record import Quality, Record, make_record
 
 __all__ = [
     "AM_DISTRIBUTIONS", "METHODS", "POT_DISTRIBUTIONS", "AnnualMaxima", "Band", "ClimateOptions",
     "ClimateResult", "Fit", "Quality", "Record", "Storms", "analyse", "annual_maxima", "bootstrap", "fit",
     "make_record", "parse_threshold", "storms",
 ]
+
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+    __getattr__, __dir__ = attach(__name__, {
+        "analysis": ["METHODS", "ClimateOptions", "ClimateResult", "analyse"],
+        "fits": ["AM_DISTRIBUTIONS", "POT_DISTRIBUTIONS", "Band", "Fit", "bootstrap", "fit"],
+        "record": ["Quality", "Record", "make_record"],
+        "peaks": ["AnnualMaxima", "Storms", "annual_maxima", "parse_threshold", "storms"],
+    })

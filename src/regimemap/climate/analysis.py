@@ -9,9 +9,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .fit import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit, return_values
-from .record import Record
-from .storms import (
+from .fits import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit, return_values
+from .peaks import (
     DEFAULT_COVERAGE,
     DEFAULT_GAP,
     DEFAULT_QUANTILE,
@@ -21,6 +20,7 @@ from .storms import (
     resolve_threshold,
     storms,
 )
+from .record import Record
 
 __all__ = ["METHODS", "MIN_YEARS", "ClimateOptions", "ClimateResult", "Curves", "Diagnostics", "analyse",
            "curves", "diagnostics"]

@@ -10,8 +10,8 @@ import numpy as np
 
 from ..lifetime.climate import Climate
 from .analysis import ClimateResult
-from .fit import Fit
-from .storms import Storms
+from .fits import Fit
+from .peaks import Storms
 
 __all__ = ["MIN_PERIODS", "climate_of", "period_law", "replicate_climates"]
 
@@ -28,7 +28,7 @@ def climate_of(fit: Fit) -> Climate:
 
     Examples
     --------
-    >>> from regimemap.climate.fit import Fit
+    >>> from regimemap.climate.fits import Fit
     >>> c = climate_of(Fit("gpd", {"sigma": 1.3, "xi": -0.3}, threshold=4.0, rate=6.0, n=60))
     >>> round(c.return_value(50), 6) == round(Fit("gpd", {"sigma": 1.3, "xi": -0.3}, 4.0, 6.0, 60)
     ...                                         .return_value(50), 6)

@@ -1,38 +1,46 @@
 """The drawing layer: the only part of regimemap that imports matplotlib.
 
-Styles (:mod:`.style`), label placement (:mod:`.placement`, :mod:`.labels`,
-:mod:`.labelplacer`), the key (:mod:`.key`), the map (:mod:`.mapplot`, drawing
-what :mod:`.artists` records; :mod:`.figure`, a map on a figure of its own), its
-tidy pass (:mod:`.tidy`), the ambiguity overlay (:mod:`.ambiguity`), the atlas
-(:mod:`.atlas`) and the animation (:mod:`.animation`), the report's figure
-presets (:mod:`.presets`, :mod:`.batch` for all of them at once), figure bytes
-and files (:mod:`.save`), the motions after initiation (:mod:`.outcome`,
-:mod:`.motion`) and the figures of a caisson's sliding over its design life
-(:mod:`.lifetime`, :mod:`.lifetime_chart`).  Files are written atomically
-through :mod:`regimemap.io`, the layer below.
+One room per family of figures, and what they share at the top:
 
-Names are imported on first use, so ``import regimemap.drawing`` does not
-import matplotlib; the ``if TYPE_CHECKING`` block gives type checkers and IDEs
-the real names.
+* :mod:`.maps` -- the regime map, its key, a map figure, the report's figures,
+  the atlas and the animation;
+* :mod:`.outcome` -- outcome maps of :mod:`regimemap.dynamics`;
+* :mod:`.motion` -- one run's motion, and the figures D.1-D.3;
+* :mod:`.sheet` -- the caisson's design sheet;
+* :mod:`.lifetime` -- the exceedance figure and the design chart of a caisson's
+  design life;
+* :mod:`.climate` -- a wave record's extremes: the record, return levels, QQ and
+  threshold diagnostics;
+* :mod:`.explore` -- ``regimemap explore``, the map with sliders;
+* :mod:`.text` -- label placement and the passes that keep texts legible;
+* :mod:`.style`, :mod:`.save`, :mod:`.limits`, :mod:`.verdict` -- the style of
+  every drawing, figure bytes and files (written atomically through
+  :mod:`regimemap.io`, the layer below), the sizes the command line checks, the
+  PASS/FAIL badge.
+
+Names are imported on first use (:func:`regimemap._lazy.attach`), so ``import
+regimemap.drawing`` does not import matplotlib; the ``if TYPE_CHECKING`` block
+gives type checkers and IDEs the real names.
 """
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
-    from .ambiguity import draw_ambiguity
-    from .animation import write_animation
-    from .artists import MapArtists
-    from .atlas import atlas_figure, write_atlas
-    from .climate import climate_figure, diagnostics_figure
-    from .figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
-    from .lifetime import lifetime_figure
-    from .lifetime_chart import chart_figure
-    from .mapplot import MapStyle, default_title, draw_design_points, draw_map
-    from .motion import motion_figure
-    from .outcome import OutcomeStyle, draw_outcome_map, outcome_figure
+    from .climate.figures import climate_figure, diagnostics_figure
+    from .lifetime.chart import chart_figure
+    from .lifetime.exceedance import lifetime_figure
+    from .maps.ambiguity import draw_ambiguity
+    from .maps.animation import write_animation
+    from .maps.artists import MapArtists
+    from .maps.atlas import atlas_figure, write_atlas
+    from .maps.figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
+    from .maps.mapplot import MapStyle, default_title, draw_design_points, draw_map
+    from .motion.history import motion_figure
+    from .outcome.figure import OutcomeStyle, draw_outcome_map, outcome_figure
     from .save import save_figure
     from .style import MODE_STYLE, OUTCOME_STYLE, style_context
 
@@ -67,37 +75,6 @@ __all__ = [
     "write_atlas",
 ]
 
-_WHERE = {
-    "FIGSIZE": "figure",
-    "MapArtists": "artists",
-    "MapStyle": "mapplot",
-    "default_title": "mapplot",
-    "draw_design_points": "mapplot",
-    "draw_map": "mapplot",
-    "fit_figure": "figure",
-    "map_figure": "figure",
-    "new_figure": "figure",
-    "render_map": "figure",
-    "render_preset": "figure",
-    "MODE_STYLE": "style",
-    "style_context": "style",
-    "atlas_figure": "atlas",
-    "write_atlas": "atlas",
-    "write_animation": "animation",
-    "draw_ambiguity": "ambiguity",
-    "save_figure": "save",
-    "OUTCOME_STYLE": "style",
-    "OutcomeStyle": "outcome",
-    "draw_outcome_map": "outcome",
-    "outcome_figure": "outcome",
-    "motion_figure": "motion",
-    "lifetime_figure": "lifetime",
-    "chart_figure": "lifetime_chart",
-    "climate_figure": "climate",
-    "diagnostics_figure": "climate",
-}
-
-
 def load_matplotlib() -> None:
     """Import matplotlib's Figure and Agg canvas now (the drawing modules import them on first use).
 
@@ -109,13 +86,18 @@ def load_matplotlib() -> None:
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-
-    def __getattr__(name: str) -> Any:  # PEP 562: matplotlib is imported on first use
-        if name in _WHERE:
-            return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    """The module's names and its public names (imported on first use), for ``dir()`` and IDEs."""
-    return sorted(set(globals()) | set(__all__))
+    __getattr__, __dir__ = attach(__name__, {
+        "maps.ambiguity": ["draw_ambiguity"],
+        "maps.animation": ["write_animation"],
+        "maps.artists": ["MapArtists"],
+        "maps.atlas": ["atlas_figure", "write_atlas"],
+        "maps.figure": ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "render_map", "render_preset"],
+        "maps.mapplot": ["MapStyle", "default_title", "draw_design_points", "draw_map"],
+        "lifetime.exceedance": ["lifetime_figure"],
+        "lifetime.chart": ["chart_figure"],
+        "climate.figures": ["climate_figure", "diagnostics_figure"],
+        "motion.history": ["motion_figure"],
+        "outcome.figure": ["OutcomeStyle", "draw_outcome_map", "outcome_figure"],
+        "save": ["save_figure"],
+        "style": ["MODE_STYLE", "OUTCOME_STYLE", "style_context"],
+    })

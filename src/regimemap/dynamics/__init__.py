@@ -11,10 +11,11 @@ the input limits (:mod:`regimemap.dynamics.limits`) without importing the steppe
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
-if TYPE_CHECKING:  # pragma: no cover
+from .._lazy import attach
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from .block import Block, G, frequency_parameter, size_R, slenderness
     from .design_wave import (
         DESIGN_INPUTS,
@@ -82,29 +83,14 @@ __all__ = [
     "to_dimensionless",
 ]
 
-_WHERE = {
-    "Block": "block", "G": "block", "frequency_parameter": "block", "size_R": "block",
-    "slenderness": "block",
-    "SWEEPABLE": "outcome", "OutcomeMap": "outcome", "from_dimensionless": "outcome",
-    "outcome_map": "outcome", "to_dimensionless": "outcome",
-    "SHAPES": "pulses", "Pulse": "pulses",
-    "DESIGN_INPUTS": "design_wave", "DESIGN_UNITS": "design_wave", "design_wave_inputs": "design_wave",
-    "design_wave_numbers": "design_wave", "design_wave_run": "design_wave", "NO_ADDED_MASS": "design_wave",
-    "PROFILE": "design_wave", "describe_design_wave": "design_wave",
-}
-
-
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-
-    def __getattr__(name: str) -> Any:  # PEP 562
-        if name in __all__:
-            module = _WHERE.get(name, "stepper")
-            value = getattr(importlib.import_module(f"{__name__}.{module}"), name)
-            globals()[name] = value
-            return value
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    """The public names (imported or not yet) and the module's own: what IDEs and ``dir()`` list."""
-    return sorted(set(globals()) | set(__all__))
+    __getattr__, __dir__ = attach(__name__, {
+        "block": ["Block", "G", "frequency_parameter", "size_R", "slenderness"],
+        "design_wave": ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "describe_design_wave",
+                        "design_wave_inputs", "design_wave_numbers", "design_wave_run"],
+        "outcome": ["SWEEPABLE", "OutcomeMap", "from_dimensionless", "outcome_map", "to_dimensionless"],
+        "pulses": ["SHAPES", "Pulse"],
+        "stepper": ["CATEGORY_LABELS", "FREE_STEP", "OVERTURN", "PULSE_STEPS", "REST", "ROCK", "SLIDE",
+                    "SLIDE_ROCK", "STILL_MOVING", "History", "Phase", "Simulation", "default_steps",
+                    "simulate"],
+    })

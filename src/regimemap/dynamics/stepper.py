@@ -245,7 +245,7 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
     events : bool
         Whether to land a step on every event of a run -- the pulse's breakpoints and its
         crossings of the initiation map (:mod:`regimemap.dynamics.events`).  False is the
-        regular schedule alone (the stepper before events, bit for bit).
+        regular schedule alone.
     progress : callable, optional
         Called with the number of runs that have just left the batch (at rest, overturned
         or at ``t_max``), as they leave: a progress bar's ``step`` (``regimemap outcome``).

@@ -1,4 +1,4 @@
-"""Files in and out: atomic writes, design points and pulses from CSV, map export, results.
+"""Files in and out: atomic writes, design points and pulses from CSV, wave records, map export, results.
 
 Every writer here writes atomically (a temporary file in the same folder, then
 a rename): a failed write leaves nothing behind.  This package sits below the
@@ -11,8 +11,9 @@ real names.
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from .atomic import atomic_open, atomic_path
@@ -37,29 +38,13 @@ __all__ = [
     "write_outcome",
 ]
 
-_WHERE = {
-    "atomic_open": "atomic",
-    "atomic_path": "atomic",
-    "export_map": "export",
-    "format_result": "tables",
-    "parse_point_spec": "points",
-    "read_points_csv": "points",
-    "result_row": "tables",
-    "read_pulse_csv": "pulses",
-    "read_record": "records",
-    "write_history": "dynamics",
-    "write_outcome": "dynamics",
-}
-
-
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-
-    def __getattr__(name: str) -> Any:  # PEP 562
-        if name in _WHERE:
-            return getattr(importlib.import_module(f"{__name__}.{_WHERE[name]}"), name)
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    """The module's names and its public names (imported on first use), for ``dir()`` and IDEs."""
-    return sorted(set(globals()) | set(__all__))
+    __getattr__, __dir__ = attach(__name__, {
+        "atomic": ["atomic_open", "atomic_path"],
+        "dynamics": ["write_history", "write_outcome"],
+        "export": ["export_map"],
+        "points": ["parse_point_spec", "read_points_csv"],
+        "pulses": ["read_pulse_csv"],
+        "records": ["read_record"],
+        "tables": ["format_result", "result_row"],
+    })

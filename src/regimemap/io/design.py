@@ -53,7 +53,6 @@ from .design_keys import DESIGN_KEYS, DesignReader
 from .design_lifetime import (
     ERROR_FACTORS,
     LIFETIME_KEYS,
-    LIFETIME_TABLES,
     MAX_TRIALS,
     MAX_YEARS,
     LifetimeSpec,
@@ -71,11 +70,6 @@ if TYPE_CHECKING:
 __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "MAX_TRIALS", "MAX_YEARS", "CaissonSpec", "Design",
            "DesignFileError", "LifetimeSpec", "SiteSpec", "WaveSpec", "check_lifetime_option",
            "example_design_text", "key_line", "parse_design", "read_design"]
-
-#: The keys of ``[site]``, ``[wave]``, ``[caisson]`` and the key tables of ``[lifetime]``
-#: (read under these names by the documentation's table of the keys, docs/_ext).
-_SPEC = DESIGN_KEYS
-_TABLE_KEYS = LIFETIME_TABLES
 
 
 @dataclass(frozen=True)

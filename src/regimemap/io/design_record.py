@@ -80,7 +80,7 @@ def read_record_table(text: str, source: str, table: Mapping[str, Any]) -> Recor
     DesignFileError
         Naming the file, the line, the key, the value and what is accepted.
     """
-    from regimemap.climate.storms import parse_threshold
+    from regimemap.climate.peaks import parse_threshold
 
     def bad(key: str, why: str) -> DesignFileError:
         return _fail(text, source, key, f"[lifetime.record] {key} = {table[key]!r}: {why}; "

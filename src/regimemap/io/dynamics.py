@@ -7,7 +7,7 @@
   boundaries, :func:`outcome_record`);
 * :func:`cached_outcome` -- computed outcome maps kept in ``.npz`` files (``make figures``).
 
-The figures of a run (its history, its animation) are :mod:`regimemap.drawing.motion`'s.
+The figures of a run (its history, its animation) are :mod:`regimemap.drawing.motion.history`'s.
 
 Every file is written atomically (a temporary file in the same folder, then a rename).
 """

@@ -25,14 +25,19 @@ the source of every default.
 
 from __future__ import annotations
 
-from .chart import DesignChart, design_chart, sf_width
-from .climate import DISTRIBUTIONS, Climate
-from .model import DEFAULT_ERRORS, DEFAULT_THRESHOLDS, Caisson, ErrorFactor, Errors, LifetimeModel
-from .parallel import ClusterUnavailable, available_cores
-from .requirements import Requirements, judge_chart, judge_lifetime
-from .results import Failure, LifetimeResult
-from .simulate import lifetime_sliding
-from .sliding import ADDED_MASS_COEFFICIENT, added_mass, half_sine_slide, wave_duration
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .chart import DesignChart, design_chart, sf_width
+    from .climate import DISTRIBUTIONS, Climate
+    from .model import DEFAULT_ERRORS, DEFAULT_THRESHOLDS, Caisson, ErrorFactor, Errors, LifetimeModel
+    from .parallel import ClusterUnavailable, available_cores
+    from .requirements import Requirements, judge_chart, judge_lifetime
+    from .results import Failure, LifetimeResult
+    from .simulate import lifetime_sliding
+    from .sliding import ADDED_MASS_COEFFICIENT, added_mass, half_sine_slide, wave_duration
 
 __all__ = [
     "ADDED_MASS_COEFFICIENT", "DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "Caisson",
@@ -40,3 +45,17 @@ __all__ = [
     "LifetimeResult", "Requirements", "added_mass", "available_cores", "design_chart", "half_sine_slide",
     "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
 ]
+
+
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+    __getattr__, __dir__ = attach(__name__, {
+        "chart": ["DesignChart", "design_chart", "sf_width"],
+        "climate": ["DISTRIBUTIONS", "Climate"],
+        "model": ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "Caisson", "ErrorFactor", "Errors",
+                  "LifetimeModel"],
+        "parallel": ["ClusterUnavailable", "available_cores"],
+        "requirements": ["Requirements", "judge_chart", "judge_lifetime"],
+        "results": ["Failure", "LifetimeResult"],
+        "simulate": ["lifetime_sliding"],
+        "sliding": ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_duration"],
+    })

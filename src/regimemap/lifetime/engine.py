@@ -122,7 +122,8 @@ def _draw_waves(d: _Draws, seas: SeaStates, H_s: FloatArray) -> tuple[IntArray, 
     """The block's sliding waves: their number per storm, their storms (global) and exponentials.
 
     The exponentials are drawn in slices of whole storms of at most
-    :data:`_WAVE_SLICE` waves (or one storm), as they always were.
+    :data:`_WAVE_SLICE` waves (or one storm), which bounds the memory; the slices
+    depend on the stream's storms only, so a seed gives the same waves every run.
     """
     k = slice(d.first, d.first + d.life.size)
     can = np.isfinite(H_s[k])

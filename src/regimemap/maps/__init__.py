@@ -8,8 +8,9 @@ parts where several modes are admissible, the region polygons, the view and
 
 from __future__ import annotations
 
-import importlib
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
 
 # eager: every map needs it, and the function must shadow its module's name (``classify``)
 from .classify import classify, column_segments, label_grid
@@ -43,37 +44,14 @@ __all__ = [
     "region_polygons",
 ]
 
-#: Each public name and the module that defines it: imported on first use (PEP 562), so
-#: ``import regimemap.maps.classify`` does not load the polygons, the ambiguity and the query.
-_HOME = {
-    "AmbiguousRegion": "ambiguity",
-    "ambiguous_regions": "ambiguity",
-    "DEFAULT_SAMPLES": "geometry",
-    "region_polygons": "geometry",
-    "CurveData": "mapdata",
-    "MapData": "mapdata",
-    "compute_map": "mapdata",
-    "DesignPoint": "points",
-    "Crossing": "query",
-    "Margin": "query",
-    "PointResult": "query",
-    "margin": "query",
-    "query_point": "query",
-    "query_points": "query",
-    "auto_extent": "view",
-}
-
-
+# imported on first use (PEP 562), so ``import regimemap.maps.classify`` does not load the
+# polygons, the ambiguity and the query
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-
-    def __getattr__(name: str) -> Any:
-        if name in _HOME:
-            value = getattr(importlib.import_module(f".{_HOME[name]}", __name__), name)
-            globals()[name] = value
-            return value
-        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-
-
-def __dir__() -> list[str]:
-    """The public names (imported or not yet) and the module's own: what IDEs and ``dir()`` list."""
-    return sorted(set(globals()) | set(__all__))
+    __getattr__, __dir__ = attach(__name__, {
+        "ambiguity": ["AmbiguousRegion", "ambiguous_regions"],
+        "geometry": ["DEFAULT_SAMPLES", "region_polygons"],
+        "mapdata": ["CurveData", "MapData", "compute_map"],
+        "points": ["DesignPoint"],
+        "query": ["Crossing", "Margin", "PointResult", "margin", "query_point", "query_points"],
+        "view": ["auto_extent"],
+    })

@@ -30,7 +30,7 @@ from ..mechanics.htmltable import html_table, number
 from ..mechanics.modes import Mode
 from ..waves import CaissonAnalysis, analyse_caisson
 from .loadedmap import LoadedMap, Margin, classify_at, margins, mode_grid, named_points
-from .query import margin_words
+from .point_result import margin_words
 
 __all__ = [
     "PATH_FACTORS",

@@ -17,7 +17,7 @@ and SRO-); below DC the body pivots about O', not O (SRO'- wins over RO and
 SRO-); slide-rock about O for mu >= mu_B' "simply can not happen" (it loses to
 RE, SL and RO, which the solver finds admissible at each of its points).
 
-Loads (issue 10).  With buoyancy, uplift or another inertia (keyword-only
+Loads.  With buoyancy, uplift or another inertia (keyword-only
 arguments, as in :class:`~regimemap.mechanics.block.Parameters`) the same rule
 holds in every *regular* column (W > 0, f_y of rocking about O > 0, rest not
 failing about O'; every column of the report's block) with the generalised

@@ -1,4 +1,4 @@
-"""The one door to the loaded map (issue 10) for the caisson tools.
+"""The one door to the loaded map (buoyancy, uplift, inertia) for the caisson tools.
 
 Everything the caisson command and its design sheet need from the map of the
 *loaded* block -- the mode at a point, the mode on a grid, the named points,

@@ -58,7 +58,7 @@ from .margins import (
     margin,
     margin_arrays,
 )
-from .point_result import PointResult, margin_words
+from .point_result import PointResult
 from .points import DesignPoint
 
 __all__ = [
@@ -67,7 +67,6 @@ __all__ = [
     "Margin",
     "PointResult",
     "margin",
-    "margin_words",
     "query_point",
     "query_points",
 ]

@@ -2,7 +2,7 @@
 
 No matplotlib: the command line parses the lists (:func:`parse_values`) and
 checks the blocks (:func:`sweep_params`) before anything is drawn, and the
-drawing layer (:mod:`regimemap.drawing.atlas`, :mod:`regimemap.drawing.animation`)
+drawing layer (:mod:`regimemap.drawing.maps.atlas`, :mod:`regimemap.drawing.maps.animation`)
 draws the panels and frames in the views chosen here (:func:`resolve_share`,
 :func:`sweep_extent`).
 

@@ -8,20 +8,25 @@ once, in :mod:`regimemap.mechanics.constants`.
 
 from __future__ import annotations
 
-from .block import Case, Parameters, case_of
-from .curves import Curve, NamedPoint, map_curves, named_points
-from .modes import LOADED_MAP_MODES, MAP_MODES, PRIORITY, SELECTION_ORDER, Mode
-from .regions import RAW_REGIONS, raw_region
-from .solver import (
-    TOLERANCE,
-    Hypothesis,
-    Response,
-    admissible,
-    admissible_hypotheses,
-    choose,
-    least_constraint,
-    solve,
-)
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .block import Case, Parameters, case_of
+    from .curves import Curve, NamedPoint, map_curves, named_points
+    from .modes import LOADED_MAP_MODES, MAP_MODES, PRIORITY, SELECTION_ORDER, Mode
+    from .regions import RAW_REGIONS, raw_region
+    from .solver import (
+        TOLERANCE,
+        Hypothesis,
+        Response,
+        admissible,
+        admissible_hypotheses,
+        choose,
+        least_constraint,
+        solve,
+    )
 
 __all__ = [
     "Case",
@@ -47,3 +52,14 @@ __all__ = [
     "raw_region",
     "solve",
 ]
+
+
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+    __getattr__, __dir__ = attach(__name__, {
+        "block": ["Case", "Parameters", "case_of"],
+        "curves": ["Curve", "NamedPoint", "map_curves", "named_points"],
+        "modes": ["LOADED_MAP_MODES", "MAP_MODES", "PRIORITY", "SELECTION_ORDER", "Mode"],
+        "regions": ["RAW_REGIONS", "raw_region"],
+        "solver": ["TOLERANCE", "Hypothesis", "Response", "admissible", "admissible_hypotheses", "choose",
+                   "least_constraint", "solve"],
+    })

@@ -18,7 +18,7 @@ are (3.18)-(3.21)::
 With loads (:mod:`regimemap.mechanics.loads`: buoyancy, uplift, inertia) every
 form below is generalised; it takes a :class:`~regimemap.mechanics.loads.BlockConstants`
 ``cst`` and, at zero loads, is the report's form evaluated with the same
-floating-point operations, bit for bit (``tests/test_loaded_zero.py``).  With
+floating-point operations, bit for bit (``tests/mechanics/test_loaded_zero.py``).  With
 ``W = 1 - beta - u - nu k`` and ``s = k k' + e_u U/gamma`` (S/gamma) the lines
 of the k-mu plane are (zero loads: W = 1, s = k k')::
 

@@ -1,4 +1,4 @@
-"""The load model of a block (issue 10): vertical loads, inertia, and the constants they change.
+"""The load model of a block: vertical loads, inertia, and the constants they change.
 
 Besides gravity and the push F = m g k (to the left, at height ``kprime*H``
 above the centre of mass C) the block may carry

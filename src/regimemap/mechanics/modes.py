@@ -7,7 +7,7 @@ left, x_O'' <= 0), SRO+ (slide-rock about O with O slipping right) and SRO'-
 hypotheses exist for the equations-of-motion solver: rock about O' (RO') and
 slide-rock about O' with O' slipping right (SRO'+).  The report shows (4.57)
 that RO' is never possible; the solver confirms that neither ever wins on the
-report's block.  With vertical loads (issue 10) both can win, and a ninth mode
+report's block.  With vertical loads (buoyancy, uplift) both can win, and a ninth mode
 appears: lift-off (LO), no contact at all.
 
 Codes are small integers so that whole maps fit in ``uint8`` arrays, after the
@@ -102,7 +102,7 @@ MAP_MODES: tuple[Mode, ...] = (
 #: The modes that can appear on the map of a loaded block, in code order: the six,
 #: rock about O' (where uplift near O lifts O) and lift-off.  Slide-rock about O'
 #: slipping right is admissible in places but never chosen (measured,
-#: ``tests/test_loaded_regions.py``).
+#: ``tests/mechanics/test_loaded_regions.py``).
 LOADED_MAP_MODES: tuple[Mode, ...] = MAP_MODES + (Mode.RO_PRIME, Mode.LO)
 
 #: Section 4.7's order: where several modes are admissible the first one holds
@@ -122,5 +122,5 @@ PRIORITY: tuple[Mode, ...] = (
 #: (:func:`regimemap.mechanics.solver.least_constraint`): lift-off (whose
 #: constraint is 0) first, then Section 4.7's :data:`PRIORITY`.  Wherever several
 #: modes are admissible off the boundaries, least constraint chooses the first of
-#: them in this order (measured: ``tests/test_loaded_regions.py``).
+#: them in this order (measured: ``tests/mechanics/test_loaded_regions.py``).
 SELECTION_ORDER: tuple[Mode, ...] = (Mode.LO,) + PRIORITY

@@ -16,8 +16,8 @@ the order of least constraint.  Every expression is moreover affine in k at
 fixed mu (:func:`affine_terms`), which gives the exact margins along k.
 
 Every predicate is cross-checked against the independent solver
-(:mod:`regimemap.mechanics.solver`) in ``tests/test_regions.py`` (zero loads)
-and ``tests/test_loaded_regions.py`` (loads).
+(:mod:`regimemap.mechanics.solver`) in ``tests/mechanics/test_regions.py`` (zero loads)
+and ``tests/mechanics/test_loaded_regions.py`` (loads).
 """
 
 from __future__ import annotations

@@ -35,7 +35,7 @@ body rocks; the normal reaction inside the base, ``|xi| <= B``, when the base is
 in full contact.  Conditions are tested with a small tolerance, so points on a
 boundary are admissible for the hypotheses on both sides.
 
-Loads (issue 10).  Buoyancy, uplift and another inertia change only the
+Loads.  Buoyancy, uplift and another inertia change only the
 right-hand side and the inertia of the three dynamic rows (:func:`dynamic_rows`,
 :func:`applied_loads`): :math:`Y - f_y = -W` with :math:`W = 1 - \\beta - U` and
 :math:`i^2 T - \\gamma f_x - M = S` with :math:`S = \\gamma k k' + e_u U` (see

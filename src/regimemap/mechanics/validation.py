@@ -50,7 +50,7 @@ MAX_VALUE = 1e100
 #: Largest end of a plotted or exported axis (--k-max, --mu-max): the view is
 #: sampled a little beyond it, and the samples must stay below MAX_VALUE.
 MAX_AXIS = 1e6
-#: The loads of a block (issue 10) and their allowed ranges, as
+#: The loads of a block and their allowed ranges, as
 #: ``name: (low, high, low open, high open)``: buoyancy beta in [0, 1) (beta = 1
 #: floats the block), uplift u and its ratio nu to the push >= 0, the uplift's
 #: arm e_u in [-1, 1] (a fraction of B from C towards O'), the radius of

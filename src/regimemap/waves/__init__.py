@@ -22,30 +22,41 @@ See :doc:`/waves` (``docs/waves.md``) for every formula with its source.
 
 from __future__ import annotations
 
-from .analysis import CaissonAnalysis, Densities, analyse_caisson
-from .block import EquivalentBlock, RestCheck, equivalent_block, static_rest_check
-from .caisson import (
-    CaissonLoads,
-    CaissonSection,
-    Stability,
-    caisson_loads,
-    heel_pressure,
-    section_from_densities,
-    section_from_weight,
-    stability,
-)
-from .dispersion import deep_water_wavelength, wavelength, wavenumber
-from .heights import (
-    HMAX_FACTOR,
-    DesignHeights,
-    breaker_height,
-    design_heights,
-    given_heights,
-    linear_shoaling_coefficient,
-    shoaling_coefficient,
-)
-from .pressure import GODA_ROTATION_DEG, GodaPressures, effective_angle, goda_pressures, impulsive_coefficient
-from .timing import wave_duration
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .analysis import CaissonAnalysis, Densities, analyse_caisson
+    from .block import EquivalentBlock, RestCheck, equivalent_block, static_rest_check
+    from .caisson import (
+        CaissonLoads,
+        CaissonSection,
+        Stability,
+        caisson_loads,
+        heel_pressure,
+        section_from_densities,
+        section_from_weight,
+        stability,
+    )
+    from .dispersion import deep_water_wavelength, wavelength, wavenumber
+    from .heights import (
+        HMAX_FACTOR,
+        DesignHeights,
+        breaker_height,
+        design_heights,
+        given_heights,
+        linear_shoaling_coefficient,
+        shoaling_coefficient,
+    )
+    from .pressure import (
+        GODA_ROTATION_DEG,
+        GodaPressures,
+        effective_angle,
+        goda_pressures,
+        impulsive_coefficient,
+    )
+    from .timing import wave_duration
 
 __all__ = [
     "GODA_ROTATION_DEG", "HMAX_FACTOR", "CaissonAnalysis", "CaissonLoads", "CaissonSection",
@@ -56,3 +67,18 @@ __all__ = [
     "section_from_weight", "shoaling_coefficient", "stability", "static_rest_check",
     "wave_duration", "wavelength", "wavenumber",
 ]
+
+
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+    __getattr__, __dir__ = attach(__name__, {
+        "analysis": ["CaissonAnalysis", "Densities", "analyse_caisson"],
+        "block": ["EquivalentBlock", "RestCheck", "equivalent_block", "static_rest_check"],
+        "caisson": ["CaissonLoads", "CaissonSection", "Stability", "caisson_loads", "heel_pressure",
+                    "section_from_densities", "section_from_weight", "stability"],
+        "dispersion": ["deep_water_wavelength", "wavelength", "wavenumber"],
+        "heights": ["HMAX_FACTOR", "DesignHeights", "breaker_height", "design_heights", "given_heights",
+                    "linear_shoaling_coefficient", "shoaling_coefficient"],
+        "pressure": ["GODA_ROTATION_DEG", "GodaPressures", "effective_angle", "goda_pressures",
+                     "impulsive_coefficient"],
+        "timing": ["wave_duration"],
+    })

@@ -1,0 +1,295 @@
+"""An animation of the map: a GIF as k' (or a load) sweeps a range, on fixed axes.
+
+:func:`render_animation` draws every frame (:func:`draw_frame`: the all-mode map
+of :func:`regimemap.drawing.maps.mapplot.draw_map`, its caption, the frame's value in
+a box, the key) on one figure and writes the GIF with matplotlib's
+``PillowWriter`` (no pyplot); :func:`write_animation` writes it to a file
+atomically.  The frames' values and their shared view come from
+:mod:`regimemap.maps.sweeps`.  Limit: :data:`MAX_FRAMES` frames.
+
+matplotlib is imported inside the functions that draw, never at import time.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from ...maps.describe import loads_text
+from ...maps.sweeps import sweep_extent, sweep_params
+from ...mechanics.block import Parameters
+from ...mechanics.modes import MAP_MODES, Mode
+from ...mechanics.validation import check_gamma
+from ..limits import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
+from .atlas import SAMPLES, checked_values, key_modes, sweep_text
+from .mapplot import MapStyle, draw_map
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.animation import PillowWriter
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+    from PIL.Image import Image
+
+    from ...maps.mapdata import MapData
+    from .artists import MapArtists
+
+__all__ = [
+    "ANIMATION_DPI",
+    "ANIMATION_DPI_RANGE",
+    "FPS_RANGE",
+    "FRAME_SIZE",
+    "MAX_FRAMES",
+    "check_animation",
+    "draw_frame",
+    "frame_figure",
+    "render_animation",
+    "write_animation",
+]
+
+
+
+def _fmt(x: float) -> str:
+    return f"{x:g}"
+
+
+def _pillow_writer(fps: float) -> PillowWriter:
+    """matplotlib's PillowWriter, saving GIF whatever the (temporary) file name."""
+    from matplotlib.animation import PillowWriter
+
+    class _GifWriter(PillowWriter):
+        _frames: list[Image]  # the frames grabbed so far (set by PillowWriter.setup)
+
+        def finish(self) -> None:  # as PillowWriter.finish, with the format given
+            self._frames[0].save(
+                self.outfile, format="GIF", save_all=True, append_images=self._frames[1:],
+                duration=int(1000 / self.fps), loop=0)
+
+    # matplotlib's stubs say int; the writer takes any rate (the GIF stores 1000 / fps ms a frame)
+    return _GifWriter(fps=fps)  # type: ignore[arg-type]
+
+
+def check_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float],
+                    fps: float, *, sweep: str = "kprime", fixed: dict[str, Any] | None = None
+                    ) -> None:
+    """Refuse an animation that cannot be written (before any file is touched).
+
+    Raises
+    ------
+    ValueError
+        Naming the parameter and its range, or a file that is not ``.gif``.
+    """
+    _check_frames(gamma, kprimes, fps, sweep, fixed)
+    if Path(path).suffix.lower() != ".gif":
+        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+
+
+def _check_frames(gamma: float, kprimes: Sequence[float], fps: float, sweep: str = "kprime",
+                  fixed: dict[str, Any] | None = None) -> None:
+    check_gamma(gamma)
+    kps = [sweep_params(gamma, sweep, k, fixed) for k in kprimes]
+    if not kps:
+        raise ValueError("an animation needs at least one kprime")
+    if len(kps) > MAX_FRAMES:
+        raise ValueError(f"{len(kps)} frames exceed the limit of {MAX_FRAMES}")
+    lo, hi = FPS_RANGE
+    if not (lo <= fps <= hi):
+        raise ValueError(f"fps must be a number in [{lo:g}, {hi:g}], got {fps!r}")
+
+
+#: Size of an animation frame in inches: 520 x 450 pixels at the default 100 dpi.
+FRAME_SIZE: tuple[float, float] = (5.2, 4.5)
+#: Layout of a frame (inches): margins around the map; the key is below it.
+_F_LEFT, _F_RIGHT, _F_TOP, _F_BOTTOM = 0.55, 0.15, 0.5, 0.95
+
+
+def _frame_handles(modes: Sequence[Mode]) -> list[Any]:
+    """The key of an animation frame: one swatch per mode, with a short description."""
+    from .key import key_handles
+
+    short = {Mode.SRO_MINUS: "slide-rock, slips left", Mode.SRO_PLUS: "slide-rock, slips right",
+             Mode.SRO_PRIME_MINUS: "slide-rock about O'"}
+    handles = key_handles(modes, boundary=False, construction=False)
+    for h, m in zip(handles, modes):
+        h.set_label(short.get(m, h.get_label()))
+    return handles
+
+
+def frame_figure(figsize: tuple[float, float] | None = None, dpi: float = ANIMATION_DPI
+                 ) -> tuple[Figure, Axes]:
+    """The figure of an animation frame: a map, its key below, its caption above."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    from ..style import style_context
+
+    w, h = figsize or FRAME_SIZE
+    with style_context():
+        fig = Figure(figsize=(w, h), dpi=dpi)
+        FigureCanvasAgg(fig)
+        ax = fig.add_axes((_F_LEFT / w, _F_BOTTOM / h, 1.0 - (_F_LEFT + _F_RIGHT) / w,
+                           1.0 - (_F_TOP + _F_BOTTOM) / h))
+    return fig, ax
+
+
+def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float, mu_max: float,
+               *, modes: Sequence[Mode] = MAP_MODES, samples: int = SAMPLES,
+               block: Parameters | None = None, swept: str | None = None,
+               data: MapData | None = None) -> MapArtists:
+    """Draw one frame of an animation on ``ax`` (cleared first); return its MapArtists.
+
+    The caption states the report's case (or the block's loads) above the map,
+    the frame's gamma and k' (or ``swept``, the swept load, in mathtext) sit in
+    a box beside it (outside the map), and the key below lists the modes, sized
+    to the frame; then :func:`regimemap.drawing.text.tidy.tidy_figure` keeps every
+    text clear of the others.  ``block`` is the frame's block with loads
+    (default ``Parameters(gamma, kprime)``) and ``data`` its precomputed map.
+    """
+    from ...maps.mapdata import compute_map
+    from ..style import style_context
+    from ..text.tidy import fit_title, tidy_figure
+    from .key import key_legend
+
+    p = Parameters(gamma, kprime) if block is None else block
+    loads = loads_text(p, tex=True)
+    caption = f"All modes, block with loads ({loads})" if loads else f"All modes, {p.case.tex}"
+    corner = rf"$\gamma = {_fmt(gamma)}$, " + (rf"$k' = {kprime:+.3f}$" if swept is None else swept)
+    with style_context():
+        ax.cla()
+        for leg in list(fig.legends):
+            leg.remove()
+        for t in list(fig.texts):
+            t.remove()
+        if data is None:
+            data = compute_map(p, k_max=k_max, mu_max=mu_max, samples=samples)
+        art = draw_map(ax, data, MapStyle(legend=False, title=caption))
+        if art.title is not None:
+            art.title.set_fontsize(8.5)
+        for t in art.curve_labels.values():
+            t.set_fontsize(8.5)
+        key_legend(fig, _frame_handles(modes), loc="lower center", ncols=3,
+                   bbox_to_anchor=(0.5, 0.02), fontsize=8.0, frameon=False, handleheight=1.0,
+                   columnspacing=1.2, borderaxespad=0.0)
+        box = fig.text(1.0 - 0.08 / fig.get_size_inches()[0], 1.0 - 0.06 / fig.get_size_inches()[1],
+                       corner, ha="right", va="top",
+                       fontsize=9.5,
+                       bbox={"boxstyle": "round,pad=0.25", "fc": "white", "ec": "0.3", "lw": 0.6})
+        box.set_gid("frame-kprime")
+        renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
+        if art.title is not None:
+            bb = box.get_window_extent(renderer)
+            fit_title(art.title, renderer, bb.x0 - 6.0, fig.bbox.y1 - 2.0)
+        tidy_figure(fig, [art], fixed=[box], fit_titles=False)
+    return art
+
+
+def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
+                    k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
+                    dpi: float = ANIMATION_DPI, figsize: tuple[float, float] | None = None,
+                    samples: int = SAMPLES,
+                    progress: Callable[[int, int], None] | None = None,
+                    sweep: str = "kprime", fixed: dict[str, Any] | None = None
+                    ) -> tuple[int, tuple[int, int]]:
+    """Write a GIF of the map of ``gamma`` as k' runs through ``kprimes``.
+
+    Parameters
+    ----------
+    path : path-like
+        Output ``.gif`` (written atomically).
+    gamma : float
+        Aspect ratio H/B.
+    kprimes : sequence of float
+        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1], or up to
+        ``fixed["crest"]``), or the value of ``sweep`` in each frame.
+    k_max, mu_max : float, optional
+        The view of every frame (default :func:`regimemap.maps.sweeps.sweep_extent`; the axes are
+        the same in every frame).
+    fps : float
+        Frames per second (0.5 to 50).
+    dpi : float
+        Pixels per inch of the frames.
+    figsize : (float, float), optional
+        Inches (default :data:`FRAME_SIZE`).
+    samples : int
+        Samples of k per frame.
+    progress : callable, optional
+        Called as ``progress(i, n)`` after frame i of n.
+    sweep, fixed : str, dict
+        What the frames vary (k' or a load) and what they share, as in
+        :func:`regimemap.drawing.maps.atlas.atlas_figure`.
+
+    Returns
+    -------
+    (frames, (width, height))
+        Number of frames written and their size in pixels.
+
+    Notes
+    -----
+    Each frame is the all-mode map (:func:`draw_frame`): the caption states
+    the case, a box outside the map gives gamma and k', and the key lists all
+    six modes in every frame, so it does not jump.
+    """
+    from ...maps.mapdata import compute_map
+    from ..style import style_context
+
+    _check_frames(gamma, kprimes, fps, sweep, fixed)
+    (g,), kps = checked_values([gamma], kprimes, sweep, fixed)  # k' up to the crest, if given
+    blocks = [sweep_params(g, sweep, v, fixed) for v in kps]
+    if k_max is None or mu_max is None:
+        ek, em = sweep_extent(g, kps, sweep=sweep, fixed=fixed)
+        k_max = ek if k_max is None else k_max
+        mu_max = em if mu_max is None else mu_max
+    fig, ax = frame_figure(figsize, dpi)
+    writer = _pillow_writer(fps)
+    modes: Sequence[Mode] = MAP_MODES
+    datas: list[Any] = [None] * len(blocks)
+    if any(p.loaded for p in blocks):  # one key for every frame: the modes any frame shows
+        datas = [compute_map(p, k_max=k_max, mu_max=mu_max, samples=samples) for p in blocks]
+        modes = key_modes(datas)
+    with style_context():
+        writer.setup(fig, str(path), dpi=dpi)
+        for i, kp in enumerate(kps):
+            draw_frame(fig, ax, g, blocks[i].kprime, k_max, mu_max, modes=modes, samples=samples,
+                       block=blocks[i], swept=sweep_text(sweep, kp) if sweep != "kprime" else None,
+                       data=datas[i])
+            writer.grab_frame()
+            if progress is not None:
+                progress(i + 1, len(kps))
+        frame_size = tuple(int(v) for v in writer.frame_size)
+        writer.finish()
+    return len(kps), (frame_size[0], frame_size[1])
+
+
+def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float],
+                    **kwargs: Any) -> tuple[int, tuple[int, int]]:
+    """Write the GIF of :func:`render_animation` atomically (checked before any file is touched).
+
+    Parameters
+    ----------
+    path : path-like
+        The ``.gif`` file.
+    gamma : float
+    kprimes : sequence of float
+        The value of each frame (k', or the load ``sweep``).
+    **kwargs
+        The keywords of :func:`render_animation`.
+
+    Returns
+    -------
+    (frames, (width, height))
+        The number of frames and their size in pixels.
+
+    Raises
+    ------
+    ValueError
+        For a value out of range or a file that is not ``.gif`` (nothing written).
+    OSError
+        If the file cannot be written (nothing is left behind).
+    """
+    from ...io.atomic import atomic_path
+
+    check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0),
+                    sweep=kwargs.get("sweep", "kprime"), fixed=kwargs.get("fixed"))
+    with atomic_path(path) as tmp:
+        return render_animation(tmp, gamma, kprimes, **kwargs)

@@ -1,0 +1,264 @@
+"""A map on a figure of its own: its data, size, layout around the key, and the report's figures.
+
+:func:`map_data` computes what the map of a block shows in the designer's or
+the report's view; :func:`map_figure` makes a Figure (Agg canvas, no pyplot)
+with one map drawn by :func:`regimemap.drawing.maps.mapplot.draw_map` and sized to
+its key; :func:`render_preset` draws one of the report's figures.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import replace
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ...maps.geometry import DEFAULT_SAMPLES
+from ...maps.mapdata import MapData, compute_map
+from ...mechanics.block import Parameters
+from ...mechanics.modes import MAP_MODES, Mode
+from ..save import DEFAULT_DPI
+from ..style import style_context
+from ..text.tidy import tidy_figure
+from .artists import MapArtists
+from .mapplot import MapStyle, draw_design_points, draw_map
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from ...maps.points import DesignPoint
+    from .presets import FigurePreset
+
+__all__ = ["FIGSIZE", "fit_figure", "map_data", "map_figure", "new_figure", "preset_figure",
+           "render_map", "render_preset"]
+
+#: Size of a map figure in inches (width, height): fits a page width at 100 %.
+FIGSIZE: tuple[float, float] = (6.4, 5.6)
+
+
+# -- figures -------------------------------------------------------------------------------
+
+#: Layout of a map figure, in inches: width, axes size, margins, legend rows.
+_W, _AX_W, _AX_H = 6.4, 5.5, 3.6
+_LEFT, _TOP, _BOTTOM0, _ROW = 0.62, 0.62, 0.5, 0.2
+
+
+def _size_for(rows: int, left: float = _LEFT
+              ) -> tuple[float, float, tuple[float, float, float, float]]:
+    """Figure (width, height) and axes rectangle (figure fractions) for ``rows`` legend rows."""
+    bottom = _BOTTOM0 + rows * _ROW + (0.12 if rows else 0.0)
+    h = _TOP + _AX_H + bottom
+    w = _W + (left - _LEFT)
+    return w, h, (left / w, bottom / h, _AX_W / w, _AX_H / h)
+
+
+def _left_margin(ax: Axes) -> float:
+    """Left margin (inches) that fits the mu tick labels and the axis label, without drawing."""
+    lo, hi = ax.get_ylim()
+    locs = [v for v in ax.yaxis.get_major_locator().tick_values(lo, hi) if lo <= v <= hi]
+    fmt = ax.yaxis.get_major_formatter()
+    try:
+        fmt.set_locs(locs)
+        labels = fmt.format_ticks(locs)
+    except Exception:  # pragma: no cover - an exotic formatter
+        labels = [f"{v:g}" for v in locs]
+    n = max((len(t) for t in labels), default=3)
+    return max(_LEFT, 0.26 + 0.075 * n)
+
+
+def new_figure(figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
+               fig: Figure | None = None) -> tuple[Figure, Axes]:
+    """A Figure (Agg canvas, no pyplot) with one map Axes.
+
+    Parameters
+    ----------
+    figsize : (float, float), optional
+        Size in inches; default: :data:`FIGSIZE`, re-fitted to the legend by
+        :func:`map_figure`.
+    dpi : float
+    fig : Figure, optional
+        A figure to clear and reuse (keeps its canvas, renderer and their
+        text caches: much faster when drawing many maps).
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    with style_context():
+        reuse = None
+        if fig is None:
+            fig = Figure(figsize=figsize or FIGSIZE, dpi=dpi)
+            FigureCanvasAgg(fig)
+        else:
+            if len(fig.axes) == 1 and not fig.texts and not fig.legends:
+                reuse = fig.axes[0]  # clearing an Axes is cheaper than making one
+            else:
+                fig.clear()
+            if fig.dpi != dpi:
+                fig.set_dpi(dpi)
+            if figsize is not None:
+                fig.set_size_inches(figsize)
+        w, h = fig.get_size_inches()
+        rect = (_LEFT / w, 1.0 - (_TOP + _AX_H) / h, _AX_W / w, _AX_H / h)
+        if reuse is not None:
+            reuse.clear()
+            reuse.set_position(rect)
+            ax = reuse
+        else:
+            ax = fig.add_axes(rect)
+    return fig, ax
+
+
+def fit_figure(fig: Figure, ax: Axes) -> None:
+    """Resize a map figure so the legend below the axes fits; the axes keep their size.
+
+    Call it again after adding legend entries (e.g. after
+    ``regimemap.render_ambiguity.draw_ambiguity``).
+    """
+    rows = 0
+    legend = ax.get_legend()
+    if legend is not None:
+        n = len(legend.legend_handles)
+        ncol = getattr(legend, "_ncols", 2)
+        rows = -(-n // max(ncol, 1))
+    w, h, rect = _size_for(rows, _left_margin(ax))
+    if tuple(np.round(fig.get_size_inches(), 6)) != (round(w, 6), round(h, 6)):
+        fig.set_size_inches(w, h)
+    ax.set_position(rect)
+
+
+def map_data(params: Parameters, *, view: str = "designer", k_max: float | None = None,
+             mu_max: float | None = None, modes: Iterable[Mode] | None = None, raw: bool = False,
+             samples: int = DEFAULT_SAMPLES, curves: bool = True,
+             include: Iterable[tuple[float, float]] = ()) -> MapData:
+    """What the map of ``params`` shows, in the designer's or the report's view (no matplotlib).
+
+    Parameters
+    ----------
+    params : Parameters
+    view : {"designer", "report"}
+        The default view (:func:`regimemap.maps.designer_view.view_extent`):
+        mu up to 1.2 and every boundary that crosses that band, or every
+        characteristic point of the map.  ``k_max``/``mu_max`` win over both.
+    k_max, mu_max : float, optional
+        The view ``[0, k_max] x [0, mu_max]``.
+    modes : iterable of Mode, optional
+        Modes to shade (default: every mode the block shows).
+    raw : bool
+        The report's raw region of each mode (single-mode figures) instead of the final map.
+    samples : int
+        Samples of k for polygons and curves.
+    curves : bool
+        Compute the boundary curves and the named points.
+    include : iterable of (k, mu)
+        Points to keep in the view.
+
+    Returns
+    -------
+    MapData
+        :func:`regimemap.maps.mapdata.compute_map` of that view.
+    """
+    include = list(include)
+    if k_max is None or mu_max is None:
+        from ...maps.designer_view import view_extent
+
+        modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
+        if modes is not None:  # None: every mode the block shows (LO with loads)
+            modes = modes_t
+        raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
+        k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
+                                    mu_max=mu_max)
+    return compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                       samples=samples, curves=curves, include=include)
+
+
+# The front door of a map figure: what the map shows (map_data's keywords), the figure (size,
+# dpi, reuse) and the style, one keyword each, as render_map and the CLI pass them (PLR0913
+# accepted here).
+def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapData | None = None,  # noqa: PLR0913
+               view: str = "designer", k_max: float | None = None, mu_max: float | None = None,
+               modes: Iterable[Mode] | None = None, raw: bool = False,
+               samples: int = DEFAULT_SAMPLES, include: Iterable[tuple[float, float]] = (),
+               figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
+               points: Sequence[DesignPoint] = (), fig: Figure | None = None, **style_fields: Any
+               ) -> tuple[Figure, Axes, MapArtists]:
+    """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
+
+    Parameters
+    ----------
+    params : Parameters
+        The block.
+    style : MapStyle, optional
+        How the map is drawn (:func:`~regimemap.drawing.maps.mapplot.draw_map`).
+    data : MapData, optional
+        The map, computed beforehand (``view`` ... ``include`` are then ignored).
+    view, k_max, mu_max, modes, raw, samples, include
+        What the map shows: see :func:`map_data`.
+    figsize : (float, float), optional
+        Size in inches; by default the axes are 5.5 x 3.6 inches and the
+        figure's height is fitted to the key.
+    dpi : float
+    points : sequence of DesignPoint
+        Design points, marked with :func:`~regimemap.drawing.maps.mapplot.draw_design_points`
+        and kept in the automatic view.
+    fig : Figure, optional
+        A figure to reuse (see :func:`new_figure`).
+    **style_fields
+        Fields of :class:`~regimemap.drawing.maps.mapplot.MapStyle` (``title=``,
+        ``legend=`` ...), over those of ``style``.
+
+    Returns
+    -------
+    (Figure, Axes, MapArtists)
+
+    Notes
+    -----
+    With ``tidy`` (the default) the title is fitted to the figure and any
+    text that collides is moved (:func:`regimemap.drawing.text.tidy.tidy_figure`).
+    """
+    style = replace(style or MapStyle(), **style_fields)
+    fig, ax = new_figure(figsize, dpi, fig)
+    if data is None:
+        include = list(include) + [(pt.k, pt.mu) for pt in points]
+        data = map_data(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                        samples=samples, curves=style.curves, include=include)
+    with style_context():
+        artists = draw_map(ax, data, style)
+        if points:
+            artists.extra.extend(draw_design_points(ax, points, tagged=style.tidy))
+        if figsize is None:
+            fit_figure(fig, ax)
+        if style.tidy:
+            tidy_figure(fig, [artists])
+    return fig, ax, artists
+
+
+def render_map(params: Parameters, **kwargs: Any) -> Figure:
+    """A Figure with the map of ``params`` (the keywords of :func:`map_figure`)."""
+    return map_figure(params, **kwargs)[0]
+
+
+def preset_figure(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
+                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+                  ) -> tuple[Figure, Axes, MapArtists]:
+    """One of the report's figures (:mod:`regimemap.drawing.maps.presets`): figure, axes and artists.
+
+    The preset's own view (the report's, with its explicit axes) and the tidy
+    pass of every map.  Pass the previous figure as ``fig`` to reuse it.
+    """
+    from .presets import get_preset
+
+    if isinstance(preset, str):
+        preset = get_preset(preset)
+    return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
+                      mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
+                      samples=samples, view="report",
+                      style=MapStyle(title=preset.title, hatches=hatches))
+
+
+def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
+                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+                  ) -> Figure:
+    """A Figure of one of the report's figures (see :func:`preset_figure`)."""
+    return preset_figure(preset, dpi=dpi, samples=samples, hatches=hatches, fig=fig)[0]

@@ -1,0 +1,261 @@
+"""The one-page design sheet of a caisson (A4 portrait): its layout.
+
+The title block carries the verdict of the design check (:mod:`regimemap.drawing.verdict`):
+a PASS or FAIL badge, and each failing number of (f) and (g) in the fail colour.
+
+Panels: (a) the cross-section to scale (still-water level, mound and berm,
+caisson, crest, the forces on the equivalent block); (b) Goda's pressure
+diagram on the wall (``p1``, ``p3``, ``p4``, ``eta*``) and (c) the uplift
+triangle (``pu``); (d) the loaded regime map of the design wave -- its exact
+region polygons and boundary curves, as ``regimemap plot`` draws them -- with the
+design point and the path it follows as the wave grows (0.5 to 1.5 times the
+design heights); (e) the safety factors along that path with the mode of
+each point on its own map; (f) the numbers; and, when a lifetime simulation is
+given, (g) the exceedance curve of the caisson's sliding over its design life
+(:func:`regimemap.drawing.lifetime.exceedance.draw_exceedance`), under (e).
+
+This module places the panels on the page and writes the notes; the panels are
+drawn by :mod:`regimemap.drawing.sheet.panels` ((a), (b), (c), (e), (f)) and
+:mod:`regimemap.drawing.sheet.map_panel` ((d)).  Everything drawn is computed beforehand
+(:func:`regimemap.maps.caisson.caisson_report`, :func:`regimemap.maps.caisson.map_view`
+and :func:`regimemap.maps.mapdata.compute_map`); these modules only draw.
+"""
+
+from __future__ import annotations
+
+import textwrap
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING
+
+from ...maps.caisson import CaissonReport, MapView, caisson_checks, map_view
+from ...maps.mapdata import MapData, compute_map
+from ...mechanics.checks import Check
+from ..save import DEFAULT_DPI, figure_version
+from ..style import style_context
+from ..verdict import draw_verdict_badge, verdict_colour
+from .map_panel import draw_map_panel, map_legend, tidy_map_panel
+from .panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, fmt, num
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+
+    from ...lifetime.results import LifetimeResult
+    from ..text.labelplacer import Placed
+
+__all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure", "sheet_map_data"]
+
+#: Size of the sheet in inches: A4 portrait.
+SHEET_SIZE: tuple[float, float] = (8.27, 11.69)
+#: The panels' axes, by label (``ax.get_label()``), in drawing order.
+PANELS: tuple[str, ...] = ("section", "pressure", "uplift", "map", "path", "table")
+#: The label of the lifetime panel (g), drawn after :data:`PANELS` when a lifetime is given.
+LIFETIME_PANEL = "lifetime"
+_BLOCK_NOTE = (
+    "The equivalent loaded block (docs/waves.md, Sect. 7): half width B, centre of mass C at H_C "
+    "above the base, \u03b3 = H_C/B; m g is the dry weight W\u2032 + \u03c1w g V (V the submerged "
+    "volume); the wave force P = k m g acts k\u2032H_C above C; the buoyancy \u03c1w g V acts up "
+    "through C; the uplift U = (U/P) P acts up, (uplift arm) \u00d7 B from C toward the seaward "
+    "corner (1/3 for Goda's triangle).  Goda's SF_sliding \u2265 1 and SF_overturning \u2265 1 "
+    "hold exactly when the map says rest (RE).")
+
+
+# -- (g) the lifetime ------------------------------------------------------------------------
+
+def _path_note(r: CaissonReport, short: bool) -> str:
+    """The note under (e) (``short``: under (g), in fewer words)."""
+    p = r.path
+    kp = f"{fmt(float(p.kprime[0]), 3)} \u2026 {fmt(float(p.kprime[-1]), 3)}"
+    up = f"{fmt(float(p.uplift_ratio[0]), 3)} \u2026 {fmt(float(p.uplift_ratio[-1]), 3)}"
+    if short:
+        return (f"(d): the regions of the design wave; along the path k\u2032 ({kp}) and U/P ({up}) "
+                "change: each marker and (e)'s band has the colour of the mode on its own map.  "
+                "SF \u2265 1 (both) \u21d4 rest.  (g): ESD \u00b1 1 standard error (grey); "
+                "tolerable ESD 0.1 m (Goda & Takagi 2000), 0.3 m (Shimosako & Takahashi 1999).")
+    return (f"The regions are those of the design wave.  Along the path k\u2032 ({kp}) and U/P "
+            f"({up}) change with the wave, so each marker (and the band along the bottom of (e)) "
+            "has the colour of the mode on its own map.  SF \u2265 1 (both) \u21d4 rest on the map.")
+
+
+def _impulsive_words(on: bool | None) -> str:
+    return "" if on is None else (", with \u03b1$_I$" if on else ", without \u03b1$_I$")
+
+
+def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
+                     rect: Callable[[float, float, float, float], tuple[float, float, float, float]],
+                     required: tuple[float, float], esd: Check | None,
+                     impulsive: bool | None) -> tuple[Axes, Placed]:
+    """(e) shorter, (g) the exceedance curve of the lifetime under it, and the note, shorter.
+
+    (g)'s title names the lifetime's impulsive setting (``impulsive``, the file's ``[lifetime]
+    impulsive``); its ESD label is in the fail colour when ``esd`` fails.  Returns (g)'s axes and
+    its labels, to place once the rest of the sheet is drawn.
+    """
+    from ..lifetime.exceedance import draw_exceedance
+
+    ax_path = fig.add_axes(rect(5.55, 5.1, 2.35, 1.35), label="path")
+    draw_path(ax_path, r, required)
+    ax_l = fig.add_axes(rect(5.55, 3.33, 2.35, 1.05), label=LIFETIME_PANEL)
+    placed = draw_exceedance(ax_l, lifetime, storm=False, fontsize=FS)
+    ax_l.set_ylabel("$P(S > x)$", fontsize=FS)
+    ax_l.set_xlabel(f"$x$ (m); $S$ = sliding in {lifetime.years} years", fontsize=FS)
+    ax_l.tick_params(labelsize=FS - 0.5)
+    ax_l.set_title(f"(g) {lifetime.trials} lifetimes{_impulsive_words(impulsive)}", fontsize=FS + 1,
+                   loc="left")
+    if esd is not None:  # the ESD's label: the failing number in the fail colour
+        for t, _, _ in placed:
+            if t.get_text().startswith("ESD"):
+                t.set_color(verdict_colour(esd))
+    fig.text(5.4 / SHEET_SIZE[0], 2.86 / SHEET_SIZE[1],
+             "\n".join(textwrap.wrap(_path_note(r, True), 54)), fontsize=FS - 1.0, va="top",
+             ha="left", color="0.15", linespacing=1.3)
+    return ax_l, placed
+
+
+def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
+    """Place the labels of (g) clear of every text of the sheet and of (g)'s lines."""
+    from ..text.labelplacer import LabelPlacer
+
+    placer = LabelPlacer(fig)
+    try:
+        placer.avoid_lines_of(ax)
+        for t, cands, texts in placed:
+            placer.place(ax, t, cands, texts=texts)
+    finally:
+        placer.close()
+
+# -- the sheet -----------------------------------------------------------------------------
+
+def sheet_map_data(report: CaissonReport, view: MapView | None = None) -> MapData:
+    """What panel (d) draws: the design wave's loaded map in the sheet's view.
+
+    :func:`regimemap.maps.mapdata.compute_map` of the report's loaded map
+    (:meth:`regimemap.maps.loadedmap.LoadedMap.parameters`) over ``[0, k_max] x
+    [0, mu_max]`` of ``view`` (default :func:`regimemap.maps.caisson.map_view`): the
+    exact region polygons, boundary curves and named points, as ``regimemap plot``
+    draws them.
+    """
+    view = map_view(report) if view is None else view
+    return compute_map(report.map.parameters(), k_max=view.k_max, mu_max=view.mu_max)
+
+
+def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float = DEFAULT_DPI,
+                 view: MapView | None = None, lifetime: LifetimeResult | None = None,
+                 required: tuple[float, float] = (1.2, 1.2), data: MapData | None = None,
+                 checks: Sequence[Check] | None = None, lifetime_impulsive: bool | None = None,
+                 written: Mapping[str, str] | None = None) -> Figure:
+    """The one-page design sheet of a caisson (A4 portrait, no pyplot).
+
+    Parameters
+    ----------
+    report : CaissonReport
+        From :func:`regimemap.maps.caisson.caisson_report`.
+    title : str, optional
+        Shown after "caisson design sheet" (e.g. the design file's name).
+    dpi : float
+        Resolution of PNG output.
+    view : MapView, optional
+        The map's view (default :func:`regimemap.maps.caisson.map_view`).
+    lifetime : LifetimeResult, optional
+        The caisson's sliding over its design life
+        (:func:`regimemap.lifetime.lifetime_sliding`): adds panel (g), its exceedance
+        curve with the ESD and the tolerable limits, under (e) (which gets shorter, and its
+        note too).
+    required : tuple of float, optional
+        The safety factors the design must reach (sliding, overturning; 1.2 and 1.2 by
+        default, the design file's ``[caisson] required_*``), drawn in (e) beside SF = 1.
+    data : MapData, optional
+        The design wave's loaded map in ``view``, drawn in (d) (default
+        :func:`sheet_map_data`: its exact region polygons and boundary curves).
+    checks : sequence of Check, optional
+        The requirements of the design check, whose verdict the title block's badge
+        shows (PASS, or FAIL and how many); a failing safety factor of (f) and a failing
+        expected sliding distance of (g) are written in the fail colour.  Default:
+        :func:`regimemap.maps.caisson.caisson_checks` of ``required``, and
+        the checks of ``lifetime`` (:func:`regimemap.lifetime.judge_lifetime`) when given.
+    lifetime_impulsive : bool, optional
+        Whether the lifetime simulation included Takahashi's impulsive coefficient (the
+        design file's ``[lifetime] impulsive``), named in (g)'s title.
+    written : mapping, optional
+        The design file's values as it writes them (``{"wave.H0": "6.3"}``,
+        :attr:`regimemap.io.design.Design.written`): the header echoes H0', T1/3, tan theta
+        and mu so.
+
+    Returns
+    -------
+    Figure
+        Axes labelled as :data:`PANELS`, then :data:`LIFETIME_PANEL` when ``lifetime`` is given.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    view = map_view(report) if view is None else view
+    W, H = SHEET_SIZE
+    if checks is None:
+        checks = [*caisson_checks(report, required), *(() if lifetime is None else lifetime.checks)]
+    by_name = {c.name: c for c in checks}
+
+    def rect(x: float, y: float, w: float, h: float) -> tuple[float, float, float, float]:
+        return (x / W, y / H, w / W, h / H)
+
+    with style_context():
+        fig = Figure(figsize=SHEET_SIZE, dpi=dpi)
+        FigureCanvasAgg(fig)
+        head = "caisson design sheet" + (f": {title}" if title else "")
+        fig.text(0.6 / W, 1.0 - 0.38 / H, head, fontsize=13, fontweight="bold", va="top")
+        draw_verdict_badge(fig, checks, x=1.0 - 0.37 / W, y=1.0 - 0.36 / H, fontsize=12.0)
+        a = report.analysis
+        inp = report.inputs
+        shown = {} if written is None else written
+
+        def value(key: str, name: str) -> str:  # as the design file writes it, else the number
+            return shown.get(key) or f"{num(report, name):g}"
+
+        wave = (f"H\u2080\u2032 = {value('wave.H0', 'H0')} m" if inp.get("H0") is not None
+                else "H\u2081/\u2083, H$_{max}$ given at the wall")
+        fig.text(0.6 / W, 1.0 - 0.68 / H,
+                 f"{wave}, T\u2081/\u2083 = {value('wave.period', 'period')} s, "
+                 f"\u03b2 = {float(a.pressures.beta):g}\u00b0, "
+                 f"tan \u03b8 = {value('site.seabed_slope', 'slope')}, "
+                 f"\u03bc = {shown.get('caisson.friction') or format(report.mu, 'g')}, "
+                 f"W\u2032 = {fmt(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
+                 + ("Goda (2000) with Takahashi's \u03b1$_I$ (impulsive = true)"
+                    if inp.get("impulsive", True) else
+                    "Goda (2000) without Takahashi's \u03b1$_I$ (impulsive = false)")
+                 + ("" if lifetime is None or lifetime_impulsive is None else
+                    f"; (g) {'with' if lifetime_impulsive else 'without'} it "
+                    f"([lifetime] impulsive = {str(lifetime_impulsive).lower()})")
+                 + f"; regimemap {figure_version()}",
+                 fontsize=FS + 0.5, va="top", color="0.2", linespacing=1.4)
+
+        ax_sec = fig.add_axes(rect(0.75, 8.55, 4.6, 1.85), label="section")
+        draw_section(ax_sec, report)
+        fig.text(0.6 / W, 7.95 / H, "\n".join(textwrap.wrap(_BLOCK_NOTE, 86)), fontsize=FS - 0.5,
+                 va="top", ha="left", color="0.15", linespacing=1.35)
+        ax_p = fig.add_axes(rect(5.95, 8.75, 1.95, 1.65), label="pressure")
+        draw_pressure(ax_p, report)
+        ax_u = fig.add_axes(rect(5.95, 7.35, 1.95, 0.72), label="uplift")
+        draw_uplift(ax_u, report)
+
+        ax_map = fig.add_axes(rect(0.75, 3.6, 4.1, 2.9), label="map")
+        data = sheet_map_data(report, view) if data is None else data
+        modes, map_art = draw_map_panel(ax_map, report, view, data)
+        map_legend(ax_map, modes, map_art.data)  # what was drawn (no line hidden under another)
+        lifetime_labels = None
+        if lifetime is None:
+            ax_path = fig.add_axes(rect(5.55, 4.5, 2.35, 1.95), label="path")
+            draw_path(ax_path, report, required)
+            fig.text(5.4 / W, 3.95 / H, "\n".join(textwrap.wrap(_path_note(report, False), 47)),
+                     fontsize=FS - 0.5, va="top", ha="left", color="0.15", linespacing=1.35)
+        else:
+            lifetime_labels = _lifetime_panels(fig, report, lifetime, rect, required,
+                                               by_name.get("expected sliding distance"),
+                                               lifetime_impulsive)
+
+        ax_t = fig.add_axes(rect(0.6, 0.3, 7.2, 1.95), label="table")
+        draw_table(ax_t, report, {"sliding": by_name.get("sliding safety factor"),
+                                  "overturning": by_name.get("overturning safety factor")})
+        tidy_map_panel(fig, ax_map, map_art)  # the map's texts clear of the sheet's
+        if lifetime_labels is not None:  # once every other text is on the sheet
+            _place_lifetime_labels(fig, *lifetime_labels)
+    return fig

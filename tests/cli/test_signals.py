@@ -1,0 +1,92 @@
+"""SIGINT and SIGTERM while a command runs in this process (regimemap.cli._common.stop_signals).
+
+The real process (a Monte Carlo run killed from outside) is tested in
+tests/lifetime/test_interrupts.py; here the signal is sent to this process
+from inside a command, and the handlers are checked to be put back.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+from pathlib import Path
+
+import pytest
+
+import regimemap.io.design
+from regimemap.cli._common import Terminated, stop_signals
+from regimemap.io.design import example_design_text
+
+from ..conftest import invoke_cli
+
+pytestmark = pytest.mark.skipif(not hasattr(signal, "SIGTERM") or os.name != "posix", reason="POSIX signals")
+
+
+def _signal_while_reading(monkeypatch, sig: int, times: int = 1) -> list[str]:
+    """Make reading the design file send ``sig`` to this process ``times`` times; what ran after."""
+    after: list[str] = []
+
+    def read(path):
+        for _ in range(times):
+            os.kill(os.getpid(), sig)
+            time.sleep(0.01)  # the handler runs here, at the latest
+        after.append("not interrupted")
+        raise AssertionError("the signal did not stop the command")
+
+    monkeypatch.setattr(regimemap.io.design, "read_design", read)
+    return after
+
+
+@pytest.fixture
+def design(tmp_path: Path) -> Path:
+    f = tmp_path / "goda.toml"
+    f.write_text(example_design_text(), encoding="utf-8")
+    return f
+
+
+@pytest.mark.parametrize("sig,code,message", [(signal.SIGTERM, 143, "regimemap: terminated"),
+                                              (signal.SIGINT, 130, "regimemap: interrupted")])
+def test_a_signal_ends_the_command_with_its_code(monkeypatch, tmp_path, design, sig, code, message):
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    after = _signal_while_reading(monkeypatch, sig, times=3)
+    out = tmp_path / "life.csv"
+    r = invoke_cli(["lifetime", str(design), "--trials", "100", "-o", str(out)])
+    assert r.code == code, r.output
+    assert [ln for ln in r.stderr.splitlines() if ln.strip()] == [message]
+    assert "Traceback" not in r.output and after == []
+    assert not out.exists()
+    # the second and third signals were swallowed while the first was handled; the handlers are back
+    assert {s: signal.getsignal(s) for s in before} == before
+
+
+def test_exiting_leaves_both_signals_ignored():
+    """The console process, once interrupted, ignores further signals until it has exited."""
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        with pytest.raises(Terminated), stop_signals(exiting=True):
+            os.kill(os.getpid(), signal.SIGTERM)
+            time.sleep(1.0)
+        assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+        assert signal.getsignal(signal.SIGTERM) is signal.SIG_IGN
+    finally:
+        for s, h in before.items():
+            signal.signal(s, h)
+
+
+def test_without_a_signal_the_handlers_are_restored_even_when_exiting():
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    with stop_signals(exiting=True):
+        assert signal.getsignal(signal.SIGTERM) is not before[signal.SIGTERM]
+    assert {s: signal.getsignal(s) for s in before} == before
+
+
+def test_an_ignored_sigint_stays_ignored():
+    """A command started with SIGINT ignored (nohup, a script's background job) keeps it so."""
+    old = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    try:
+        with stop_signals():
+            assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+        assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
+    finally:
+        signal.signal(signal.SIGINT, old)
