@@ -222,6 +222,6 @@ def test_ctrl_c_during_a_climate_band(tmp_path: Path) -> None:
     (d / "site.toml").write_text(text[:i] + life + text[j:], encoding="utf-8")
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(["lifetime", str(d / "site.toml"), "--trials", "20000", "--jobs", "2", "-o", "band.png"], out)
+    proc = _start(["lifetime", str(d / "site.toml"), "--trials", "2000", "--jobs", "2", "-o", "band.png"], out)
     started = _wait_for(proc, "lifetimes of", "in this process")  # a replicate, whole in a worker
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted")
