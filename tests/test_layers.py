@@ -286,9 +286,6 @@ DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
     ("motion.presets", "dynamics.from_dimensionless"),
     ("motion.presets", "dynamics.outcome.dimensionless_values"),
     ("motion.presets", "dynamics.outcome.staged_outcome_map"),
-    ("sheet.page", "maps.caisson.caisson_checks"),
-    ("sheet.page", "maps.caisson.map_view"),
-    ("sheet.page", "maps.mapdata.compute_map"),
     ("text.labels", "maps.designer_view.points_off_view"),
 }
 
