@@ -253,11 +253,7 @@ DRAWING_MAY_IMPORT = {
     "maps.describe.loads_text": "the loads in words (formatting)",
     "maps.sweeps.SWEEPS": "the names of the sweepable inputs, constants",
     "maps.sweeps.sweep_params": "the Parameters record of one sweep value (no physics)",
-    "dynamics.Block": "a block's inputs, a record",
-    "dynamics.OutcomeMap": "a computed outcome map, a record",
     "dynamics.outcome.OutcomeMap": "a computed outcome map, a record",
-    "dynamics.outcome.Bars": "a computed bar chart, a record",
-    "dynamics.outcome.MapRuns": "the runs of an outcome map, a record",
     "dynamics.regions.MapGeometry": "a computed map's regions, a record",
     "dynamics.stepper.History": "a computed motion, a record",
     "dynamics.stepper.Phase": "a phase of the motion, an enumeration",
@@ -283,9 +279,6 @@ DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
     ("maps.atlas", "maps.sweeps.resolve_share"),
     ("maps.figure", "maps.designer_view.view_extent"),
     ("maps.figure", "maps.mapdata.compute_map"),
-    ("motion.presets", "dynamics.from_dimensionless"),
-    ("motion.presets", "dynamics.outcome.dimensionless_values"),
-    ("motion.presets", "dynamics.outcome.staged_outcome_map"),
     ("text.labels", "maps.designer_view.points_off_view"),
 }
 
