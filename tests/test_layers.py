@@ -271,14 +271,12 @@ DRAWING_MAY_IMPORT = {
 #: Computations drawing/ still makes itself, to be moved to its callers: (module, name).
 DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
     ("climate.figures", "climate.analysis.curves"),
-    ("explore.explorer", "maps.query.query_points"),
     ("maps.ambiguity", "maps.ambiguity.ambiguous_regions"),
     ("maps.animation", "maps.mapdata.compute_map"),
     ("maps.animation", "maps.sweeps.sweep_extent"),
     ("maps.atlas", "maps.mapdata.compute_map"),
     ("maps.atlas", "maps.sweeps.resolve_share"),
-    ("maps.figure", "maps.designer_view.view_extent"),
-    ("maps.figure", "maps.mapdata.compute_map"),
+    ("maps.figure", "maps.mapdata.map_for_view"),
     ("text.labels", "maps.designer_view.points_off_view"),
 }
 

@@ -28,7 +28,7 @@ from .geometry import DEFAULT_SAMPLES, area_in_view, region_polygons
 from .mapcurves import CurveData, curve_data, drawn_points, line_ends
 from .view import auto_extent, simplify
 
-__all__ = ["CurveData", "MapData", "compute_map"]
+__all__ = ["CurveData", "MapData", "compute_map", "map_for_view"]
 
 _log = logging.getLogger(__name__)
 
@@ -173,3 +173,48 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
                   samples, time.perf_counter() - t0)
     return MapData(p, float(k_max), float(mu_max), modes_t, bool(raw), polys, drawn_curves,
                    points, ends)
+
+
+def map_for_view(params: Parameters, *, view: str = "designer", k_max: float | None = None,
+             mu_max: float | None = None, modes: Iterable[Mode] | None = None, raw: bool = False,
+             samples: int = DEFAULT_SAMPLES, curves: bool = True,
+             include: Iterable[tuple[float, float]] = ()) -> MapData:
+    """What the map of ``params`` shows, in the designer's or the report's view.
+
+    Parameters
+    ----------
+    params : Parameters
+    view : {"designer", "report"}
+        The default view (:func:`regimemap.maps.designer_view.view_extent`):
+        mu up to 1.2 and every boundary that crosses that band, or every
+        characteristic point of the map.  ``k_max``/``mu_max`` win over both.
+    k_max, mu_max : float, optional
+        The view ``[0, k_max] x [0, mu_max]``.
+    modes : iterable of Mode, optional
+        Modes to shade (default: every mode the block shows).
+    raw : bool
+        The report's raw region of each mode (single-mode figures) instead of the final map.
+    samples : int
+        Samples of k for polygons and curves.
+    curves : bool
+        Compute the boundary curves and the named points.
+    include : iterable of (k, mu)
+        Points to keep in the view.
+
+    Returns
+    -------
+    MapData
+        :func:`compute_map` of that view.
+    """
+    include = list(include)
+    if k_max is None or mu_max is None:
+        from .designer_view import view_extent
+
+        modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
+        if modes is not None:  # None: every mode the block shows (LO with loads)
+            modes = modes_t
+        raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
+        k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
+                                    mu_max=mu_max)
+    return compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                       samples=samples, curves=curves, include=include)

@@ -155,7 +155,7 @@ def draw_map(ax: Axes, data: MapData, style: MapStyle | None = None) -> MapArtis
         The axes of a :class:`~matplotlib.figure.Figure`; their limits become the view.
     data : MapData
         What the map shows (:func:`regimemap.maps.mapdata.compute_map`, or
-        :func:`regimemap.drawing.maps.figure.map_data` for the designer's or the
+        :func:`regimemap.maps.mapdata.map_for_view` for the designer's or the
         report's view of a block).
     style : MapStyle, optional
         Which layers, the title and the key (default :class:`MapStyle()`).
