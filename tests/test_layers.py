@@ -253,6 +253,8 @@ DRAWING_MAY_IMPORT = {
     "maps.describe.loads_text": "the loads in words (formatting)",
     "maps.sweeps.SWEEPS": "the names of the sweepable inputs, constants",
     "maps.sweeps.sweep_params": "the Parameters record of one sweep value (no physics)",
+    "maps.sweeps.checked_values": "input range checks of a sweep's values, raises ValueError",
+    "maps.sweeps.SAMPLES": "a default resolution, a constant",
     "dynamics.outcome.OutcomeMap": "a computed outcome map, a record",
     "dynamics.regions.MapGeometry": "a computed map's regions, a record",
     "dynamics.stepper.History": "a computed motion, a record",
@@ -272,8 +274,6 @@ DRAWING_MAY_IMPORT = {
 DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
     ("climate.figures", "climate.analysis.curves"),
     ("maps.ambiguity", "maps.ambiguity.ambiguous_regions"),
-    ("maps.animation", "maps.mapdata.compute_map"),
-    ("maps.animation", "maps.sweeps.sweep_extent"),
     ("maps.atlas", "maps.mapdata.compute_map"),
     ("maps.atlas", "maps.sweeps.resolve_share"),
     ("maps.figure", "maps.mapdata.map_for_view"),
