@@ -272,7 +272,6 @@ DRAWING_MAY_IMPORT = {
 }
 #: Computations drawing/ still makes itself, to be moved to its callers: (module, name).
 DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
-    ("maps.ambiguity", "maps.ambiguity.ambiguous_regions"),
     ("maps.atlas", "maps.mapdata.compute_map"),
     ("maps.atlas", "maps.sweeps.resolve_share"),
     ("maps.figure", "maps.mapdata.map_for_view"),
