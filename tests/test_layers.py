@@ -275,7 +275,6 @@ DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
     ("maps.atlas", "maps.mapdata.compute_map"),
     ("maps.atlas", "maps.sweeps.resolve_share"),
     ("maps.figure", "maps.mapdata.map_for_view"),
-    ("text.labels", "maps.designer_view.points_off_view"),
 }
 
 
