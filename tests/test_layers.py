@@ -233,7 +233,6 @@ DRAWING_MAY_IMPORT = {
     "mechanics.checks.Check": "a requirement and its value, a record",
     "mechanics.checks.all_pass": "whether every given check passed (a comparison, no physics)",
     "mechanics.validation.check_gamma": "input range check, raises ValueError",
-    "mechanics.validation.check_kprime": "input range check, raises ValueError",
     "mechanics.validation.check_resolution": "input range check, raises ValueError",
     "maps.mapdata.MapData": "a computed map, a record",
     "maps.mapdata.CurveData": "a computed boundary curve, a record",
@@ -303,6 +302,8 @@ def test_drawing_only_draws():
     assert not bad, "drawing/ computes (hand it the result instead):\n" + "\n".join(bad)
     live = {(m.removeprefix("regimemap.drawing."), name) for m, _, name in found}
     assert DRAWING_STILL_COMPUTES <= live, f"moved already: {DRAWING_STILL_COMPUTES - live}"
+    unused = set(DRAWING_MAY_IMPORT) - {name for *_, name in found}
+    assert not unused, f"allowed but no longer imported (drop them): {sorted(unused)}"
 
 
 def test_the_drawing_rule_can_fail(tmp_path):

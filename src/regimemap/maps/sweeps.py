@@ -4,7 +4,8 @@ No matplotlib: the command line parses the lists (:func:`parse_values`) and
 checks the blocks (:func:`sweep_params`) before anything is drawn, and the
 drawing layer (:mod:`regimemap.drawing.maps.atlas`, :mod:`regimemap.drawing.maps.animation`)
 draws the panels and frames in the views chosen here (:func:`resolve_share`,
-:func:`sweep_extent`).
+:func:`sweep_extent`); an animation's frames, their blocks and maps, are computed here
+(:func:`sweep_frames`) and handed to :func:`regimemap.drawing.maps.animation.write_animation`.
 
 The value lists use the syntax of the command line: ``1,2,3`` (a list) or
 ``-1:1:41`` (start:stop:count, both ends included, as ``numpy.linspace``).
