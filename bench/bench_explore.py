@@ -37,6 +37,8 @@ matplotlib.use("Agg")
 
 from regimemap import Parameters  # noqa: E402
 from regimemap.drawing.explore.explorer import Explorer  # noqa: E402
+from regimemap.maps.mapdata import map_for_view  # noqa: E402
+from regimemap.maps.query import classify_point  # noqa: E402
 
 TARGET_MS = 100.0
 
@@ -91,7 +93,7 @@ def run(repeat: int = 1) -> dict[str, Timing]:
     out: dict[str, Timing] = {}
     for _ in range(repeat):
         for label, params, which, values, final, point in CASES:
-            ex = Explorer(params, echo=None)
+            ex = Explorer(params, compute=map_for_view, classify=classify_point, echo=None)
             try:
                 ex.click(*point)
                 ex.fig.canvas.draw()

@@ -26,6 +26,7 @@ pyproject.toml; ``preset_maps`` (below) shares the report's computed maps.
 from __future__ import annotations
 
 import os
+from typing import Any
 
 import matplotlib
 
@@ -122,3 +123,20 @@ def preset_maps() -> _PresetMaps:
     """The computed maps of the report's figures, shared by every test of a session (of an xdist
     worker): ``preset_maps["3.9a"]``.  Read-only: a test that changes one must copy it."""
     return _PresetMaps()
+
+
+def draw_sheet(report: Any, *, required: tuple[float, float] = (1.2, 1.2), lifetime: Any = None,
+               checks: Any = None, **kw: Any) -> Any:
+    """The design sheet as ``regimemap caisson -o`` draws it: the view, map and checks computed first.
+
+    The checks default to the caisson's (:func:`regimemap.maps.caisson.caisson_checks` of
+    ``required``) and those of ``lifetime``.
+    """
+    from regimemap.drawing.sheet.page import sheet_figure
+    from regimemap.maps.caisson import caisson_checks, sheet_map
+
+    view, data = sheet_map(report)
+    if checks is None:
+        checks = [*caisson_checks(report, required), *(() if lifetime is None else lifetime.checks)]
+    return sheet_figure(report, view=view, data=data, checks=checks, required=required,
+                        lifetime=lifetime, **kw)

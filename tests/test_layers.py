@@ -216,3 +216,102 @@ def test_the_rules_can_fail(tmp_path):
     assert ("click", [], 2, True) in found
     assert ("matplotlib.figure", ["Figure"], 4, False) in found
     assert _layer("regimemap.drawing.style") > _layer("regimemap.maps.x")
+
+
+#: The packages that compute the physics (and the statistics): drawing/ imports from them only
+#: the data types and pure helpers below, and draws what its caller computed.
+PHYSICS = ("mechanics", "waves", "maps", "dynamics", "lifetime", "climate")
+#: What drawing/ may import from :data:`PHYSICS`, each with why it computes nothing.
+DRAWING_MAY_IMPORT = {
+    # data types, enumerations and constants: records a figure is handed
+    "mechanics.block.Parameters": "the block's inputs, a record",
+    "mechanics.block.Case": "a named map case, a record",
+    "mechanics.block.LOAD_DEFAULTS": "the loads' default values, constants",
+    "mechanics.modes.Mode": "the modes, an enumeration",
+    "mechanics.modes.MAP_MODES": "the modes of a map, a constant tuple",
+    "mechanics.modes.LOADED_MAP_MODES": "the modes of a loaded map, a constant tuple",
+    "mechanics.checks.Check": "a requirement and its value, a record",
+    "mechanics.checks.all_pass": "whether every given check passed (a comparison, no physics)",
+    "mechanics.validation.check_gamma": "input range check, raises ValueError",
+    "mechanics.validation.check_resolution": "input range check, raises ValueError",
+    "maps.mapdata.MapData": "a computed map, a record",
+    "maps.mapdata.CurveData": "a computed boundary curve, a record",
+    "maps.caisson.CaissonReport": "a computed caisson analysis, a record",
+    "maps.caisson.MapView": "the sheet map's extent, a record",
+    "maps.loadedmap.Margin": "a computed margin, a record",
+    "maps.loadedmap.mode_label": "a mode's name in words (formatting)",
+    "maps.points.DesignPoint": "a design point to mark, a record",
+    "maps.query.PointResult": "a classified point, a record",
+    "maps.ambiguity.AmbiguousRegion": "a computed ambiguous region, a record",
+    "maps.geometry.DEFAULT_SAMPLES": "a default resolution, a constant",
+    "maps.geometry.area_in_view": "area of a drawn polygon clipped to the axes (plane geometry)",
+    "maps.describe.LOAD_SYMBOLS": "the loads' symbols, constants",
+    "maps.describe.format_significant": "number formatting",
+    "maps.describe.format_value": "number formatting",
+    "maps.describe.load_items": "the loads as (symbol, value) pairs (formatting)",
+    "maps.describe.loads_text": "the loads in words (formatting)",
+    "maps.sweeps.SWEEPS": "the names of the sweepable inputs, constants",
+    "maps.sweeps.sweep_params": "the Parameters record of one sweep value (no physics)",
+    "maps.sweeps.checked_values": "input range checks of a sweep's values, raises ValueError",
+    "maps.sweeps.SAMPLES": "a default resolution, a constant",
+    "dynamics.outcome.OutcomeMap": "a computed outcome map, a record",
+    "dynamics.regions.MapGeometry": "a computed map's regions, a record",
+    "dynamics.stepper.History": "a computed motion, a record",
+    "dynamics.stepper.Phase": "a phase of the motion, an enumeration",
+    "dynamics.stepper.OVERTURN": "an outcome code, a constant",
+    "dynamics.stepper.ROCK": "an outcome code, a constant",
+    "dynamics.stepper.SLIDE": "an outcome code, a constant",
+    "dynamics.stepper.SLIDE_ROCK": "an outcome code, a constant",
+    "dynamics.stepper.STILL_MOVING": "an outcome code, a constant",
+    "lifetime.chart.DesignChart": "a computed design chart, a record",
+    "lifetime.results.LifetimeResult": "a computed lifetime simulation, a record",
+    "climate.analysis.ClimateResult": "a computed wave climate, a record",
+    "climate.analysis.Curves": "computed return-level curves, a record",
+    "climate.analysis.Diagnostics": "computed threshold diagnostics, a record",
+}
+#: Computations drawing/ still makes itself, to be moved to its callers: (module, name).
+DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
+    ("maps.atlas", "maps.mapdata.compute_map"),
+    ("maps.atlas", "maps.sweeps.resolve_share"),
+    ("maps.figure", "maps.mapdata.map_for_view"),
+}
+
+
+def _drawing_physics_imports(modules: dict[str, Path]) -> list[tuple[str, int, str]]:
+    """(drawing module, line, ``package.module.name``) for every name drawing/ imports from PHYSICS."""
+    found = []
+    for module, path in modules.items():
+        if not module.startswith("regimemap.drawing"):
+            continue
+        for imported, names, line, _top in _imports(module, path):
+            parts = imported.split(".")
+            if len(parts) < 2 or parts[0] != "regimemap" or parts[1] not in PHYSICS:
+                continue
+            where = ".".join(parts[1:])
+            found += [(module, line, f"{where}.{n}") for n in names] if names else [(module, line, where)]
+    return found
+
+
+def test_drawing_only_draws():
+    """drawing/ imports from the computing packages only data types and pure helpers."""
+    found = _drawing_physics_imports(MODULES)
+    assert len(found) > 50  # the reader sees drawing's imports (typing-only ones left out)
+    bad = [f"{m}:{line} imports {name}" for m, line, name in found
+           if name not in DRAWING_MAY_IMPORT
+           and (m.removeprefix("regimemap.drawing."), name) not in DRAWING_STILL_COMPUTES]
+    assert not bad, "drawing/ computes (hand it the result instead):\n" + "\n".join(bad)
+    live = {(m.removeprefix("regimemap.drawing."), name) for m, _, name in found}
+    assert DRAWING_STILL_COMPUTES <= live, f"moved already: {DRAWING_STILL_COMPUTES - live}"
+    unused = set(DRAWING_MAY_IMPORT) - {name for *_, name in found}
+    assert not unused, f"allowed but no longer imported (drop them): {sorted(unused)}"
+
+
+def test_the_drawing_rule_can_fail(tmp_path):
+    """A function-level import of a compute function from maps is seen; a data type is allowed."""
+    f = tmp_path / "x.py"
+    f.write_text("from ...maps.mapdata import MapData\n"
+                 "def g():\n    from ...maps.mapdata import compute_map\n")
+    found = _drawing_physics_imports({"regimemap.drawing.maps.x": f})
+    assert found == [("regimemap.drawing.maps.x", 1, "maps.mapdata.MapData"),
+                     ("regimemap.drawing.maps.x", 3, "maps.mapdata.compute_map")]
+    assert [n for *_, n in found if n not in DRAWING_MAY_IMPORT] == ["maps.mapdata.compute_map"]

@@ -121,12 +121,12 @@ def _texts(fig):
 def test_the_sheet_shows_the_verdict(text):
     import matplotlib.colors as mcolors
 
-    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.drawing.verdict import FAIL_COLOUR, PASS_COLOUR
+    from tests.conftest import draw_sheet
 
     r = caisson_report(parse_design(text).analysis_inputs())
     checks = caisson_checks(r)
-    fig = sheet_figure(r, checks=checks)
+    fig = draw_sheet(r, checks=checks)
     fails = not checks[0].passed
     badge = [t for t in fig.texts if t.get_text().startswith(("PASS", "FAIL"))]
     assert len(badge) == 1
@@ -149,9 +149,10 @@ def test_the_sheet_shows_the_verdict(text):
 def test_the_sheet_flags_the_lifetime_esd(tmp_path):
     import matplotlib.colors as mcolors
 
-    from regimemap.drawing.sheet.page import LIFETIME_PANEL, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL
     from regimemap.drawing.verdict import FAIL_COLOUR
     from regimemap.lifetime import Requirements, judge_lifetime, lifetime_sliding
+    from tests.conftest import draw_sheet
 
     d = parse_design(EXAMPLE.replace("trials = 5000", "trials = 200"))
     r = caisson_report(d.analysis_inputs())
@@ -159,7 +160,7 @@ def test_the_sheet_flags_the_lifetime_esd(tmp_path):
                           Requirements(target=0.1))
     checks = [*caisson_checks(r), *life.checks]
     assert checks[2].value > 0.1  # Goda's caisson slides about a metre in 50 years
-    fig = sheet_figure(r, lifetime=life, checks=checks, lifetime_impulsive=False)
+    fig = draw_sheet(r, lifetime=life, checks=checks, lifetime_impulsive=False)
     (ax,) = [a for a in fig.axes if a.get_label() == LIFETIME_PANEL]
     (esd,) = [t for t in ax.texts if t.get_text().startswith("ESD")]
     assert mcolors.same_color(esd.get_color(), FAIL_COLOUR)
@@ -198,9 +199,9 @@ def test_simulate_check_needs_a_design_file(run_cli):
 @pytest.mark.render
 @pytest.mark.parametrize("text", [NO_LIFE, WIDE])
 def test_the_onset_label_stays_inside_panel_e(text):
-    from regimemap.drawing.sheet.page import sheet_figure
+    from tests.conftest import draw_sheet
 
-    fig = sheet_figure(caisson_report(parse_design(text).analysis_inputs()))
+    fig = draw_sheet(caisson_report(parse_design(text).analysis_inputs()))
     (ax,) = [a for a in fig.axes if a.get_label() == "path"]
     renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]
     (label,) = [t for t in ax.texts if "from" in t.get_text()]
@@ -210,9 +211,9 @@ def test_the_onset_label_stays_inside_panel_e(text):
 
 @pytest.mark.render
 def test_the_sheet_header_echoes_the_file():
-    from regimemap.drawing.sheet.page import sheet_figure
+    from tests.conftest import draw_sheet
 
     d = parse_design(NO_LIFE.replace("H0 = 6.3 ", "H0 = 6.30 ").replace("friction = 0.6 ", "friction = 0.60 "))
-    fig = sheet_figure(caisson_report(d.analysis_inputs()), written=d.written)
+    fig = draw_sheet(caisson_report(d.analysis_inputs()), written=d.written)
     (head,) = [t.get_text() for t in fig.texts if "T\u2081/\u2083" in t.get_text()]
     assert head.startswith("H\u2080\u2032 = 6.30 m, T\u2081/\u2083 = 11.4 s,") and "\u03bc = 0.60," in head

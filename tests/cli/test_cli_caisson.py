@@ -172,11 +172,12 @@ def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
 
 @pytest.mark.render
 def test_sheet_has_its_panels() -> None:
-    from regimemap.drawing.sheet.page import PANELS, SHEET_SIZE, sheet_figure
+    from regimemap.drawing.sheet.page import PANELS, SHEET_SIZE
     from regimemap.maps.caisson import caisson_report
+    from tests.conftest import draw_sheet
 
     report = caisson_report(parse_design(EXAMPLE).analysis_inputs())
-    fig = sheet_figure(report, title="goda.toml")
+    fig = draw_sheet(report, title="goda.toml")
     assert tuple(fig.get_size_inches()) == pytest.approx(SHEET_SIZE)
     axes = {ax.get_label(): ax for ax in fig.axes}
     assert tuple(axes) == PANELS
@@ -247,10 +248,10 @@ LIGHT = EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 1300")
 @pytest.mark.parametrize("text", [EXAMPLE, DEEP, LIGHT], ids=["goda", "deep-filled", "light"])
 def test_sheet_texts_do_not_collide(text: str) -> None:
     """No two labels, titles or notes of the sheet overlap (tick labels aside), all on the page."""
-    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.maps.caisson import caisson_report
+    from tests.conftest import draw_sheet
 
-    fig = sheet_figure(caisson_report(parse_design(text).analysis_inputs()), title="breakwater.toml")
+    fig = draw_sheet(caisson_report(parse_design(text).analysis_inputs()), title="breakwater.toml")
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     texts = [t for t in fig.texts]

@@ -16,6 +16,7 @@ from regimemap.maps.sweeps import (
     points_outside,
     shared_extent,
     sweep_extent,
+    sweep_frames,
 )
 from regimemap.mechanics.validation import check_gamma, check_kprime
 
@@ -92,7 +93,7 @@ def test_atlas_limits():
 def test_animation_frames_and_size(tmp_path):
     path = tmp_path / "sweep.gif"
     kps = parse_values("-0.8:0.8:5", "kprime", check_kprime)
-    n, size = write_animation(path, 3.0, kps, dpi=40, fps=5, samples=101)
+    n, size = write_animation(path, sweep_frames(3.0, kps, samples=101), dpi=40, fps=5)
     assert n == 5 and size == (208, 180)  # 5.2 x 4.5 inches at 40 dpi
     with Image.open(path) as im:
         assert im.format == "GIF" and im.n_frames == 5 and im.size == (208, 180)
@@ -119,18 +120,20 @@ def test_animation_fixed_axes(tmp_path, monkeypatch):
 
     monkeypatch.setattr(animation, "draw_map", spy)
     kps = [-0.9, -0.3, 0.0, 0.5]
-    write_animation(tmp_path / "a.gif", 1.0, kps, dpi=30, samples=51)
+    write_animation(tmp_path / "a.gif", sweep_frames(1.0, kps, samples=51), dpi=30)
     assert len(seen) == 4 and len(set(seen)) == 1
     assert seen[0] == sweep_extent(1.0, kps)
 
 
 def test_animation_rejects_bad_input(tmp_path):
     with pytest.raises(ValueError, match="frames exceed"):
-        write_animation(tmp_path / "a.gif", 1.0, [0.0] * (MAX_FRAMES + 1))
+        write_animation(tmp_path / "a.gif", sweep_frames(1.0, [0.0] * (MAX_FRAMES + 1)))
     with pytest.raises(ValueError, match=r"\.gif"):
-        write_animation(tmp_path / "a.png", 1.0, [0.0])
+        write_animation(tmp_path / "a.png", sweep_frames(1.0, [0.0]))
     with pytest.raises(ValueError, match="fps"):
-        write_animation(tmp_path / "a.gif", 1.0, [0.0], fps=0.0)
+        write_animation(tmp_path / "a.gif", sweep_frames(1.0, [0.0]), fps=0.0)
+    with pytest.raises(ValueError, match="gamma"):
+        sweep_frames(-1.0, [0.0])
     assert list(tmp_path.iterdir()) == []
 
 

@@ -21,6 +21,8 @@ from regimemap.cli.explore import open_explorer, plot_command_line
 from regimemap.drawing.explore.explorer import Explorer
 from regimemap.drawing.explore.images import KeyImage, TextPanel, WidgetsImage
 from regimemap.drawing.maps.figure import map_figure
+from regimemap.maps.mapdata import map_for_view
+from regimemap.maps.query import classify_point
 from regimemap.mechanics.modes import Mode
 
 pytestmark = pytest.mark.render
@@ -368,7 +370,7 @@ def test_save_at_another_resolution(echo: Echo, run_cli, tmp_path: Path) -> None
 def test_standalone_explorer_defaults(tmp_path: Path, monkeypatch, run_cli) -> None:
     """Without the command line's wiring: classify's text, plot's bytes, a plain file name."""
     lines: list[str] = []
-    ex = Explorer(Parameters(3.0, 0.4), echo=lines.append)
+    ex = Explorer(Parameters(3.0, 0.4), compute=map_for_view, classify=classify_point, echo=lines.append)
     try:
         ex.click(0.45, 0.6)
         text = classify_text(run_cli, Parameters(3.0, 0.4), 0.45, 0.6)
@@ -510,7 +512,8 @@ def test_off_screen_explorer_stays_out_of_pyplot() -> None:
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     before = plt.get_fignums()
-    ex = Explorer(Parameters(3.0, 0.4), window=False, echo=None)
+    ex = Explorer(Parameters(3.0, 0.4), compute=map_for_view, classify=classify_point, window=False,
+                  echo=None)
     assert type(ex.fig.canvas) is FigureCanvasAgg and ex.fig.canvas.manager is None
     assert plt.get_fignums() == before
     ex.set_kprime(-0.2)

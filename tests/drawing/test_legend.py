@@ -145,11 +145,12 @@ def test_ambiguity_overlay_keeps_the_key():
 
     from regimemap.drawing.maps.ambiguity import LEGEND_LABEL, draw_ambiguity
     from regimemap.drawing.maps.key import ModeSwatch
+    from regimemap.maps.ambiguity import ambiguous_in_view
 
     fig, ax, art = map_figure(Parameters(3.0, -0.6), k_max=4.0, mu_max=3.0)
     before = [(type(c[0]), [x.get_text() for x in c if isinstance(x, Text)])
               for c, _ in _key_parts(art.legend)]
-    assert draw_ambiguity(ax, Parameters(3.0, -0.6), 4.0, 3.0)
+    assert draw_ambiguity(ax, ambiguous_in_view(Parameters(3.0, -0.6), 4.0, 3.0), 4.0, 3.0)
     rows = _key_parts(ax.get_legend())
     after = [(type(c[0]), [x.get_text() for x in c if isinstance(x, Text)]) for c, _ in rows]
     assert after[:-1] == before and rows[-1][1].get_text() == LEGEND_LABEL

@@ -183,7 +183,10 @@ def test_one_row_atlas_leaves_room_for_mu():
 @pytest.mark.parametrize("kprime", [-1.0, -0.5, 0.0, 0.99])
 def test_animation_frames_never_collide(kprime):
     fig, ax = frame_figure(dpi=60)
-    art = draw_frame(fig, ax, 3.0, kprime, 2.0, 1.2, samples=151)
+    from regimemap.maps.mapdata import compute_map
+
+    art = draw_frame(fig, ax, 3.0, kprime, compute_map(Parameters(3.0, kprime), k_max=2.0, mu_max=1.2,
+                                                       samples=151))
     box = next(t for t in fig.texts if t.get_gid() == "frame-kprime")
     _check_boxes(fig, lambda: text_boxes(fig, [art], [box]))
     _check_map(fig, art)

@@ -76,10 +76,12 @@ def test_report_block_keeps_its_title_and_key():
 @pytest.mark.render
 def test_overlay_names_least_constraint():
     from regimemap.drawing.maps.ambiguity import draw_ambiguity
+    from regimemap.maps.ambiguity import ambiguous_in_view
 
     # {LO, RO, SRO-} lies above mu = 1.2: in the report's view, not the designer's
     fig, ax, art = map_figure(GODA, samples=201, view="report")
-    drawn = draw_ambiguity(ax, GODA, art.data.k_max, art.data.mu_max)
+    drawn = draw_ambiguity(ax, ambiguous_in_view(GODA, art.data.k_max, art.data.mu_max),
+                           art.data.k_max, art.data.mu_max)
     texts = [a.get_text() for a in drawn if hasattr(a, "get_text")]
     assert any("least constraint" in t and "LO" in t for t in texts)
 

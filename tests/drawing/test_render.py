@@ -13,12 +13,13 @@ import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
 from regimemap.drawing.maps.artists import MapArtists
-from regimemap.drawing.maps.figure import map_data, map_figure, new_figure, render_map, render_preset
+from regimemap.drawing.maps.figure import map_figure, new_figure, render_map, render_preset
 from regimemap.drawing.maps.mapplot import MapStyle, draw_design_points, draw_map
 from regimemap.drawing.maps.presets import PRESETS
 from regimemap.drawing.save import FORMATS, format_from_path, save_figure
 from regimemap.drawing.style import MODE_STYLE
 from regimemap.io.points import DesignPoint
+from regimemap.maps.mapdata import map_for_view
 
 pytestmark = pytest.mark.render
 
@@ -122,7 +123,7 @@ def test_region_labels_are_in_their_regions():
 
 def test_draw_map_returns_what_it_drew():
     fig, ax = new_figure()
-    art = draw_map(ax, map_data(Parameters(3.0, 0.4)))
+    art = draw_map(ax, map_for_view(Parameters(3.0, 0.4)))
     assert isinstance(art, MapArtists)
     assert set(art.fills) == set(MAP_MODES)
     assert art.fills[Mode.RO] and art.fills[Mode.RO][0].axes is ax
@@ -143,7 +144,7 @@ def test_draw_map_returns_what_it_drew():
 
 def test_draw_map_options():
     fig, ax = new_figure()
-    data = map_data(Parameters(3.0, 0.4), modes=[Mode.RO], curves=False, k_max=2.0, mu_max=1.0)
+    data = map_for_view(Parameters(3.0, 0.4), modes=[Mode.RO], curves=False, k_max=2.0, mu_max=1.0)
     art = draw_map(ax, data, MapStyle(curves=False, labels=False, legend=False, title=""))
     assert set(art.fills) == {Mode.RO}
     assert not art.curves and not art.region_labels and art.legend is None
@@ -159,8 +160,8 @@ def test_draw_on_a_user_axes_with_subplots():
     fig = Figure(figsize=(10, 4))
     FigureCanvasAgg(fig)
     a1, a2 = fig.subplots(1, 2)
-    draw_map(a1, map_data(Parameters(3.0, 0.2)), MapStyle(legend=False))
-    draw_map(a2, map_data(Parameters(3.0, -0.3)), MapStyle(legend=False))
+    draw_map(a1, map_for_view(Parameters(3.0, 0.2)), MapStyle(legend=False))
+    draw_map(a2, map_for_view(Parameters(3.0, -0.3)), MapStyle(legend=False))
     buf = io.BytesIO()
     fig.savefig(buf, format="png")
     assert buf.getvalue().startswith(b"\x89PNG")
@@ -168,7 +169,7 @@ def test_draw_on_a_user_axes_with_subplots():
 
 def test_design_points():
     fig, ax = new_figure()
-    draw_map(ax, map_data(Parameters(3.0, 0.4)))
+    draw_map(ax, map_for_view(Parameters(3.0, 0.4)))
     pts = [DesignPoint(0.45, 0.3, "caisson-A"), DesignPoint(0.2, 0.1, "")]
     arts = draw_design_points(ax, pts)
     assert len(arts) == 2  # one marker line + one name (the unnamed point has none)

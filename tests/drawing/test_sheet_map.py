@@ -30,14 +30,14 @@ def test_panel_d_fills_are_the_maps_exact_polygons(text: str) -> None:
     """Each region of (d) is a Polygon patch whose vertices are compute_map's, mode by mode."""
     from matplotlib.patches import Polygon
 
-    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.drawing.style import MODE_STYLE
     from regimemap.maps.caisson import map_view
     from regimemap.maps.mapdata import compute_map
+    from tests.conftest import draw_sheet
 
     report = _report(text)
     view = map_view(report)
-    fig = sheet_figure(report)
+    fig = draw_sheet(report)
     (ax,) = [a for a in fig.axes if a.get_label() == "map"]
     data = compute_map(report.map.parameters(), k_max=view.k_max, mu_max=view.mu_max)
     assert (ax.get_xlim(), ax.get_ylim()) == ((0.0, view.k_max), (0.0, view.mu_max))
@@ -62,18 +62,18 @@ def test_panel_d_draws_no_contours() -> None:
     from matplotlib.collections import PathCollection
     from matplotlib.contour import ContourSet
 
-    from regimemap.drawing.sheet.page import sheet_figure
+    from tests.conftest import draw_sheet
 
-    fig = sheet_figure(_report(example_design_text()))
+    fig = draw_sheet(_report(example_design_text()))
     (ax,) = [a for a in fig.axes if a.get_label() == "map"]
     assert not [c for c in ax.collections if isinstance(c, (ContourSet, PathCollection))]
     assert ax.patches  # the regions are patches
 
 
 def test_panel_d_keys_the_modes_in_view_and_the_lines() -> None:
-    from regimemap.drawing.sheet.page import sheet_figure
+    from tests.conftest import draw_sheet
 
-    fig = sheet_figure(_report(example_design_text()))
+    fig = draw_sheet(_report(example_design_text()))
     (ax,) = [a for a in fig.axes if a.get_label() == "map"]
     legend = ax.get_legend()
     assert legend is not None
@@ -85,13 +85,14 @@ def test_panel_d_keys_the_modes_in_view_and_the_lines() -> None:
     assert dotted_drawn == any(t.startswith("dotted line") for t in texts)
 
 
-def test_sheet_map_data_is_compute_map_in_the_view() -> None:
-    from regimemap.drawing.sheet.page import sheet_map_data
-    from regimemap.maps.caisson import map_view
+def test_sheet_map_is_compute_map_in_the_view() -> None:
+    from regimemap.maps.caisson import map_view, sheet_map
 
     report = _report(example_design_text())
     view = map_view(report)
-    data = sheet_map_data(report, view)
+    same, data = sheet_map(report, view)
+    assert same is view
+    assert (sheet_map(report)[0].k_max, sheet_map(report)[0].mu_max) == (view.k_max, view.mu_max)
     assert (data.k_max, data.mu_max) == (view.k_max, view.mu_max)
     assert data.params == report.map.parameters()
     assert {"A", "E"} <= set(data.points)
@@ -111,15 +112,15 @@ def _overlaps(fig) -> list[tuple[str, str]]:
 def test_the_lifetime_sheet_draws_the_required_factors_and_no_text_overlaps() -> None:
     """With panel (g), (e) is drawn shorter: it still draws the file's required safety factors;
     no text of the sheet (the key of (d) included) meets another, with or without (g)."""
-    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.lifetime import lifetime_sliding
+    from tests.conftest import draw_sheet
 
     d = parse_design(example_design_text())
     life = lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), trials=50, seed=1)
     report = _report(example_design_text())
-    fig = sheet_figure(report, title="goda.toml", lifetime=life, required=(1.3, 1.5))
+    fig = draw_sheet(report, title="goda.toml", lifetime=life, required=(1.3, 1.5))
     (ax,) = [a for a in fig.axes if a.get_label() == "path"]
     texts = [t.get_text().strip() for t in ax.texts]
     assert "required 1.3" in texts and "required 1.5" in texts
     assert not _overlaps(fig)
-    assert not _overlaps(sheet_figure(report, title="goda.toml"))
+    assert not _overlaps(draw_sheet(report, title="goda.toml"))

@@ -343,7 +343,7 @@ def test_help_lists_the_commands():
 def tiny_figures(monkeypatch):
     import dataclasses
 
-    import regimemap.drawing.motion.presets as dp
+    import regimemap.dynamics.presets as dp
 
     small = {fid: dataclasses.replace(f, first=f.first[:3] + (6,), second=f.second[:3] + (5,))
              for fid, f in list(dp.DYNAMICS_FIGURES.items())[::2]}
@@ -374,7 +374,7 @@ def test_dynamics_figures_cache_gives_the_same_bytes(tmp_path, tiny_figures):
         assert (fresh / name).read_bytes() == (cached / name).read_bytes(), name
     assert len(list(cache.glob("*.npz"))) == len(tiny_figures)
     # a changed definition computes again and replaces the figure's cached map
-    import regimemap.drawing.motion.presets as dp
+    import regimemap.dynamics.presets as dp
 
     fid, f = next(iter(tiny_figures.items()))
     dp.DYNAMICS_FIGURES[fid] = dataclasses.replace(f, title="changed")
@@ -395,7 +395,7 @@ def test_dynamics_figures_list_and_errors(tmp_path):
 
 def test_figure_ids_cannot_be_mistaken_for_the_report():
     from regimemap.drawing.maps.presets import FIGURE_IDS
-    from regimemap.drawing.motion.presets import DYNAMICS_FIGURE_IDS
+    from regimemap.dynamics.presets import DYNAMICS_FIGURE_IDS
 
     assert not set(DYNAMICS_FIGURE_IDS) & set(FIGURE_IDS)
     assert all(Path(f"dyn-{i}.png").name.startswith("dyn-D.") for i in DYNAMICS_FIGURE_IDS)

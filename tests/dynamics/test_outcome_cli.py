@@ -129,7 +129,7 @@ def test_library_progress_counts_every_run():
 def test_dynamics_figures_progress_and_quiet(tmp_path, terminal, monkeypatch):
     import dataclasses
 
-    import regimemap.drawing.motion.presets as dp
+    import regimemap.dynamics.presets as dp
 
     f = dp.DYNAMICS_FIGURES["D.3"]
     monkeypatch.setattr(dp, "DYNAMICS_FIGURES", {"D.3": dataclasses.replace(f, first=f.first[:3] + (6,),

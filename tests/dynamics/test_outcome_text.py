@@ -12,12 +12,13 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from regimemap.drawing.motion.presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # noqa: E402
+from regimemap.drawing.motion.presets import dynamics_figure  # noqa: E402
 from regimemap.drawing.outcome.figure import outcome_figure, outcome_title  # noqa: E402
 from regimemap.drawing.outcome.text import outcome_text_boxes  # noqa: E402
 from regimemap.drawing.save import save_figure  # noqa: E402
 from regimemap.dynamics import OutcomeMap  # noqa: E402
 from regimemap.dynamics.boundaries import refine_crossings  # noqa: E402
+from regimemap.dynamics.presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # noqa: E402
 from regimemap.io.dynamics import cached_outcome  # noqa: E402
 
 from ..drawing.test_legible import _check_boxes  # noqa: E402
@@ -49,7 +50,7 @@ def test_committed_outcome_figures_never_collide(fid, cache_dir, tmp_path):
     assert m.refined
     boxes = {}
     for fmt in ("png", "pdf"):
-        fig = f.render(data=(m, x, y))
+        fig = dynamics_figure(f, (m, x, y))
         art = fig._regimemap_outcome
         save_figure(fig, tmp_path / f.filename(fmt), fmt)
         _check_boxes(fig, lambda fig=fig, art=art: outcome_text_boxes(fig, art))

@@ -48,11 +48,11 @@ def test_the_sheet_draws_the_required_line(tmp_path):
     import matplotlib
 
     matplotlib.use("Agg")
-    from regimemap.drawing.sheet.page import sheet_figure
     from regimemap.maps.caisson import caisson_report
+    from tests.conftest import draw_sheet
 
     report = caisson_report(parse_design(EXAMPLE).analysis_inputs())
-    fig = sheet_figure(report, required=(1.3, 1.5))
+    fig = draw_sheet(report, required=(1.3, 1.5))
     (ax,) = [a for a in fig.axes if a.get_label() == "path"]
     texts = [t.get_text().strip() for t in ax.texts]
     assert "required 1.3" in texts and "required 1.5" in texts

@@ -300,19 +300,21 @@ def _goda_report():
 
 
 def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
-    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS
+    from tests.conftest import draw_sheet
 
-    fig = sheet_figure(_goda_report(), title="goda.toml")
+    fig = draw_sheet(_goda_report(), title="goda.toml")
     labels = [ax.get_label() for ax in fig.axes]
     assert LIFETIME_PANEL not in labels
     assert [lab for lab in labels if lab in PANELS] == list(PANELS)
 
 
 def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResult) -> None:
-    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS, sheet_figure
+    from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS
+    from tests.conftest import draw_sheet
 
     report = _goda_report()
-    fig = sheet_figure(report, title="goda.toml", lifetime=goda)
+    fig = draw_sheet(report, title="goda.toml", lifetime=goda)
     labels = [ax.get_label() for ax in fig.axes]
     assert LIFETIME_PANEL in labels and all(p in labels for p in PANELS)
     texts = _all_text(fig)
@@ -323,7 +325,7 @@ def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResu
 
     a, b = io.BytesIO(), io.BytesIO()
     print_figure(fig, a, "svg")
-    print_figure(sheet_figure(report, title="goda.toml", lifetime=goda), b, "svg")
+    print_figure(draw_sheet(report, title="goda.toml", lifetime=goda), b, "svg")
     assert a.getvalue() == b.getvalue()
 
 

@@ -11,6 +11,7 @@ from regimemap import Mode, Parameters, classify
 from regimemap.maps.ambiguity import (
     AmbiguousRegion,
     admissible_set,
+    ambiguous_in_view,
     ambiguous_regions,
     column_pieces,
     set_label,
@@ -233,7 +234,7 @@ def test_draw_ambiguity_outlines_and_annotates():
 
     fig, ax, art = _map_axes(3.0, -0.6, k_max=4.0, mu_max=3.0)
     n_before = len(ax.patches)
-    artists = draw_ambiguity(ax, Parameters(3.0, -0.6), 4.0, 3.0)
+    artists = draw_ambiguity(ax, ambiguous_in_view(Parameters(3.0, -0.6), 4.0, 3.0), 4.0, 3.0)
     assert artists
     polys = [a for a in artists if isinstance(a, MplPolygon)]
     assert len(polys) == 2  # stipple + outline of the one part
@@ -255,11 +256,11 @@ def test_draw_ambiguity_nothing_above_c_or_out_of_view():
 
     fig, ax, art = _map_axes(3.0, 0.4)
     n = len(ax.get_children())
-    assert draw_ambiguity(ax, Parameters(3.0, 0.4), *art.extent) == []
+    assert draw_ambiguity(ax, ambiguous_in_view(Parameters(3.0, 0.4), *art.extent), *art.extent) == []
     assert len(ax.get_children()) == n
     # below C but the view ends under mu_B'
     fig, ax, art = _map_axes(3.0, -0.6, k_max=4.0, mu_max=1.2)
-    assert draw_ambiguity(ax, Parameters(3.0, -0.6), 4.0, 1.2) == []
+    assert draw_ambiguity(ax, ambiguous_in_view(Parameters(3.0, -0.6), 4.0, 1.2), 4.0, 1.2) == []
 
 
 @pytest.mark.render
@@ -274,7 +275,7 @@ def test_draw_ambiguity_without_legend():
     ax = fig.add_subplot()
     ax.set_xlim(0, 16)
     ax.set_ylim(0, 3)
-    artists = draw_ambiguity(ax, Parameters(3.0, -0.2), 16.0, 3.0)
+    artists = draw_ambiguity(ax, ambiguous_in_view(Parameters(3.0, -0.2), 16.0, 3.0), 16.0, 3.0)
     assert len([a for a in artists if a.get_label() == LEGEND_LABEL]) == 1
     assert ax.get_legend() is None
     leg = ax.legend()

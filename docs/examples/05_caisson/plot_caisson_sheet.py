@@ -20,7 +20,7 @@ The command simulates the file's 5000 lifetimes; the docs simulate 2000.
 from regimemap.drawing.sheet.page import sheet_figure
 from regimemap.io.design import example_design_text, parse_design
 from regimemap.lifetime import lifetime_sliding
-from regimemap.maps.caisson import caisson_report
+from regimemap.maps.caisson import caisson_checks, caisson_report, sheet_map
 from regimemap.maps.loadedmap import mode_label
 
 design = parse_design(example_design_text(), source="goda.toml")
@@ -33,4 +33,6 @@ life = lifetime_sliding(design.lifetime_caisson(), design.lifetime_model(), tria
                         seed=design.lifetime_spec().seed)
 print(f"expected sliding distance over {life.years} years: {life.expected_sliding:.3f} m")
 
-fig = sheet_figure(report, title="goda.toml", lifetime=life)
+view, data = sheet_map(report)  # panel (d): its view and the loaded map in it
+fig = sheet_figure(report, view=view, data=data, checks=[*caisson_checks(report), *life.checks],
+                   title="goda.toml", lifetime=life)

@@ -14,10 +14,11 @@ smaller than a cell of that grid may be missing.
 
 import dataclasses
 
-from regimemap.drawing.motion.presets import DYNAMICS_FIGURES
+from regimemap.drawing.motion.presets import dynamics_figure
+from regimemap.dynamics.presets import DYNAMICS_FIGURES
 
 figure = DYNAMICS_FIGURES["D.1"]
 quick = dataclasses.replace(figure, first=(*figure.first[:3], 48), second=(*figure.second[:3], 40))
 print(quick.make_block())
 
-fig = quick.render()
+fig = dynamics_figure(quick, quick.compute())

@@ -10,7 +10,8 @@ the residual slide.  The map of ``make figures`` (61 × 45 runs).
 
 import numpy as np
 
-from regimemap.drawing.motion.presets import DYNAMICS_FIGURES
+from regimemap.drawing.motion.presets import dynamics_figure
+from regimemap.dynamics.presets import DYNAMICS_FIGURES
 
 figure = DYNAMICS_FIGURES["D.3"]
 print(figure.make_block())
@@ -19,4 +20,4 @@ outcomes, k_peak, duration = figure.compute()
 for code, label in enumerate(outcomes.labels):
     print(f"{label:>12}: {np.count_nonzero(outcomes.category == code):5d} runs")
 
-fig = figure.render(data=(outcomes, k_peak, duration))
+fig = dynamics_figure(figure, (outcomes, k_peak, duration))

@@ -17,6 +17,7 @@ Command line::
 from pathlib import Path
 
 from regimemap.climate import ClimateOptions, analyse
+from regimemap.climate.analysis import curves
 from regimemap.drawing.climate.figures import climate_figure
 from regimemap.io.records import read_record
 
@@ -42,4 +43,4 @@ for rv in result.return_values:
     print(f"{rv['period']:g}-year Hs: {rv['value']:.2f} m "
           f"(90 % band {rv['lower']:.2f} to {rv['upper']:.2f} m)")
 
-fig = climate_figure(result, "NDBC 44007")
+fig = climate_figure(result, curves(result), "NDBC 44007")

@@ -266,16 +266,13 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
     blocks = _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()
     from ..drawing.maps.animation import write_animation
-    from ..maps.sweeps import points_outside, sweep_extent
+    from ..maps.sweeps import points_outside, sweep_frames
 
-    if k_max is None or mu_max is None:
-        ek, em = sweep_extent(gamma, values, view, sweep=sweep, fixed=fixed)
-        k_max = ek if k_max is None else k_max
-        mu_max = em if mu_max is None else mu_max
-    view_name, frame_view = view, (k_max, mu_max)
+    frames = sweep_frames(gamma, values, k_max=k_max, mu_max=mu_max, view=view, sweep=sweep,
+                          fixed=fixed)
+    view_name, frame_view = view, (frames.k_max, frames.mu_max)
     with writing(output):
-        n, (w, h) = write_animation(output, gamma, values, k_max=k_max, mu_max=mu_max, fps=fps,
-                                    dpi=dpi, sweep=sweep, fixed=fixed)
+        n, (w, h) = write_animation(output, frames, fps=fps, dpi=dpi)
     report_written(output, f"{n} frames, {w} x {h} pixels, {fps:g} frames/s")
     if view_name == "report":
         label = "k'" if sweep == "kprime" else sweep

@@ -123,8 +123,11 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
             life = judge_lifetime(life, Requirements(target=spec.target, allowed=spec.allowed,
                                                      failure_sliding=spec.failure_sliding))
             checks.extend(life.checks)
-        fig = sheet_figure(report, title=Path(design).name, lifetime=life, required=required,
-                           checks=checks, lifetime_impulsive=None if d.lifetime is None
+        from ..maps.caisson import sheet_map
+
+        view, data = sheet_map(report)
+        fig = sheet_figure(report, view=view, data=data, checks=checks, title=Path(design).name,
+                           lifetime=life, required=required, lifetime_impulsive=None if d.lifetime is None
                            else d.lifetime.impulsive, written=d.written)
         with writing(output):
             save_figure(fig, output)

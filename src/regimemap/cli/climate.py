@@ -180,7 +180,9 @@ def _write(result: Any, outputs: tuple[str, ...], diagnostics: str | None, title
     from ..drawing.save import save_figure
 
     if outputs:
-        fig = climate_figure(result, title)
+        from ..climate.analysis import curves
+
+        fig = climate_figure(result, curves(result), title)
         for path in outputs:
             with writing(path):
                 save_figure(fig, path)

@@ -45,7 +45,7 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
       regimemap dynamics-figures --out figures --format png,svg
       regimemap dynamics-figures --list
     """
-    from ..drawing.motion.presets import DYNAMICS_FIGURES
+    from ..dynamics.presets import DYNAMICS_FIGURES
 
     if list_only:
         for f in DYNAMICS_FIGURES.values():
@@ -61,6 +61,7 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
         raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
     import_matplotlib()
+    from ..drawing.motion.presets import dynamics_figure
     from ..drawing.save import save_figure
     from ..io.dynamics import cached_outcome
     from ._progress import progress_bar
@@ -74,7 +75,7 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
 
         with writing(cache, f"to the cache {cache}"):
             m, x, y, hit = cached_outcome(cache, f.id, repr(f), lambda f=f, bars=bars: f.compute(bars))
-        fig = f.render(data=(m, x, y))
+        fig = dynamics_figure(f, (m, x, y))
         for fmt in dict.fromkeys(fmts):
             path = folder / f.filename(fmt)
             with writing(path):

@@ -70,6 +70,8 @@ def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT
     from ..drawing.explore.explorer import Explorer
     from ..drawing.save import save_figure
     from ..io.tables import format_result
+    from ..maps.mapdata import map_for_view
+    from ..maps.query import classify_point
 
     holder: list[Explorer] = []
 
@@ -82,7 +84,8 @@ def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT
     def stem(p: Parameters) -> str:
         return _stem(holder[0]) if holder else plot_stem(p.gamma, p.kprime)
 
-    ex = Explorer(params, resolution=resolution, fig=fig, describe=format_result, write=write,
+    ex = Explorer(params, compute=map_for_view, classify=classify_point, resolution=resolution,
+                  fig=fig, describe=format_result, write=write,
                   file_stem=stem, echo=echo, window=window, point=point)
     holder.append(ex)
     return ex

@@ -201,9 +201,12 @@ def _draw_ambiguity(fig: Any, ax: Any, artists: MapArtists, params: Parameters) 
     from ..drawing.maps.figure import fit_figure
     from ..drawing.style import style_context
     from ..drawing.text.tidy import tidy_figure
+    from ..maps.ambiguity import ambiguous_in_view
 
+    k_max, mu_max = artists.data.k_max, artists.data.mu_max
+    regions = ambiguous_in_view(params, k_max, mu_max)
     with style_context():
-        overlay = draw_ambiguity(ax, params, artists.data.k_max, artists.data.mu_max) or []
+        overlay = draw_ambiguity(ax, regions, k_max, mu_max) or []
         artists.extra.extend(overlay)
         artists.legend = ax.get_legend()  # rebuilt with one more entry
         fit_figure(fig, ax)  # the overlay may have added legend entries

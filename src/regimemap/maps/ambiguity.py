@@ -44,6 +44,7 @@ from .geometry import DEFAULT_SAMPLES, raw_intervals, sample_k
 
 __all__ = [
     "AmbiguousRegion",
+    "ambiguous_in_view",
     "ambiguous_regions",
     "column_pieces",
     "admissible_set",
@@ -335,3 +336,15 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
     order = {m: i for i, m in enumerate(SELECTION_ORDER)}
     out.sort(key=lambda r: (order[r.chosen], tuple(int(m) for m in r.modes), float(r.k[0])))
     return out
+
+
+def ambiguous_in_view(p: Parameters, k_max: float, mu_max: float,
+                      samples: int = DEFAULT_SAMPLES) -> list[AmbiguousRegion]:
+    """The parts where several modes are admissible that a drawing of [0, k_max] x [0, mu_max] shows.
+
+    :func:`ambiguous_regions` of a view 2 % larger (clipped by the axes, so that the
+    edges of the view are not drawn as edges of a part), less the parts with no
+    anchor for their label in the view (:meth:`AmbiguousRegion.anchor`).
+    """
+    regions = ambiguous_regions(p, k_max * 1.02, mu_max * 1.02, samples=samples)
+    return [r for r in regions if r.anchor(k_max, mu_max) is not None]

@@ -30,6 +30,7 @@ from ..mechanics.htmltable import html_table, number
 from ..mechanics.modes import Mode
 from ..waves import CaissonAnalysis, analyse_caisson
 from .loadedmap import LoadedMap, Margin, classify_at, margins, mode_grid, named_points
+from .mapdata import MapData, compute_map
 from .point_result import margin_words
 
 __all__ = [
@@ -42,6 +43,7 @@ __all__ = [
     "caisson_report",
     "loaded_map_of",
     "map_view",
+    "sheet_map",
     "stability_checks",
 ]
 
@@ -351,3 +353,15 @@ def map_view(r: CaissonReport, samples: int = 600) -> MapView:
     inside = {n: p for n, p in pts.items() if n != "O" and p[0] <= k_max and p[1] <= mu_max}
     return MapView(k_axis=k_axis, mu_axis=mu_axis, grid=mode_grid(k_axis, mu_axis, r.map),
                    k_max=k_max, mu_max=mu_max, points=inside)
+
+
+def sheet_map(r: CaissonReport, view: MapView | None = None) -> tuple[MapView, MapData]:
+    """What the design sheet's panel (d) draws: its view and the design wave's loaded map in it.
+
+    :func:`~regimemap.maps.mapdata.compute_map` of the report's loaded map
+    (:meth:`regimemap.maps.loadedmap.LoadedMap.parameters`) over ``[0, k_max] x
+    [0, mu_max]`` of ``view`` (default :func:`map_view`): the exact region polygons,
+    boundary curves and named points, as ``regimemap plot`` draws them.
+    """
+    view = map_view(r) if view is None else view
+    return view, compute_map(r.map.parameters(), k_max=view.k_max, mu_max=view.mu_max)

@@ -24,11 +24,12 @@ from ..mechanics.curves import NamedPoint
 from ..mechanics.htmltable import html_table
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from .describe import loads_text
+from .designer_view import points_off_view
 from .geometry import DEFAULT_SAMPLES, area_in_view, region_polygons
 from .mapcurves import CurveData, curve_data, drawn_points, line_ends
 from .view import auto_extent, simplify
 
-__all__ = ["CurveData", "MapData", "compute_map"]
+__all__ = ["CurveData", "MapData", "compute_map", "map_for_view"]
 
 _log = logging.getLogger(__name__)
 
@@ -59,6 +60,9 @@ class MapData:
     line_ends : dict[str, tuple[float, float]]
         Names written at the far end of a line, as the report's sketches do
         (``B`` on AB, ``C`` on DC below C).
+    off_view : tuple of NamedPoint
+        The named points outside the view, that a drawing marks at its edge
+        (:func:`regimemap.maps.designer_view.points_off_view`).
     """
 
     params: Parameters
@@ -70,6 +74,7 @@ class MapData:
     curves: dict[str, CurveData]
     points: dict[str, NamedPoint]
     line_ends: dict[str, tuple[float, float]] = field(default_factory=dict)
+    off_view: tuple[NamedPoint, ...] = ()
 
     @property
     def extent(self) -> tuple[float, float, float, float]:
@@ -134,7 +139,7 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
     samples : int
         Samples of k for the region polygons and the curves (>= 2).
     curves : bool
-        Compute the boundary curves and named points (else empty).
+        Compute the boundary curves and named points, in view and off it (else empty).
     include : iterable of (k, mu)
         Points to keep in the automatic view.
     tolerance : float
@@ -160,11 +165,13 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
     drawn_curves: dict[str, CurveData] = {}
     points: dict[str, NamedPoint] = {}
     ends: dict[str, tuple[float, float]] = {}
+    off_view: tuple[NamedPoint, ...] = ()
     if curves:
         n_curve = max(16, min(samples, 400))
         drawn_curves = curve_data(p, k_max, mu_max, n_curve, raw, raw_mode, modes_t, tolerance)
         points = drawn_points(p, drawn_curves, k_max, mu_max)
         ends = line_ends(p, drawn_curves, points)
+        off_view = tuple(points_off_view(p, float(k_max), float(mu_max)))
     if _log.isEnabledFor(logging.INFO):
         _log.info("map gamma=%g, k'=%g%s: view k <= %g, mu <= %g; %d polygons (%d vertices), "
                   "%d curves, %d points; %d samples, %.3f s", p.gamma, p.kprime,
@@ -172,4 +179,49 @@ def compute_map(params: Parameters, *, k_max: float | None = None, mu_max: float
                   sum(len(poly) for v in polys.values() for poly in v), len(drawn_curves), len(points),
                   samples, time.perf_counter() - t0)
     return MapData(p, float(k_max), float(mu_max), modes_t, bool(raw), polys, drawn_curves,
-                   points, ends)
+                   points, ends, off_view)
+
+
+def map_for_view(params: Parameters, *, view: str = "designer", k_max: float | None = None,
+             mu_max: float | None = None, modes: Iterable[Mode] | None = None, raw: bool = False,
+             samples: int = DEFAULT_SAMPLES, curves: bool = True,
+             include: Iterable[tuple[float, float]] = ()) -> MapData:
+    """What the map of ``params`` shows, in the designer's or the report's view.
+
+    Parameters
+    ----------
+    params : Parameters
+    view : {"designer", "report"}
+        The default view (:func:`regimemap.maps.designer_view.view_extent`):
+        mu up to 1.2 and every boundary that crosses that band, or every
+        characteristic point of the map.  ``k_max``/``mu_max`` win over both.
+    k_max, mu_max : float, optional
+        The view ``[0, k_max] x [0, mu_max]``.
+    modes : iterable of Mode, optional
+        Modes to shade (default: every mode the block shows).
+    raw : bool
+        The report's raw region of each mode (single-mode figures) instead of the final map.
+    samples : int
+        Samples of k for polygons and curves.
+    curves : bool
+        Compute the boundary curves and the named points.
+    include : iterable of (k, mu)
+        Points to keep in the view.
+
+    Returns
+    -------
+    MapData
+        :func:`compute_map` of that view.
+    """
+    include = list(include)
+    if k_max is None or mu_max is None:
+        from .designer_view import view_extent
+
+        modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
+        if modes is not None:  # None: every mode the block shows (LO with loads)
+            modes = modes_t
+        raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
+        k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
+                                    mu_max=mu_max)
+    return compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                       samples=samples, curves=curves, include=include)

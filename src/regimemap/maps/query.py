@@ -66,6 +66,7 @@ __all__ = [
     "HYPOTHESES_OF_MODE",
     "Margin",
     "PointResult",
+    "classify_point",
     "margin",
     "query_point",
     "query_points",
@@ -301,3 +302,11 @@ def _query_shared(points: Sequence[DesignPoint | tuple[float, float]], gamma: fl
         sl = slice(s, s + _BLOCK)
         out.extend(_query_block(k[sl], mu[sl], g_arr[sl], kp_arr[sl], names[sl], cases[sl], loads))
     return out
+
+
+def classify_point(point: DesignPoint, params: Parameters) -> PointResult:
+    """:func:`query_points` of one point for the block ``params`` (its gamma, k' and loads).
+
+    The answer ``regimemap explore`` shows for a click, as ``regimemap classify`` computes it.
+    """
+    return query_points([point], gamma=params.gamma, kprime=params.kprime, **params.loads)[0]

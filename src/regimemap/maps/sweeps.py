@@ -4,7 +4,8 @@ No matplotlib: the command line parses the lists (:func:`parse_values`) and
 checks the blocks (:func:`sweep_params`) before anything is drawn, and the
 drawing layer (:mod:`regimemap.drawing.maps.atlas`, :mod:`regimemap.drawing.maps.animation`)
 draws the panels and frames in the views chosen here (:func:`resolve_share`,
-:func:`sweep_extent`).
+:func:`sweep_extent`); an animation's frames, their blocks and maps, are computed here
+(:func:`sweep_frames`) and handed to :func:`regimemap.drawing.maps.animation.write_animation`.
 
 The value lists use the syntax of the command line: ``1,2,3`` (a list) or
 ``-1:1:41`` (start:stop:count, both ends included, as ``numpy.linspace``).
@@ -13,28 +14,37 @@ The value lists use the syntax of the command line: ``1,2,3`` (a list) or
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from ..mechanics.block import Parameters
+from ..mechanics.validation import check_gamma, check_kprime
 from .describe import LOAD_SYMBOLS
+from .mapdata import MapData, compute_map
 
 __all__ = [
     "CRAMMED",
     "MAX_VALUES",
+    "SAMPLES",
     "SHARE",
     "SWEEPS",
+    "SweepFrames",
     "atlas_extents",
+    "checked_values",
     "parse_values",
     "points_outside",
     "resolve_share",
     "shared_extent",
     "sweep_extent",
+    "sweep_frames",
     "sweep_params",
 ]
 
+#: Samples of k per atlas panel / animation frame (fewer than a single map: the panels are small).
+SAMPLES = 401
 #: Largest number of values in one list (rows or columns of an atlas).
 MAX_VALUES = 400
 #: How the axes of an atlas are shared: one view for the whole figure, one per row, or none.
@@ -255,3 +265,94 @@ def sweep_extent(gamma: float, kprimes: Sequence[float], view: str = "designer",
                  ) -> tuple[float, float]:
     """One view for every frame: :func:`shared_extent` of the frames' own views."""
     return shared_extent([_extent_of(sweep_params(gamma, sweep, v, fixed), view) for v in kprimes])
+
+
+def checked_values(gammas: Sequence[float], values: Sequence[float], sweep: str = "kprime",
+                   fixed: dict[str, Any] | None = None) -> tuple[list[float], list[float]]:
+    """The rows' gamma and the columns' (or frames') values, checked; ValueError naming the range.
+
+    A k' may reach the crest when one is given (``fixed["crest"]``; 1 by default):
+    :func:`regimemap.mechanics.validation.check_kprime` with the crest, the rule of every
+    map.  A swept load is checked with its block (:func:`sweep_params`).
+    """
+    gs = [check_gamma(g) for g in gammas]
+    if sweep == "kprime":
+        return gs, [check_kprime(k, (fixed or {}).get("crest", 1.0)) for k in values]
+    return gs, [float(v) for v in values]
+
+
+@dataclass(frozen=True)
+class SweepFrames:
+    """The frames of an animation: the block and the map of each, on one view.
+
+    Attributes
+    ----------
+    gamma : float
+        The aspect ratio of every frame.
+    values : tuple of float
+        The swept value of each frame (k', or the load ``sweep``), checked.
+    blocks : tuple of Parameters
+        The block of each frame (:func:`sweep_params`).
+    sweep : str
+        What the frames vary, a key of :data:`SWEEPS`.
+    fixed : dict or None
+        What every frame shares (``kprime`` when a load is swept, the other loads).
+    k_max, mu_max : float
+        The view of every frame.
+    maps : iterable of MapData
+        The map of each frame in that view (:func:`~regimemap.maps.mapdata.compute_map`),
+        computed as the frames are drawn; all at once (a list) when the blocks have loads,
+        since the key of every frame lists the modes any frame shows.
+    """
+
+    gamma: float
+    values: tuple[float, ...]
+    blocks: tuple[Parameters, ...]
+    sweep: str
+    fixed: dict[str, Any] | None
+    k_max: float
+    mu_max: float
+    maps: Iterable[MapData]
+
+    @property
+    def loaded(self) -> bool:
+        """Whether any frame's block has loads."""
+        return any(p.loaded for p in self.blocks)
+
+
+def sweep_frames(gamma: float, values: Sequence[float], *, k_max: float | None = None,
+                 mu_max: float | None = None, view: str = "designer", samples: int = SAMPLES,
+                 sweep: str = "kprime", fixed: dict[str, Any] | None = None) -> SweepFrames:
+    """The frames of an animation of the map of ``gamma`` as k' (or the load ``sweep``) runs
+    through ``values``: each frame's block and map, on one view.
+
+    Parameters
+    ----------
+    gamma : float
+    values : sequence of float
+        k' of each frame (in [-1, 1], or up to ``fixed["crest"]``), or the value of ``sweep``.
+    k_max, mu_max : float, optional
+        The view of every frame (default :func:`sweep_extent` of ``view``).
+    view : {"designer", "report"}
+    samples : int
+        Samples of k per frame.
+    sweep, fixed : str, dict
+        What the frames vary and what they share (:func:`sweep_params`).
+
+    Raises
+    ------
+    ValueError
+        For a gamma or a value out of range.
+    """
+    (g,), vals = checked_values([gamma], values, sweep, fixed)
+    blocks = tuple(sweep_params(g, sweep, v, fixed) for v in vals)
+    if k_max is None or mu_max is None:
+        ek, em = sweep_extent(g, vals, view, sweep=sweep, fixed=fixed)
+        k_max = ek if k_max is None else k_max
+        mu_max = em if mu_max is None else mu_max
+    kx, mx = k_max, mu_max
+    maps: Iterable[MapData] = (compute_map(p, k_max=kx, mu_max=mx, samples=samples) for p in blocks)
+    if any(p.loaded for p in blocks):
+        maps = list(maps)
+    return SweepFrames(gamma=g, values=tuple(vals), blocks=blocks, sweep=sweep, fixed=fixed,
+                       k_max=k_max, mu_max=mu_max, maps=maps)

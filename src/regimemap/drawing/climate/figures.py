@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ...climate.analysis import ClimateResult, Curves, Diagnostics, curves
+from ...climate.analysis import ClimateResult, Curves, Diagnostics
 from ..save import DEFAULT_DPI
 from ..style import style_context
 
@@ -98,9 +98,19 @@ def _draw_qq(ax: Axes, c: Curves) -> None:
     ax.set_title("(c) QQ plot", fontsize=FS + 0.5, loc="left")
 
 
-def climate_figure(result: ClimateResult, title: str | None = None, *, dpi: float = DEFAULT_DPI) -> Figure:
+def climate_figure(result: ClimateResult, curves: Curves, title: str | None = None, *,
+                   dpi: float = DEFAULT_DPI) -> Figure:
     """The record with its storms, the return-level plot with the band and the observations at
     their plotting positions, and the QQ plot.
+
+    Parameters
+    ----------
+    result : ClimateResult
+        The analysis (:func:`regimemap.climate.analyse`).
+    curves : Curves
+        Its return-level curve, band and observations (:func:`regimemap.climate.analysis.curves`).
+    title : str, optional
+    dpi : float
 
     Returns
     -------
@@ -110,7 +120,7 @@ def climate_figure(result: ClimateResult, title: str | None = None, *, dpi: floa
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    c = curves(result)
+    c = curves
     with style_context():
         fig = Figure(figsize=(7.0, 6.0), dpi=dpi)
         FigureCanvasAgg(fig)

@@ -1,13 +1,15 @@
 """The regime map, live: sliders for gamma and k' (and the loads), a click for the physics.
 
 :class:`Explorer` builds one matplotlib figure: the map of ``regimemap plot``
-on the left, drawn by the same functions (:func:`~regimemap.drawing.maps.figure.map_data`
-and :func:`~regimemap.drawing.maps.mapplot.draw_map`: the same view, the same
-polygons); on the right, sliders for the aspect ratio gamma (log scale) and
+on the left, computed by the ``compute`` it is given (``regimemap explore`` gives
+:func:`regimemap.maps.mapdata.map_for_view`, as ``plot`` computes it) and drawn by
+:func:`~regimemap.drawing.maps.mapplot.draw_map` (the same view, the same polygons);
+on the right, sliders for the aspect ratio gamma (log scale) and
 the force height k', a check box that shows two more sliders for the
 buoyancy beta and the uplift ratio nu, a *Save* button, and a text panel.
 A click on the map shows in the panel (and prints) the mode at that point,
-its margins and the physics at initiation; *Save* writes the current view as
+its margins and the physics at initiation (the ``classify`` it is given: ``regimemap
+explore`` gives :func:`regimemap.maps.query.classify_point`); *Save* writes the current view as
 ``regimemap plot`` draws it (the same :func:`~regimemap.drawing.maps.figure.map_figure`,
 the same bytes).
 
@@ -54,11 +56,12 @@ from typing import TYPE_CHECKING, Any
 
 from ...io.tables import format_result
 from ...maps.geometry import DEFAULT_SAMPLES
+from ...maps.mapdata import MapData
 from ...maps.points import DesignPoint
-from ...maps.query import PointResult, query_points
+from ...maps.query import PointResult
 from ...mechanics.block import LOAD_DEFAULTS, Parameters
 from ..maps.artists import MapArtists
-from ..maps.figure import map_data, map_figure
+from ..maps.figure import map_figure
 from ..maps.mapplot import MapStyle, draw_design_points, draw_map
 from ..save import DEFAULT_DPI, format_from_path, save_figure
 from ..style import style_context
@@ -94,6 +97,10 @@ __all__ = ["Explorer"]
 _SLIDER_LOADS = ("buoyancy", "uplift_ratio")
 
 Describe = Callable[[PointResult], str]
+#: ``compute(params, *, view, samples, include) -> MapData``: the map of a block in a view.
+Compute = Callable[..., MapData]
+#: ``classify(point, params) -> PointResult``: the answer at a point for a block.
+Classify = Callable[[DesignPoint, Parameters], PointResult]
 Write = Callable[["Figure", Path, str, float], object]
 
 
@@ -107,6 +114,12 @@ class Explorer:
         and uplift ratio are the starting values of their sliders (ticked on
         when either is not 0); its other loads (uplift, arm, gyration, crest)
         stay fixed.
+    compute : callable
+        ``compute(params, view="designer", samples=resolution, include=[(k, mu)])``: the
+        map of a block, as ``plot`` computes it (:func:`regimemap.maps.mapdata.map_for_view`).
+    classify : callable
+        ``classify(point, params)``: the answer at a clicked point, as ``regimemap
+        classify`` computes it (:func:`regimemap.maps.query.classify_point`).
     resolution : int
         Samples of k of the polygons and curves (``plot --resolution``).
     fig : Figure, optional
@@ -151,15 +164,16 @@ class Explorer:
     In Jupyter, after ``%matplotlib widget``::
 
         from regimemap import Parameters
-        from regimemap.drawing.explore.explorer import Explorer
+        from regimemap.cli.explore import open_explorer
 
-        ex = Explorer(Parameters(gamma=3, kprime=0.4))
+        ex = open_explorer(Parameters(gamma=3, kprime=0.4))
         ex.set_gamma(2.5)          # what the slider does
         ex.click(0.45, 0.6)        # what a click does
         ex.save("map.png")         # what the Save button does
     """
 
-    def __init__(self, params: Parameters | None = None, *, resolution: int = DEFAULT_SAMPLES,
+    def __init__(self, params: Parameters | None = None, *, compute: Compute, classify: Classify,
+                 resolution: int = DEFAULT_SAMPLES,
                  fig: Figure | None = None, describe: Describe | None = None,
                  write: Write | None = None, file_stem: Callable[[Parameters], str] | None = None,
                  echo: Callable[[str], None] | None = print, window: bool = True,
@@ -168,6 +182,8 @@ class Explorer:
 
         p = Parameters(3.0, 0.4) if params is None else params
         self.resolution = check_resolution("resolution", resolution)
+        self.compute = compute
+        self.classify = classify
         self.describe: Describe = describe if describe is not None else format_result
         self.write: Write = write if write is not None else save_figure
         self.file_stem = file_stem if file_stem is not None else default_file_stem
@@ -314,8 +330,8 @@ class Explorer:
         target = Path(path) if path is not None else Path(f"{self.file_stem(self.params)}.png")
         fmt = format_from_path(target)
         points = [self._point] if self._point is not None else []
-        fig, _, _ = map_figure(self.params, dpi=DEFAULT_DPI, points=points,
-                               samples=self.resolution, view="designer")
+        fig, _, _ = map_figure(self.params, data=self._map_data(self.params, self._point),
+                               dpi=DEFAULT_DPI, points=points)
         self.write(fig, target, fmt, DEFAULT_DPI)
         if self.echo is not None:
             self.echo(str(target))
@@ -468,8 +484,7 @@ class Explorer:
         clear_map(self.ax)
         with style_context():
             # what map_figure computes for plot: the view, the polygons, the curves
-            data = map_data(params, view="designer", samples=self.resolution,
-                            include=[(pt.k, pt.mu)] if pt is not None else [])
+            data = self._map_data(params, pt)
             # while dragging, the mode symbols wait for the release (placing them is a
             # quarter of draw_map's time, and the tidy pass would move them anyway)
             style = MapStyle() if final else MapStyle(labels=False, title=drag_title(params))
@@ -484,14 +499,18 @@ class Explorer:
         self.artists = art
         if pt is not None:
             if final:
-                self.result = query_points([pt], gamma=params.gamma, kprime=params.kprime,
-                                           **params.loads)[0]
+                self.result = self.classify(pt, params)
                 self._set_info(self.describe(self.result))
             else:
                 self._set_info(f"k = {pt.k:g}, mu = {pt.mu:g}: updated when the slider "
                                "is released")
         self.last_update = time.perf_counter() - t0
         return art
+
+    def _map_data(self, params: Parameters, pt: DesignPoint | None) -> MapData:
+        """What ``plot`` computes for its map: the designer's view, kept around the clicked point."""
+        return self.compute(params, view="designer", samples=self.resolution,
+                            include=[(pt.k, pt.mu)] if pt is not None else [])
 
     def _set_info(self, text: str) -> None:
         self.info_text = text

@@ -1,7 +1,7 @@
 """Draw the parts of a map where several modes are admissible (matplotlib).
 
-:func:`draw_ambiguity` outlines each part found by
-:func:`regimemap.ambiguity.ambiguous_regions` with a bold dashed line and a
+:func:`draw_ambiguity` outlines each part it is handed
+(:func:`regimemap.maps.ambiguity.ambiguous_in_view`) with a bold dashed line and a
 light stipple - no fill, so the map's own colours stay visible underneath -
 and writes the admissible set with the mode Section 4.7 keeps, e.g.
 "{SL, RO, SRO-} -> SL (§4.7)", or with loads the mode of least constraint,
@@ -17,7 +17,7 @@ matplotlib is imported by this module; import it only when drawing.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -27,9 +27,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon
 
-from ...maps.ambiguity import AmbiguousRegion, ambiguous_regions
-from ...maps.geometry import DEFAULT_SAMPLES
-from ...mechanics.block import Parameters
+from ...maps.ambiguity import AmbiguousRegion
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.backend_bases import RendererBase
@@ -103,16 +101,16 @@ def _add_to_legend(ax: Axes, handle: Artist) -> Artist | None:
     return ax.legend(handles + [handle], labels + [LEGEND_LABEL], **kwargs)
 
 
-def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
-                   annotate: bool = True, legend: bool = True,
-                   samples: int = DEFAULT_SAMPLES) -> list[Artist]:
+def draw_ambiguity(ax: Axes, regions: Sequence[AmbiguousRegion], k_max: float, mu_max: float, *,
+                   annotate: bool = True, legend: bool = True) -> list[Artist]:
     """Outline and annotate the parts of the view where several modes are admissible.
 
     Parameters
     ----------
     ax : matplotlib.axes.Axes
-        Axes showing the map of ``params`` over [0, k_max] x [0, mu_max].
-    params : Parameters
+        Axes showing the map over [0, k_max] x [0, mu_max].
+    regions : sequence of AmbiguousRegion
+        The parts in that view (:func:`regimemap.maps.ambiguity.ambiguous_in_view`).
     k_max, mu_max : float
         The view.
     annotate : bool
@@ -121,8 +119,6 @@ def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
         Add the entry "several modes admissible" to the axes' legend (if the
         axes have a legend; otherwise the outline carries the label, for a
         later ``ax.legend()``).
-    samples : int
-        Columns of k for the polygons (:func:`~regimemap.ambiguity.ambiguous_regions`).
 
     Returns
     -------
@@ -138,10 +134,6 @@ def draw_ambiguity(ax: Axes, params: Parameters, k_max: float, mu_max: float, *,
     old legend; set its ``legend`` to ``ax.get_legend()``.
     """
     st = AMBIGUITY_STYLE
-    # a slightly larger view, clipped by the axes, so the edges of the view are
-    # not drawn as edges of a part
-    regions = ambiguous_regions(params, k_max * 1.02, mu_max * 1.02, samples=samples)
-    regions = [r for r in regions if r.anchor(k_max, mu_max) is not None]
     artists: list[Artist] = []
     if not regions:
         return artists

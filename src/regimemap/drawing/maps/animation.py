@@ -4,8 +4,8 @@
 of :func:`regimemap.drawing.maps.mapplot.draw_map`, its caption, the frame's value in
 a box, the key) on one figure and writes the GIF with matplotlib's
 ``PillowWriter`` (no pyplot); :func:`write_animation` writes it to a file
-atomically.  The frames' values and their shared view come from
-:mod:`regimemap.maps.sweeps`.  Limit: :data:`MAX_FRAMES` frames.
+atomically.  The frames (their values, blocks, shared view and maps) are computed by
+:func:`regimemap.maps.sweeps.sweep_frames` and handed over.  Limit: :data:`MAX_FRAMES` frames.
 
 matplotlib is imported inside the functions that draw, never at import time.
 """
@@ -18,12 +18,12 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ...maps.describe import loads_text
-from ...maps.sweeps import sweep_extent, sweep_params
+from ...maps.sweeps import sweep_params
 from ...mechanics.block import Parameters
 from ...mechanics.modes import MAP_MODES, Mode
 from ...mechanics.validation import check_gamma
 from ..limits import ANIMATION_DPI, ANIMATION_DPI_RANGE, FPS_RANGE, MAX_FRAMES
-from .atlas import SAMPLES, checked_values, key_modes, sweep_text
+from .atlas import key_modes, sweep_text
 from .mapplot import MapStyle, draw_map
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -33,6 +33,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from PIL.Image import Image
 
     from ...maps.mapdata import MapData
+    from ...maps.sweeps import SweepFrames
     from .artists import MapArtists
 
 __all__ = [
@@ -133,20 +134,18 @@ def frame_figure(figsize: tuple[float, float] | None = None, dpi: float = ANIMAT
     return fig, ax
 
 
-def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float, mu_max: float,
-               *, modes: Sequence[Mode] = MAP_MODES, samples: int = SAMPLES,
-               block: Parameters | None = None, swept: str | None = None,
-               data: MapData | None = None) -> MapArtists:
+def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, data: MapData,
+               *, modes: Sequence[Mode] = MAP_MODES, block: Parameters | None = None,
+               swept: str | None = None) -> MapArtists:
     """Draw one frame of an animation on ``ax`` (cleared first); return its MapArtists.
 
     The caption states the report's case (or the block's loads) above the map,
     the frame's gamma and k' (or ``swept``, the swept load, in mathtext) sit in
     a box beside it (outside the map), and the key below lists the modes, sized
     to the frame; then :func:`regimemap.drawing.text.tidy.tidy_figure` keeps every
-    text clear of the others.  ``block`` is the frame's block with loads
-    (default ``Parameters(gamma, kprime)``) and ``data`` its precomputed map.
+    text clear of the others.  ``data`` is the frame's map (its view is the frame's),
+    ``block`` the frame's block with loads (default ``Parameters(gamma, kprime)``).
     """
-    from ...maps.mapdata import compute_map
     from ..style import style_context
     from ..text.tidy import fit_title, tidy_figure
     from .key import key_legend
@@ -161,8 +160,6 @@ def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float,
             leg.remove()
         for t in list(fig.texts):
             t.remove()
-        if data is None:
-            data = compute_map(p, k_max=k_max, mu_max=mu_max, samples=samples)
         art = draw_map(ax, data, MapStyle(legend=False, title=caption))
         if art.title is not None:
             art.title.set_fontsize(8.5)
@@ -184,40 +181,27 @@ def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, k_max: float,
     return art
 
 
-def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float], *,
-                    k_max: float | None = None, mu_max: float | None = None, fps: float = 8.0,
-                    dpi: float = ANIMATION_DPI, figsize: tuple[float, float] | None = None,
-                    samples: int = SAMPLES,
-                    progress: Callable[[int, int], None] | None = None,
-                    sweep: str = "kprime", fixed: dict[str, Any] | None = None
-                    ) -> tuple[int, tuple[int, int]]:
-    """Write a GIF of the map of ``gamma`` as k' runs through ``kprimes``.
+def render_animation(path: str | os.PathLike[str], frames: SweepFrames, *, fps: float = 8.0,
+                     dpi: float = ANIMATION_DPI, figsize: tuple[float, float] | None = None,
+                     progress: Callable[[int, int], None] | None = None
+                     ) -> tuple[int, tuple[int, int]]:
+    """Write a GIF of the frames' maps, one frame each.
 
     Parameters
     ----------
     path : path-like
-        Output ``.gif`` (written atomically).
-    gamma : float
-        Aspect ratio H/B.
-    kprimes : sequence of float
-        k' of each frame (1 to :data:`MAX_FRAMES` values in [-1, 1], or up to
-        ``fixed["crest"]``), or the value of ``sweep`` in each frame.
-    k_max, mu_max : float, optional
-        The view of every frame (default :func:`regimemap.maps.sweeps.sweep_extent`; the axes are
-        the same in every frame).
+        Output ``.gif``.
+    frames : SweepFrames
+        The frames' values, blocks, view and maps (:func:`regimemap.maps.sweeps.sweep_frames`;
+        1 to :data:`MAX_FRAMES` of them).
     fps : float
         Frames per second (0.5 to 50).
     dpi : float
         Pixels per inch of the frames.
     figsize : (float, float), optional
         Inches (default :data:`FRAME_SIZE`).
-    samples : int
-        Samples of k per frame.
     progress : callable, optional
         Called as ``progress(i, n)`` after frame i of n.
-    sweep, fixed : str, dict
-        What the frames vary (k' or a load) and what they share, as in
-        :func:`regimemap.drawing.maps.atlas.atlas_figure`.
 
     Returns
     -------
@@ -230,38 +214,31 @@ def render_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequen
     the case, a box outside the map gives gamma and k', and the key lists all
     six modes in every frame, so it does not jump.
     """
-    from ...maps.mapdata import compute_map
     from ..style import style_context
 
-    _check_frames(gamma, kprimes, fps, sweep, fixed)
-    (g,), kps = checked_values([gamma], kprimes, sweep, fixed)  # k' up to the crest, if given
-    blocks = [sweep_params(g, sweep, v, fixed) for v in kps]
-    if k_max is None or mu_max is None:
-        ek, em = sweep_extent(g, kps, sweep=sweep, fixed=fixed)
-        k_max = ek if k_max is None else k_max
-        mu_max = em if mu_max is None else mu_max
+    _check_frames(frames.gamma, frames.values, fps, frames.sweep, frames.fixed)
     fig, ax = frame_figure(figsize, dpi)
     writer = _pillow_writer(fps)
     modes: Sequence[Mode] = MAP_MODES
-    datas: list[Any] = [None] * len(blocks)
-    if any(p.loaded for p in blocks):  # one key for every frame: the modes any frame shows
-        datas = [compute_map(p, k_max=k_max, mu_max=mu_max, samples=samples) for p in blocks]
+    datas = frames.maps
+    if frames.loaded:  # one key for every frame: the modes any frame shows
+        datas = list(datas)
         modes = key_modes(datas)
+    n = len(frames.values)
     with style_context():
         writer.setup(fig, str(path), dpi=dpi)
-        for i, kp in enumerate(kps):
-            draw_frame(fig, ax, g, blocks[i].kprime, k_max, mu_max, modes=modes, samples=samples,
-                       block=blocks[i], swept=sweep_text(sweep, kp) if sweep != "kprime" else None,
-                       data=datas[i])
+        for i, (value, block, data) in enumerate(zip(frames.values, frames.blocks, datas)):
+            draw_frame(fig, ax, frames.gamma, block.kprime, data, modes=modes, block=block,
+                       swept=sweep_text(frames.sweep, value) if frames.sweep != "kprime" else None)
             writer.grab_frame()
             if progress is not None:
-                progress(i + 1, len(kps))
+                progress(i + 1, n)
         frame_size = tuple(int(v) for v in writer.frame_size)
         writer.finish()
-    return len(kps), (frame_size[0], frame_size[1])
+    return n, (frame_size[0], frame_size[1])
 
 
-def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequence[float],
+def write_animation(path: str | os.PathLike[str], frames: SweepFrames,
                     **kwargs: Any) -> tuple[int, tuple[int, int]]:
     """Write the GIF of :func:`render_animation` atomically (checked before any file is touched).
 
@@ -269,9 +246,8 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     ----------
     path : path-like
         The ``.gif`` file.
-    gamma : float
-    kprimes : sequence of float
-        The value of each frame (k', or the load ``sweep``).
+    frames : SweepFrames
+        The frames (:func:`regimemap.maps.sweeps.sweep_frames`).
     **kwargs
         The keywords of :func:`render_animation`.
 
@@ -283,13 +259,13 @@ def write_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
     Raises
     ------
     ValueError
-        For a value out of range or a file that is not ``.gif`` (nothing written).
+        For too many frames, an fps out of range or a file that is not ``.gif`` (nothing written).
     OSError
         If the file cannot be written (nothing is left behind).
     """
     from ...io.atomic import atomic_path
 
-    check_animation(path, gamma, kprimes, kwargs.get("fps", 8.0),
-                    sweep=kwargs.get("sweep", "kprime"), fixed=kwargs.get("fixed"))
+    check_animation(path, frames.gamma, frames.values, kwargs.get("fps", 8.0),
+                    sweep=frames.sweep, fixed=frames.fixed)
     with atomic_path(path) as tmp:
-        return render_animation(tmp, gamma, kprimes, **kwargs)
+        return render_animation(tmp, frames, **kwargs)

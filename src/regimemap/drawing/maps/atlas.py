@@ -20,9 +20,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ...maps.describe import format_value
-from ...maps.sweeps import SWEEPS, resolve_share, sweep_params
+from ...maps.sweeps import SAMPLES, SWEEPS, checked_values, resolve_share, sweep_params
 from ...mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
-from ...mechanics.validation import check_gamma, check_kprime
 from ..limits import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -48,9 +47,6 @@ __all__ = [
 
 #: Size of one atlas panel in inches (width, height).
 PANEL_SIZE: tuple[float, float] = (2.7, 2.35)
-#: Samples of k per panel / frame (fewer than a single map: the panels are small).
-SAMPLES = 401
-
 
 def _fmt(x: float) -> str:
     return f"{x:g}"
@@ -107,20 +103,6 @@ def key_modes(datas: Sequence[MapData]) -> tuple[Mode, ...]:
     """
     shown = {m for d in datas for m, polys in d.polygons.items() if any(len(q) >= 3 for q in polys)}
     return tuple(m for m in LOADED_MAP_MODES if m in shown)
-
-
-def checked_values(gammas: Sequence[float], values: Sequence[float], sweep: str = "kprime",
-                   fixed: dict[str, Any] | None = None) -> tuple[list[float], list[float]]:
-    """The rows' gamma and the columns' (or frames') values, checked; ValueError naming the range.
-
-    A k' may reach the crest when one is given (``fixed["crest"]``; 1 by default):
-    :func:`regimemap.mechanics.validation.check_kprime` with the crest, the rule of every
-    map.  A swept load is checked with its block (:func:`regimemap.maps.sweeps.sweep_params`).
-    """
-    gs = [check_gamma(g) for g in gammas]
-    if sweep == "kprime":
-        return gs, [check_kprime(k, (fixed or {}).get("crest", 1.0)) for k in values]
-    return gs, [float(v) for v in values]
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,6 @@
-"""A map on a figure of its own: its data, size, layout around the key, and the report's figures.
+"""A map on a figure of its own: its size, layout around the key, and the report's figures.
 
-:func:`map_data` computes what the map of a block shows in the designer's or
-the report's view; :func:`map_figure` makes a Figure (Agg canvas, no pyplot)
+:func:`map_figure` makes a Figure (Agg canvas, no pyplot)
 with one map drawn by :func:`regimemap.drawing.maps.mapplot.draw_map` and sized to
 its key; :func:`render_preset` draws one of the report's figures.
 """
@@ -15,9 +14,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ...maps.geometry import DEFAULT_SAMPLES
-from ...maps.mapdata import MapData, compute_map
+from ...maps.mapdata import MapData, map_for_view
 from ...mechanics.block import Parameters
-from ...mechanics.modes import MAP_MODES, Mode
+from ...mechanics.modes import Mode
 from ..save import DEFAULT_DPI
 from ..style import style_context
 from ..text.tidy import tidy_figure
@@ -31,7 +30,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ...maps.points import DesignPoint
     from .presets import FigurePreset
 
-__all__ = ["FIGSIZE", "fit_figure", "map_data", "map_figure", "new_figure", "preset_figure",
+__all__ = ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "preset_figure",
            "render_map", "render_preset"]
 
 #: Size of a map figure in inches (width, height): fits a page width at 100 %.
@@ -128,52 +127,7 @@ def fit_figure(fig: Figure, ax: Axes) -> None:
     ax.set_position(rect)
 
 
-def map_data(params: Parameters, *, view: str = "designer", k_max: float | None = None,
-             mu_max: float | None = None, modes: Iterable[Mode] | None = None, raw: bool = False,
-             samples: int = DEFAULT_SAMPLES, curves: bool = True,
-             include: Iterable[tuple[float, float]] = ()) -> MapData:
-    """What the map of ``params`` shows, in the designer's or the report's view (no matplotlib).
-
-    Parameters
-    ----------
-    params : Parameters
-    view : {"designer", "report"}
-        The default view (:func:`regimemap.maps.designer_view.view_extent`):
-        mu up to 1.2 and every boundary that crosses that band, or every
-        characteristic point of the map.  ``k_max``/``mu_max`` win over both.
-    k_max, mu_max : float, optional
-        The view ``[0, k_max] x [0, mu_max]``.
-    modes : iterable of Mode, optional
-        Modes to shade (default: every mode the block shows).
-    raw : bool
-        The report's raw region of each mode (single-mode figures) instead of the final map.
-    samples : int
-        Samples of k for polygons and curves.
-    curves : bool
-        Compute the boundary curves and the named points.
-    include : iterable of (k, mu)
-        Points to keep in the view.
-
-    Returns
-    -------
-    MapData
-        :func:`regimemap.maps.mapdata.compute_map` of that view.
-    """
-    include = list(include)
-    if k_max is None or mu_max is None:
-        from ...maps.designer_view import view_extent
-
-        modes_t = tuple(MAP_MODES if modes is None else (Mode(m) for m in modes))
-        if modes is not None:  # None: every mode the block shows (LO with loads)
-            modes = modes_t
-        raw_mode = modes_t[0] if raw and len(modes_t) == 1 else None
-        k_max, mu_max = view_extent(params, view, raw_mode, include=include, k_max=k_max,
-                                    mu_max=mu_max)
-    return compute_map(params, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
-                       samples=samples, curves=curves, include=include)
-
-
-# The front door of a map figure: what the map shows (map_data's keywords), the figure (size,
+# The front door of a map figure: what the map shows (map_for_view's keywords), the figure (size,
 # dpi, reuse) and the style, one keyword each, as render_map and the CLI pass them (PLR0913
 # accepted here).
 def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapData | None = None,  # noqa: PLR0913
@@ -194,7 +148,7 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
     data : MapData, optional
         The map, computed beforehand (``view`` ... ``include`` are then ignored).
     view, k_max, mu_max, modes, raw, samples, include
-        What the map shows: see :func:`map_data`.
+        What the map shows: see :func:`regimemap.maps.mapdata.map_for_view`.
     figsize : (float, float), optional
         Size in inches; by default the axes are 5.5 x 3.6 inches and the
         figure's height is fitted to the key.
@@ -221,7 +175,7 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
     fig, ax = new_figure(figsize, dpi, fig)
     if data is None:
         include = list(include) + [(pt.k, pt.mu) for pt in points]
-        data = map_data(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+        data = map_for_view(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
                         samples=samples, curves=style.curves, include=include)
     with style_context():
         artists = draw_map(ax, data, style)

@@ -155,7 +155,7 @@ def draw_map(ax: Axes, data: MapData, style: MapStyle | None = None) -> MapArtis
         The axes of a :class:`~matplotlib.figure.Figure`; their limits become the view.
     data : MapData
         What the map shows (:func:`regimemap.maps.mapdata.compute_map`, or
-        :func:`regimemap.drawing.maps.figure.map_data` for the designer's or the
+        :func:`regimemap.maps.mapdata.map_for_view` for the designer's or the
         report's view of a block).
     style : MapStyle, optional
         Which layers, the title and the key (default :class:`MapStyle()`).
@@ -182,7 +182,7 @@ def draw_map(ax: Axes, data: MapData, style: MapStyle | None = None) -> MapArtis
             out.curves[name] = _curve(ax, name, cd)
         out.point_markers, out.point_labels = name_points(ax, data, frame, obstacles)
         if style.tidy:
-            out.off_view = mark_off_view(ax, data.params, frame, obstacles)
+            out.off_view = mark_off_view(ax, data.off_view, frame, obstacles)
         lines = [view_points(c.points, k_max, mu_max) for c in data.curves.values()]
         out.curve_labels = curve_labels(ax, data, frame, obstacles, lines)
     if style.labels:

@@ -27,8 +27,8 @@ import textwrap
 from collections.abc import Callable, Mapping, Sequence
 from typing import TYPE_CHECKING
 
-from ...maps.caisson import CaissonReport, MapView, caisson_checks, map_view
-from ...maps.mapdata import MapData, compute_map
+from ...maps.caisson import CaissonReport, MapView
+from ...maps.mapdata import MapData
 from ...mechanics.checks import Check
 from ..save import DEFAULT_DPI, figure_version
 from ..style import style_context
@@ -43,7 +43,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ...lifetime.results import LifetimeResult
     from ..text.labelplacer import Placed
 
-__all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure", "sheet_map_data"]
+__all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure"]
 
 #: Size of the sheet in inches: A4 portrait.
 SHEET_SIZE: tuple[float, float] = (8.27, 11.69)
@@ -126,23 +126,10 @@ def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
 
 # -- the sheet -----------------------------------------------------------------------------
 
-def sheet_map_data(report: CaissonReport, view: MapView | None = None) -> MapData:
-    """What panel (d) draws: the design wave's loaded map in the sheet's view.
-
-    :func:`regimemap.maps.mapdata.compute_map` of the report's loaded map
-    (:meth:`regimemap.maps.loadedmap.LoadedMap.parameters`) over ``[0, k_max] x
-    [0, mu_max]`` of ``view`` (default :func:`regimemap.maps.caisson.map_view`): the
-    exact region polygons, boundary curves and named points, as ``regimemap plot``
-    draws them.
-    """
-    view = map_view(report) if view is None else view
-    return compute_map(report.map.parameters(), k_max=view.k_max, mu_max=view.mu_max)
-
-
-def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float = DEFAULT_DPI,
-                 view: MapView | None = None, lifetime: LifetimeResult | None = None,
-                 required: tuple[float, float] = (1.2, 1.2), data: MapData | None = None,
-                 checks: Sequence[Check] | None = None, lifetime_impulsive: bool | None = None,
+def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks: Sequence[Check],
+                 title: str | None = None, dpi: float = DEFAULT_DPI,
+                 lifetime: LifetimeResult | None = None, required: tuple[float, float] = (1.2, 1.2),
+                 lifetime_impulsive: bool | None = None,
                  written: Mapping[str, str] | None = None) -> Figure:
     """The one-page design sheet of a caisson (A4 portrait, no pyplot).
 
@@ -150,12 +137,21 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
     ----------
     report : CaissonReport
         From :func:`regimemap.maps.caisson.caisson_report`.
+    view : MapView
+        The map's view, and
+    data : MapData
+        the design wave's loaded map in it, drawn in (d): both from
+        :func:`regimemap.maps.caisson.sheet_map` (its exact region polygons and boundary curves).
+    checks : sequence of Check
+        The requirements of the design check, whose verdict the title block's badge
+        shows (PASS, or FAIL and how many); a failing safety factor of (f) and a failing
+        expected sliding distance of (g) are written in the fail colour:
+        :func:`regimemap.maps.caisson.caisson_checks` of ``required``, and the checks of
+        ``lifetime`` (:func:`regimemap.lifetime.judge_lifetime`) when it is drawn.
     title : str, optional
         Shown after "caisson design sheet" (e.g. the design file's name).
     dpi : float
         Resolution of PNG output.
-    view : MapView, optional
-        The map's view (default :func:`regimemap.maps.caisson.map_view`).
     lifetime : LifetimeResult, optional
         The caisson's sliding over its design life
         (:func:`regimemap.lifetime.lifetime_sliding`): adds panel (g), its exceedance
@@ -164,15 +160,6 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
     required : tuple of float, optional
         The safety factors the design must reach (sliding, overturning; 1.2 and 1.2 by
         default, the design file's ``[caisson] required_*``), drawn in (e) beside SF = 1.
-    data : MapData, optional
-        The design wave's loaded map in ``view``, drawn in (d) (default
-        :func:`sheet_map_data`: its exact region polygons and boundary curves).
-    checks : sequence of Check, optional
-        The requirements of the design check, whose verdict the title block's badge
-        shows (PASS, or FAIL and how many); a failing safety factor of (f) and a failing
-        expected sliding distance of (g) are written in the fail colour.  Default:
-        :func:`regimemap.maps.caisson.caisson_checks` of ``required``, and
-        the checks of ``lifetime`` (:func:`regimemap.lifetime.judge_lifetime`) when given.
     lifetime_impulsive : bool, optional
         Whether the lifetime simulation included Takahashi's impulsive coefficient (the
         design file's ``[lifetime] impulsive``), named in (g)'s title.
@@ -189,10 +176,7 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    view = map_view(report) if view is None else view
     W, H = SHEET_SIZE
-    if checks is None:
-        checks = [*caisson_checks(report, required), *(() if lifetime is None else lifetime.checks)]
     by_name = {c.name: c for c in checks}
 
     def rect(x: float, y: float, w: float, h: float) -> tuple[float, float, float, float]:
@@ -238,7 +222,6 @@ def sheet_figure(report: CaissonReport, *, title: str | None = None, dpi: float 
         draw_uplift(ax_u, report)
 
         ax_map = fig.add_axes(rect(0.75, 3.6, 4.1, 2.9), label="map")
-        data = sheet_map_data(report, view) if data is None else data
         modes, map_art = draw_map_panel(ax_map, report, view, data)
         map_legend(ax_map, modes, map_art.data)  # what was drawn (no line hidden under another)
         lifetime_labels = None

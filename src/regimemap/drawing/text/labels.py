@@ -19,7 +19,6 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ...maps.mapdata import CurveData, MapData
-from ...mechanics.block import Parameters
 from ...mechanics.modes import Mode
 from ..style import mode_symbol, text_size
 from .placement import (
@@ -37,6 +36,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.lines import Line2D
     from matplotlib.text import Text
+
+    from ...mechanics.curves import NamedPoint
 
 __all__ = [
     "ABOVE",
@@ -234,9 +235,11 @@ def _off_view_text(name: str, k: float, mu: float) -> str:
     return f"{point_text(name)} ({k:.3g}, {mu:.3g})"
 
 
-def mark_off_view(ax: Axes, params: Parameters, frame: Frame, obstacles: list[Box]
+def mark_off_view(ax: Axes, points: Sequence[NamedPoint], frame: Frame, obstacles: list[Box]
                   ) -> dict[str, Text]:
     """Mark the characteristic points outside the view at the frame's edge.
+
+    ``points`` are those of :attr:`regimemap.maps.mapdata.MapData.off_view`.
 
     Each gets a short arrow whose head is on the frame, pointing the way to
     the point, and its name and coordinates at the arrow's tail, inside the
@@ -247,11 +250,9 @@ def mark_off_view(ax: Axes, params: Parameters, frame: Frame, obstacles: list[Bo
     dict[str, Text]
         The annotation of each point off view (shared by the points of one arrow).
     """
-    from ...maps.designer_view import points_off_view
-
     k_max, mu_max = frame.k_max, frame.mu_max
     groups: dict[tuple[float, float], list[Any]] = {}
-    for pt in points_off_view(params, k_max, mu_max):
+    for pt in points:
         x, y = min(pt.k, k_max), min(pt.mu, mu_max)
         groups.setdefault((round(x / k_max, 2), round(y / mu_max, 2)), []).append(pt)
     out: dict[str, Text] = {}
