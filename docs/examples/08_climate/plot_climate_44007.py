@@ -37,7 +37,8 @@ path = find_record()
 record = read_record(path)
 # the one-year excerpt holds too few storms over the 99.5 % quantile for a fit: 98 % there
 excerpt = path.name.endswith(".gz")
-result = analyse(record, ClimateOptions(seed=2026, threshold=("quantile", 0.98)) if excerpt else ClimateOptions(seed=2026))
+options = ClimateOptions(seed=2026, threshold=("quantile", 0.98)) if excerpt else ClimateOptions(seed=2026)
+result = analyse(record, options)
 print(f"{path.name}: {record.years:.2f} years observed, {len(result.return_values)} return values")
 for rv in result.return_values:
     print(f"{rv['period']:g}-year Hs: {rv['value']:.2f} m "
