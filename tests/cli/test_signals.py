@@ -1,4 +1,4 @@
-"""SIGINT and SIGTERM while a command runs in this process (regimemap.cli._common.stop_signals).
+"""SIGINT and SIGTERM while a command runs in this process (regimemap.cli._signals.stop_signals).
 
 The real process (a Monte Carlo run killed from outside) is tested in
 tests/lifetime/test_interrupts.py; here the signal is sent to this process
@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 import regimemap.io.design
-from regimemap.cli._common import Terminated, stop_signals
+from regimemap.cli._signals import Terminated, stop_signals
 from regimemap.io.design import example_design_text
 
 from ..conftest import invoke_cli

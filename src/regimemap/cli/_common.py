@@ -8,7 +8,6 @@ import gc
 import os
 import signal
 import sys
-import threading
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar, overload
@@ -26,6 +25,7 @@ from ..mechanics.validation import (
     check_positive,
     check_resolution,
 )
+from ._signals import Terminated, stop_signals
 
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
@@ -418,55 +418,6 @@ def _guess_path(group: click.Command, argv: list[str] | None) -> str:
     return "regimemap"
 
 
-class Terminated(BaseException):
-    """SIGTERM, raised in the main thread while a command runs (:func:`stop_signals`).
-
-    A BaseException, as KeyboardInterrupt is: ``except Exception`` does not
-    swallow it, and cleanups (the temporary file of an atomic write, a
-    process pool) run as they do for Ctrl-C.
-    """
-
-
-_STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
-
-
-@contextlib.contextmanager
-def stop_signals(*, exiting: bool = False) -> Iterator[None]:
-    """While the block runs, SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`.
-
-    Only the first of them raises: a second Ctrl-C (or the same signal sent to
-    a whole process group twice) cannot interrupt the cleanup of the first
-    half-way with a traceback.  Afterwards the handlers are restored, unless
-    ``exiting`` (the ``regimemap`` process itself, which ends now) and a
-    signal came: both are then ignored until the process has exited.  A
-    signal the process was started with ignored (``nohup``, a background job
-    of a script) stays ignored.  Outside the main thread nothing is changed.
-    """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    saved = {sig: signal.getsignal(sig) for sig in _STOP_SIGNALS}
-    caught: list[int] = []
-
-    def stop(signum: int, frame: object) -> None:
-        if caught:  # the first one is being handled
-            return
-        caught.append(signum)
-        if signum == signal.SIGTERM:
-            raise Terminated(signum)
-        raise KeyboardInterrupt
-
-    for sig in _STOP_SIGNALS:
-        if saved[sig] is not signal.SIG_IGN:
-            signal.signal(sig, stop)
-    try:
-        yield
-    finally:
-        for sig, handler in saved.items():
-            # SIG_IGN, not a Python handler: the interpreter keeps it while it shuts down
-            signal.signal(sig, signal.SIG_IGN if exiting and caught else handler)
-
-
 def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bool = False) -> int:
     """Run ``group`` and return an exit code; no traceback ever reaches the user.
 
@@ -481,7 +432,7 @@ def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bo
     * an interrupt (Ctrl-C, SIGINT) exits 130 with ``regimemap: interrupted``,
       SIGTERM 143 with ``regimemap: terminated`` (128 + the signal's number, as
       a shell reports a process the signal ended); worker processes are
-      stopped and no file is left half-written (:func:`stop_signals`; with
+      stopped and no file is left half-written (:func:`._signals.stop_signals`; with
       ``exiting``, the process is about to end, and a second signal is ignored).
     """
     try:
