@@ -310,7 +310,7 @@ class DesignKeys(SphinxDirective):
                 (key, "required" if getattr(k, "required", True) else "optional", k.accepted,
                  _default_text(defaults.get(key)))
                 for key, k in keys.items()])
-        from regimemap.io.design_lifetime import LIFETIME_TABLES as lifetime_tables
+        from regimemap.io.design_lifetime_keys import LIFETIME_TABLES as lifetime_tables
 
         if lifetime_tables:
             spec_defaults = _defaults(design.LifetimeSpec)

@@ -50,16 +50,9 @@ else:  # pragma: no cover - Python 3.10
 from .design_errors import DesignFileError
 from .design_example import example_design_text
 from .design_keys import DESIGN_KEYS, DesignReader
-from .design_lifetime import (
-    ERROR_FACTORS,
-    LIFETIME_KEYS,
-    MAX_TRIALS,
-    MAX_YEARS,
-    LifetimeSpec,
-    check_lifetime_option,
-    read_lifetime,
-)
+from .design_lifetime import LifetimeSpec, read_lifetime
 from .design_lifetime import lifetime_model as _lifetime_model
+from .design_lifetime_keys import ERROR_FACTORS, LIFETIME_KEYS, MAX_TRIALS, MAX_YEARS, check_lifetime_option
 from .inputs import read_design_text
 from .toml_lines import key_line, key_text
 
