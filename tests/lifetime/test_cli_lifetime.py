@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from regimemap.io.design import example_design_text
-from regimemap.io.lifetime import check_chunk, check_scheduler, check_target, parse_widths
+from regimemap.io.lifetime_options import check_chunk, check_scheduler, check_target, parse_widths
 from regimemap.lifetime import DEFAULT_ERRORS
 
 EXAMPLE = example_design_text()

@@ -61,31 +61,31 @@ def _file_key(key: str) -> Callable[[str], Any]:
 
 
 def _widths(text: str) -> list[float]:
-    from ..io.lifetime import parse_widths
+    from ..io.lifetime_options import parse_widths
 
     return parse_widths(text)
 
 
 def _target(text: str) -> float:
-    from ..io.lifetime import check_target
+    from ..io.lifetime_options import check_target
 
     return check_target(text)
 
 
 def _tolerance(text: str) -> float:
-    from ..io.lifetime import check_tolerance
+    from ..io.lifetime_options import check_tolerance
 
     return check_tolerance(text)
 
 
 def _chunk(text: str) -> int:
-    from ..io.lifetime import check_chunk
+    from ..io.lifetime_options import check_chunk
 
     return check_chunk(text)
 
 
 def _scheduler(text: str) -> str:
-    from ..io.lifetime import check_scheduler
+    from ..io.lifetime_options import check_scheduler
 
     return check_scheduler(text)
 
