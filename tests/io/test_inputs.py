@@ -189,6 +189,7 @@ COMMANDS = {
     "simulate-pulse": ([*SIMULATE, "--pulse-file"], "'--pulse-file'", "pulse"),
     "classify": (["classify", "--points"], "'--points'", "points"),
     "climate": (["climate"], "'RECORD'", "record"),
+    "explore-design": (["explore", "--design"], "'--design'", "design"),
     "plot": (["plot", "--gamma", "3", "--kprime", "0.4", "-o", "{tmp}/m.svg", "--points"],
              "'--points'", "points"),
 }
@@ -235,15 +236,17 @@ def _good(kind: str, tmp_path: Path) -> Path:
 #: What each command needs to run quickly once its input is accepted.
 _TAIL = {"caisson": ["--json"], "lifetime": ["--trials", "200", "--json", "--seed", "1", "--jobs", "1"],
          "simulate-design": ["--json"], "simulate-pulse": ["--json"], "classify": ["--gamma", "3", "--kprime", "0.4"],
-         "plot": [], "climate": ["--bootstrap", "0", "--threshold", "98%", "--json"]}
+         "plot": [], "climate": ["--bootstrap", "0", "--threshold", "98%", "--json"],
+         "explore-design": ["-o", "{tmp}/e.svg"]}
 
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))
 def test_commands_accept_a_link_to_a_regular_file(command, tmp_path):
-    if command == "plot":
+    if command in ("plot", "explore-design"):
         pytest.importorskip("matplotlib")
     link = _good(COMMANDS[command][2], tmp_path)
-    r = invoke_cli(_args(command, tmp_path, str(link)) + _TAIL[command])
+    tail = [a.replace("{tmp}", str(tmp_path)) for a in _TAIL[command]]
+    r = invoke_cli(_args(command, tmp_path, str(link)) + tail)
     assert r.code == 0, r.output
     assert "error" not in r.stderr
 
@@ -264,7 +267,7 @@ def test_lifetime_on_dev_zero_end_to_end(tmp_path):
 @pytest.mark.parametrize("command", sorted(COMMANDS))
 def test_commands_refuse_a_missing_file_with_exit_2(command, tmp_path):
     path = str(tmp_path / "absent.dat")
-    r = invoke_cli(_args(command, tmp_path, path) + _TAIL[command])
+    r = invoke_cli(_args(command, tmp_path, path) + [a.replace("{tmp}", str(tmp_path)) for a in _TAIL[command]])
     assert r.code == 2, r.output
     assert "Traceback" not in r.output and r.stdout == ""
     lines = r.stderr.splitlines()

@@ -12,13 +12,16 @@ command's own usage checks (options that exclude each other ...) have passed.
 from __future__ import annotations
 
 import os
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
 from ._common import ParamType
 
-__all__ = ["InputFile", "DESIGN_FILE", "POINTS_FILE", "PULSE_FILE", "RECORD_FILE"]
+if TYPE_CHECKING:
+    from ..io.design import Design
+
+__all__ = ["InputFile", "DESIGN_FILE", "POINTS_FILE", "PULSE_FILE", "RECORD_FILE", "read_design_file"]
 
 
 def _check(kind: str, path: str) -> None:
@@ -74,3 +77,14 @@ POINTS_FILE = InputFile("points")
 PULSE_FILE = InputFile("pulse")
 #: A wave record (CSV, text, NDBC, NetCDF; gzip): ``climate``.
 RECORD_FILE = InputFile("record")
+
+
+def read_design_file(path: str, param_hint: str) -> Design:
+    """:func:`regimemap.io.design.read_design` of ``path``; a file it refuses is a usage error (exit 2)
+    naming the argument ``param_hint`` (``"'DESIGN.toml'"``, ``"'--design'"``)."""
+    from ..io.design import DesignFileError, read_design
+
+    try:
+        return read_design(path)
+    except DesignFileError as exc:
+        raise click.BadParameter(str(exc), param_hint=param_hint) from None

@@ -9,7 +9,7 @@ import click
 
 from ._check import check_option, exit_on_failure
 from ._common import RunError, import_matplotlib, output_path, report_written
-from ._inputs import DESIGN_FILE
+from ._inputs import DESIGN_FILE, read_design_file
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -68,7 +68,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
       regimemap caisson goda.toml -o sheet.pdf
       regimemap caisson goda.toml --check
     """
-    from ..io.design import DesignFileError, example_design_text, read_design
+    from ..io.design import example_design_text
 
     ctx = click.get_current_context()
     if example:
@@ -86,10 +86,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
             raise click.BadParameter(f"the sheet's file must end in .pdf, .svg or .png, got {output!r}",
                                      param_hint="'--output'")
         output_path(output, "--output")
-    try:
-        d = read_design(design)
-    except DesignFileError as exc:
-        raise click.BadParameter(str(exc), param_hint="'DESIGN.toml'") from None
+    d = read_design_file(design, "'DESIGN.toml'")
 
     from ..maps.caisson import caisson_report
 

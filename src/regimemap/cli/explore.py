@@ -25,6 +25,7 @@ from ._common import (
     report_written,
     resolution_type,
 )
+from ._inputs import DESIGN_FILE, read_design_file
 from .plot import DEFAULT_SAMPLES, plot_stem
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -136,7 +137,7 @@ Examples:
 @click.option("-o", "--output", metavar="FILE",
               help="Save the first view (as regimemap plot draws it; .png, .svg or .pdf) and "
                    "exit without opening a window.")
-@click.option("--design", "design", type=click.Path(dir_okay=False), metavar="FILE.toml",
+@click.option("--design", "design", type=DESIGN_FILE, metavar="FILE.toml",
               help="Start at a caisson's design wave: its loaded block and design point (k, mu) "
                    "from a design file (instead of --gamma, --kprime and the loads).")
 @load_options
@@ -187,7 +188,6 @@ def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, Desig
     """
     from click.core import ParameterSource
 
-    from ..io.design import DesignFileError, read_design
     from ..maps.caisson import caisson_report
     from ..maps.points import DesignPoint
     from ._plausible import check_plausible
@@ -199,10 +199,7 @@ def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, Desig
     if given:
         raise click.UsageError(f"{', '.join(given)} and --design exclude each other: the design file "
                                "gives the block (change the design file, or give the block without --design)")
-    try:
-        d = read_design(design)
-    except DesignFileError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--design'") from None
+    d = read_design_file(design, "'--design'")
     try:
         report = caisson_report(d.analysis_inputs())
     except ValueError as exc:

@@ -23,7 +23,7 @@ from ._dynamics_options import (
     min_rotation_option,
     option_errors,
 )
-from ._inputs import DESIGN_FILE, PULSE_FILE
+from ._inputs import DESIGN_FILE, PULSE_FILE, read_design_file
 from ._plausible import STRICT_HELP, check_plausible
 from ._writing import writing
 
@@ -322,7 +322,6 @@ def _design_run(design: str, strict: bool = False
     from click.core import ParameterSource
 
     from ..dynamics.design_wave import DESIGN_INPUTS, design_wave_inputs, design_wave_numbers, design_wave_run
-    from ..io.design import DesignFileError, read_design
 
     ctx = click.get_current_context()
     given = [name for name in (*DESIGN_INPUTS, "pulse_file")
@@ -331,10 +330,7 @@ def _design_run(design: str, strict: bool = False
         flags = ", ".join("--" + n.replace("_", "-") for n in given)
         raise click.UsageError(f"{flags} and --design exclude each other: the design file gives the block "
                                "and the pulse (change the design file, or give the block without --design)")
-    try:
-        d = read_design(design)
-    except DesignFileError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--design'") from None
+    d = read_design_file(design, "'--design'")
     try:
         a = d.analyse()
     except ValueError as exc:
