@@ -316,7 +316,7 @@ def read_record(path: str | Path, time: str | None = None, hs: str | None = None
     try:
         raw = read_limited(p, max_bytes=MAX_RECORD_FILE_BYTES, what="wave record")
     except InputFileError as exc:
-        raise RecordError(str(exc)) from None
+        raise RecordError(f"{p}: cannot read the wave record: {exc.reason}") from None
     except OSError as exc:
         raise RecordError(f"{p}: cannot read ({exc.strerror or exc})") from None
     if raw[:2] == b"\x1f\x8b":
