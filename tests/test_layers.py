@@ -19,7 +19,7 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
 
 #: Layer of each package: a module may import from layers <= its own.
 LAYER = {"mechanics": 0, "waves": 1, "dynamics": 2, "maps": 2, "lifetime": 2, "climate": 2, "io": 3,
-         "drawing": 4, "cli": 5}
+         "workflows": 3.5, "drawing": 4, "cli": 5}
 #: The top-level modules (the package's front door and its version) sit above the
 #: evaluation layer: regimemap/__init__.py re-exports maps and mechanics.
 TOP = 2.5
