@@ -16,7 +16,7 @@ from typing import Any, ClassVar
 from ..mechanics.htmltable import html_table
 from ..mechanics.notices import Notice
 
-__all__ = ["Field", "Record"]
+__all__ = ["Field", "Notice", "Record"]
 
 
 @dataclass(frozen=True)
