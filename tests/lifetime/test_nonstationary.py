@@ -233,3 +233,18 @@ def test_a_trend_must_cover_the_design_life():
     with pytest.raises(ValueError, match="whole number >= 1"):
         YearTrend.stationary(0)
     assert YearTrend([0.1, 0.2], [1, 1], [1, 2]).sea_level == (0.1, 0.2)  # any sequence, kept as floats
+
+
+@pytest.mark.parametrize("level, tide, words", [
+    (-6.0, 0.0, r"sea_level of service year 1 = -6 m leaves the mound dry at low tide: the sea level must "
+                r"be in \(-5\.6, 3\.4\) m"),
+    (3.5, 0.0, r"= 3\.5 m leaves the crest under water at high tide"),
+    (2.5, 2.0, r"must be in \(-4\.6, 2\.4\) m .*tide range 2 m"),
+])
+def test_a_sea_level_off_the_structure_is_refused_before_any_storm(level, tide, words):
+    model = MODEL.with_(tide_range=tide, trend=_trend(MODEL.years, sea_level=level))
+    with pytest.raises(ValueError, match=words):
+        lifetime_sliding(GODA, model, trials=10, seed=1)
+    with pytest.raises(ValueError, match=words):
+        design_chart(GODA, model, [12.0, 14.0], trials=10, seed=1)
+    _trend(MODEL.years, sea_level=2.3).check_site(GODA, tide)  # inside: no error
