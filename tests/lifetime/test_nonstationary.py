@@ -10,6 +10,7 @@ the chunks.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -235,16 +236,16 @@ def test_a_trend_must_cover_the_design_life():
     assert YearTrend([0.1, 0.2], [1, 1], [1, 2]).sea_level == (0.1, 0.2)  # any sequence, kept as floats
 
 
-@pytest.mark.parametrize("level, tide, words", [
-    (-6.0, 0.0, r"sea_level of service year 1 = -6 m leaves the mound dry at low tide: the sea level must "
-                r"be in \(-5\.6, 3\.4\) m"),
-    (3.5, 0.0, r"= 3\.5 m leaves the crest under water at high tide"),
-    (2.5, 2.0, r"must be in \(-4\.6, 2\.4\) m .*tide range 2 m"),
+@pytest.mark.parametrize("level, words", [
+    (-6.0, r"sea_level of service year 1 = -6 m leaves the mound dry: the sea level must be in "
+           r"\(-5\.6, 3\.4\) m \(armour depth d = 5\.6 m, crest hc = 3\.4 m\)"),
+    (3.5, r"= 3\.5 m puts the crest under water"),
 ])
-def test_a_sea_level_off_the_structure_is_refused_before_any_storm(level, tide, words):
-    model = MODEL.with_(tide_range=tide, trend=_trend(MODEL.years, sea_level=level))
+def test_a_sea_level_off_the_structure_is_refused_before_any_storm(level, words):
+    model = MODEL.with_(trend=_trend(MODEL.years, sea_level=level))
     with pytest.raises(ValueError, match=words):
         lifetime_sliding(GODA, model, trials=10, seed=1)
     with pytest.raises(ValueError, match=words):
         design_chart(GODA, model, [12.0, 14.0], trials=10, seed=1)
-    _trend(MODEL.years, sea_level=2.3).check_site(GODA, tide)  # inside: no error
+    _trend(MODEL.years, sea_level=3.3).check_site(GODA)  # inside: no error
+    YearTrend.stationary(3).check_site(replace(GODA, crest=-1.0))  # today's level: today's site

@@ -339,7 +339,7 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: ArrayLike, tria
     if not tolerance > 0.0:
         raise ValueError(f"tolerance must be > 0 m, got {tolerance!r}")
     if model.trend is not None:
-        model.trend.check_site(caisson, model.tide_range)
+        model.trend.check_site(caisson)
     seed_ = root_seed(seed)
     chunks = make_chunks(trials, seed_, chunk)
     caissons = tuple(caisson.with_width(float(x)) for x in w)

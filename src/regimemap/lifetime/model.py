@@ -219,29 +219,28 @@ class YearTrend:
         """Service years covered."""
         return len(self.sea_level)
 
-    def check_site(self, caisson: Caisson, tide_range: float = 0.0) -> None:
-        """Refuse a mean sea level that leaves the mound dry or the crest under water at some tide.
+    def check_site(self, caisson: Caisson) -> None:
+        """Refuse a mean sea level that leaves the mound dry or puts the crest under still water.
 
-        Goda's formulas need water above the armour, ``d + level > 0``, and a
-        crest above the still water, ``hc - level > 0``, at every level
-        ``eta_y +- tide_range/2``.
+        Goda's formulas need water above the armour, ``d + eta > 0``, and a
+        crest above the still water, ``hc - eta > 0``; a year at today's level
+        (``eta = 0``) is today's site and is not checked, so a stationary
+        trend runs wherever no trend does.  The tide is not part of the check
+        (today's climate does not check it either).
 
         Raises
         ------
         ValueError
             Naming the service year, its sea level and the range allowed.
         """
-        half = 0.5 * tide_range
-        low = -caisson.armour_depth + half    # sea_level must stay above this
-        high = caisson.crest - half           # and below this
+        low, high = -caisson.armour_depth, caisson.crest
         for year, eta in enumerate(self.sea_level, start=1):
-            if not low < eta < high:
+            if eta != 0.0 and not low < eta < high:
                 raise ValueError(
-                    f"sea_level of service year {year} = {eta:g} m leaves "
-                    f"{'the mound dry' if eta <= low else 'the crest under water'} at "
-                    f"{'low' if eta <= low else 'high'} tide: the sea level must be in ({low:g}, {high:g}) m "
-                    f"(armour depth d = {caisson.armour_depth:g} m, crest hc = {caisson.crest:g} m, "
-                    f"tide range {tide_range:g} m)")
+                    f"sea_level of service year {year} = {eta:g} m "
+                    f"{'leaves the mound dry' if eta <= low else 'puts the crest under water'}: "
+                    f"the sea level must be in ({low:g}, {high:g}) m "
+                    f"(armour depth d = {caisson.armour_depth:g} m, crest hc = {caisson.crest:g} m)")
 
 
 @dataclass(frozen=True)

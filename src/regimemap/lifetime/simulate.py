@@ -54,7 +54,7 @@ def lifetime_sliding(caisson: Caisson, model: LifetimeModel, trials: int = 5000,
     (200, 1)
     """
     if model.trend is not None:
-        model.trend.check_site(caisson, model.tide_range)
+        model.trend.check_site(caisson)
     seed_ = root_seed(seed)
     chunks = make_chunks(trials, seed_, chunk)
     out = run_chunks((caisson,), model, chunks, jobs=jobs, scheduler=scheduler, progress=progress)
