@@ -18,12 +18,9 @@ Rayleigh tail :math:`\\sqrt{H_s^2 + H_{1/3}^2 E/2}`, :math:`E` standard exponent
 each capped at the breaker limit -- the same distribution as drawing all :math:`N` heights
 (docs/lifetime.md, Sect. 8).
 
-Each storm belongs to a service year (the Poisson counts are drawn year by
-year; an annual-maximum climate has one storm a year), where the model's
-:class:`~regimemap.lifetime.model.YearTrend` sets its mean sea level, its
-peak's factor and its rate; each block keeps, per width and year, the sum and
-the sum of squared deviations of its lifetimes' cumulative sliding
-(:class:`YearStats`), never the lifetimes' years themselves.
+Each storm has a service year, whose :class:`~regimemap.lifetime.model.YearTrend`
+values set its sea level, peak factor and rate; a block keeps per width and year only the
+sums of its lifetimes' cumulative sliding (:class:`YearStats`).
 """
 
 from __future__ import annotations
@@ -72,10 +69,8 @@ class YearStats:
 
     Notes
     -----
-    The blocks are joined in their order (Chan, Golub & LeVeque 1983):
-    ``M2 = sum_b M2_b + sum_b n_b (mean_b - mean)^2``; a block's numbers
-    depend only on its own lifetimes, so the totals are the same bits for
-    any chunks.
+    Joined in block order, ``M2 = sum_b M2_b + sum_b n_b (mean_b - mean)^2`` (Chan, Golub &
+    LeVeque 1983): the same bits for any chunks.
     """
 
     count: IntArray
