@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import replace
+from typing import Any
 
 import numpy as np
 import pytest
@@ -46,8 +47,8 @@ def _trend(years: int, sea_level: float = 0.0, wave_height: float = 1.0, storm_r
 
 
 def _run(model: LifetimeModel, width: float = 16.0, trials: int = 1000, seed: int = 2,
-         **kw: object) -> LifetimeResult:
-    return lifetime_sliding(GODA.with_width(width), model, trials=trials, seed=seed, **kw)  # type: ignore[arg-type]
+         **kw: Any) -> LifetimeResult:
+    return lifetime_sliding(GODA.with_width(width), model, trials=trials, seed=seed, **kw)
 
 
 # -- today's climate ------------------------------------------------------------------------------
