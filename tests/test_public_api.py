@@ -54,6 +54,7 @@ PUBLIC_API = {
         "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "DesignChart", "ErrorFactor", "Errors", "Failure",
         "LifetimeModel", "LifetimeResult", "Requirements", "added_mass", "available_cores", "design_chart",
         "half_sine_slide", "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
+        "YearTrend",
     ],
     "regimemap.climate": [
         "AM_DISTRIBUTIONS", "METHODS", "POT_DISTRIBUTIONS", "AnnualMaxima", "Band", "ClimateOptions",

@@ -10,7 +10,8 @@ the source of every default.
 * :class:`Climate` -- storm peaks ``H0'`` (Weibull or Gumbel; two return
   values, or a maximum-likelihood fit of annual maxima);
 * :class:`Caisson`, :class:`LifetimeModel`, :class:`Errors`,
-  :class:`ErrorFactor` -- the inputs;
+  :class:`ErrorFactor`, :class:`YearTrend` -- the inputs (a trend: the climate's
+  change year by year over the life);
 * :func:`lifetime_sliding` -> :class:`LifetimeResult` -- the ESD with its
   standard error, quantiles and exceedance probabilities;
 * :func:`design_chart` -> :class:`DesignChart` -- ESD against width, the
@@ -32,7 +33,15 @@ from .._lazy import attach
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from .chart import DesignChart, design_chart, sf_width
     from .climate import DISTRIBUTIONS, Climate
-    from .model import DEFAULT_ERRORS, DEFAULT_THRESHOLDS, Caisson, ErrorFactor, Errors, LifetimeModel
+    from .model import (
+        DEFAULT_ERRORS,
+        DEFAULT_THRESHOLDS,
+        Caisson,
+        ErrorFactor,
+        Errors,
+        LifetimeModel,
+        YearTrend,
+    )
     from .parallel import ClusterUnavailable, available_cores
     from .requirements import Requirements, judge_chart, judge_lifetime
     from .results import Failure, LifetimeResult
@@ -42,8 +51,8 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
 __all__ = [
     "ADDED_MASS_COEFFICIENT", "DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "Caisson",
     "Climate", "ClusterUnavailable", "DesignChart", "ErrorFactor", "Errors", "Failure", "LifetimeModel",
-    "LifetimeResult", "Requirements", "added_mass", "available_cores", "design_chart", "half_sine_slide",
-    "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
+    "LifetimeResult", "Requirements", "YearTrend", "added_mass", "available_cores", "design_chart",
+    "half_sine_slide", "judge_chart", "judge_lifetime", "lifetime_sliding", "sf_width", "wave_duration",
 ]
 
 
@@ -52,7 +61,7 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
         "chart": ["DesignChart", "design_chart", "sf_width"],
         "climate": ["DISTRIBUTIONS", "Climate"],
         "model": ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "Caisson", "ErrorFactor", "Errors",
-                  "LifetimeModel"],
+                  "LifetimeModel", "YearTrend"],
         "parallel": ["ClusterUnavailable", "available_cores"],
         "requirements": ["Requirements", "judge_chart", "judge_lifetime"],
         "results": ["Failure", "LifetimeResult"],

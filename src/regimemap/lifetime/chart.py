@@ -8,7 +8,7 @@ section whose weight grows with its width, does not rise.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -103,6 +103,9 @@ class DesignChart:
         The design's own width [m], when judged.
     impulsive : bool
         Takahashi's impulsive coefficient in the waves' forces (the model's).
+    by_year, by_year_error : ndarray, shape (widths, years)
+        Expected cumulative sliding at the end of each service year at each
+        width, and its standard error [m]; empty when not recorded.
     """
 
     widths: FloatArray
@@ -124,6 +127,8 @@ class DesignChart:
     checks: tuple[Check, ...] = ()
     design_width: float | None = None
     impulsive: bool = False
+    by_year: FloatArray = field(default_factory=lambda: np.zeros((0, 0)))
+    by_year_error: FloatArray = field(default_factory=lambda: np.zeros((0, 0)))
 
     def bracket_problem(self) -> str | None:
         """Why the chart's widths do not bracket the target (its ESD at both ends); None when they do."""
@@ -333,6 +338,8 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: ArrayLike, tria
         raise ValueError("need at least two widths > 0")
     if not tolerance > 0.0:
         raise ValueError(f"tolerance must be > 0 m, got {tolerance!r}")
+    if model.trend is not None:
+        model.trend.check_site(caisson)
     seed_ = root_seed(seed)
     chunks = make_chunks(trials, seed_, chunk)
     caissons = tuple(caisson.with_width(float(x)) for x in w)
@@ -376,4 +383,5 @@ def design_chart(caisson: Caisson, model: LifetimeModel, widths: ArrayLike, tria
                        failure_sliding=failure_sliding,
                        failure_probability=None if fail is None else np.asarray(fail, dtype=np.float64),
                        probes=tuple((float(a), float(b.mean())) for a, b in zip(probe_widths, probe_rows)),
-                       impulsive=model.impulsive)
+                       impulsive=model.impulsive, by_year=out.years.mean(),
+                       by_year_error=out.years.std_error())

@@ -17,6 +17,10 @@ sliding waves of a storm of :math:`N` waves is
 Rayleigh tail :math:`\\sqrt{H_s^2 + H_{1/3}^2 E/2}`, :math:`E` standard exponential,
 each capped at the breaker limit -- the same distribution as drawing all :math:`N` heights
 (docs/lifetime.md, Sect. 8).
+
+Each storm has a service year, whose :class:`~regimemap.lifetime.model.YearTrend`
+values set its sea level, peak factor and rate; a block keeps per width and year only the
+sums of its lifetimes' cumulative sliding (:class:`YearStats`).
 """
 
 from __future__ import annotations
@@ -32,7 +36,7 @@ from .normal import truncated_normal
 from .sliding import half_sine_slide, wave_duration
 from .storms import SeaStates, sea_states, sliding_threshold, wave_forces
 
-__all__ = ["BLOCK", "BlockResult", "simulate_block", "simulate_blocks"]
+__all__ = ["BLOCK", "BlockResult", "YearStats", "simulate_block", "simulate_blocks"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -51,6 +55,60 @@ _SLIDE_ELEMENTS = 1 << 21
 
 
 @dataclass(frozen=True)
+class YearStats:
+    """The cumulative sliding by service year of blocks of lifetimes, block by block.
+
+    Attributes
+    ----------
+    count : ndarray of int, shape (n_blocks,)
+        Lifetimes of each block.
+    sums : ndarray, shape (n_blocks, n_widths, years)
+        Sum over the block's lifetimes of the sliding up to the end of each year [m].
+    m2 : ndarray, shape (n_blocks, n_widths, years)
+        Sum of the squared deviations from the block's mean [m^2].
+
+    Notes
+    -----
+    Joined in block order, ``M2 = sum_b M2_b + sum_b n_b (mean_b - mean)^2`` (Chan, Golub &
+    LeVeque 1983): the same bits for any chunks.
+    """
+
+    count: IntArray
+    sums: FloatArray
+    m2: FloatArray
+
+    @classmethod
+    def of(cls, cumulative: FloatArray) -> YearStats:
+        """One block's statistics from its lifetimes' cumulative sliding ``(n_widths, n, years)``."""
+        n = cumulative.shape[1]
+        sums = cumulative.sum(axis=1)
+        mean = sums / n if n else sums
+        m2 = ((cumulative - mean[:, None, :]) ** 2).sum(axis=1)
+        return cls(np.array([n], dtype=np.int64), sums[None], m2[None])
+
+    @classmethod
+    def join(cls, parts: Sequence[YearStats]) -> YearStats:
+        """The blocks of ``parts``, in order."""
+        return cls(np.concatenate([p.count for p in parts]), np.concatenate([p.sums for p in parts]),
+                   np.concatenate([p.m2 for p in parts]))
+
+    def mean(self) -> FloatArray:
+        """Expected cumulative sliding at the end of each service year, ``(n_widths, years)`` [m]."""
+        return np.asarray(self.sums.sum(axis=0) / self.count.sum(), dtype=np.float64)
+
+    def std_error(self) -> FloatArray:
+        """Standard error of :meth:`mean`: sample standard deviation over sqrt(lifetimes) [m]."""
+        n = int(self.count.sum())
+        if n < 2:
+            return np.full(self.sums.shape[1:], np.nan)
+        mean = self.mean()
+        c = self.count[:, None, None].astype(np.float64)
+        block_mean = self.sums / c
+        m2 = self.m2.sum(axis=0) + (c * (block_mean - mean[None]) ** 2).sum(axis=0)
+        return np.asarray(np.sqrt(m2 / (n - 1) / n), dtype=np.float64)
+
+
+@dataclass(frozen=True)
 class BlockResult:
     """What a block of lifetimes gives (plain arrays).
 
@@ -64,12 +122,15 @@ class BlockResult:
         Number of storms in each lifetime.
     sliding_waves : int
         Waves that were computed (above the sampling threshold).
+    years : YearStats
+        The cumulative sliding by service year, per block.
     """
 
     sliding: FloatArray
     max_storm: FloatArray
     storms: IntArray
     sliding_waves: int
+    years: YearStats
 
 
 def _factor(f: ErrorFactor, u: FloatArray, truncate: float | None) -> FloatArray:
@@ -88,6 +149,7 @@ class _Draws:
     n: int
     counts: IntArray          # storms of each lifetime
     life: IntArray            # the lifetime of each storm
+    year: IntArray            # the service year of each storm, from 0
     first: int                # its first storm among the blocks simulated together
     u_deep: FloatArray        # (n,) for the deep-water factors
     u: FloatArray             # (5, storms): peak, tide phase, transformation, force, friction
@@ -98,12 +160,32 @@ def _draw_storms(model: LifetimeModel, stream: np.random.SeedSequence, n: int, f
     rng = np.random.Generator(np.random.PCG64(stream))
     u_deep = rng.random(n)
     lam = model.climate.storms_per_year
+    years = np.arange(model.years, dtype=np.int64)
     if lam is None:
         counts = np.full(n, model.years, dtype=np.int64)
+        year = np.tile(years, n)
     else:
-        counts = rng.poisson(lam, size=(n, model.years)).sum(axis=1).astype(np.int64)
+        rate = lam if model.trend is None else lam * np.asarray(model.trend.storm_rate)
+        per_year = rng.poisson(rate, size=(n, model.years)).astype(np.int64)
+        counts = per_year.sum(axis=1)
+        year = np.repeat(np.tile(years, n), per_year.ravel())
     life = np.repeat(np.arange(n), counts)
-    return _Draws(rng, n, counts, life, first, u_deep, rng.random((5, life.size)))
+    return _Draws(rng, n, counts, life, year, first, u_deep, rng.random((5, life.size)))
+
+
+def _peaks(model: LifetimeModel, u: FloatArray, year: IntArray) -> FloatArray:
+    """The storms' peaks ``H0'`` before the deep-water factor, from their uniforms and years.
+
+    An annual-maximum climate's year with storm-rate factor ``f`` has the peak
+    distribution ``F^f``, so its peak is ``F^-1(u^(1/f))`` (docs/lifetime.md,
+    "A changing climate"); a Poisson climate's storms keep ``F`` (the factor
+    is on their number).  A factor of exactly 1 leaves ``u`` untouched.
+    """
+    trend = model.trend
+    if trend is None or model.climate.storms_per_year is not None:
+        return model.climate.quantile(u)
+    f = np.asarray(trend.storm_rate)[year]
+    return model.climate.quantile(np.where(f == 1.0, u, u ** (1.0 / f)))
 
 
 def _storm_seas(caissons: tuple[Caisson, ...], model: LifetimeModel, blocks: Sequence[_Draws]) -> SeaStates:
@@ -111,9 +193,13 @@ def _storm_seas(caissons: tuple[Caisson, ...], model: LifetimeModel, blocks: Seq
     err, cut = model.errors, model.truncate
     f_deep = _factor(err.deepwater, np.concatenate([b.u_deep for b in blocks]), cut)
     life = np.concatenate([b.life + k * b.n for k, b in enumerate(blocks)])
+    year = np.concatenate([b.year for b in blocks])
     u = np.concatenate([b.u for b in blocks], axis=1)
-    H0 = model.climate.quantile(u[0]) * f_deep[life]
+    H0 = _peaks(model, u[0], year) * f_deep[life]
     tide = 0.5 * model.tide_range * np.sin(2.0 * np.pi * u[1])
+    if model.trend is not None:  # the year's peak factor and mean sea level (docs/lifetime.md)
+        H0 = H0 * np.asarray(model.trend.wave_height)[year]
+        tide = tide + np.asarray(model.trend.sea_level)[year]
     return sea_states(caissons, model, H0, tide, _factor(err.transformation, u[2], cut),
                       _factor(err.force, u[3], cut), _factor(err.friction, u[4], cut))
 
@@ -148,7 +234,7 @@ def _draw_waves(d: _Draws, seas: SeaStates, H_s: FloatArray) -> tuple[IntArray, 
 
 
 def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: np.random.SeedSequence,
-                   n: int = BLOCK) -> BlockResult:
+                   n: int = BLOCK, keep: int | None = None) -> BlockResult:
     """Simulate ``n`` lifetimes of the same caisson at several widths, from one random stream.
 
     Parameters
@@ -162,6 +248,8 @@ def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: 
         This block's seed.
     n : int, optional
         Lifetimes in the block (:data:`BLOCK`).
+    keep : int, optional
+        The year statistics count the first ``keep`` lifetimes only (all: None).
 
     Returns
     -------
@@ -170,18 +258,19 @@ def simulate_block(caissons: tuple[Caisson, ...], model: LifetimeModel, stream: 
     Notes
     -----
     The draws, in order: ``n`` uniforms for the deep-water factors; the
-    number of storms of each year (Poisson, when ``storms_per_year`` is set);
+    number of storms of each year (Poisson, when ``storms_per_year`` is set,
+    with the rate times the year's ``storm_rate`` factor of a trend);
     five uniforms per storm (peak, tide phase, transformation, force and
     friction factors), drawn even for a factor whose ``cov`` is 0 so that no
     option shifts the others' random numbers; the binomial number of sliding
     waves of each storm; one standard exponential per sliding wave.
     """
-    return simulate_blocks(caissons, model, (stream,), n)[0]
+    return simulate_blocks(caissons, model, (stream,), n, keep=keep)[0]
 
 
 def simulate_blocks(caissons: tuple[Caisson, ...], model: LifetimeModel,
                     streams: Sequence[np.random.SeedSequence], n: int = BLOCK,
-                    guides: int = 0) -> list[BlockResult]:
+                    guides: int = 0, keep: int | None = None) -> list[BlockResult]:
     """Simulate several blocks together: each as :func:`simulate_block`, to the last bit.
 
     Parameters
@@ -201,6 +290,10 @@ def simulate_blocks(caissons: tuple[Caisson, ...], model: LifetimeModel,
         caissons -- and are not slid: the results have the rows of
         ``caissons[guides:]`` only (the bisection of the design chart keeps
         the chart's waves without sliding its narrowest width again).
+    keep : int, optional
+        The year statistics count the first ``keep`` lifetimes of the blocks
+        together (the rest of the last block is simulated and not counted);
+        None: all.
 
     Returns
     -------
@@ -233,6 +326,7 @@ def simulate_blocks(caissons: tuple[Caisson, ...], model: LifetimeModel,
     storm_slide = _slide_waves(caissons[0], model, seas, H_s, n_sliding, storm, E, guides)
 
     n_w = len(caissons) - guides
+    left = n * len(blocks) if keep is None else keep
     out = []
     for b in blocks:
         k = storm_slide[:, b.first:b.first + b.life.size]
@@ -241,9 +335,25 @@ def simulate_blocks(caissons: tuple[Caisson, ...], model: LifetimeModel,
         max_storm = np.zeros((n_w, b.n))
         np.maximum.at(max_storm.reshape(-1), index, k.ravel())
         total = int(n_sliding[b.first:b.first + b.life.size].sum())
+        counted = max(0, min(b.n, left))
+        left -= counted
         out.append(BlockResult(sliding=sliding.astype(np.float64), max_storm=max_storm, storms=b.counts,
-                               sliding_waves=total))
+                               sliding_waves=total, years=_year_stats(b, k, model.years, counted)))
     return out
+
+
+def _year_stats(b: _Draws, storm_slide: FloatArray, years: int, keep: int) -> YearStats:
+    """The block's cumulative sliding by service year over its first ``keep`` lifetimes.
+
+    ``storm_slide`` is ``(n_widths, storms)`` of the block's storms; each
+    lifetime-year's sliding is the sum of its storms' in order, then summed
+    over the years.
+    """
+    n_w = storm_slide.shape[0]
+    index = ((np.arange(n_w)[:, None] * b.n + b.life[None, :]) * years + b.year[None, :]).ravel()
+    per_year = np.bincount(index, weights=storm_slide.ravel(), minlength=n_w * b.n * years)
+    cumulative = np.cumsum(per_year.reshape(n_w, b.n, years)[:, :keep, :], axis=2)
+    return YearStats.of(np.asarray(cumulative, dtype=np.float64))
 
 
 def _slide_waves(caisson: Caisson, model: LifetimeModel, seas: SeaStates, H_s: FloatArray,

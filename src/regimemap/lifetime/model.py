@@ -3,7 +3,8 @@
 numpy only.  :class:`Caisson` is the section and its site (SI units: m, N/m,
 kg/m^3); :class:`LifetimeModel` the climate and every modelling choice, each a
 named option with the reference model of docs/lifetime.md as its default;
-:class:`ErrorFactor` one normal uncertainty factor ``ratio (1 + cov z)``.
+:class:`ErrorFactor` one normal uncertainty factor ``ratio (1 + cov z)``;
+:class:`YearTrend` the change of the climate year by year over the design life.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from regimemap.waves import CaissonSection, Densities, section_from_densities, s
 from .climate import Climate
 
 __all__ = ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "FRICTION_SIGMAS", "Caisson", "ErrorFactor", "Errors",
-           "LifetimeModel", "PERIOD_COEFFICIENT", "PERIOD_EXPONENT"]
+           "LifetimeModel", "PERIOD_COEFFICIENT", "PERIOD_EXPONENT", "YearTrend"]
 
 #: Goda's storm relation :math:`T_{1/3} = 3.3 \, {H_0'}^{0.63}` (Goda 2000, Sect. 4.2 and 11;
 #: docs/lifetime.md, Sect. 3).
@@ -162,6 +163,87 @@ class Caisson:
 
 
 @dataclass(frozen=True)
+class YearTrend:
+    """Year-by-year change of the climate over the design life; element ``y - 1`` is service year ``y``.
+
+    Attributes
+    ----------
+    sea_level : tuple of float
+        Mean sea level of each service year above today's [m] (finite, any
+        sign); it adds to the depth terms exactly like the tide: ``h``,
+        ``h'`` and ``d`` rise by it and ``hc`` falls by it.
+    wave_height : tuple of float
+        Factor (> 0) on the storm peak ``H0'`` of each year's storms.
+    storm_rate : tuple of float
+        Factor ``f`` (> 0) on the number of storms of each year: a Poisson
+        climate's rate ``lambda f``; an annual-maximum climate's yearly peak
+        with the distribution ``F^f`` (the maximum of ``f`` independent annual
+        maxima for a whole ``f``; docs/lifetime.md, "A changing climate").
+
+    Examples
+    --------
+    >>> YearTrend.stationary(3)
+    YearTrend(sea_level=(0.0, 0.0, 0.0), wave_height=(1.0, 1.0, 1.0), storm_rate=(1.0, 1.0, 1.0))
+    """
+
+    sea_level: tuple[float, ...]
+    wave_height: tuple[float, ...]
+    storm_rate: tuple[float, ...]
+
+    def __post_init__(self) -> None:
+        n = len(self.sea_level)
+        if n < 1:
+            raise ValueError("a year trend needs at least one service year, got none")
+        for name in ("sea_level", "wave_height", "storm_rate"):
+            values = tuple(float(x) for x in getattr(self, name))
+            if len(values) != n:
+                raise ValueError(f"{name} has {len(values)} service years, sea_level {n}: "
+                                 "give every field one value per service year")
+            positive = name != "sea_level"
+            for year, x in enumerate(values, start=1):
+                if not math.isfinite(x) or (positive and not x > 0.0):
+                    need = "a finite factor > 0" if positive else "a finite level [m]"
+                    raise ValueError(f"{name} of service year {year} (of 1..{n}) must be {need}, got {x!r}")
+            object.__setattr__(self, name, values)
+
+    @classmethod
+    def stationary(cls, years: int) -> YearTrend:
+        """Today's climate for ``years`` years: no rise, every factor 1."""
+        whole: object = years  # a float or a string from an untyped caller is refused
+        if not (isinstance(whole, int) and years >= 1):
+            raise ValueError(f"years must be a whole number >= 1, got {years!r}")
+        return cls((0.0,) * years, (1.0,) * years, (1.0,) * years)
+
+    @property
+    def years(self) -> int:
+        """Service years covered."""
+        return len(self.sea_level)
+
+    def check_site(self, caisson: Caisson) -> None:
+        """Refuse a mean sea level that leaves the mound dry or puts the crest under still water.
+
+        Goda's formulas need water above the armour, ``d + eta > 0``, and a
+        crest above the still water, ``hc - eta > 0``; a year at today's level
+        (``eta = 0``) is today's site and is not checked, so a stationary
+        trend runs wherever no trend does.  The tide is not part of the check
+        (today's climate does not check it either).
+
+        Raises
+        ------
+        ValueError
+            Naming the service year, its sea level and the range allowed.
+        """
+        low, high = -caisson.armour_depth, caisson.crest
+        for year, eta in enumerate(self.sea_level, start=1):
+            if eta != 0.0 and not low < eta < high:
+                raise ValueError(
+                    f"sea_level of service year {year} = {eta:g} m "
+                    f"{'leaves the mound dry' if eta <= low else 'puts the crest under water'}: "
+                    f"the sea level must be in ({low:g}, {high:g}) m "
+                    f"(armour depth d = {caisson.armour_depth:g} m, crest hc = {caisson.crest:g} m)")
+
+
+@dataclass(frozen=True)
 class LifetimeModel:
     """The climate and the modelling choices of a lifetime simulation.
 
@@ -198,6 +280,9 @@ class LifetimeModel:
         The uncertainty factors.
     thresholds : tuple of float
         Lifetime slides [m] whose exceedance probability is reported.
+    trend : YearTrend or None
+        The climate's change over the service years (``years`` long); None:
+        today's climate every year.
     """
 
     climate: Climate
@@ -211,6 +296,7 @@ class LifetimeModel:
     truncate: float | None = None
     errors: Errors = field(default_factory=Errors)
     thresholds: tuple[float, ...] = DEFAULT_THRESHOLDS
+    trend: YearTrend | None = None
 
     def __post_init__(self) -> None:
         years: object = self.years  # a float or a string from an untyped caller is refused
@@ -235,6 +321,9 @@ class LifetimeModel:
             raise ValueError(f"truncate must be > 0, got {self.truncate!r}")
         if any(not (x > 0.0 and math.isfinite(x)) for x in self.thresholds):
             raise ValueError("thresholds must be finite numbers > 0")
+        if self.trend is not None and self.trend.years != self.years:
+            raise ValueError(f"trend covers {self.trend.years} service years, the design life is "
+                             f"{self.years} years: give one value per service year 1..{self.years}")
         reach = FRICTION_SIGMAS if self.truncate is None else self.truncate
         cov = self.errors.friction.cov
         if cov * reach >= 1.0:

@@ -21,7 +21,7 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-from .engine import BLOCK, BlockResult, simulate_blocks
+from .engine import BLOCK, BlockResult, YearStats, simulate_blocks
 from .model import Caisson, LifetimeModel
 
 __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
@@ -83,12 +83,13 @@ def make_chunks(trials: int, seed: int, chunk: int = DEFAULT_CHUNK) -> list[Chun
 def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk,
               guides: int = 0) -> BlockResult:
     """Simulate one chunk's blocks and keep its share of the lifetimes (``guides``: :func:`run_chunks`)."""
-    parts = simulate_blocks(caissons, model, chunk.streams, guides=guides)
+    parts = simulate_blocks(caissons, model, chunk.streams, guides=guides, keep=chunk.keep)
     sliding = np.concatenate([p.sliding for p in parts], axis=1)[:, :chunk.keep]
     max_storm = np.concatenate([p.max_storm for p in parts], axis=1)[:, :chunk.keep]
     storms = np.concatenate([p.storms for p in parts])[:chunk.keep]
     return BlockResult(sliding=sliding, max_storm=max_storm, storms=storms,
-                       sliding_waves=sum(p.sliding_waves for p in parts))
+                       sliding_waves=sum(p.sliding_waves for p in parts),
+                       years=YearStats.join([p.years for p in parts]))
 
 
 def available_cores() -> int:
@@ -289,4 +290,5 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
     return BlockResult(sliding=np.concatenate([p.sliding for p in parts], axis=1),
                        max_storm=np.concatenate([p.max_storm for p in parts], axis=1),
                        storms=np.concatenate([p.storms for p in parts]),
-                       sliding_waves=sum(p.sliding_waves for p in parts))
+                       sliding_waves=sum(p.sliding_waves for p in parts),
+                       years=YearStats.join([p.years for p in parts]))

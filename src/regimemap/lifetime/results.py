@@ -9,14 +9,14 @@ standard error, quantiles and exceedance probabilities from them.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..mechanics.checks import Check
 
-__all__ = ["Failure", "LifetimeResult"]
+__all__ = ["Failure", "LifetimeResult", "year_passing"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -81,6 +81,11 @@ class LifetimeResult:
     impulsive : bool
         Whether the waves' forces took Takahashi's impulsive coefficient (the
         model's choice, named in every report).
+    by_year : ndarray, shape (years,)
+        Expected cumulative sliding at the end of each service year [m]
+        (``by_year[-1]`` is the ESD up to rounding); empty when not recorded.
+    by_year_error : ndarray, shape (years,)
+        Its standard error [m]; empty when not recorded.
     """
 
     sliding: FloatArray
@@ -94,6 +99,8 @@ class LifetimeResult:
     checks: tuple[Check, ...] = ()
     failure: Failure | None = None
     impulsive: bool = False
+    by_year: FloatArray = field(default_factory=lambda: np.zeros(0))
+    by_year_error: FloatArray = field(default_factory=lambda: np.zeros(0))
 
     @property
     def trials(self) -> int:
@@ -198,6 +205,30 @@ class LifetimeResult:
         ]
         return html_table(rows, caption=f"Lifetime sliding: ESD = {number(self.expected_sliding)} m "
                           f"over {self.years} years", header=("", "value", ""))
+
+    def year_passing(self, limit: float) -> int | None:
+        """The first service year whose expected cumulative sliding exceeds ``limit`` [m]; None if none.
+
+        Raises ValueError when the result holds no :attr:`by_year`.
+        """
+        return year_passing(self.by_year, limit)
+
+
+def year_passing(by_year: FloatArray, limit: float) -> int | None:
+    """The first service year (from 1) with ``by_year > limit``; None if none.
+
+    Examples
+    --------
+    >>> year_passing(np.array([0.02, 0.05, 0.12, 0.2]), 0.1)
+    3
+    >>> year_passing(np.array([0.02, 0.05]), 0.1) is None
+    True
+    """
+    values = np.asarray(by_year, dtype=np.float64)
+    if values.size == 0:
+        raise ValueError("no expected sliding by service year was recorded")
+    over = np.flatnonzero(values > limit)
+    return int(over[0]) + 1 if over.size else None
 
 
 def _key(x: float) -> str:

@@ -53,9 +53,12 @@ def lifetime_sliding(caisson: Caisson, model: LifetimeModel, trials: int = 5000,
     >>> r.trials, r.seed
     (200, 1)
     """
+    if model.trend is not None:
+        model.trend.check_site(caisson)
     seed_ = root_seed(seed)
     chunks = make_chunks(trials, seed_, chunk)
     out = run_chunks((caisson,), model, chunks, jobs=jobs, scheduler=scheduler, progress=progress)
     return LifetimeResult(sliding=out.sliding[0], max_storm=out.max_storm[0], storms=out.storms,
                           seed=seed_, years=model.years, thresholds=model.thresholds,
-                          width=caisson.width, sliding_waves=out.sliding_waves, impulsive=model.impulsive)
+                          width=caisson.width, sliding_waves=out.sliding_waves, impulsive=model.impulsive,
+                          by_year=out.years.mean()[0], by_year_error=out.years.std_error()[0])
