@@ -54,6 +54,15 @@ def test_the_record_holds_what_the_report_prints(tmp_path: Path) -> None:
     assert same.numbers == r.numbers and same.checks == r.checks
 
 
+def test_a_file_that_is_no_design_is_refused(tmp_path: Path) -> None:
+    from regimemap.io.design import DesignFileError
+
+    with pytest.raises(DesignFileError, match="line 22: unknown key"):
+        run_caisson(_write(tmp_path, NO_LIFE.replace("width = 15.0", "widht = 15.0")))
+    with pytest.raises(DesignFileError, match="cannot read the design file"):
+        run_caisson(tmp_path / "missing.toml")
+
+
 def test_the_required_factors_of_the_file_decide_the_verdict() -> None:
     text = NO_LIFE.replace("friction = 0.6", "friction = 0.6\nrequired_sliding = 1.1")
     r = run_caisson(parse_design(text))
