@@ -1,25 +1,45 @@
 """Warnings for valid but implausible design files (likely unit slips), and ``--strict``.
 
-The checks are :func:`regimemap.io.plausibility.implausible_values`; here they
+The checks are :func:`regimemap.io.plausibility.implausible_notices`; here they
 become one warning line each on standard error, or, with ``--strict``, a usage
-error (exit 2) naming the first.
+error (exit 2) naming the first.  :func:`caisson_record` is
+:func:`regimemap.workflows.caisson.run_caisson` with its warnings and failures
+turned into the command line's lines and exit statuses.
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import click
 
+from ._common import RunError
+
 if TYPE_CHECKING:  # pragma: no cover
     from regimemap.io.design import Design
+    from regimemap.mechanics.notices import Notice
     from regimemap.waves import CaissonAnalysis
+    from regimemap.workflows.caisson import CaissonRecord
 
-__all__ = ["STRICT_HELP", "check_plausible"]
+__all__ = ["STRICT_HELP", "caisson_record", "check_plausible", "echo_notices"]
 
 STRICT_HELP = ("Refuse a design file whose values are valid but implausible for a breakwater "
                "(likely unit slips: a depth over 100 m, a section heavier than 30 kN/m^3 ...); "
                "without it they are warnings on standard error.")
+
+
+def echo_notices(notices: Sequence[Notice], source: str) -> None:
+    """One line each on standard error: ``regimemap: warning: SOURCE: MESSAGE``."""
+    for n in notices:
+        click.echo(f"regimemap: warning: {source}: {n.message}", err=True)
+
+
+def _refusal(notices: Sequence[Notice], source: str, param_hint: str) -> click.BadParameter:
+    """The usage error of ``--strict``: the first implausible value and how many more."""
+    more = f" (and {len(notices) - 1} more)" if len(notices) > 1 else ""
+    return click.BadParameter(f"{source}: {notices[0].message}{more}; --strict refuses implausible values",
+                              param_hint=param_hint)
 
 
 def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bool, source: str,
@@ -29,14 +49,32 @@ def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bo
     ``param_hint`` names the design file's argument or option in the usage error of
     ``strict`` (``'DESIGN.toml'``, or ``'--design'`` for ``regimemap simulate``).
     """
-    from ..io.plausibility import implausible_values
+    from ..io.plausibility import implausible_notices
 
-    found = implausible_values(design, analysis)
-    if not found:
-        return
-    if strict:
-        more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
-        raise click.BadParameter(f"{source}: {found[0]}{more}; --strict refuses implausible values",
-                                 param_hint=param_hint)
-    for item in found:
-        click.echo(f"regimemap: warning: {source}: {item}", err=True)
+    found = implausible_notices(design, analysis)
+    if strict and found:
+        raise _refusal(found, source, param_hint)
+    echo_notices(found, source)
+
+
+def caisson_record(design: Design, source: str, *, strict: bool = False, sheet: bool = False,
+                   param_hint: str = "'DESIGN.toml'", usage_error: bool = False) -> CaissonRecord:
+    """:func:`~regimemap.workflows.caisson.run_caisson` of ``design``, its warnings on standard error.
+
+    With ``strict`` an implausible value is a usage error naming ``param_hint``; a caisson
+    that cannot be analysed is a one-line error naming ``source``, after the warnings of its
+    inputs: exit 1, or with ``usage_error`` a usage error naming ``param_hint`` (exit 2).
+    """
+    from ..workflows.caisson import CaissonError, ImplausibleDesignError, run_caisson
+
+    try:
+        record = run_caisson(design, strict=strict, sheet=sheet)
+    except ImplausibleDesignError as exc:
+        raise _refusal(exc.notices, source, param_hint) from None
+    except CaissonError as exc:
+        echo_notices(exc.notices, source)
+        if usage_error:
+            raise click.BadParameter(f"{source}: {exc}", param_hint=param_hint) from None
+        raise RunError(f"{source}: {exc}") from None
+    echo_notices(record.notices, source)
+    return record

@@ -3,14 +3,13 @@
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import click
 
 from ._check import check_option, exit_on_failure
-from ._common import RunError, import_matplotlib, output_path, report_written
+from ._common import import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE, read_design_file
-from ._plausible import STRICT_HELP, check_plausible
+from ._plausible import STRICT_HELP, caisson_record
 from ._writing import writing
 
 __all__ = ["caisson_cmd"]
@@ -68,74 +67,54 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
       regimemap caisson goda.toml -o sheet.pdf
       regimemap caisson goda.toml --check
     """
+    if example:
+        _print_example(design, as_json, output)
+        return
+    source = _check_arguments(design, output)
+    d = read_design_file(source, "'DESIGN.toml'")
+    if output is not None:  # before the lifetime is simulated for it
+        import_matplotlib()
+    record = caisson_record(d, source, strict=strict, sheet=output is not None)
+    if output is not None:  # the sheet first: a failure leaves no report half-printed
+        from ..drawing.save import save_figure
+        from ..drawing.sheet.page import caisson_sheet
+
+        with writing(output):
+            save_figure(caisson_sheet(record), output)
+    from ..io.caisson import caisson_json, format_caisson
+
+    if as_json:
+        obj = caisson_json(record.report, source=source, required=record.required, checks=record.checks)
+        if output is not None:  # the written file's path, inside the one JSON object
+            obj["sheet"] = output
+        click.echo(json.dumps(obj, indent=2, allow_nan=False))
+    else:
+        click.echo(format_caisson(record.report, source=source, required=record.required,
+                                  checks=record.checks, written=d.written))
+        if output is not None:
+            report_written(output)
+    exit_on_failure(record.checks, check)
+
+
+def _print_example(design: str | None, as_json: bool, output: str | None) -> None:
+    """``--example``: print the commented example design file; it takes nothing else."""
     from ..io.design import example_design_text
 
-    ctx = click.get_current_context()
-    if example:
-        if design is not None or as_json or output is not None:
-            raise click.UsageError("--example prints the example file and takes nothing else "
-                                   "(no DESIGN.toml, --json or -o)", ctx=ctx)
-        click.echo(example_design_text(), nl=False)
-        return
+    if design is not None or as_json or output is not None:
+        raise click.UsageError("--example prints the example file and takes nothing else "
+                               "(no DESIGN.toml, --json or -o)", ctx=click.get_current_context())
+    click.echo(example_design_text(), nl=False)
+
+
+def _check_arguments(design: str | None, output: str | None) -> str:
+    """The design file's path, given; the sheet's file a .pdf, .svg or .png in a writable folder."""
     if design is None:
         raise click.UsageError("missing DESIGN.toml (a design file; `regimemap caisson --example` "
-                               "prints one)", ctx=ctx)
+                               "prints one)", ctx=click.get_current_context())
     if output is not None:
         suffix = output.rsplit(".", 1)[-1].lower() if "." in output.rsplit("/", 1)[-1] else ""
         if suffix not in _FORMATS:
             raise click.BadParameter(f"the sheet's file must end in .pdf, .svg or .png, got {output!r}",
                                      param_hint="'--output'")
         output_path(output, "--output")
-    d = read_design_file(design, "'DESIGN.toml'")
-
-    from ..maps.caisson import caisson_report
-
-    try:
-        report = caisson_report(d.analysis_inputs())
-    except ValueError as exc:
-        check_plausible(d, None, strict, design)  # a unit slip may be why
-        raise RunError(f"{design}: {exc}") from None
-    check_plausible(d, report.analysis, strict, design)
-    required = (d.caisson.required_sliding, d.caisson.required_overturning)
-
-    from ..io.caisson import caisson_json, format_caisson
-    from ..maps.caisson import caisson_checks
-
-    checks = caisson_checks(report, required)
-    if output is not None:  # the sheet first: a failure leaves no report half-printed
-        import_matplotlib()
-        from ..drawing.save import save_figure
-        from ..drawing.sheet.page import sheet_figure
-
-        life = None
-        if d.lifetime is not None:  # the file's [lifetime]: the sheet gains the lifetime panel
-            from ..lifetime import Requirements, available_cores, judge_lifetime, lifetime_sliding
-
-            spec = d.lifetime_spec()
-            try:
-                life = lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), spec.trials, spec.seed,
-                                        jobs=available_cores())
-            except ValueError as exc:
-                raise RunError(f"{design}: {exc}") from None
-            life = judge_lifetime(life, Requirements(target=spec.target, allowed=spec.allowed,
-                                                     failure_sliding=spec.failure_sliding))
-            checks.extend(life.checks)
-        from ..maps.caisson import sheet_map
-
-        view, data = sheet_map(report)
-        fig = sheet_figure(report, view=view, data=data, checks=checks, title=Path(design).name,
-                           lifetime=life, required=required, lifetime_impulsive=None if d.lifetime is None
-                           else d.lifetime.impulsive, written=d.written)
-        with writing(output):
-            save_figure(fig, output)
-    if as_json:
-        obj = caisson_json(report, source=design, required=required, checks=checks)
-        if output is not None:  # the written file's path, inside the one JSON object
-            obj["sheet"] = output
-        click.echo(json.dumps(obj, indent=2, allow_nan=False))
-    else:
-        click.echo(format_caisson(report, source=design, required=required, checks=checks,
-                                  written=d.written))
-        if output is not None:
-            report_written(output)
-    exit_on_failure(checks, check)
+    return design

@@ -26,6 +26,7 @@ from ._common import (
     resolution_type,
 )
 from ._inputs import DESIGN_FILE, read_design_file
+from ._writing import writing
 from .plot import DEFAULT_SAMPLES, plot_stem
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -143,32 +144,17 @@ Examples:
 @load_options
 def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None, design: str | None,
                 loads: dict[str, Any]) -> None:
-    from ..drawing.save import format_from_path
-    from ..mechanics.block import Parameters
-
-    point = None
-    if design is not None:
-        params, point = _design_start(design, loads)
-    else:
-        params = Parameters(gamma, kprime, **loads)
-    path: Path | None = None
-    if output is not None:
-        try:
-            format_from_path(output)
-        except ValueError as exc:
-            raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
-        path = output_path(output, "--output")
+    params, point = _start(gamma, kprime, loads, design)
+    path = _output_path(output)
     import_matplotlib()
-    from ..drawing.explore.text import window_problem
-
     if path is not None:
         ex = open_explorer(params, resolution=resolution, echo=None, window=False, point=point)
-        try:
+        with writing(path):
             ex.save(path)
-        except OSError as exc:
-            raise RunError(f"cannot write {path}: {exc.strerror or exc}") from None
         report_written(path)
         return
+    from ..drawing.explore.text import window_problem
+
     problem = window_problem()
     if problem is not None:
         raise RunError(f"regimemap explore needs a display to open its window: {problem}. "
@@ -179,18 +165,40 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
     ex.show(f"regimemap explore ({Path(design).name if design is not None else _stem(ex)})")
 
 
+def _output_path(output: str | None) -> Path | None:
+    """``-o``: a file of a format ``plot`` writes, in a writable folder (None: a window)."""
+    from ..drawing.save import format_from_path
+
+    if output is None:
+        return None
+    try:
+        format_from_path(output)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
+    return output_path(output, "--output")
+
+
+def _start(gamma: float, kprime: float, loads: dict[str, Any], design: str | None
+           ) -> tuple[Parameters, DesignPoint | None]:
+    """The block to start from and the point marked: the options', or a design file's (--design)."""
+    from ..mechanics.block import Parameters
+
+    if design is None:
+        return Parameters(gamma, kprime, **loads), None
+    return _design_start(design, loads)
+
+
 def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, DesignPoint]:
     """The loaded block and the design point of a design file's design wave (--design).
 
     The file gives the block: --gamma, --kprime or a load given too is a usage error; a bad
     file is a usage error naming the file, its line and the key, as ``regimemap caisson``
-    reports it; implausible values are warnings on standard error.
+    reports it; implausible values are warnings on standard error
+    (:func:`regimemap.workflows.caisson.run_caisson`, as ``regimemap caisson`` runs it).
     """
     from click.core import ParameterSource
 
-    from ..maps.caisson import caisson_report
-    from ..maps.points import DesignPoint
-    from ._plausible import check_plausible
+    from ._plausible import caisson_record
 
     ctx = click.get_current_context()
     given = [f"--{n.replace('_', '-')}" for n in ("gamma", "kprime")
@@ -200,10 +208,5 @@ def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, Desig
         raise click.UsageError(f"{', '.join(given)} and --design exclude each other: the design file "
                                "gives the block (change the design file, or give the block without --design)")
     d = read_design_file(design, "'--design'")
-    try:
-        report = caisson_report(d.analysis_inputs())
-    except ValueError as exc:
-        check_plausible(d, None, False, design, "'--design'")  # a unit slip may be why
-        raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
-    check_plausible(d, report.analysis, False, design, "'--design'")
-    return report.map.parameters(), DesignPoint(report.k, report.mu)
+    record = caisson_record(d, design, param_hint="'--design'", usage_error=True)
+    return record.parameters, record.design_point

@@ -19,8 +19,8 @@ from ..mechanics.checks import Check
 from ._numbers import json_number as round_sig
 from .checks import checks_json, checks_lines
 
-__all__ = ["CONSISTENCY_NOTE", "REQUIRED_SF", "caisson_json", "design_check", "design_check_lines",
-           "format_caisson", "impulsive_words", "round_sig"]
+__all__ = ["CONSISTENCY_NOTE", "REQUIRED_SF", "UNITS", "caisson_json", "caisson_numbers", "design_check",
+           "design_check_lines", "format_caisson", "impulsive_words", "round_sig"]
 
 #: Why Goda's safety factors and the map agree (docs/waves.md, Sect. 7).
 CONSISTENCY_NOTE = (
@@ -47,7 +47,7 @@ def _margin_dict(m: Margin) -> dict[str, Any]:
             "nearest": None if n is None else n.direction}
 
 
-def _numbers(r: CaissonReport) -> dict[str, float]:
+def caisson_numbers(r: CaissonReport) -> dict[str, float]:
     """The report's numbers in engineering units (kPa, kN/m, kN m/m), unrounded."""
     a = r.analysis
     h, p, ld, sec, st, b = a.heights, a.pressures, a.loads, a.section, a.stability, a.block
@@ -134,7 +134,7 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
-    out.update({k: round_sig(v) for k, v in _numbers(r).items()})
+    out.update({k: round_sig(v) for k, v in caisson_numbers(r).items()})
     out["mode"] = mode_label(r.mode)
     out["mode_description"] = mode_description(r.mode)
     out["margin"] = {"k": _margin_dict(r.margin_k), "mu": _margin_dict(r.margin_mu)}
@@ -202,7 +202,7 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     the design file's values as it writes them (``{"site.depth": "10.1"}``,
     :attr:`regimemap.io.design.Design.written`), echoed under the file's name.
     """
-    n = _numbers(r)
+    n = caisson_numbers(r)
     lines: list[str] = []
     if source:
         lines.append(f"caisson design: {source}")

@@ -4,9 +4,10 @@ A design file can pass every range check and still describe no breakwater:
 ``depth = 1010`` (centimetres for metres) draws a 1000-m mound, and
 ``buoyant_weight = 2312000`` (N/m for kN/m) a section as dense as lead. Each
 check below names the key, the value, the range that real vertical
-breakwaters fall in, and the slip that most likely explains the value. The
-commands print these as warnings on standard error; ``--strict`` makes them
-errors. Valid inputs are never refused without ``--strict``.
+breakwaters fall in, and the slip that most likely explains the value; as
+warnings of a workflow they are :class:`~regimemap.mechanics.notices.Notice`
+data (:func:`implausible_notices`). The commands print them on standard error;
+``--strict`` makes them errors. Valid inputs are never refused without ``--strict``.
 
 Values beyond what physics allows are errors of the reader instead
 (:mod:`regimemap.io.design_keys`: a significant height over 30 m, a period
@@ -26,12 +27,17 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
+from ..mechanics.notices import Notice
+
 if TYPE_CHECKING:  # pragma: no cover
     from regimemap.waves import CaissonAnalysis
 
     from .design import Design
 
-__all__ = ["Implausible", "implausible_values"]
+__all__ = ["IMPLAUSIBLE", "Implausible", "implausible_notices", "implausible_values"]
+
+#: The code of an implausible value's :class:`~regimemap.mechanics.notices.Notice`.
+IMPLAUSIBLE = "implausible-value"
 
 #: Plausible ranges: (low, high) and the unit they are in.
 RANGES: dict[str, tuple[float, float, str]] = {
@@ -54,6 +60,12 @@ class Implausible:
 
     def __str__(self) -> str:
         return self.message
+
+    def notice(self) -> Notice:
+        """The finding as a warning of a workflow: code :data:`IMPLAUSIBLE`, the key dotted
+        (``"caisson.buoyant_weight"``, ``"heel_pressure"``) as its quantity."""
+        quantity = self.key.replace("[", "").replace("] ", ".").replace(" ", "_")
+        return Notice(IMPLAUSIBLE, self.message, quantity=quantity, value=self.value)
 
 
 def _num(x: float) -> str:
@@ -94,6 +106,22 @@ def implausible_values(design: Design, analysis: CaissonAnalysis | None = None) 
     return [*_depths(design), *_period("[wave] period", w.period), *_heights(heights),
             *_width(c.width), *_unit_weight(design), *_densities(design), *_lifetime(design),
             *_heel_pressure(analysis)]
+
+
+def implausible_notices(design: Design, analysis: CaissonAnalysis | None = None
+                        ) -> tuple[Notice, ...]:
+    """:func:`implausible_values` as the warnings of a workflow, one
+    :class:`~regimemap.mechanics.notices.Notice` each (:meth:`Implausible.notice`).
+
+    Examples
+    --------
+    >>> from regimemap.io.design import example_design_text, parse_design
+    >>> text = example_design_text().replace("depth = 10.1", "depth = 80")
+    >>> n = implausible_notices(parse_design(text))[0]
+    >>> n.code, n.quantity, n.value
+    ('implausible-value', 'site.depth', 80.0)
+    """
+    return tuple(item.notice() for item in implausible_values(design, analysis))
 
 
 def _item(key: str, value: float, text: str) -> Implausible:

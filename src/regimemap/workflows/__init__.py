@@ -19,10 +19,14 @@ from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
+    from .caisson import CaissonError, CaissonNumbers, CaissonRecord, ImplausibleDesignError, run_caisson
 
-__all__ = ["Field", "Notice", "Record"]
+__all__ = ["CaissonError", "CaissonNumbers", "CaissonRecord", "Field", "ImplausibleDesignError", "Notice",
+           "Record", "run_caisson"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
+        "caisson": ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError",
+                    "run_caisson"],
     })

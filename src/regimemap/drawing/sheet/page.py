@@ -16,15 +16,17 @@ given, (g) the exceedance curve of the caisson's sliding over its design life
 
 This module places the panels on the page and writes the notes; the panels are
 drawn by :mod:`regimemap.drawing.sheet.panels` ((a), (b), (c), (e), (f)) and
-:mod:`regimemap.drawing.sheet.map_panel` ((d)).  Everything drawn is computed beforehand
-(:func:`regimemap.maps.caisson.caisson_report`, :func:`regimemap.maps.caisson.map_view`
-and :func:`regimemap.maps.mapdata.compute_map`); these modules only draw.
+:mod:`regimemap.drawing.sheet.map_panel` ((d)).  Everything drawn is computed beforehand,
+by :func:`regimemap.workflows.caisson.run_caisson` with ``sheet=True`` (the report, the
+checks, panel (d)'s map and panel (g)'s lifetime): :func:`caisson_sheet` draws its
+record; these modules only draw.
 """
 
 from __future__ import annotations
 
 import textwrap
 from collections.abc import Callable, Mapping, Sequence
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ...maps.caisson import CaissonReport, MapView
@@ -41,9 +43,10 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
     from ...lifetime.results import LifetimeResult
+    from ...workflows.caisson import CaissonRecord
     from ..text.labelplacer import Placed
 
-__all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "sheet_figure"]
+__all__ = ["SHEET_SIZE", "PANELS", "LIFETIME_PANEL", "caisson_sheet", "sheet_figure"]
 
 #: Size of the sheet in inches: A4 portrait.
 SHEET_SIZE: tuple[float, float] = (8.27, 11.69)
@@ -125,6 +128,33 @@ def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
         placer.close()
 
 # -- the sheet -----------------------------------------------------------------------------
+
+def caisson_sheet(record: CaissonRecord, *, title: str | None = None, dpi: float = DEFAULT_DPI
+                  ) -> Figure:
+    """The design sheet of a caisson record: :func:`sheet_figure` of its fields.
+
+    Parameters
+    ----------
+    record : CaissonRecord
+        From :func:`regimemap.workflows.caisson.run_caisson` with ``sheet=True`` (panel
+        (d)'s view and map; panel (g) when it holds a lifetime).
+    title : str, optional
+        Shown after "caisson design sheet"; default the design file's name.
+    dpi : float
+        Resolution of PNG output.
+
+    Raises
+    ------
+    ValueError
+        If the record holds no map for panel (d) (computed without ``sheet=True``).
+    """
+    if record.view is None or record.map_data is None:
+        raise ValueError("the record holds no map for the sheet: run_caisson(..., sheet=True)")
+    return sheet_figure(record.report, view=record.view, data=record.map_data, checks=record.checks,
+                        title=Path(record.design.source).name if title is None else title, dpi=dpi,
+                        lifetime=record.lifetime, required=record.required,
+                        lifetime_impulsive=record.lifetime_impulsive, written=record.design.written)
+
 
 def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks: Sequence[Check],
                  title: str | None = None, dpi: float = DEFAULT_DPI,

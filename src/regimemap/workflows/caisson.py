@@ -1,0 +1,288 @@
+"""The caisson workflow: a design file in, Goda's loads, the loaded map and the design check out.
+
+:func:`run_caisson` is the call ``regimemap caisson`` makes: it reads a design
+(:mod:`regimemap.io.design`), runs Goda's procedure and places the caisson on
+the loaded map (:func:`regimemap.maps.caisson.caisson_report`), checks the
+safety factors against the required ones, and returns a :class:`CaissonRecord`
+holding the design, the numbers a designer checks, the implausible values as
+:class:`~regimemap.mechanics.notices.Notice` data, the checks and, for the
+design sheet, the map of panel (d) and the lifetime of panel (g).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, fields
+from pathlib import Path
+from typing import TYPE_CHECKING, ClassVar
+
+from ..io.caisson import caisson_numbers
+from ..io.design import Design, read_design
+from ..io.plausibility import implausible_notices
+from ..maps.caisson import CaissonReport, MapView, caisson_checks, caisson_report, sheet_map
+from ..maps.loadedmap import mode_label
+from ..maps.points import DesignPoint
+from ..mechanics.checks import Check, all_pass
+from ._record import Field, Notice, Record
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..lifetime.results import LifetimeResult
+    from ..maps.mapdata import MapData
+    from ..mechanics.block import Parameters
+    from ..waves import CaissonAnalysis
+
+__all__ = ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError", "run_caisson"]
+
+
+class CaissonError(ValueError):
+    """The design file is valid but its caisson cannot be analysed (or its lifetime simulated).
+
+    Attributes
+    ----------
+    notices : tuple of Notice
+        The implausible values found before the failure: a unit slip may be why.
+    """
+
+    def __init__(self, message: str, notices: tuple[Notice, ...] = ()) -> None:
+        super().__init__(message)
+        self.notices = notices
+
+
+class ImplausibleDesignError(CaissonError):
+    """``strict=True`` and the design has implausible values (likely unit slips): its notices."""
+
+
+@dataclass(frozen=True)
+class CaissonNumbers:
+    """The numbers of a caisson report in engineering units, as its text and JSON print them.
+
+    Lengths in m, ``beta`` in degrees, pressures in kPa, forces in kN/m, moments in
+    kN m/m, ``mass`` in t/m; the loaded block's numbers are dimensionless
+    (:func:`regimemap.io.caisson.caisson_numbers`; docs/waves.md for the equations).
+    """
+
+    H13: float
+    Hmax: float
+    hb: float
+    L: float
+    beta: float
+    eta_star: float
+    hc_star: float
+    alpha1: float
+    alpha2: float
+    alpha3: float
+    alpha_I: float
+    alpha_star: float
+    p1: float
+    p2: float
+    p3: float
+    p4: float
+    pu: float
+    P: float
+    Mp: float
+    U: float
+    Mu: float
+    W: float
+    mass: float
+    SF_sliding: float
+    SF_overturning: float
+    heel_pressure: float
+    te: float
+    B: float
+    H_C: float
+    gamma: float
+    k: float
+    kprime: float
+    buoyancy: float
+    uplift_ratio: float
+    uplift_arm: float
+    gyration: float
+    crest: float
+    mu: float
+
+    @classmethod
+    def of(cls, numbers: Mapping[str, float]) -> CaissonNumbers:
+        """The fields of ``numbers`` (:func:`~regimemap.io.caisson.caisson_numbers`)."""
+        return cls(**{f.name: numbers[f.name] for f in fields(cls)})
+
+
+@dataclass(frozen=True)
+class CaissonRecord(Record):
+    """A caisson under its design wave: the inputs, the numbers, the map, the checks, the warnings.
+
+    Attributes
+    ----------
+    design : Design
+        The design file, read and checked.
+    report : CaissonReport
+        Goda's procedure, the loaded block, its mode and margins on the loaded map,
+        and the wave path (:func:`regimemap.maps.caisson.caisson_report`).
+    numbers : CaissonNumbers
+        Design heights, pressures, loads, safety factors and the equivalent block
+        (``gamma``, ``kprime``, ``k``, ``mu`` ...) in engineering units.
+    required : tuple of float
+        The safety factors the design must reach, sliding and overturning
+        (``[caisson] required_*``).
+    checks : tuple of Check
+        The design check: the safety factors against ``required``, then the
+        lifetime's requirements when :attr:`lifetime` is computed.
+    notices : tuple of Notice
+        The design's implausible values (code ``"implausible-value"``).
+    view : MapView or None
+        Panel (d)'s view of the loaded map (computed with ``sheet=True``).
+    map_data : MapData or None
+        The design wave's loaded map in :attr:`view` (computed with ``sheet=True``).
+    lifetime : LifetimeResult or None
+        The caisson's sliding over its design life, judged against ``[lifetime]``'s
+        requirements (computed with ``sheet=True`` when the file has ``[lifetime]``).
+    """
+
+    design: Design
+    report: CaissonReport
+    numbers: CaissonNumbers
+    required: tuple[float, float]
+    checks: tuple[Check, ...]
+    notices: tuple[Notice, ...] = ()
+    view: MapView | None = None
+    map_data: MapData | None = None
+    lifetime: LifetimeResult | None = None
+
+    CAPTION: ClassVar[str] = "Caisson under its design wave (Goda 2000) on the loaded regime map"
+    FIELDS: ClassVar[tuple[Field, ...]] = (
+        Field("numbers.H13", "H1/3", "m", "significant wave height at the wall"),
+        Field("numbers.Hmax", "Hmax", "m", "design (maximum) wave height"),
+        Field("numbers.p1", "p1", "kPa", "Goda's pressure at the still-water level"),
+        Field("numbers.p3", "p3", "kPa", "at the base of the upright section"),
+        Field("numbers.pu", "pu", "kPa", "uplift pressure at the seaward toe"),
+        Field("numbers.P", "P", "kN/m", "horizontal wave force"),
+        Field("numbers.U", "U", "kN/m", "uplift force"),
+        Field("numbers.W", "W'", "kN/m", "buoyant weight"),
+        Field("numbers.SF_sliding", "SF sliding", "", "mu (W' - U) / P"),
+        Field("numbers.SF_overturning", "SF overturning", "", "(W' t - Mu) / Mp, t = B"),
+        Field("numbers.gamma", "gamma", "", "H_C / B of the equivalent block"),
+        Field("numbers.kprime", "kprime", "", "height of P above C over H_C"),
+        Field("numbers.k", "k", "", "P / (m g)"),
+        Field("numbers.mu", "mu", "", "friction coefficient"),
+        Field("mode", "mode", "", "the design point's mode on the loaded map"),
+        Field("verdict", "verdict", "", "the design check: PASS when every requirement is met"),
+    )
+
+    @property
+    def analysis(self) -> CaissonAnalysis:
+        """Goda's procedure for the design wave (SI units, 0-d arrays)."""
+        return self.report.analysis
+
+    @property
+    def mode(self) -> str:
+        """The design point's mode on the loaded map (``RE``, ``SL`` ...)."""
+        return mode_label(self.report.mode)
+
+    @property
+    def passed(self) -> bool:
+        """Every requirement of :attr:`checks` is met."""
+        return all_pass(self.checks)
+
+    @property
+    def verdict(self) -> str:
+        """``"PASS"`` or ``"FAIL"``."""
+        return "PASS" if self.passed else "FAIL"
+
+    @property
+    def parameters(self) -> Parameters:
+        """The loaded block of the design wave, as every map takes it."""
+        return self.report.map.parameters()
+
+    @property
+    def design_point(self) -> DesignPoint:
+        """The design wave's point (k, mu) on the loaded map."""
+        return DesignPoint(self.report.k, self.report.mu)
+
+    @property
+    def lifetime_impulsive(self) -> bool | None:
+        """Whether :attr:`lifetime` included Takahashi's impulsive coefficient (None: no lifetime)."""
+        if self.lifetime is None or self.design.lifetime is None:
+            return None
+        return self.design.lifetime.impulsive
+
+
+def run_caisson(design: Design | str | Path, *, strict: bool = False, sheet: bool = False,
+                jobs: int | None = None) -> CaissonRecord:
+    """Goda's design procedure for a caisson, placed on the loaded regime map, and its design check.
+
+    Parameters
+    ----------
+    design : Design, str or Path
+        A design, or the path of a design file (:func:`regimemap.io.design.read_design`).
+    strict : bool
+        Refuse implausible values (likely unit slips) instead of returning them as notices.
+    sheet : bool
+        Also compute what the design sheet draws besides the report: the loaded map of
+        panel (d) (:func:`regimemap.maps.caisson.sheet_map`) and, when the design has a
+        ``[lifetime]`` table, the sliding over the design life of panel (g)
+        (:func:`regimemap.lifetime.lifetime_sliding`, its requirements judged), whose
+        checks join the safety factors'.
+    jobs : int, optional
+        Processes of the lifetime simulation (default: every available core).
+
+    Returns
+    -------
+    CaissonRecord
+
+    Raises
+    ------
+    regimemap.io.design.DesignFileError
+        When the file cannot be read or is not a valid design.
+    ImplausibleDesignError
+        With ``strict``, when the design has implausible values (its ``notices``).
+    CaissonError
+        When the caisson cannot be analysed or its lifetime simulated; its
+        ``notices`` are the implausible values of the inputs.
+
+    Examples
+    --------
+    >>> from regimemap.io.design import example_design_text, parse_design
+    >>> r = run_caisson(parse_design(example_design_text()))
+    >>> r.mode, r.verdict, round(r.numbers.SF_sliding, 3)
+    ('RE', 'FAIL', 1.16)
+    """
+    d = design if isinstance(design, Design) else read_design(design)
+    try:
+        report = caisson_report(d.analysis_inputs())
+    except ValueError as exc:  # a unit slip may be why: the implausible inputs go with it
+        found = implausible_notices(d)
+        if strict and found:
+            raise ImplausibleDesignError(_refusal(d, found), found) from None
+        raise CaissonError(str(exc), found) from None
+    notices = implausible_notices(d, report.analysis)
+    if strict and notices:
+        raise ImplausibleDesignError(_refusal(d, notices), notices)
+    required = (d.caisson.required_sliding, d.caisson.required_overturning)
+    checks = tuple(caisson_checks(report, required))
+    view = data = life = None
+    if sheet:
+        view, data = sheet_map(report)
+        if d.lifetime is not None:
+            life = _lifetime(d, jobs, notices)
+            checks += tuple(life.checks)
+    return CaissonRecord(design=d, report=report, numbers=CaissonNumbers.of(caisson_numbers(report)),
+                         required=required, checks=checks, notices=notices, view=view, map_data=data,
+                         lifetime=life)
+
+
+def _refusal(d: Design, notices: tuple[Notice, ...]) -> str:
+    more = f" (and {len(notices) - 1} more)" if len(notices) > 1 else ""
+    return f"{d.source}: {notices[0].message}{more}; strict refuses implausible values"
+
+
+def _lifetime(d: Design, jobs: int | None, notices: tuple[Notice, ...]) -> LifetimeResult:
+    """The sliding over the design life of ``[lifetime]``, judged against its requirements."""
+    from ..lifetime import Requirements, available_cores, judge_lifetime, lifetime_sliding
+
+    spec = d.lifetime_spec()
+    try:
+        life = lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), spec.trials, spec.seed,
+                                jobs=available_cores() if jobs is None else jobs)
+    except ValueError as exc:
+        raise CaissonError(str(exc), notices) from None
+    return judge_lifetime(life, Requirements(target=spec.target, allowed=spec.allowed,
+                                             failure_sliding=spec.failure_sliding))
