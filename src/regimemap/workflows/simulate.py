@@ -18,6 +18,8 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, ClassVar
 
+import numpy as np
+
 from ..dynamics.options import OptionError
 from ..mechanics.notices import Notice
 from ._record import Field, Record
@@ -247,13 +249,14 @@ def _run_notices(sim: Simulation, T: float) -> list[Notice]:
 
 def _block_inputs(block: Block, pulse: Pulse) -> dict[str, Any]:
     """The inputs of a run given as objects, by the names of the options."""
-    return {"gamma": float(block.gamma), "half_width": float(block.B),  # type: ignore[arg-type]
-            "kprime": float(block.kprime), "mu": float(block.mu),  # type: ignore[arg-type]
-            "pulse": pulse.shape if pulse.t_samples is None else "file", "k_peak": float(pulse.k_peak),
-            "duration": float(pulse.duration), "pulse_file": None,
-            "buoyancy": float(block.beta), "uplift": float(block.u),  # type: ignore[arg-type]
-            "uplift_ratio": float(block.nu), "uplift_arm": float(block.e_u),  # type: ignore[arg-type]
-            "gyration": None if block.i2 is None else math.sqrt(float(block.i2))}  # type: ignore[arg-type]
+    def num(v: object) -> float:
+        return float(np.asarray(v, dtype=np.float64))
+
+    return {"gamma": num(block.gamma), "half_width": num(block.B), "kprime": num(block.kprime),
+            "mu": num(block.mu), "pulse": pulse.shape if pulse.t_samples is None else "file",
+            "k_peak": num(pulse.k_peak), "duration": num(pulse.duration), "pulse_file": None,
+            "buoyancy": num(block.beta), "uplift": num(block.u), "uplift_ratio": num(block.nu),
+            "uplift_arm": num(block.e_u), "gyration": None if block.i2 is None else math.sqrt(num(block.i2))}
 
 
 def _options_run(opts: dict[str, Any]) -> tuple[Block, Pulse, dict[str, Any]]:
