@@ -129,3 +129,37 @@ def test_motion_figure_shades_the_phases():
     assert len(fig.axes) == 3
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "RE  rest" in legend and "SRO-  slide-rock about O, O slipping left" in legend
+
+
+def test_the_figure_of_an_outcome_record_labels_its_axes_and_titles_its_inputs() -> None:
+    """outcome_record_figure reads the record: dimensionless axes where it has them, the fixed inputs."""
+    from types import SimpleNamespace
+
+    from regimemap.drawing.outcome.record import outcome_record_figure
+
+    m = synthetic_map(8, 6)
+    options = SimpleNamespace(swept=("k_peak", "duration"), shape="half-sine", fixed={"mu": 0.5})
+    plain = SimpleNamespace(options=options, dimensionless_axes={}, restitution=None, outcome=m)
+    ax = outcome_record_figure(plain, dpi=40).axes[0]
+    assert "k_p" in ax.get_xlabel() and "duration" in ax.get_ylabel()
+    assert 2.0 <= ax.get_xlim()[1] < 2.5  # the cells' edges, in k_peak
+    dim = SimpleNamespace(options=options, restitution=0.8, outcome=m,
+                          dimensionless_axes={"k_peak": np.linspace(1.0, 20.0, 8)})
+    fig = outcome_record_figure(dim, dpi=40)
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == r"$k_p\,/\tan\alpha$" and 20.0 <= ax.get_xlim()[1] < 25.0
+    title = fig._suptitle.get_text() if fig._suptitle else ax.get_title()
+    assert "μ = 0.5" in title and "0.8" in title
+
+
+def test_the_title_of_a_run_names_the_pulse_and_the_block_or_the_design_file() -> None:
+    from types import SimpleNamespace
+
+    from regimemap.drawing.motion.run import simulation_title
+
+    inputs = {"design": None, "pulse_file": None, "k_peak": 0.6, "mu": 0.35, "kprime": 0.0,
+              "pulse": "half-sine", "gamma": 3.0, "half_width": 0.2}
+    run = SimpleNamespace(inputs=inputs, duration=0.5)
+    assert simulation_title(run) == "half-sine pulse, k_peak = 0.6, T = 0.5 s; γ = 3, B = 0.2 m, μ = 0.35, k' = 0"
+    run = SimpleNamespace(inputs={**inputs, "design": "/x/goda.toml", "k_peak": 0.2776}, duration=4.564)
+    assert simulation_title(run) == "goda.toml: design wave, k = 0.2776, τ0 = 4.564 s; μ = 0.35"

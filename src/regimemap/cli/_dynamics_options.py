@@ -5,9 +5,9 @@ and :class:`~regimemap.dynamics.options.OptionError` as click's usage errors."""
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -16,6 +16,9 @@ from ..dynamics.options import OptionError
 from ..dynamics.pulses import SHAPES
 from ._common import ParamType, gamma_option, kprime_option, output_path
 from .atlas import Values
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..mechanics.notices import Notice
 
 __all__ = [
     "FIGURE_FORMATS",
@@ -26,6 +29,7 @@ __all__ = [
     "block_options",
     "min_rotation_option",
     "check_output_file",
+    "echo_notices",
     "option_errors",
 ]
 
@@ -153,13 +157,21 @@ def check_output_file(path: str, formats: Sequence[str], param: str, what: str) 
     return fmt
 
 
+def echo_notices(notices: Iterable[Notice]) -> None:
+    """Print warnings on standard error, one line each: ``regimemap: warning: MESSAGE``."""
+    for n in notices:
+        click.echo(f"regimemap: warning: {n.message}", err=True)
+
+
 @contextlib.contextmanager
 def option_errors() -> Iterator[None]:
     """An :class:`~regimemap.dynamics.options.OptionError` inside becomes a usage error (exit 2):
-    ``Invalid value for '--opt'`` when it names options, the message alone when not."""
+    ``Invalid value for '--opt'`` when it names options, the message alone when not; the
+    warnings it carries are printed first (:func:`echo_notices`)."""
     try:
         yield
     except OptionError as exc:
+        echo_notices(exc.notices)
         if exc.options:
             hint = " / ".join(f"'{o}'" for o in exc.options)
             raise click.BadParameter(str(exc), param_hint=hint) from None

@@ -1,4 +1,8 @@
-"""``regimemap dynamics-figures``: the outcome-map figures D.1-D.3 of regimemap.dynamics into a folder."""
+"""``regimemap dynamics-figures``: the outcome-map figures D.1-D.3 of regimemap.dynamics into a folder.
+
+Each map comes from :func:`regimemap.workflows.outcome.run_dynamics_figure` (computed, or read
+from the cache) and :func:`regimemap.drawing.motion.presets.dynamics_figure` draws it.
+"""
 
 from __future__ import annotations
 
@@ -6,12 +10,16 @@ import time
 from collections.abc import Callable
 from contextlib import AbstractContextManager
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import click
 
 from ._common import import_matplotlib, output_dir, report_written
 from ._dynamics_options import FIGURE_FORMATS
 from ._writing import writing
+
+if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
 
 __all__ = ["dynamics_figures_cmd"]
 
@@ -46,46 +54,58 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
       regimemap dynamics-figures --list
     """
     from ..dynamics.presets import DYNAMICS_FIGURES
+    from ..workflows.outcome import run_dynamics_figure
 
     if list_only:
-        for f in DYNAMICS_FIGURES.values():
-            click.echo(f"{f.id:4s} {f.caption}")
+        click.echo("\n".join(f"{f.id:4s} {f.caption}" for f in DYNAMICS_FIGURES.values()))
         return
+    fmts = _formats(formats)
+    folder = output_dir(out_dir, "--out")
+    if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
+        raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
+    import_matplotlib()
+    from ..drawing.motion.presets import dynamics_figure
+
+    for f in DYNAMICS_FIGURES.values():
+        t0 = time.perf_counter()
+        with writing(cache, f"to the cache {cache}"):
+            record = run_dynamics_figure(f, cache=cache, bars=_bars(f.id, quiet))
+        _save(dynamics_figure(f, record.data), [folder / f.filename(fmt) for fmt in fmts])
+        how = ("from the cache" if record.from_cache else
+               f"grid {record.outcome.category.size} runs, boundaries {record.refine_runs} runs")
+        if not quiet:
+            click.echo(f"{f.id}: {time.perf_counter() - t0:.1f} s ({how})", err=True)
+    if not quiet:
+        click.echo(f"regimemap: {len(fmts) * len(DYNAMICS_FIGURES)} files ({len(DYNAMICS_FIGURES)} figures x "
+                   f"{', '.join(fmts)}) in {folder}", err=True)
+
+
+def _formats(formats: str) -> list[str]:
+    """The formats of --format, each once, in the order given."""
     fmts = [s.strip().lower().lstrip(".") for s in formats.split(",") if s.strip()]
     bad = [f for f in fmts if f not in FIGURE_FORMATS]
     if not fmts or bad:
         what = f"unknown format {bad[0]!r}" if bad else "no format given"
         raise click.BadParameter(f"{what}; use a comma-separated list of {', '.join(FIGURE_FORMATS)}",
                                  param_hint="'--format'")
-    folder = output_dir(out_dir, "--out")
-    if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
-        raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
-    import_matplotlib()
-    from ..drawing.motion.presets import dynamics_figure
-    from ..drawing.save import save_figure
-    from ..io.dynamics import cached_outcome
+    return list(dict.fromkeys(fmts))
+
+
+def _bars(fid: str, quiet: bool) -> Callable[[int, str], AbstractContextManager[Callable[[int], None]]]:
+    """The progress bars of the stages of figure ``fid``'s map."""
     from ._progress import progress_bar
 
-    count = 0
-    for f in DYNAMICS_FIGURES.values():
-        t0 = time.perf_counter()
+    def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
+        return progress_bar(total, f"{fid} {what}", quiet, unit=" runs")
 
-        def bars(total: int, what: str, fid: str = f.id) -> AbstractContextManager[Callable[[int], None]]:
-            return progress_bar(total, f"{fid} {what}", quiet, unit=" runs")
+    return bars
 
-        with writing(cache, f"to the cache {cache}"):
-            m, x, y, hit = cached_outcome(cache, f.id, repr(f), lambda f=f, bars=bars: f.compute(bars))
-        fig = dynamics_figure(f, (m, x, y))
-        for fmt in dict.fromkeys(fmts):
-            path = folder / f.filename(fmt)
-            with writing(path):
-                save_figure(fig, path, fmt)
-            count += 1
-            report_written(path)
-        refine = m.crossings.runs if m.crossings is not None else 0
-        how = "from the cache" if hit else f"grid {m.category.size} runs, boundaries {refine} runs"
-        if not quiet:
-            click.echo(f"{f.id}: {time.perf_counter() - t0:.1f} s ({how})", err=True)
-    if not quiet:
-        click.echo(f"regimemap: {count} files ({len(DYNAMICS_FIGURES)} figures x "
-                   f"{', '.join(dict.fromkeys(fmts))}) in {folder}", err=True)
+
+def _save(fig: Figure, paths: list[Path]) -> None:
+    """Save ``fig`` to each path, its format from the suffix, and say so."""
+    from ..drawing.save import save_figure
+
+    for path in paths:
+        with writing(path):
+            save_figure(fig, path, path.suffix[1:])
+        report_written(path)

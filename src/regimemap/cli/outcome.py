@@ -2,17 +2,17 @@
 swept inputs.
 
 The command hands its options to :func:`regimemap.dynamics.options.map_options` (which sweeps,
-which pulse, the limits), runs :func:`regimemap.dynamics.outcome_map`, and writes its data
-through :mod:`regimemap.io` or draws it (matplotlib only then).
+which pulse, the limits), calls :func:`regimemap.workflows.outcome.run_outcome`, and writes the
+record's data through :mod:`regimemap.io` or draws it with :mod:`regimemap.drawing.outcome`
+(matplotlib only then).
 """
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 from contextlib import AbstractContextManager
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING
 
 import click
 
@@ -27,6 +27,9 @@ from ._dynamics_options import (
     option_errors,
 )
 from ._writing import writing
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..workflows.outcome import OutcomeRecord
 
 __all__ = ["outcome_cmd"]
 
@@ -90,98 +93,69 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
           -o spectrum.svg -o spectrum.npz
     """
     from ..dynamics.options import map_options
+    from ..workflows.outcome import run_outcome
 
-    ctx = click.get_current_context()
     values: dict[str, list[float] | None] = {
         "k_peak": k_peak, "duration": duration, "omega_p": omega_p, "mu": mu, "kprime": kprime,
         "gamma": gamma, "half_width": half_width, "gyration": gyration, "buoyancy": buoyancy,
         "uplift": uplift, "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm}
     with option_errors():
         # the swept inputs, in the order given on the command line (click fills ctx.params in that order)
-        opts = map_options(values, list(ctx.params), pulse, dimensionless=dimensionless)
-    swept, fixed, shape = opts.swept, opts.fixed, opts.shape
-
-    # -- outputs ----------------------------------------------------------------------------
-    if len({str(Path(p).resolve()) for p in outputs}) < len(outputs):
-        raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--output'")
-    kinds = [check_output_file(p, FIGURE_FORMATS + _DATA_FORMATS, "--output", "an outcome map")
-             for p in outputs]
+        opts = map_options(values, list(click.get_current_context().params), pulse,
+                           dimensionless=dimensionless)
+    kinds = _check_outputs(outputs)
     with option_errors():
         opts.check_steps()
+    _note(quiet, f"simulating {opts.n_runs} runs ({len(opts.axis(0))} x {len(opts.axis(1))}) ...")
+    with option_errors():
+        record = run_outcome(opts, restitution=restitution, min_rotation=min_rotation, refine=not no_refine,
+                             dimensionless=dimensionless, bars=_bars(quiet))
+    from ..io.dynamics import outcome_summary
 
-    import dataclasses
+    _note(quiet, "\n".join(outcome_summary(record)))
+    _write(record, outputs, kinds)
+    click.echo("\n".join(outputs))
 
-    import numpy as np
 
-    from ..dynamics.outcome import MapRuns, staged_outcome_map
+def _note(quiet: bool, text: str) -> None:
+    """A note on standard error, unless --quiet."""
+    if not quiet:
+        click.echo(text, err=True)
+
+
+def _bars(quiet: bool) -> Callable[[int, str], AbstractContextManager[Callable[[int], None]]]:
+    """The progress bars of the stages of the map (none with --quiet or off a terminal)."""
     from ._progress import progress_bar
-
-    block = opts.block()
-    first, second = opts.axis(0), opts.axis(1)
-    (n1, v1), (n2, v2) = opts.sweep(0), opts.sweep(1)
-    runs = MapRuns(block, shape, n1, n2, k_peak=fixed.get("k_peak"), duration=opts.fixed_duration(),
-                   restitution=restitution, min_rotation=math.radians(min_rotation))
-    def note(text: str) -> None:
-        if not quiet:
-            click.echo(text, err=True)
-
-    note(f"simulating {opts.n_runs} runs ({len(first)} x {len(second)}) ...")
 
     def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
         return progress_bar(total, what, quiet, unit=" runs")
 
-    m = staged_outcome_map(runs, v1, v2, refine=not no_refine, bars=bars)
-    m = dataclasses.replace(m, first_name=swept[0], first_values=first, second_name=swept[1],
-                            second_values=second)
-    counts = np.bincount(m.category.ravel().astype(np.int64), minlength=len(m.labels))
-    note(f"{opts.n_runs} runs in {m.seconds:.1f} s: "
-         + ", ".join(f"{lab} {c}" for lab, c in zip(m.labels, counts.tolist()) if c))
-    if m.crossings is not None:
-        note(f"boundaries refined to 1/1000 of each axis: {m.crossings.runs} runs in {m.crossings.batches} "
-             f"batches, {m.refine_seconds:.1f} s")
+    return bars
 
-    dim: dict[str, Any] = {}
-    if dimensionless:
-        from ..dynamics.outcome import DIMENSIONLESS, dimensionless_values
 
-        for n, axis in zip(swept, (first, second)):
-            if n in DIMENSIONLESS:
-                dim[n] = dimensionless_values(n, axis, block, shape)
-    written: list[str] = []
+def _check_outputs(outputs: tuple[str, ...]) -> list[str]:
+    """The format of each output file, each different and in a writable folder."""
+    if len({str(Path(p).resolve()) for p in outputs}) < len(outputs):
+        raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--output'")
+    return [check_output_file(p, FIGURE_FORMATS + _DATA_FORMATS, "--output", "an outcome map")
+            for p in outputs]
+
+
+def _write(record: OutcomeRecord, outputs: tuple[str, ...], kinds: list[str]) -> None:
+    """Write the map's data (.npz, .csv, .json) and draw its figure once (.png, .svg, .pdf)."""
     fig = None
     for path, kind in zip(outputs, kinds):
         with writing(path):
             if kind in _DATA_FORMATS:
-                from ..io.dynamics import write_outcome
+                from ..io.dynamics import write_outcome_record
 
-                extra = {f"{n}_dimensionless": v for n, v in dim.items()}
-                inputs = _export_inputs(fixed, shape, restitution)
-                if min_rotation:
-                    inputs["min_rotation"] = min_rotation  # degrees, as given
-                write_outcome(path, m, swept[0], swept[1], inputs=inputs, axes=extra)
-            else:
-                if fig is None:
-                    import_matplotlib()
-                    from ..drawing.outcome.figure import axis_label, outcome_figure, outcome_title
+                write_outcome_record(path, record)
+                continue
+            if fig is None:
+                import_matplotlib()
+                from ..drawing.outcome.record import outcome_record_figure
 
-                    fig, _, _ = outcome_figure(
-                        m, x=dim.get(swept[0]), y=dim.get(swept[1]),
-                        xlabel=axis_label(swept[0], swept[0] in dim, shape),
-                        ylabel=axis_label(swept[1], swept[1] in dim, shape),
-                        title=outcome_title(shape, fixed, restitution, m.min_rotation))
-                from ..drawing.save import save_figure
+                fig = outcome_record_figure(record)
+            from ..drawing.save import save_figure
 
-                save_figure(fig, path, kind)
-        written.append(path)
-    for p in written:
-        click.echo(p)
-
-
-def _export_inputs(fixed: dict[str, Any], pulse: str, restitution: float | None) -> dict[str, Any]:
-    out: dict[str, Any] = {"pulse": pulse}
-    for n, v in fixed.items():
-        if v is not None:
-            out[n] = v
-    if restitution is not None:
-        out["restitution"] = restitution
-    return out
+            save_figure(fig, path, kind)

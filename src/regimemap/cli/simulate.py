@@ -1,15 +1,15 @@
 """``regimemap simulate``: one run of a block under a force pulse, past initiation.
 
-The command parses and checks its options (the pulse and the step count through
-:mod:`regimemap.dynamics.options` and :mod:`regimemap.dynamics.limits`), calls
-:func:`regimemap.dynamics.simulate`, and writes through :mod:`regimemap.io`; matplotlib is
-imported only when a plot or an animation is asked for.
+The command parses its options, calls :func:`regimemap.workflows.simulate.run_simulation`
+(which checks how they go together and runs), writes the record through :mod:`regimemap.io`
+and draws it through :mod:`regimemap.drawing.motion.run`; matplotlib is imported only when a
+plot or an animation is asked for.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import click
 
@@ -20,16 +20,16 @@ from ._dynamics_options import (
     FIGURE_FORMATS,
     block_options,
     check_output_file,
+    echo_notices,
     min_rotation_option,
     option_errors,
 )
-from ._inputs import DESIGN_FILE, PULSE_FILE, read_design_file
-from ._plausible import STRICT_HELP, check_plausible
+from ._inputs import DESIGN_FILE, PULSE_FILE
+from ._plausible import STRICT_HELP
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..dynamics import Block, Pulse, Simulation
-    from ..mechanics.checks import Check
+    from ..workflows.simulate import SimulationRecord
 
 __all__ = ["simulate_cmd"]
 
@@ -120,111 +120,53 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
       regimemap caisson --example > goda.toml
       regimemap simulate --design goda.toml --json
     """
-    from ..dynamics import simulate
-    from ..dynamics.options import block_from_options, check_loads_and_gyration, pulse_from_options
+    from ..workflows.simulate import IMPLAUSIBLE, run_simulation
 
-    block: Block | None = None
-    numbers: dict[str, float] | None = None
-    checks: list[Check] = []
+    _check_design_flags(design, strict, check)
+    want_history = _check_outputs(output, plot, animate)  # before the run
+    if design is None and isinstance(kprime, float):  # the block of the dynamics has the crest at H
+        kprime = check_kprime_crest(kprime, 1.0)
+    source = design if design is not None else {
+        "gamma": gamma, "half_width": half_width, "kprime": kprime, "mu": mu, "pulse": pulse,
+        "k_peak": k_peak, "duration": duration, "pulse_file": pulse_file, "buoyancy": buoyancy,
+        "uplift": uplift, "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm, "gyration": gyration}
+    with option_errors():
+        record = run_simulation(source, restitution=restitution, history=want_history,
+                                min_rotation=min_rotation, strict=strict)
+    echo_notices(n for n in record.notices if n.code == IMPLAUSIBLE)  # about the inputs: first
+    written = _write_outputs(record, output, plot, animate)
+    echo_notices(n for n in record.notices if n.code != IMPLAUSIBLE)
+    if as_json:
+        from ..io.simulation import simulation_json
+
+        click.echo(simulation_json(record, written))
+    else:
+        from ..io.simulation import format_simulation
+
+        click.echo("\n".join([format_simulation(record), *written]))
+    exit_on_failure(record.checks, check)
+
+
+def _check_design_flags(design: str | None, strict: bool, check: bool) -> None:
+    """--strict and --check need --design; the options --design gives may not be given too."""
     if strict and design is None:
         raise click.UsageError("--strict checks a design file: give one with --design FILE.toml")
     if check and design is None:
         raise click.UsageError("--check checks a design file's requirements: give one with --design "
                                "FILE.toml")
-    if design is not None:  # -- the block and the pulse from a design file -------------------
-        block, pls, values, numbers, checks = _design_run(design, strict)
-        gamma, half_width, kprime, mu = values["gamma"], values["half_width"], values["kprime"], values["mu"]
-        pulse, k_peak, duration = values["pulse"], values["k_peak"], values["duration"]
-        buoyancy, uplift, uplift_ratio = values["buoyancy"], values["uplift"], values["uplift_ratio"]
-        uplift_arm, gyration = values["uplift_arm"], values["gyration"]
-    missing = [n for n, v in (("--gamma", gamma), ("--half-width", half_width), ("--mu", mu)) if v is None]
-    if missing:
-        raise click.UsageError(f"missing option(s) {', '.join(missing)}: give the block (--gamma, "
-                               "--half-width, --mu, ...), or --design FILE.toml")
-    assert gamma is not None and half_width is not None and mu is not None
-    if isinstance(kprime, float):  # the block of the dynamics has the crest at H (k' <= 1)
-        kprime = check_kprime_crest(kprime, 1.0)
-    with option_errors():
-        if design is None:  # -- the pulse (with --design, the design wave's, above) ------------
-            pls = pulse_from_options(pulse, k_peak, duration, pulse_file=pulse_file, read=_read_pulse,
-                                     kprime=kprime)
-        check_loads_and_gyration([gamma], [buoyancy], [uplift], [gyration] if gyration is not None else None)
-
-    want_history = _check_outputs(output, plot, animate)  # before the run
-
-    from ..dynamics.limits import check_run_steps
-
-    if block is None:
-        block = block_from_options({"half_width": half_width, "gamma": gamma, "mu": mu, "kprime": kprime,
-                                    "gyration": gyration, "buoyancy": buoyancy, "uplift": uplift,
-                                    "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm})
-    T = float(pls.duration)
-    try:
-        check_run_steps(block, T)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--duration'") from None
-    sim = simulate(block, pls, restitution=restitution, history=0 if want_history else None)
-
-    inputs: dict[str, Any] = {
-        "gamma": gamma, "half_width": half_width, "kprime": kprime, "mu": mu,
-        "pulse": pulse if pulse_file is None else "file", "k_peak": k_peak, "duration": duration,
-        "pulse_file": pulse_file, "restitution": restitution, "buoyancy": buoyancy, "uplift": uplift,
-        "uplift_ratio": uplift_ratio, "uplift_arm": uplift_arm, "gyration": gyration, "design": design,
-        "min_rotation": min_rotation,
-    }
-    housner = float(block.housner_ratio)
-    # Housner's ratio assumes the block rocks on about the other corner after an impact; for a
-    # squat block it is <= 0 and the impact ends the rocking (the block lands flat): no ratio
-    eta = restitution if restitution is not None else (housner if housner > 0.0 else None)
-    derived = {"p": float(block.p), "alpha": float(block.alpha), "H": float(block.H),
-               "impact_ratio": eta, "housner_ratio": housner, "k_peak": float(pls.k_peak),
-               "duration": T, "omega_p": float(pls.omega_p)}
-    import math
-
-    from ..io.dynamics import simulation_record
-
-    record = simulation_record(sim, inputs, derived, min_rotation=math.radians(min_rotation))
-    if numbers is not None:
-        from ..io.checks import checks_json
-
-        record["design"] = _design_record(design, numbers)
-        record["checks"] = checks_json(checks)
-    written = _write_outputs(sim, block, T, inputs, output, plot, animate) if want_history else []
-    if not (sim.settled[0] or sim.overturned[0]):
-        click.echo(f"regimemap: warning: the block is still moving at t = {float(sim.end_time[0]):.6g} s, "
-                   f"the time limit of the run (the pulse's {T:g} s + 60/p); its rotation and slide "
-                   "there are not residual (JSON: settled false, residual_* null)", err=True)
-    if sim.unresolved:
-        click.echo(f"regimemap: warning: {sim.unresolved} step(s) had no admissible contact state "
-                   "(a stuck corner was assumed)", err=True)
-    _echo_run(record, written, as_json, numbers, design, checks)
-    exit_on_failure(checks, check)
-
-
-def _echo_run(record: dict[str, Any], written: list[str], as_json: bool, numbers: dict[str, float] | None,
-              design: str | None, checks: list[Check]) -> None:
-    """Print the run: one JSON object, or the text (the design wave's line, the run, the design
-    check of the file) and the paths written."""
-    if as_json:
-        import json
-
-        record["files"] = written
-        click.echo(json.dumps(record, indent=1, allow_nan=False))
+    if design is None:
         return
-    from ..io.dynamics import format_simulation
+    from click.core import ParameterSource
 
-    if numbers is not None:
-        from ..dynamics.design_wave import describe_design_wave
+    from ..dynamics.design_wave import DESIGN_INPUTS
 
-        click.echo("design     " + describe_design_wave(numbers, design))
-    click.echo(format_simulation(record))
-    if checks:
-        from ..io.checks import checks_lines
-
-        click.echo("design check of the file (--check: exit status 1 when a requirement fails)")
-        click.echo("\n".join(checks_lines(checks)))
-    for p in written:
-        click.echo(p)
+    ctx = click.get_current_context()
+    given = [name for name in (*DESIGN_INPUTS, "pulse_file")
+             if ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
+    if given:
+        flags = ", ".join("--" + n.replace("_", "-") for n in given)
+        raise click.UsageError(f"{flags} and --design exclude each other: the design file gives the block "
+                               "and the pulse (change the design file, or give the block without --design)")
 
 
 def _check_outputs(output: str | None, plot: str | None, animate: str | None) -> bool:
@@ -241,108 +183,32 @@ def _check_outputs(output: str | None, plot: str | None, animate: str | None) ->
     return bool(paths)
 
 
-def _write_outputs(sim: Simulation, block: Block, T: float, inputs: dict[str, Any], output: str | None,
-                   plot: str | None, animate: str | None) -> list[str]:
+def _write_outputs(record: SimulationRecord, output: str | None, plot: str | None,
+                   animate: str | None) -> list[str]:
     """Write the time history (-o), its plot (--plot) and the animation (--animate); the paths."""
     written: list[str] = []
-    H = float(block.H)
-    assert sim.history is not None
-    hist = sim.history
     if output is not None:
-        from ..io.dynamics import write_history
+        from ..io.simulation import write_simulation_history
 
         with writing(output):
-            write_history(output, hist, H, {k: v for k, v in inputs.items()
-                                            if isinstance(v, (int, float, str))})
+            write_simulation_history(output, record)
         written.append(output)
     if plot is None and animate is None:
         return written
     import_matplotlib()
-    title = _run_title(inputs, T)
     if plot is not None:
-        from ..drawing.motion.history import motion_figure
+        from ..drawing.motion.run import simulation_figure
         from ..drawing.save import save_figure
 
-        fig = motion_figure(hist, H=H, alpha=float(block.alpha), duration=T, title=title)
         with writing(plot):
-            save_figure(fig, plot)
+            save_figure(simulation_figure(record), plot)
         written.append(plot)
     if animate is not None:
-        from ..drawing.motion.history import write_block_animation
+        from ..drawing.motion.run import simulation_animation
 
-        kprime = inputs["kprime"]
         with writing(animate):
-            n, (w, h), speed = write_block_animation(
-                animate, hist, B=inputs["half_width"], H=H, kprime=kprime if kprime is not None else 0.0,
-                overturned=bool(sim.overturned[0]), title=title)
+            n, (w, h), speed = simulation_animation(animate, record)
         click.echo(f"{animate}: {n} frames, {w} x {h} pixels, "
                    + ("real time" if speed == 1.0 else f"{speed:.3g} x real time"), err=True)
         written.append(animate)
     return written
-
-
-def _design_record(design: str | None, numbers: dict[str, float]) -> dict[str, Any]:
-    """The "design" object of --json: where the numbers of --design came from."""
-    from ..dynamics.design_wave import DESIGN_UNITS, NO_ADDED_MASS, PROFILE
-    from ..io.dynamics import round_sig
-
-    return {"file": design, **{key: round_sig(v) for key, v in numbers.items()},
-            "profile": PROFILE, "added_mass_note": NO_ADDED_MASS, "units": dict(DESIGN_UNITS)}
-
-
-def _read_pulse(path: str) -> Pulse:
-    """A pulse file (--pulse-file), read only when one is given."""
-    from ..io.pulses import read_pulse_csv
-
-    return read_pulse_csv(path)
-
-
-def _run_title(inputs: dict[str, Any], T: float) -> str:
-    """The title of the plot and the animation: the pulse and the block (or the design file)."""
-    design, pulse_file, k_peak, mu = inputs["design"], inputs["pulse_file"], inputs["k_peak"], inputs["mu"]
-    if design is not None:  # the file gives the block: the title says which, and fits
-        return f"{Path(design).name}: design wave, k = {k_peak:.4g}, τ0 = {T:.4g} s; μ = {mu:.3g}"
-    kprime = inputs["kprime"]
-    kp = "" if kprime is None else f", k' = {kprime:g}"
-    what = (f"{inputs['pulse']} pulse, k_peak = {k_peak:g}, T = {T:g} s" if pulse_file is None
-            else f"pulse {Path(pulse_file).name}")
-    return f"{what}; γ = {inputs['gamma']:g}, B = {inputs['half_width']:g} m, μ = {mu:g}{kp}"
-
-
-def _design_run(design: str, strict: bool = False
-                ) -> tuple[Block, Pulse, dict[str, Any], dict[str, float], list[Check]]:
-    """The block, the pulse, the inputs, the numbers and the requirements (Goda's safety factors
-    against the file's required ones) of a design file's design wave (--design).
-
-    Options that the file gives may not be given too; a bad file is a usage error naming the
-    file and the key, as ``regimemap caisson`` reports it.  Implausible values (likely unit
-    slips) are warnings on standard error, or with ``strict`` a usage error, as ``regimemap
-    caisson`` gives them (:func:`regimemap.cli._plausible.check_plausible`).
-    """
-    from click.core import ParameterSource
-
-    from ..dynamics.design_wave import DESIGN_INPUTS, design_wave_inputs, design_wave_numbers, design_wave_run
-
-    ctx = click.get_current_context()
-    given = [name for name in (*DESIGN_INPUTS, "pulse_file")
-             if ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
-    if given:
-        flags = ", ".join("--" + n.replace("_", "-") for n in given)
-        raise click.UsageError(f"{flags} and --design exclude each other: the design file gives the block "
-                               "and the pulse (change the design file, or give the block without --design)")
-    d = read_design_file(design, "'--design'")
-    try:
-        a = d.analyse()
-    except ValueError as exc:
-        check_plausible(d, None, strict, design, "'--design'")  # a unit slip may be why
-        raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
-    check_plausible(d, a, strict, design, "'--design'")
-    try:
-        block, pulse = design_wave_run(a, d.site.depth, d.wave.period)
-    except ValueError as exc:
-        raise click.BadParameter(f"{design}: {exc}", param_hint="'--design'") from None
-    from ..maps.caisson import stability_checks
-
-    checks = stability_checks(a, (d.caisson.required_sliding, d.caisson.required_overturning))
-    return (block, pulse, design_wave_inputs(a, d.site.depth, d.wave.period),
-            design_wave_numbers(a, d.site.depth, d.wave.period), checks)

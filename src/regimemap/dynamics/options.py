@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ..mechanics.notices import Notice
 from .block import Block
 from .limits import MAX_MAP_RUNS, check_gyration, check_loads, check_map_steps
 from .pulses import SHAPES, Pulse
@@ -56,11 +57,15 @@ class OptionError(ValueError):
     options : tuple of str
         The options concerned (``--name``); empty when it is the command line as a whole
         (a missing option, two that exclude each other).
+    notices : tuple of Notice
+        Warnings found before the error (a design file's implausible values), which may
+        explain it.
     """
 
-    def __init__(self, message: str, options: tuple[str, ...] = ()) -> None:
+    def __init__(self, message: str, options: tuple[str, ...] = (), notices: tuple[Notice, ...] = ()) -> None:
         super().__init__(message)
         self.options = options
+        self.notices = notices
 
 
 def _flag(name: str) -> str:

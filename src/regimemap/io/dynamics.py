@@ -1,10 +1,10 @@
-"""Simulations and outcome maps as text, JSON and files (``regimemap simulate``, ``regimemap outcome``).
+"""Time histories and outcome maps as files (``regimemap simulate``, ``regimemap outcome``).
 
-* :func:`simulation_record` -- one run as a JSON-ready dict (numbers rounded to 12 significant
-  digits), :func:`format_simulation` the same for people;
-* :func:`write_history` -- the time history of a run, ``.csv`` or ``.npz``;
+* :func:`write_history` -- the time history of a run, ``.csv`` or ``.npz`` (a run's text and
+  JSON: :mod:`regimemap.io.simulation`);
 * :func:`write_outcome` -- an outcome map, ``.npz``, ``.csv`` or ``.json`` (with its refined
-  boundaries, :func:`outcome_record`);
+  boundaries, :func:`outcome_record`), :func:`write_outcome_record` that of a workflow's
+  record, :func:`outcome_summary` what it took, in words;
 * :func:`cached_outcome` -- computed outcome maps kept in ``.npz`` files (``make figures``).
 
 The figures of a run (its history, its animation) are :mod:`regimemap.drawing.motion.history`'s.
@@ -14,51 +14,44 @@ Every file is written atomically (a temporary file in the same folder, then a re
 
 from __future__ import annotations
 
-import math
 import os
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..dynamics.outcome import OutcomeMap
-from ..dynamics.stepper import CATEGORY_LABELS, History, Phase, Simulation
-from ..mechanics.modes import Mode
+from ..dynamics.stepper import History, Phase
 from ._numbers import DIGITS as SIGNIFICANT
 from ._numbers import round_sig
 from .atomic import atomic_open
+
+if TYPE_CHECKING:  # pragma: no cover
+    from ..workflows.outcome import OutcomeRecord
 
 __all__ = [
     "HISTORY_FORMATS",
     "cached_outcome",
     "OUTCOME_DATA_FORMATS",
     "SIGNIFICANT",
-    "format_simulation",
     "history_arrays",
+    "json_inputs",
     "outcome_record",
-    "phase_description",
+    "outcome_summary",
     "round_sig",
-    "simulation_record",
     "write_history",
     "write_outcome",
+    "write_outcome_record",
 ]
 
 #: Formats of a time history and of an outcome map's data, by file suffix.
 HISTORY_FORMATS: tuple[str, ...] = ("csv", "npz")
 OUTCOME_DATA_FORMATS: tuple[str, ...] = ("npz", "csv", "json")
 
-_PHASE_BY_LABEL = {ph.label: ph for ph in Phase}
-
-
-def phase_description(label: str) -> str:
-    """What a phase label (RE, SL, RO, ..., FLIGHT) means, in words."""
-    ph = _PHASE_BY_LABEL[label]
-    return "free flight (no corner in contact)" if ph is Phase.FLIGHT else Mode(int(ph)).description
-
-
-def _json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
+def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
+    """Inputs as JSON values: floats (and those in lists) rounded to :data:`SIGNIFICANT` digits."""
     out: dict[str, Any] = {}
     for key, v in inputs.items():
         if isinstance(v, float):
@@ -68,123 +61,6 @@ def _json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
         else:
             out[key] = v
     return out
-
-
-def simulation_record(sim: Simulation, inputs: Mapping[str, Any], derived: Mapping[str, float | None],
-                      run: int = 0, min_rotation: float = 0.0) -> dict[str, Any]:
-    """One run of ``sim`` as a JSON-ready dict.
-
-    Keys: ``overturned``, ``category`` (:meth:`Simulation.categories
-    <regimemap.dynamics.Simulation.categories>` with ``min_rotation``, rad), ``max_rotation``
-    (rad), ``max_rotation_deg``, ``residual_rotation`` (rad), ``residual_rotation_deg``,
-    ``residual_slide`` (m, positive towards O), ``impacts``, ``initial_mode``, ``phases`` (list
-    of {``mode``, ``start``} in s), ``settled``, ``end_time`` (s), ``steps``, ``derived``
-    (``derived``: p, alpha, ..., ``impact_ratio`` None when Housner's ratio does not apply, a
-    squat block's) and ``inputs``.  Floats are rounded to :data:`SIGNIFICANT`
-    significant digits.  A run still moving at the time limit (``settled`` false, not
-    overturned; category "still moving") has no residuals: the three ``residual_*`` are None.
-    """
-    phases = sim.phases[run] if sim.phases is not None else []
-    init = int(sim.initial_mode[run])
-    final = bool(sim.settled[run] or sim.overturned[run])
-
-    def residual(v: float) -> float | None:
-        return round_sig(v) if final else None
-
-    return {
-        "overturned": bool(sim.overturned[run]),
-        "category": CATEGORY_LABELS[int(sim.categories(min_rotation)[run])],
-        "max_rotation": round_sig(sim.max_rotation[run]),
-        "max_rotation_deg": round_sig(math.degrees(float(sim.max_rotation[run]))),
-        "residual_rotation": residual(sim.residual_rotation[run]),
-        "residual_rotation_deg": residual(math.degrees(float(sim.residual_rotation[run]))),
-        "residual_slide": residual(sim.residual_slide[run]),
-        "impacts": int(sim.impacts[run]),
-        "initial_mode": Phase(init).label if init >= 0 else None,
-        "phases": [{"mode": label, "start": round_sig(t)} for label, t in phases],
-        "settled": bool(sim.settled[run]),
-        "end_time": round_sig(sim.end_time[run]),
-        "steps": int(sim.steps[run]),
-        "derived": {key: None if v is None else round_sig(v) for key, v in derived.items()},
-        "inputs": _json_inputs(inputs),
-    }
-
-
-def _num(x: float, digits: int = 6) -> str:
-    v = float(x)
-    return f"{v:.{digits}g}" if v != 0.0 else "0"
-
-
-#: Phases listed in full up to this many; beyond, the first and the last ones.
-_PHASES_SHOWN = 24
-
-
-def format_simulation(record: Mapping[str, Any]) -> str:
-    """A run (:func:`simulation_record`) as text for people: the block and pulse, the phases of
-    the motion with their start times, and the outcome."""
-    inp = record["inputs"]
-    der = record["derived"]
-    lines = []
-    H = inp["gamma"] * inp["half_width"]
-    kp = "from the pulse file" if inp.get("kprime") is None else _num(inp["kprime"])
-    lines.append(f"block      B = {_num(inp['half_width'])} m, H = {_num(H)} m "
-                 f"(gamma = {_num(inp['gamma'])}), mu = {_num(inp['mu'])}, k' = {kp}")
-    if der.get("impact_ratio") is None:  # a squat block: Housner's ratio would be <= 0
-        impact = (f"impact ratio not applicable (a squat block: Housner's (I + m(H^2 - B^2))/(I + "
-                  f"m(H^2 + B^2)) = {_num(der['housner_ratio'], 4)} <= 0, its rocking ends at the "
-                  "first impact: the block lands flat)")
-    else:
-        impact = (f"impact ratio {_num(der['impact_ratio'], 4)}"
-                  + (" (Housner)" if inp.get("restitution") is None else " (--restitution)"))
-    lines.append(f"           p = {_num(der['p'], 5)} rad/s, alpha = {_num(der['alpha'], 5)} rad "
-                 f"({_num(math.degrees(der['alpha']), 4)} deg), {impact}")
-    loads = [f"{name} = {_num(inp[key])}" for key, name in
-             (("buoyancy", "buoyancy"), ("uplift", "uplift"), ("uplift_ratio", "uplift ratio"))
-             if inp.get(key)]
-    if loads:
-        lines.append(f"loads      {', '.join(loads)}, uplift arm = {_num(inp['uplift_arm'])} B")
-    if inp.get("pulse_file"):
-        lines.append(f"pulse      from {inp['pulse_file']}: peak |k| = {_num(der['k_peak'])}, "
-                     f"duration {_num(der['duration'])} s")
-    else:
-        lines.append(f"pulse      {inp['pulse']}, k_peak = {_num(inp['k_peak'])}, duration = "
-                     f"{_num(inp['duration'])} s (omega_p = {_num(der['omega_p'], 5)} rad/s, "
-                     f"omega_p/p = {_num(der['omega_p'] / der['p'], 4)})")
-    phases = record["phases"]
-    lines.append(f"phases     {len(phases)} (start time in s, mode)")
-    shown: list[Any] = list(phases)
-    if len(phases) > _PHASES_SHOWN:
-        shown = phases[:18] + [None] + phases[-4:]
-    for ph in shown:
-        if ph is None:
-            lines.append(f"  ... {len(phases) - 22} more ...")
-            continue
-        lines.append(f"  {_num(ph['start']):>10s}  {ph['mode']:6s}  {phase_description(ph['mode'])}")
-    over = "OVERTURNED" if record["overturned"] else "not overturned"
-    if record["overturned"]:
-        end = f"overturning declared at t = {_num(record['end_time'])} s"
-    elif record["settled"]:
-        end = f"came to rest at t = {_num(record['end_time'])} s"
-    else:
-        end = f"still moving at t = {_num(record['end_time'])} s, the time limit"
-    lines.append(f"outcome    {record['category']}: {over} ({end})")
-    if inp.get("min_rotation"):
-        lines.append(f"  rocking counts above a max rotation of {_num(inp['min_rotation'])} deg "
-                     "(--min-rotation)")
-    lines.append(f"  max rotation        {_num(record['max_rotation'])} rad "
-                 f"({_num(record['max_rotation_deg'], 4)} deg)")
-    if record["residual_slide"] is None:  # still moving: nothing is residual yet
-        lines.append("  residual rotation   none: still moving at the time limit")
-        lines.append("  residual slide      none: still moving at the time limit")
-    else:
-        lines.append(f"  residual rotation   {_num(record['residual_rotation'])} rad "
-                     f"({_num(record['residual_rotation_deg'], 4)} deg)")
-        lines.append(f"  residual slide      {_num(record['residual_slide'])} m (positive towards O)")
-    lines.append(f"  impacts             {record['impacts']}")
-    init = record["initial_mode"]
-    lines.append(f"  initial mode        {init} ({phase_description(init)})" if init else
-                 "  initial mode        none")
-    return "\n".join(lines)
 
 
 # -- files ----------------------------------------------------------------------------------------
@@ -305,6 +181,25 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
     return fmt
 
 
+def write_outcome_record(path: str | os.PathLike[str], record: OutcomeRecord) -> str:
+    """Write the data of an outcome map (:class:`~regimemap.workflows.outcome.OutcomeRecord`) with
+    :func:`write_outcome`: its fixed inputs, and its dimensionless axes when it has them; the format."""
+    m = record.outcome
+    return write_outcome(path, m, m.first_name, m.second_name, inputs=record.inputs, axes=record.extra_axes)
+
+
+def outcome_summary(record: OutcomeRecord) -> list[str]:
+    """What an outcome map took, in words: its runs, their time and the count of each category
+    found; the runs and batches of the refined boundaries."""
+    m = record.outcome
+    lines = [f"{record.n_runs} runs in {m.seconds:.1f} s: "
+             + ", ".join(f"{lab} {c}" for lab, c in record.counts.items() if c)]
+    if m.crossings is not None:
+        lines.append(f"boundaries refined to 1/1000 of each axis: {m.crossings.runs} runs in "
+                     f"{m.crossings.batches} batches, {m.refine_seconds:.1f} s")
+    return lines
+
+
 def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, Any] | None = None,
                    axes: Mapping[str, NDArray[np.float64]] | None = None) -> dict[str, Any]:
     """An outcome map as a JSON-ready dict (numbers rounded to :data:`SIGNIFICANT` digits).
@@ -335,7 +230,7 @@ def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, 
         "boundaries": [{"between": [a, b], "points": [[round_sig(x), round_sig(y)] for x, y in p.tolist()]}
                        for a, b, p in m.boundaries()],
         "min_rotation": round_sig(m.min_rotation),
-        "inputs": _json_inputs(inputs or {}),
+        "inputs": json_inputs(inputs or {}),
     }
 
 

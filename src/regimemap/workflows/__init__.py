@@ -20,13 +20,36 @@ from .._lazy import attach
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
     from .caisson import CaissonError, CaissonNumbers, CaissonRecord, ImplausibleDesignError, run_caisson
+    from .outcome import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
+    from .simulate import SimulationRecord, run_simulation
 
-__all__ = ["CaissonError", "CaissonNumbers", "CaissonRecord", "Field", "ImplausibleDesignError", "Notice",
-           "Record", "run_caisson"]
+__all__ = [
+    "CaissonError",
+    "CaissonNumbers",
+    "CaissonRecord",
+    "DynamicsFigureRecord",
+    "Field",
+    "ImplausibleDesignError",
+    "Notice",
+    "OutcomeRecord",
+    "Record",
+    "SimulationRecord",
+    "run_caisson",
+    "run_dynamics_figure",
+    "run_outcome",
+    "run_simulation",
+]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
-        "caisson": ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError",
-                    "run_caisson"],
+        "caisson": [
+            "CaissonError",
+            "CaissonNumbers",
+            "CaissonRecord",
+            "ImplausibleDesignError",
+            "run_caisson",
+        ],
+        "outcome": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
+        "simulate": ["SimulationRecord", "run_simulation"],
     })

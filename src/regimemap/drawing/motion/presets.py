@@ -1,7 +1,7 @@
 """The figures D.1-D.3 of :mod:`regimemap.dynamics.presets`, as ``regimemap dynamics-figures`` draws them.
 
-The command computes each map (:meth:`regimemap.dynamics.presets.DynamicsFigure.compute`)
-and :func:`dynamics_figure` draws it.
+:func:`regimemap.workflows.outcome.run_dynamics_figure` computes each map (or reads it from
+the cache) and :func:`dynamics_figure` draws it.
 """
 
 from __future__ import annotations
