@@ -19,10 +19,17 @@ from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
+    from .atlas import AnimationRecord, AtlasRecord, run_animation, run_atlas
+    from .map import MapRecord, points_of_map, run_map
+    from .query import QueryRecord, run_query
 
-__all__ = ["Field", "Notice", "Record"]
+__all__ = ["AnimationRecord", "AtlasRecord", "Field", "MapRecord", "Notice", "QueryRecord",
+           "Record", "points_of_map", "run_animation", "run_atlas", "run_map", "run_query"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
+        "atlas": ["AnimationRecord", "AtlasRecord", "run_animation", "run_atlas"],
+        "map": ["MapRecord", "points_of_map", "run_map"],
+        "query": ["QueryRecord", "run_query"],
     })
