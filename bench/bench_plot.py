@@ -140,8 +140,9 @@ def export_floor(path: Path) -> dict[str, Any]:
     from regimemap.drawing.maps.figure import map_figure
     from regimemap.drawing.save import DEFAULT_DPI
     from regimemap.drawing.style import CONSTRUCTION, DOTTED, LINE_LW, MODE_STYLE
+    from regimemap.workflows.map import run_map
 
-    fig, ax, art = map_figure(Parameters(GAMMA, KPRIME), samples=SAMPLES, dpi=DEFAULT_DPI)
+    fig, ax, art = map_figure(run_map(Parameters(GAMMA, KPRIME), samples=SAMPLES), dpi=DEFAULT_DPI)
     data = art.data
     arrays: dict[str, Any] = {}
     polygons, lines = [], []

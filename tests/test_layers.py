@@ -252,8 +252,6 @@ DRAWING_MAY_IMPORT = {
     "maps.describe.loads_text": "the loads in words (formatting)",
     "maps.sweeps.SWEEPS": "the names of the sweepable inputs, constants",
     "maps.sweeps.sweep_params": "the Parameters record of one sweep value (no physics)",
-    "maps.sweeps.checked_values": "input range checks of a sweep's values, raises ValueError",
-    "maps.sweeps.SAMPLES": "a default resolution, a constant",
     "dynamics.outcome.OutcomeMap": "a computed outcome map, a record",
     "dynamics.regions.MapGeometry": "a computed map's regions, a record",
     "dynamics.stepper.History": "a computed motion, a record",
@@ -270,11 +268,7 @@ DRAWING_MAY_IMPORT = {
     "climate.analysis.Diagnostics": "computed threshold diagnostics, a record",
 }
 #: Computations drawing/ still makes itself, to be moved to its callers: (module, name).
-DRAWING_STILL_COMPUTES: set[tuple[str, str]] = {
-    ("maps.atlas", "maps.mapdata.compute_map"),
-    ("maps.atlas", "maps.sweeps.resolve_share"),
-    ("maps.figure", "maps.mapdata.map_for_view"),
-}
+DRAWING_STILL_COMPUTES: set[tuple[str, str]] = set()
 
 
 def _drawing_physics_imports(modules: dict[str, Path]) -> list[tuple[str, int, str]]:

@@ -164,7 +164,7 @@ def test_atlas_and_animate_take_kprime_up_to_the_crest(tmp_path):
 
 
 def test_the_library_takes_kprime_up_to_the_crest():
-    from regimemap.drawing.maps.atlas import checked_values
+    from regimemap.maps.sweeps import checked_values
 
     assert checked_values([3], [0.5, 1.5], "kprime", {"crest": 1.5}) == ([3.0], [0.5, 1.5])
     with pytest.raises(ValueError, match=r"kprime must be a number in \[-1, 1\], got 1.5"):

@@ -194,9 +194,10 @@ def test_animate_sweeps_the_uplift_ratio(run_cli, tmp_path):
 @pytest.mark.render
 def test_atlas_figure_panel_titles_and_key_with_loads():
     from regimemap.drawing.maps.atlas import atlas_figure
+    from regimemap.workflows.atlas import run_atlas
 
-    fig = atlas_figure([0.7], [0.0, 0.5], sweep="uplift_ratio",
-                       fixed={"kprime": -0.018, "buoyancy": 0.318}, samples=101, k_max=6.0)
+    fig = atlas_figure(run_atlas([0.7], [0.0, 0.5], sweep="uplift_ratio",
+                                 fixed={"kprime": -0.018, "buoyancy": 0.318}, samples=101, k_max=6.0))
     titles = [ax.get_title(loc="left") for ax in fig.axes]
     assert titles == [r"$\gamma = 0.7$, $\nu = 0$", r"$\gamma = 0.7$, $\nu = 0.5$"]
     labels = [t.get_text() for t in fig.legends[0].get_texts()]

@@ -19,6 +19,7 @@ from regimemap.maps.sweeps import (
     sweep_frames,
 )
 from regimemap.mechanics.validation import check_gamma, check_kprime
+from regimemap.workflows.atlas import run_atlas
 
 pytestmark = pytest.mark.render
 
@@ -29,7 +30,7 @@ def _panels(fig):
 
 def test_atlas_panels_titles_and_shared_axes():
     gammas, kprimes = [1.0, 3.0], [-0.6, 0.4, 0.9]
-    fig = atlas_figure(gammas, kprimes, samples=101)
+    fig = atlas_figure(run_atlas(gammas, kprimes, samples=101))
     panels = _panels(fig)
     assert len(panels) == 6
     titles = [ax.get_title(loc="left") for ax in panels]
@@ -54,7 +55,7 @@ def test_atlas_share_row_and_none():
     assert ext[0][0] == ext[0][1] and ext[1][0] == ext[1][1]
     own = atlas_extents(gammas, kprimes, "none")
     assert own[1][1] == auto_extent(Parameters(3.0, 0.4))
-    fig = atlas_figure(gammas, kprimes, share="none", samples=101)
+    fig = atlas_figure(run_atlas(gammas, kprimes, share="none", samples=101))
     panels = _panels(fig)
     assert (panels[3].get_xlim()[1], panels[3].get_ylim()[1]) == own[1][1]
     fixed = atlas_extents(gammas, kprimes, "all", k_max=2.0, mu_max=1.0)
@@ -66,10 +67,10 @@ def test_atlas_share_row_and_none():
 @pytest.mark.parametrize("suffix", ["png", "svg"])
 def test_write_atlas_file(tmp_path, suffix):
     path = tmp_path / f"atlas.{suffix}"
-    write_atlas(path, [1.0, 2.0], [-0.2, 0.4], samples=101, dpi=40)
+    write_atlas(path, run_atlas([1.0, 2.0], [-0.2, 0.4], samples=101), dpi=40)
     data = path.read_bytes()
     if suffix == "png":
-        w, h = atlas_figure([1.0, 2.0], [-0.2, 0.4], samples=11).get_size_inches()
+        w, h = atlas_figure(run_atlas([1.0, 2.0], [-0.2, 0.4], samples=11)).get_size_inches()
         with Image.open(path) as im:
             assert im.format == "PNG"
             assert im.size == (int(w * 40), int(h * 40))  # matplotlib truncates
@@ -82,11 +83,11 @@ def test_write_atlas_file(tmp_path, suffix):
 
 def test_atlas_limits():
     with pytest.raises(ValueError, match="panels exceed"):
-        atlas_figure([1.0] * 7, [0.0] * 7)
+        run_atlas([1.0] * 7, [0.0] * 7)
     with pytest.raises(ValueError, match="at least one"):
-        atlas_figure([], [0.0])
+        run_atlas([], [0.0])
     with pytest.raises(ValueError, match="gamma must be"):
-        atlas_figure([-1.0], [0.0])
+        run_atlas([-1.0], [0.0])
     assert MAX_PANELS == 48 and MAX_FRAMES == 400
 
 
@@ -174,7 +175,7 @@ def test_atlas_gives_own_views_where_sharing_would_cram():
     gammas, kprimes = [1.0, 3.0], [-0.6, 0.0, 0.9]
     share, ext, crammed = resolve_share(gammas, kprimes, "all")
     assert share == "none" and (3.0, 0.0) in crammed
-    fig = atlas_figure(gammas, kprimes, samples=101)
+    fig = atlas_figure(run_atlas(gammas, kprimes, samples=101))
     assert "own view" in fig._suptitle.get_text() and "cram" in fig._suptitle.get_text()
     views = {(ax.get_xlim(), ax.get_ylim()) for ax in _panels(fig)}
     assert len(views) > 1

@@ -24,6 +24,7 @@ from regimemap.drawing.maps.figure import map_figure
 from regimemap.maps.mapdata import map_for_view
 from regimemap.maps.query import classify_point
 from regimemap.mechanics.modes import Mode
+from regimemap.workflows.map import run_map
 
 pytestmark = pytest.mark.render
 
@@ -57,7 +58,7 @@ def plot_polygons(params: Parameters, point: tuple[float, float] | None = None,
     from regimemap.maps.points import DesignPoint
 
     points = [DesignPoint(*point)] if point is not None else []
-    _, _, art = map_figure(params, dpi=150, points=points, samples=resolution, view="designer")
+    _, _, art = map_figure(run_map(params, points=points, samples=resolution, view="designer"), dpi=150)
     return art.data.polygons
 
 

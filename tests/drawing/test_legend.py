@@ -8,6 +8,7 @@ import pytest
 from regimemap import MAP_MODES, Mode, Parameters
 from regimemap.drawing.maps.figure import map_figure
 from regimemap.drawing.maps.mapplot import MODE_STYLE
+from regimemap.workflows.map import run_map
 
 pytestmark = pytest.mark.render
 
@@ -36,7 +37,7 @@ def test_map_key_entries_swatch_symbol_description():
 
     from regimemap.drawing.maps.key import ModeSwatch
 
-    fig, ax, art = map_figure(Parameters(3.0, 0.4))
+    fig, ax, art = map_figure(run_map(Parameters(3.0, 0.4)))
     labels = [t.get_text() for t in art.legend.get_texts()]
     shown = [m for m in MAP_MODES if m in art.fills and art.fills[m]]
     assert labels == [m.description for m in shown] + ["boundary of a region",
@@ -102,7 +103,7 @@ def test_line_samples_are_as_long_as_the_swatches():
 
     from regimemap.drawing.maps.key import ModeSwatch
 
-    fig, ax, art = map_figure(Parameters(3.0, -0.3))
+    fig, ax, art = map_figure(run_map(Parameters(3.0, -0.3)))
     fig.canvas.draw()
     r = fig.canvas.get_renderer()
     widths = {}
@@ -119,7 +120,7 @@ def test_swatch_colour_in_the_raster():
     """The PNG shows each swatch in its mode's colour (between the hatch lines)."""
     from regimemap.drawing.maps.key import ModeSwatch
 
-    fig, ax, art = map_figure(Parameters(3.0, -0.3), dpi=100)
+    fig, ax, art = map_figure(run_map(Parameters(3.0, -0.3)), dpi=100)
     fig.canvas.draw()
     img = np.asarray(fig.canvas.buffer_rgba())[..., :3].astype(int)
     h = img.shape[0]
@@ -147,7 +148,7 @@ def test_ambiguity_overlay_keeps_the_key():
     from regimemap.drawing.maps.key import ModeSwatch
     from regimemap.maps.ambiguity import ambiguous_in_view
 
-    fig, ax, art = map_figure(Parameters(3.0, -0.6), k_max=4.0, mu_max=3.0)
+    fig, ax, art = map_figure(run_map(Parameters(3.0, -0.6), k_max=4.0, mu_max=3.0))
     before = [(type(c[0]), [x.get_text() for x in c if isinstance(x, Text)])
               for c, _ in _key_parts(art.legend)]
     assert draw_ambiguity(ax, ambiguous_in_view(Parameters(3.0, -0.6), 4.0, 3.0), 4.0, 3.0)
@@ -160,8 +161,9 @@ def test_ambiguity_overlay_keeps_the_key():
 def test_atlas_key_has_every_mode():
     from regimemap.drawing.maps.atlas import atlas_figure
     from regimemap.drawing.maps.key import ModeSwatch
+    from regimemap.workflows.atlas import run_atlas
 
-    fig = atlas_figure([3.0], [-0.3, 0.4], samples=101)
+    fig = atlas_figure(run_atlas([3.0], [-0.3, 0.4], samples=101))
     (leg,) = fig.legends
     modes = [c[0].mode for c, _ in _key_parts(leg) if isinstance(c[0], ModeSwatch)]
     assert modes == list(MAP_MODES)

@@ -27,6 +27,8 @@ from regimemap.drawing.maps.figure import map_figure  # noqa: E402
 from regimemap.drawing.maps.presets import FIGURE_IDS  # noqa: E402
 from regimemap.drawing.text.tidy import MEASURE_DPI, text_boxes  # noqa: E402
 from regimemap.maps import DesignPoint, classify  # noqa: E402
+from regimemap.workflows.atlas import run_atlas  # noqa: E402
+from regimemap.workflows.map import run_map  # noqa: E402
 
 pytestmark = pytest.mark.render
 
@@ -136,8 +138,8 @@ def test_map_text_never_collides(gamma, kprime, what):
         label = what[4:]
         kw = {"raw": True} if label == "all" else {"raw": True, "modes": [Mode.from_label(label)]}
     loads = LOADS.get((gamma, kprime), {}) if what in ("goda", "loaded") else {}
-    fig, ax, art = map_figure(Parameters(gamma, kprime, **loads), dpi=DPI, points=points,
-                              samples=201, **kw)
+    fig, ax, art = map_figure(run_map(Parameters(gamma, kprime, **loads), points=points, samples=201,
+                                      **kw), dpi=DPI)
     _check_boxes(fig, lambda: text_boxes(fig, [art]))
     _check_map(fig, art)
     if what.startswith("raw-") and what != "raw-all":
@@ -158,16 +160,16 @@ def test_map_text_never_collides(gamma, kprime, what):
 def test_key_leaves_out_modes_beyond_the_view():
     """At gamma = 0.3, k' = 0.99 rocking starts above A (1.68, 1.68): not in the designer's view."""
     p = Parameters(0.3, 0.99)
-    fig, ax, art = map_figure(p, dpi=DPI, samples=201)
+    fig, ax, art = map_figure(run_map(p, samples=201), dpi=DPI)
     assert art.data.mu_max == 1.2 and p.mu_A > 1.2
     keyed = {t.get_text() for t in art.legend.get_texts()}
     assert Mode.RO.description not in keyed and Mode.SL.description in keyed
     # the report's view shows A and rocking above it, and keys it
-    fig, ax, art = map_figure(p, dpi=DPI, samples=201, view="report")
+    fig, ax, art = map_figure(run_map(p, samples=201, view="report"), dpi=DPI)
     assert Mode.RO.description in {t.get_text() for t in art.legend.get_texts()}
 
 def test_atlas_panels_never_collide():
-    fig = atlas_figure([1.0, 3.0], [-0.6, 0.0, 0.9], dpi=DPI, samples=151)
+    fig = atlas_figure(run_atlas([1.0, 3.0], [-0.6, 0.0, 0.9], samples=151), dpi=DPI)
     arts = fig._regimemap_maps  # the panels' MapArtists
     _check_boxes(fig, lambda: text_boxes(fig, arts))
     for art in arts:
@@ -176,7 +178,7 @@ def test_atlas_panels_never_collide():
 
 @pytest.mark.slow
 def test_one_row_atlas_leaves_room_for_mu():
-    fig = atlas_figure([3.0], [-1.0, -0.5, 0.0, 0.5, 1.0], share="none", dpi=DPI, samples=151)
+    fig = atlas_figure(run_atlas([3.0], [-1.0, -0.5, 0.0, 0.5, 1.0], share="none", samples=151), dpi=DPI)
     _check_boxes(fig, lambda: text_boxes(fig, fig._regimemap_maps))
 
 
@@ -203,8 +205,8 @@ def test_report_figures_never_collide(fid):
     from regimemap.drawing.maps.figure import preset_figure
     from regimemap.drawing.maps.presets import get_preset
 
-    fig, ax, art = preset_figure(fid, dpi=DPI, samples=201)
     preset = get_preset(fid)
+    fig, ax, art = preset_figure(preset, run_map(**preset.map_keywords, samples=201), dpi=DPI)
     if preset.k_max is not None:  # the preset's axes win
         assert art.data.k_max == preset.k_max
     if preset.mu_max is not None:
@@ -216,17 +218,14 @@ def test_report_figures_never_collide(fid):
 @pytest.mark.slow
 @pytest.mark.parametrize("wid", ["W.1", "W.2", "W.3", "W.4"])
 def test_worked_figures_never_collide(wid):
-    from regimemap.drawing.maps.worked import render_worked
+    from regimemap.drawing.maps.worked import WORKED, render_worked
 
-    fig = render_worked(wid, dpi=DPI, samples=151)
-    arts = getattr(fig, "_regimemap_maps", None)
-    if arts is None:  # a single map: its artists are those of the one axes
-        from regimemap.drawing.maps.worked import WORKED
-
-        w = WORKED[wid]
-        fig, ax, art = map_figure(w.params, dpi=DPI, k_max=w.k_max, mu_max=w.mu_max,
-                                  points=list(w.points), title=w.title, view="report",
-                                  samples=151)
+    w = WORKED[wid]
+    if w.sweep is not None:  # an atlas: the artists of its panels
+        fig = render_worked(w, run_atlas(**w.atlas_keywords, samples=151), dpi=DPI)
+        arts = fig._regimemap_maps
+    else:
+        fig, ax, art = map_figure(run_map(**w.map_keywords, samples=151), dpi=DPI, title=w.title)
         arts = [art]
     _check_boxes(fig, lambda: text_boxes(fig, arts))
     for art in arts:
@@ -239,7 +238,7 @@ def test_the_layout_does_not_depend_on_the_resolution(tmp_path):
 
     out = []
     for dpi in (30, 150, 300):
-        fig, _, _ = map_figure(Parameters(3.0, -0.3), dpi=dpi, samples=201)
+        fig, _, _ = map_figure(run_map(Parameters(3.0, -0.3), samples=201), dpi=dpi)
         save_figure(fig, tmp_path / f"m{dpi}.svg", "svg")
         out.append((tmp_path / f"m{dpi}.svg").read_bytes())
     assert out[0] == out[1] == out[2]

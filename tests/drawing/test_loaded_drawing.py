@@ -11,6 +11,7 @@ from regimemap.drawing.maps.figure import map_figure
 from regimemap.drawing.maps.mapplot import default_title
 from regimemap.drawing.style import MODE_STYLE
 from regimemap.maps.describe import format_value, loads_text
+from regimemap.workflows.map import run_map
 
 GODA = Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524)
 SLENDER = Parameters(3.0, 0.4, uplift_ratio=1.0)
@@ -30,7 +31,7 @@ def test_every_loaded_mode_has_its_own_colour_and_hatch():
 @pytest.mark.render
 @pytest.mark.parametrize("p", [GODA, SLENDER], ids=["goda", "slender"])
 def test_loaded_map_fills_lift_off_and_keys_it(p):
-    fig, ax, art = map_figure(p, samples=301)
+    fig, ax, art = map_figure(run_map(p, samples=301))
     assert art.fills[Mode.LO], "a patch for lift-off"
     # the LO patch covers points the classifier calls LO, and only those
     poly = art.polygons[Mode.LO][0]
@@ -47,7 +48,7 @@ def test_loaded_map_fills_lift_off_and_keys_it(p):
 
 @pytest.mark.render
 def test_loaded_fills_are_vector_polygons_not_a_staircase():
-    _, _, art = map_figure(GODA, samples=301)
+    _, _, art = map_figure(run_map(GODA, samples=301))
     poly = art.polygons[Mode.LO][0]
     # lift-off starts at k_L: its left edge is the vertical through L, exactly
     assert np.isclose(poly[:, 0].min(), GODA.k_L, rtol=0, atol=1e-12)
@@ -56,7 +57,7 @@ def test_loaded_fills_are_vector_polygons_not_a_staircase():
 
 @pytest.mark.render
 def test_title_states_the_loads():
-    _, _, art = map_figure(GODA, samples=201)
+    _, _, art = map_figure(run_map(GODA, samples=201))
     title = art.title.get_text()
     assert r"$\beta = 0.318$" in title and r"$\nu = 0.524$" in title and "$e_u = 1/3$" in title
     assert "case" not in title
@@ -66,7 +67,7 @@ def test_title_states_the_loads():
 @pytest.mark.render
 def test_report_block_keeps_its_title_and_key():
     p = Parameters(3.0, -0.3)
-    fig, ax, art = map_figure(p, samples=201)
+    fig, ax, art = map_figure(run_map(p, samples=201))
     assert "$\\beta" not in art.title.get_text() and p.case.tex in art.title.get_text()
     labels = _key_labels(art)
     assert Mode.LO.description not in labels
@@ -79,7 +80,7 @@ def test_overlay_names_least_constraint():
     from regimemap.maps.ambiguity import ambiguous_in_view
 
     # {LO, RO, SRO-} lies above mu = 1.2: in the report's view, not the designer's
-    fig, ax, art = map_figure(GODA, samples=201, view="report")
+    fig, ax, art = map_figure(run_map(GODA, samples=201, view="report"))
     drawn = draw_ambiguity(ax, ambiguous_in_view(GODA, art.data.k_max, art.data.mu_max),
                            art.data.k_max, art.data.mu_max)
     texts = [a.get_text() for a in drawn if hasattr(a, "get_text")]

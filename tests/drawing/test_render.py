@@ -15,11 +15,12 @@ from regimemap import MAP_MODES, Mode, Parameters, label_grid
 from regimemap.drawing.maps.artists import MapArtists
 from regimemap.drawing.maps.figure import map_figure, new_figure, render_map, render_preset
 from regimemap.drawing.maps.mapplot import MapStyle, draw_design_points, draw_map
-from regimemap.drawing.maps.presets import PRESETS
+from regimemap.drawing.maps.presets import PRESETS, get_preset
 from regimemap.drawing.save import FORMATS, format_from_path, save_figure
 from regimemap.drawing.style import MODE_STYLE
 from regimemap.io.points import DesignPoint
 from regimemap.maps.mapdata import map_for_view
+from regimemap.workflows.map import run_map
 
 pytestmark = pytest.mark.render
 
@@ -79,8 +80,8 @@ def test_fill_colour_inside_each_region(fid):
     """Render the all-mode figure (no hatches, no decorations) and read the colour of each region."""
     pr = PRESETS[fid]
     deep, (k_max, mu_max) = _deep_points(pr)
-    fig, ax, art = map_figure(pr.params, dpi=60, k_max=k_max, mu_max=mu_max, modes=pr.modes,
-                              hatches=False, curves=False, labels=False, legend=False, title="")
+    fig, ax, art = map_figure(run_map(pr.params, k_max=k_max, mu_max=mu_max, modes=pr.modes, curves=False), dpi=60,
+                              curves=False, hatches=False, labels=False, legend=False, title="")
     assert deep, "no region found"
     checked = 0
     for mode, (k, mu, depth) in deep.items():
@@ -98,8 +99,7 @@ def test_most_common_colour_with_hatches_and_labels(fid):
     """With hatches, lines and labels on, the dominant colour near a deep point is the fill."""
     pr = PRESETS[fid]
     deep, (k_max, mu_max) = _deep_points(pr)
-    fig, ax, art = map_figure(pr.params, dpi=100, k_max=k_max, mu_max=mu_max, modes=pr.modes,
-                              labels=False)
+    fig, ax, art = map_figure(run_map(pr.params, k_max=k_max, mu_max=mu_max, modes=pr.modes), dpi=100, labels=False)
     for mode, (k, mu, depth) in deep.items():
         if depth < 4:
             continue
@@ -114,7 +114,7 @@ def test_region_labels_are_in_their_regions():
 
     for fid in ALL_MODE_IDS:
         pr = PRESETS[fid]
-        fig, ax, art = map_figure(pr.params, k_max=pr.k_max, mu_max=pr.mu_max, modes=pr.modes)
+        fig, ax, art = map_figure(run_map(pr.params, k_max=pr.k_max, mu_max=pr.mu_max, modes=pr.modes))
         for mode, texts in art.region_labels.items():
             for t in texts:
                 k, mu = getattr(t, "xy", None) or t.get_position()  # leader labels point in
@@ -179,12 +179,18 @@ def test_design_points():
 
 
 def test_design_points_extend_the_view():
-    fig, ax, art = map_figure(Parameters(3.0, 0.4), points=[DesignPoint(3.0, 2.0, "far")])
+    fig, ax, art = map_figure(run_map(Parameters(3.0, 0.4), points=[DesignPoint(3.0, 2.0, "far")]))
     assert art.extent[0] > 3.0 and art.extent[1] > 2.0
 
 
+def _preset_map(fid):
+    """The map of one of the report's figures, as ``regimemap figure`` computes it."""
+    return run_map(**get_preset(fid).map_keywords)
+
+
 def _render_bytes(fmt, fid=None):
-    fig = render_preset(fid, dpi=50) if fid else render_map(Parameters(3.0, 0.4), dpi=50)
+    fig = (render_preset(fid, _preset_map(fid), dpi=50) if fid
+           else render_map(run_map(Parameters(3.0, 0.4)), dpi=50))
     buf = io.BytesIO()
     from regimemap.drawing.save import metadata as _metadata
     from regimemap.drawing.style import style_context
@@ -197,24 +203,24 @@ def _render_bytes(fmt, fid=None):
 @pytest.mark.parametrize("fmt", FORMATS)
 def test_two_renders_are_byte_identical(fmt, tmp_path):
     a, b = tmp_path / f"a.{fmt}", tmp_path / f"b.{fmt}"
-    save_figure(render_map(Parameters(3.0, 0.4)), a)
-    save_figure(render_map(Parameters(3.0, 0.4)), b)
+    save_figure(render_map(run_map(Parameters(3.0, 0.4))), a)
+    save_figure(render_map(run_map(Parameters(3.0, 0.4))), b)
     assert a.read_bytes() == b.read_bytes()
 
 
 def test_reused_figure_gives_the_same_bytes(tmp_path):
     fig = None
     for fid in ("3.9a", "4.7a", "3.10"):
-        fig = render_preset(fid, fig=fig)
+        fig = render_preset(fid, _preset_map(fid), fig=fig)
     save_figure(fig, tmp_path / "reused.svg")
-    save_figure(render_preset("3.10"), tmp_path / "fresh.svg")
+    save_figure(render_preset("3.10", _preset_map("3.10")), tmp_path / "fresh.svg")
     assert (tmp_path / "reused.svg").read_bytes() == (tmp_path / "fresh.svg").read_bytes()
 
 
 def test_png_output(tmp_path):
     from PIL import Image
 
-    path = save_figure(render_map(Parameters(3.0, 0.4)), tmp_path / "m.png")
+    path = save_figure(render_map(run_map(Parameters(3.0, 0.4))), tmp_path / "m.png")
     data = path.read_bytes()
     assert data.startswith(b"\x89PNG\r\n\x1a\n")
     im = Image.open(path)
@@ -223,7 +229,7 @@ def test_png_output(tmp_path):
 
 
 def test_svg_output_is_vector_small_and_dateless(tmp_path):
-    path = save_figure(render_map(Parameters(3.0, 0.4)), tmp_path / "m.svg")
+    path = save_figure(render_map(run_map(Parameters(3.0, 0.4))), tmp_path / "m.svg")
     data = path.read_bytes()
     assert len(data) < 1_000_000
     root = ET.fromstring(data)
@@ -235,7 +241,7 @@ def test_svg_output_is_vector_small_and_dateless(tmp_path):
 
 
 def test_pdf_output_has_truetype_fonts_and_no_raster(tmp_path):
-    path = save_figure(render_map(Parameters(3.0, -0.3)), tmp_path / "m.pdf")
+    path = save_figure(render_map(run_map(Parameters(3.0, -0.3))), tmp_path / "m.pdf")
     data = path.read_bytes()
     assert data.startswith(b"%PDF")
     assert b"/Type3" not in data and b"/Subtype /Type3" not in data
@@ -245,7 +251,7 @@ def test_pdf_output_has_truetype_fonts_and_no_raster(tmp_path):
 
 
 def test_save_figure_rejects_unknown_formats_and_leaves_nothing(tmp_path):
-    fig = render_map(Parameters(3.0, 0.4), dpi=40)
+    fig = render_map(run_map(Parameters(3.0, 0.4)), dpi=40)
     with pytest.raises(ValueError, match="png, svg, pdf"):
         save_figure(fig, tmp_path / "m.jpg")
     with pytest.raises(ValueError, match="png, svg, pdf"):
@@ -254,7 +260,7 @@ def test_save_figure_rejects_unknown_formats_and_leaves_nothing(tmp_path):
 
 
 def test_save_figure_is_atomic(tmp_path, monkeypatch):
-    fig = render_map(Parameters(3.0, 0.4), dpi=40)
+    fig = render_map(run_map(Parameters(3.0, 0.4)), dpi=40)
     target = tmp_path / "m.png"
     target.write_bytes(b"old")
 
@@ -305,7 +311,8 @@ def test_no_pyplot_and_no_global_rcparams():
         "from regimemap import Parameters\n"
         "from regimemap.drawing.maps.figure import render_map\nfrom regimemap.drawing.save import save_figure\n"
         "import io\n"
-        "fig = render_map(Parameters(3, 0.4), dpi=40)\n"
+        "from regimemap.workflows.map import run_map\n"
+        "fig = render_map(run_map(Parameters(3, 0.4)), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"
         "changed = [k for k in keys if rc[k] != before[k]]\n"
         "print('pyplot' if 'matplotlib.pyplot' in sys.modules else 'no-pyplot', changed)\n"
@@ -338,7 +345,7 @@ def test_point_names_never_overlap(gamma):
     import itertools
 
     for kprime in (-0.6, -0.3, -0.2, -0.1, 0.0, 0.2, 0.4, 0.85):
-        fig, ax, art = map_figure(Parameters(gamma, kprime), dpi=72)
+        fig, ax, art = map_figure(run_map(Parameters(gamma, kprime)), dpi=72)
         fig.canvas.draw()
         r = fig.canvas.get_renderer()
         boxes = {n: t.get_window_extent(r) for n, t in art.point_labels.items()}

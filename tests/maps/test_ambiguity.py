@@ -17,6 +17,7 @@ from regimemap.maps.ambiguity import (
     set_label,
 )
 from regimemap.mechanics.solver import admissible
+from regimemap.workflows.map import run_map
 
 from .._sweep import sweep, tiered
 
@@ -222,7 +223,7 @@ def test_bad_view_rejected():
 def _map_axes(gamma, kprime, **kw):
     from regimemap.drawing.maps.figure import map_figure
 
-    fig, ax, art = map_figure(Parameters(gamma, kprime), samples=201, **kw)
+    fig, ax, art = map_figure(run_map(Parameters(gamma, kprime), samples=201, **kw))
     return fig, ax, art
 
 

@@ -14,9 +14,10 @@ Command line: ``regimemap figure 3.3a``.
 
 from regimemap.drawing import render_preset
 from regimemap.drawing.maps.presets import get_preset
+from regimemap.workflows import run_map
 
 preset = get_preset("3.3a")
 print(f"gamma = {preset.gamma:g}, k' = {preset.kprime:g}, case {preset.params.case.value}, "
       f"modes {[m.label for m in preset.modes]}, raw region: {preset.raw}")
 
-fig = render_preset(preset)
+fig = render_preset(preset, run_map(**preset.map_keywords))

@@ -18,6 +18,7 @@ import regimemap
 from regimemap.drawing import map_figure
 from regimemap.drawing.maps.worked import WORKED
 from regimemap.maps import DesignPoint
+from regimemap.workflows import run_map
 
 block = regimemap.Parameters(0.70, -0.018, buoyancy=0.318, uplift_ratio=0.524)
 goda = DesignPoint(0.2776, 0.6, "Goda's caisson")
@@ -26,5 +27,5 @@ code = regimemap.classify(goda.k, goda.mu, 0.70, -0.018, buoyancy=0.318, uplift_
 mode = regimemap.Mode(code)
 print(f"Goda's design point: {mode.label}; A at k = {block.k_A:.4f}")
 
-fig, ax, artists = map_figure(block, points=[goda], k_max=6.0, mu_max=3.0, view="report",
-                              title=WORKED["W.1"].title)
+record = run_map(block, points=[goda], k_max=6.0, mu_max=3.0, view="report")
+fig, ax, artists = map_figure(record, title=WORKED["W.1"].title)

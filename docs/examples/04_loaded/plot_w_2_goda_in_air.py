@@ -11,9 +11,11 @@ import regimemap
 from regimemap.drawing import map_figure
 from regimemap.drawing.maps.worked import WORKED
 from regimemap.maps import DesignPoint
+from regimemap.workflows import run_map
 
 block = regimemap.Parameters(0.70, -0.018)
 print(f"A at k = {block.k_A:.4f}")
 
-fig, ax, artists = map_figure(block, points=[DesignPoint(0.2776, 0.6, "Goda's caisson")],
-                              k_max=6.0, mu_max=3.0, view="report", title=WORKED["W.2"].title)
+record = run_map(block, points=[DesignPoint(0.2776, 0.6, "Goda's caisson")], k_max=6.0,
+                 mu_max=3.0, view="report")
+fig, ax, artists = map_figure(record, title=WORKED["W.2"].title)

@@ -10,7 +10,8 @@ beyond G, and the block lifts off beyond L.
 import regimemap
 from regimemap.drawing import map_figure
 from regimemap.drawing.maps.worked import WORKED
+from regimemap.workflows import run_map
 
 block = regimemap.Parameters(3.0, 0.4, uplift_ratio=1.0)
-fig, ax, artists = map_figure(block, view="report", title=WORKED["W.3"].title)
+fig, ax, artists = map_figure(run_map(block, view="report"), title=WORKED["W.3"].title)
 print("modes on the map:", ", ".join(mode.label for mode in artists.polygons))

@@ -14,8 +14,9 @@ Command line::
 
 from regimemap.drawing import atlas_figure
 from regimemap.drawing.maps.worked import WORKED
+from regimemap.workflows import run_atlas
 
-fig = atlas_figure([0.70], [0.0, 0.524, 1.0], sweep="uplift_ratio",
-                   fixed={"kprime": -0.018, "buoyancy": 0.318, "uplift_arm": 1 / 3},
-                   k_max=6.0, mu_max=3.0, view="report",
-                   caption=f"Fig. W.4  {WORKED['W.4'].caption}")
+atlas = run_atlas([0.70], [0.0, 0.524, 1.0], sweep="uplift_ratio",
+                  fixed={"kprime": -0.018, "buoyancy": 0.318, "uplift_arm": 1 / 3},
+                  k_max=6.0, mu_max=3.0, view="report")
+fig = atlas_figure(atlas, caption=f"Fig. W.4  {WORKED['W.4'].caption}")

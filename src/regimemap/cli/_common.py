@@ -8,7 +8,7 @@ import gc
 import os
 import signal
 import sys
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TypeVar, overload
 
@@ -30,6 +30,8 @@ from ._signals import Terminated, stop_signals
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
 
+    from ..mechanics.notices import Notice
+
     #: Base of the option types.  Recent click makes ParamType generic in the
     #: converted value; click 8.1 cannot subscript it at run time.
     ParamType = click.ParamType[Any]
@@ -49,6 +51,7 @@ __all__ = [
     "resolution_type",
     "output_path",
     "output_dir",
+    "echo_notices",
     "run_main",
     "RunError",
     "Terminated",
@@ -297,6 +300,16 @@ def report_written(path: str | os.PathLike[str], note: str | None = None) -> Non
     click.echo(os.fspath(path))
     if note:
         click.echo(f"regimemap: {note}", err=True)
+
+
+def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None) -> None:
+    """A record's notices on standard error, one line each: ``regimemap: warning: MESSAGE``.
+
+    ``prefix`` gives another start of the line to the notices of some codes
+    (``{"crammed": "regimemap: note: "}``).
+    """
+    for n in notices:
+        click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{n.message}", err=True)
 
 
 def _one_line(text: str) -> str:

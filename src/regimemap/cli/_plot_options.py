@@ -214,25 +214,21 @@ def resolve_output(output: str | None, fmt: str | None, default_name: str) -> tu
     return output_path(path, "--output"), fmt
 
 
-def read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float, kprime: float,
-                loads: dict[str, Any] | None = None) -> list[DesignPoint]:
-    """Design points from ``--points`` files and ``--point`` specs, for this map.
+def read_points(files: Sequence[str], specs: Sequence[DesignPoint]) -> list[DesignPoint]:
+    """Design points from ``--point`` specs and ``--points`` files, in that order.
 
     Parameters
     ----------
     files : sequence of str
-        The ``--points`` CSV files (a bad file is a usage error).
+        The ``--points`` CSV files (a bad file is a usage error; a file read
+        in another dialect is noted on standard error).
     specs : sequence of DesignPoint
         The ``--point`` options.
-    gamma, kprime : float
-        The map's block.
-    loads : dict, optional
-        The map's loads (``--buoyancy`` ...).
 
     Returns
     -------
     list of DesignPoint
-        The points of this map; the others are named in a warning on standard error.
+        Every point; :func:`regimemap.workflows.map.run_map` keeps those of its block.
     """
     points = list(specs)
     if files:
@@ -245,30 +241,4 @@ def read_points(files: Sequence[str], specs: Sequence[DesignPoint], gamma: float
         if table.note:
             click.echo(f"regimemap: note: {f} is {table.note}; read as such", err=True)
         points.extend(table.points)
-    keep: list[DesignPoint] = []
-    other: list[DesignPoint] = []
-    for pt in points:
-        same = (pt.gamma is None or math.isclose(pt.gamma, gamma, rel_tol=1e-9)) and (
-            pt.kprime is None or math.isclose(pt.kprime, kprime, rel_tol=1e-9, abs_tol=1e-12))
-        same = same and _same_loads(pt, loads or {})
-        (keep if same else other).append(pt)
-    if other:
-        names = ", ".join(p.name or f"({number_text(p.k)}, {number_text(p.mu)})" for p in other[:5])
-        more = f" and {len(other) - 5} more" if len(other) > 5 else ""
-        click.echo(f"regimemap: warning: {len(other)} point(s) have another gamma or kprime or other loads "
-                   f"and are not drawn on this map: {names}{more}", err=True)
-    return keep
-
-
-def _same_loads(pt: DesignPoint, loads: dict[str, Any]) -> bool:
-    """Whether the loads a point carries (CSV columns) are the map's."""
-    from ..mechanics.block import LOAD_DEFAULTS
-
-    for key, default in LOAD_DEFAULTS.items():
-        own = getattr(pt, key, None)
-        if own is None:
-            continue
-        want = loads.get(key, default)
-        if want is None or not math.isclose(own, want, rel_tol=1e-9, abs_tol=1e-12):
-            return False
-    return True
+    return points

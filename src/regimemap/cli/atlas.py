@@ -20,6 +20,7 @@ from ._common import (
     LOAD_OPTIONS,
     ParamType,
     check_kprime_crest,
+    echo_notices,
     gamma_option,
     import_matplotlib,
     load_options,
@@ -187,30 +188,19 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
         raise click.UsageError(
             f"{len(gammas)} gamma x {len(values)} {sweep} = {n} panels exceed the limit of "
             f"{MAX_PANELS}; give fewer values to --gamma or {opt}")
-    blocks = _checked_blocks(gammas, sweep, values, fixed)
+    _checked_blocks(gammas, sweep, values, fixed)
     fmt = _figure_output(output)
     import_matplotlib()
     from ..drawing.maps.atlas import write_atlas
-    from ..maps.sweeps import points_outside, resolve_share
+    from ..workflows.atlas import run_atlas
 
-    used, ext, crammed = resolve_share(gammas, values, share, k_max, mu_max, view=view,
-                                       sweep=sweep, fixed=fixed)
+    record = run_atlas(gammas, values, sweep=sweep, fixed=fixed, share=share, k_max=k_max,
+                       mu_max=mu_max, view=view)
     with writing(output):
-        write_atlas(output, gammas, values, fmt=fmt, share=share, k_max=k_max, mu_max=mu_max,
-                    view=view, dpi=dpi, sweep=sweep, fixed=fixed)
+        write_atlas(output, record, fmt=fmt, dpi=dpi)
     across = "" if sweep == "kprime" else f", columns {sweep}"
     report_written(output, f"{len(gammas)} x {len(values)} panels{across}")
-    label = "k'" if sweep == "kprime" else sweep
-    if crammed:
-        names = ", ".join(f"({g:g}, {v:g})" for g, v in crammed[:4])
-        more = f" and {len(crammed) - 4} more" if len(crammed) > 4 else ""
-        click.echo(f"regimemap: note: each panel has its own view; a shared view would cram "
-                   f"the panels (gamma, {label}) = {names}{more} into a corner", err=True)
-    if used != "none" and view == "report":
-        lost = [f"gamma = {g:g}, {label} = {v:g}" for i, g in enumerate(gammas)
-                for j, v in enumerate(values)
-                if points_outside([blocks[i * len(values) + j]], *ext[i][j])]
-        _note_outside(lost)
+    echo_notices(record.notices, _NOTE_PREFIX)
 
 
 @click.command("animate", short_help="A GIF of the map as k' sweeps a range.")
@@ -263,28 +253,18 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
     output_path(output, "--output")
     kprimes = _up_to_crest(kprimes, loads)
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
-    blocks = _checked_blocks([gamma], sweep, values, fixed)
+    _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()
     from ..drawing.maps.animation import write_animation
-    from ..maps.sweeps import points_outside, sweep_frames
+    from ..workflows.atlas import run_animation
 
-    frames = sweep_frames(gamma, values, k_max=k_max, mu_max=mu_max, view=view, sweep=sweep,
-                          fixed=fixed)
-    view_name, frame_view = view, (frames.k_max, frames.mu_max)
+    record = run_animation(gamma, values, k_max=k_max, mu_max=mu_max, view=view, sweep=sweep,
+                           fixed=fixed)
     with writing(output):
-        n, (w, h) = write_animation(output, frames, fps=fps, dpi=dpi)
+        n, (w, h) = write_animation(output, record.frames, fps=fps, dpi=dpi)
     report_written(output, f"{n} frames, {w} x {h} pixels, {fps:g} frames/s")
-    if view_name == "report":
-        label = "k'" if sweep == "kprime" else sweep
-        lost = [f"{label} = {v:g}" for v, p in zip(values, blocks)
-                if points_outside([p], *frame_view)]
-        _note_outside(lost)
+    echo_notices(record.notices, _NOTE_PREFIX)
 
 
-def _note_outside(lost: list[str]) -> None:
-    """Tell which maps have their point A outside the shared view."""
-    if not lost:
-        return
-    shown = ", ".join(lost[:6]) + (f" and {len(lost) - 6} more" if len(lost) > 6 else "")
-    click.echo(f"note: point A lies outside the shared view for {shown}; "
-               "give --k-max/--mu-max to widen it", err=True)
+#: How the notes of an atlas or an animation start on standard error.
+_NOTE_PREFIX = {"crammed": "regimemap: note: ", "outside-view": "note: "}

@@ -6,15 +6,15 @@ fast); the commands import :mod:`regimemap.drawing` when they run.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import click
 
 from ..drawing.save import DEFAULT_DPI, DPI_RANGE
 from ._common import (
     RunError,
+    echo_notices,
     gamma_option,
     import_matplotlib,
     kprime_option,
@@ -38,11 +38,6 @@ from ._plot_options import (
 )
 from ._plot_options import number_text as _num
 from ._writing import writing
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..drawing.maps.artists import MapArtists
-    from ..io.points import DesignPoint
-    from ..mechanics.block import Parameters
 
 __all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command",
            "figures_command", "plot_command", "plot_stem"]
@@ -176,50 +171,22 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     path, fmt = resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
     params = Parameters(gamma, kprime, **loads)
     modes = check_modes_on_map(modes, params.loaded)
-    points = read_points(points_files, point_specs, params.gamma, params.kprime, loads)
+    points = read_points(points_files, point_specs)
     import_matplotlib()
     from ..drawing.maps.figure import map_figure
     from ..drawing.maps.mapplot import MapStyle
     from ..drawing.save import save_figure
+    from ..workflows.map import run_map
 
+    record = run_map(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
+                     samples=resolution, curves=not no_curves, points=points,
+                     ambiguity=show_ambiguity)
+    echo_notices(record.notices)
     style = MapStyle(curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title)
-    fig, ax, artists = map_figure(
-        params, style=style, dpi=dpi, points=points, k_max=k_max, mu_max=mu_max, modes=modes,
-        raw=raw, samples=resolution, view=view)
-    if show_ambiguity:
-        _draw_ambiguity(fig, ax, artists, params)
-    _warn_outside(points, *artists.extent)
+    fig, _, _ = map_figure(record, style=style, dpi=dpi)
     with writing(path):
         save_figure(fig, path, fmt, dpi=dpi)
     _written(path)
-
-
-def _draw_ambiguity(fig: Any, ax: Any, artists: MapArtists, params: Parameters) -> None:
-    """``--show-ambiguity``: the overlay of where several modes are admissible, drawn on the map
-    with its legend entries, the figure refitted and its labels tidied around the overlay."""
-    from ..drawing.maps.ambiguity import draw_ambiguity
-    from ..drawing.maps.figure import fit_figure
-    from ..drawing.style import style_context
-    from ..drawing.text.tidy import tidy_figure
-    from ..maps.ambiguity import ambiguous_in_view
-
-    k_max, mu_max = artists.data.k_max, artists.data.mu_max
-    regions = ambiguous_in_view(params, k_max, mu_max)
-    with style_context():
-        overlay = draw_ambiguity(ax, regions, k_max, mu_max) or []
-        artists.extra.extend(overlay)
-        artists.legend = ax.get_legend()  # rebuilt with one more entry
-        fit_figure(fig, ax)  # the overlay may have added legend entries
-        tidy_figure(fig, [artists], fixed=[a for a in overlay if hasattr(a, "get_text")])
-
-
-def _warn_outside(points: Sequence[DesignPoint], k_hi: float, mu_hi: float) -> None:
-    """A warning on standard error naming the design points outside the view drawn."""
-    outside = [p for p in points if p.k > k_hi or p.mu > mu_hi]
-    if outside:
-        names = ", ".join(p.name or f"({_num(p.k)}, {_num(p.mu)})" for p in outside[:5])
-        click.echo(f"regimemap: warning: {len(outside)} point(s) outside the view "
-                   f"k <= {_num(k_hi)}, mu <= {_num(mu_hi)}: {names}", err=True)
 
 
 # -- figure / figures ------------------------------------------------------------------------
@@ -273,19 +240,10 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     path, fmt = resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
 
     import_matplotlib()
-    from ..drawing.maps.figure import render_preset
+    from ..drawing.maps.batch import render_figure
     from ..drawing.save import save_figure
 
-    if preset is None:
-        from ..drawing.maps.model import model_figure
-
-        fig = model_figure(dpi=dpi)
-    elif preset.id.startswith("W"):
-        from ..drawing.maps.worked import render_worked
-
-        fig = render_worked(preset, dpi=dpi)
-    else:
-        fig = render_preset(preset, dpi=dpi)
+    fig = render_figure(MODEL_ID if preset is None else preset.id, dpi=dpi)
     with writing(path):
         save_figure(fig, path, fmt, dpi=dpi)
     _written(path)
@@ -334,22 +292,8 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     from ..drawing.maps.presets import PRESETS
     from ..drawing.maps.worked import WORKED
 
-    report = {} if which == "worked" else PRESETS
     if list_only:
-        if which != "worked":
-            click.echo(f"{MODEL_ID:5s} the model: the block (half width B, half height H), the "
-                       "force F at h = k'H above C, the reactions f_x, f_y at xi, the rotation theta")
-        for p in report.values():
-            what = "final map" if not p.raw else "raw region of " + p.modes[0].label
-            click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
-                       f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
-                       f"{_plain(p.caption)}")
-        for w in WORKED.values() if which != "report" else ():
-            g, kp = _num(w.params.gamma), _num(w.params.kprime)
-            what = "atlas of final maps" if w.sweep else "final map"
-            kind = 'loaded' if w.params.loaded else w.params.case.value
-            click.echo(f"{w.id:5s} gamma={g:4s} kprime={kp:6s} {kind:8s} {what:24s} [worked]  "
-                       f"{_plain(w.title.splitlines()[0].split('  ', 1)[1])}")
+        _list_figures(which)
         return
     folder = _check_dir(out_dir, "--out")
 
@@ -369,3 +313,25 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
         raise RunError(f"{where}: {exc.strerror or exc}") from None
     for path in written:
         report_written(path)
+
+
+def _list_figures(which: str) -> None:
+    """``figures --list``: a line per figure of the set, with its parameters and caption."""
+    from ..drawing.maps.presets import PRESETS
+    from ..drawing.maps.worked import WORKED
+
+    report = {} if which == "worked" else PRESETS
+    if which != "worked":
+        click.echo(f"{MODEL_ID:5s} the model: the block (half width B, half height H), the "
+                   "force F at h = k'H above C, the reactions f_x, f_y at xi, the rotation theta")
+    for p in report.values():
+        what = "final map" if not p.raw else "raw region of " + p.modes[0].label
+        click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
+                   f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
+                   f"{_plain(p.caption)}")
+    for w in WORKED.values() if which != "report" else ():
+        g, kp = _num(w.params.gamma), _num(w.params.kprime)
+        what = "atlas of final maps" if w.sweep else "final map"
+        kind = 'loaded' if w.params.loaded else w.params.case.value
+        click.echo(f"{w.id:5s} gamma={g:4s} kprime={kp:6s} {kind:8s} {what:24s} [worked]  "
+                   f"{_plain(w.title.splitlines()[0].split('  ', 1)[1])}")

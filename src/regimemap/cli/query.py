@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import io
 import json
 import math
 from typing import TYPE_CHECKING, Any
@@ -22,6 +21,7 @@ from ._inputs import POINTS_FILE
 from ._writing import writing
 
 if TYPE_CHECKING:
+    from ..maps.points import DesignPoint
     from ..maps.query import PointResult
 
 __all__ = ["classify_cmd"]
@@ -99,20 +99,50 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
       regimemap classify --points caissons.csv -o results.json
       regimemap classify --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52 --k 0.28 --mu 0.6
     """
+    points, to_json = _classify_input(gamma, kprime, k, mu, points_file, as_json, output)
+    from ..workflows.query import run_query
+
+    try:
+        record = run_query(points, gamma=gamma, kprime=kprime, **loads)
+    except ValueError as exc:
+        raise RunError(str(exc)) from None
     if points_file is None:
-        _classify_point(gamma, kprime, k, mu, as_json, output, loads)
-    else:
-        if k is not None or mu is not None:
-            raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
-        _classify_file(points_file, gamma, kprime, as_json, output, loads)
+        _echo_point(record.results[0], as_json)
+        return
+    from ..io.tables import results_text
+
+    text = results_text(record.results, to_json)
+    if output is None:
+        click.echo(text, nl=False)
+        return
+    from ..io.atomic import atomic_open
+
+    with writing(output), atomic_open(output, "w", encoding="utf-8", newline="") as fh:
+        fh.write(text)
+    report_written(output, f"{len(record.results)} point(s) classified")
 
 
-def _classify_point(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
-                    as_json: bool, output: str | None, loads: dict[str, Any]) -> None:
-    """``classify`` of one point: its answer as text (or JSON) on standard output."""
+def _classify_input(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
+                    points_file: str | None, as_json: bool, output: str | None
+                    ) -> tuple[list[DesignPoint], bool]:
+    """The points to classify (``--k/--mu`` or the rows of ``--points``) and whether to
+    write JSON; a usage error for options that do not go together or a point without
+    its gamma or k'."""
+    if points_file is None:
+        return [_one_point(gamma, kprime, k, mu, output)], as_json
+    if k is not None or mu is not None:
+        raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
+    points = _points_of_file(points_file, gamma, kprime)
+    to_json = as_json or (output is not None and output.lower().endswith(".json"))
+    if output is not None:
+        output_path(output, "--output")
+    return points, to_json
+
+
+def _one_point(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
+               output: str | None) -> DesignPoint:
+    """The point of ``--k``/``--mu``; a usage error for ``-o`` or an option missing."""
     from ..io.points import DesignPoint
-    from ..io.tables import format_result, result_json
-    from ..maps.query import query_points
 
     if output is not None:
         raise click.UsageError("-o/--output is for --points; one point prints to standard "
@@ -124,21 +154,24 @@ def _classify_point(gamma: float | None, kprime: float | None, k: float | None, 
             f"missing option(s) {', '.join(missing)}: give --gamma (> 0), --kprime (in [-1, 1]), "
             "--k (>= 0) and --mu (>= 0), or --points FILE.csv")
     assert k is not None and mu is not None
-    try:
-        res = query_points([DesignPoint(k, mu)], gamma=gamma, kprime=kprime, **loads)[0]
-    except ValueError as exc:  # pragma: no cover - inputs are validated above
-        raise RunError(str(exc)) from None
+    return DesignPoint(k, mu)
+
+
+def _echo_point(result: PointResult, as_json: bool) -> None:
+    """One point's answer as text (or JSON) on standard output."""
+    from ..io.tables import format_result, result_json
+
     if as_json:
-        click.echo(json.dumps(result_json(res), indent=2, allow_nan=False))
+        click.echo(json.dumps(result_json(result), indent=2, allow_nan=False))
     else:
-        click.echo(format_result(res))
+        click.echo(format_result(result))
 
 
-def _classify_file(points_file: str, gamma: float | None, kprime: float | None, as_json: bool,
-                   output: str | None, loads: dict[str, Any]) -> None:
-    """``classify --points``: every row of the CSV, as CSV or JSON, to ``output`` or stdout."""
+def _points_of_file(points_file: str, gamma: float | None, kprime: float | None
+                    ) -> list[DesignPoint]:
+    """The rows of ``--points``; a usage error for a bad file or a row without its gamma or
+    k' when no ``--gamma``/``--kprime`` gives it."""
     from ..io.points import read_points_table
-    from ..maps.query import query_points
 
     try:
         table = read_points_table(points_file)
@@ -146,8 +179,7 @@ def _classify_file(points_file: str, gamma: float | None, kprime: float | None, 
         raise click.BadParameter(str(exc), param_hint="'--points'") from None
     if table.note:
         click.echo(f"regimemap: note: {points_file} is {table.note}; read as such", err=True)
-    pts = table.points
-    for line, pt in zip(table.lines, pts):
+    for line, pt in zip(table.lines, table.points):
         for opt, own, default in (("--gamma", pt.gamma, gamma), ("--kprime", pt.kprime, kprime)):
             if own is None and default is None:
                 who = f"{points_file}, line {line}" + (f" ({pt.name!r})" if pt.name else "")
@@ -155,36 +187,4 @@ def _classify_file(points_file: str, gamma: float | None, kprime: float | None, 
                 raise click.UsageError(
                     f"{opt} is required: {who} has no {col} value "
                     f"(give {opt} or add a {col} column)")
-    to_json = as_json or (output is not None and output.lower().endswith(".json"))
-    if output is not None:
-        output_path(output, "--output")
-    try:
-        results = query_points(pts, gamma=gamma, kprime=kprime, **loads)
-    except ValueError as exc:
-        raise RunError(str(exc)) from None
-    text = _results_text(results, to_json)
-    if output is None:
-        click.echo(text, nl=False)
-        return
-    from ..io.atomic import atomic_open
-
-    with writing(output), atomic_open(output, "w", encoding="utf-8", newline="") as fh:
-        fh.write(text)
-    report_written(output, f"{len(results)} point(s) classified")
-
-
-def _results_text(results: list[PointResult], to_json: bool) -> str:
-    """The classified points as one JSON object or as CSV (a header and a row per point)."""
-    from ..io.tables import columns_for, result_json, result_row
-
-    if to_json:
-        return json.dumps({"count": len(results), "points": [result_json(r) for r in results]},
-                          indent=1, allow_nan=False) + "\n"
-    buf = io.StringIO()
-    import csv  # only when writing CSV: keeps start-up light
-
-    w = csv.DictWriter(buf, fieldnames=list(columns_for(results)), lineterminator="\n")
-    w.writeheader()
-    for r in results:
-        w.writerow(result_row(r))
-    return buf.getvalue()
+    return list(table.points)

@@ -26,7 +26,7 @@ ANIMATION_DPI_RANGE: tuple[int, int] = (30, 300)
 #: Frames per second of an animation: the range allowed.
 FPS_RANGE: tuple[float, float] = (0.5, 50.0)
 
-#: Largest number of panels of an atlas (rows x columns).
+#: Largest number of panels of an atlas (rows x columns): :data:`regimemap.maps.sweeps.MAX_PANELS`.
 MAX_PANELS = 48
 #: Resolution (dots per inch) of an atlas by default, and the range allowed.
 ATLAS_DPI = 150

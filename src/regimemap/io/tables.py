@@ -1,15 +1,19 @@
-"""Point-query results for people and spreadsheets: flat CSV rows and a text report."""
+"""Point-query results for people and spreadsheets: flat CSV rows, JSON and a text report."""
 
 from __future__ import annotations
 
+import io
+import json
 import math
 import textwrap
+from collections.abc import Sequence
 
 from ..maps.margins import Crossing
 from ..maps.point_result import INITIATION_FIELDS, PointResult
 from ._numbers import rounded, text
 
-__all__ = ["CSV_COLUMNS", "LOAD_COLUMNS", "columns_for", "format_result", "result_json", "result_row"]
+__all__ = ["CSV_COLUMNS", "LOAD_COLUMNS", "columns_for", "format_result", "result_json", "result_row",
+           "results_text"]
 
 CSV_COLUMNS: tuple[str, ...] = (
     "name", "k", "mu", "gamma", "kprime", "case", "mode", "hypothesis",
@@ -25,7 +29,7 @@ LOAD_COLUMNS: tuple[str, ...] = (
 )
 
 
-def columns_for(results: list[PointResult]) -> tuple[str, ...]:
+def columns_for(results: Sequence[PointResult]) -> tuple[str, ...]:
     """The CSV columns of ``results``: :data:`CSV_COLUMNS`, and :data:`LOAD_COLUMNS` if any carries loads."""
     return CSV_COLUMNS + (LOAD_COLUMNS if any(r.loads for r in results) else ())
 
@@ -64,6 +68,22 @@ def result_json(r: PointResult) -> dict[str, object]:
     """:meth:`PointResult.as_dict` with its numbers rounded to 12 significant digits."""
     out: dict[str, object] = rounded(r.as_dict())
     return out
+
+
+def results_text(results: Sequence[PointResult], to_json: bool) -> str:
+    """Classified points as one JSON object (``count``, ``points``) or as CSV (a header,
+    :func:`columns_for`, and a row per point, :func:`result_row`)."""
+    if to_json:
+        return json.dumps({"count": len(results), "points": [result_json(r) for r in results]},
+                          indent=1, allow_nan=False) + "\n"
+    import csv  # only when writing CSV: keeps start-up light
+
+    buf = io.StringIO()
+    w = csv.DictWriter(buf, fieldnames=list(columns_for(results)), lineterminator="\n")
+    w.writeheader()
+    for r in results:
+        w.writerow(result_row(r))
+    return buf.getvalue()
 
 
 def _pct(c: Crossing) -> str:

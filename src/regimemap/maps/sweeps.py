@@ -27,6 +27,7 @@ from .mapdata import MapData, compute_map
 
 __all__ = [
     "CRAMMED",
+    "MAX_PANELS",
     "MAX_VALUES",
     "SAMPLES",
     "SHARE",
@@ -45,6 +46,9 @@ __all__ = [
 
 #: Samples of k per atlas panel / animation frame (fewer than a single map: the panels are small).
 SAMPLES = 401
+#: Largest number of panels of an atlas (rows x columns); :mod:`regimemap.drawing.limits`
+#: repeats it for the command line's options, importable without numpy.
+MAX_PANELS = 48
 #: Largest number of values in one list (rows or columns of an atlas).
 MAX_VALUES = 400
 #: How the axes of an atlas are shared: one view for the whole figure, one per row, or none.

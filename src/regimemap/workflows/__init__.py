@@ -19,30 +19,43 @@ from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
+    from .atlas import AnimationRecord, AtlasRecord, run_animation, run_atlas
     from .caisson import CaissonError, CaissonNumbers, CaissonRecord, ImplausibleDesignError, run_caisson
+    from .map import MapRecord, points_of_map, run_map
     from .outcome import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
+    from .query import QueryRecord, run_query
     from .simulate import SimulationRecord, run_simulation
 
 __all__ = [
+    "AnimationRecord",
+    "AtlasRecord",
     "CaissonError",
     "CaissonNumbers",
     "CaissonRecord",
     "DynamicsFigureRecord",
     "Field",
     "ImplausibleDesignError",
+    "MapRecord",
     "Notice",
     "OutcomeRecord",
+    "QueryRecord",
     "Record",
     "SimulationRecord",
+    "points_of_map",
+    "run_animation",
+    "run_atlas",
     "run_caisson",
     "run_dynamics_figure",
+    "run_map",
     "run_outcome",
+    "run_query",
     "run_simulation",
 ]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
+        "atlas": ["AnimationRecord", "AtlasRecord", "run_animation", "run_atlas"],
         "caisson": [
             "CaissonError",
             "CaissonNumbers",
@@ -50,6 +63,8 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
             "ImplausibleDesignError",
             "run_caisson",
         ],
+        "map": ["MapRecord", "points_of_map", "run_map"],
         "outcome": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
+        "query": ["QueryRecord", "run_query"],
         "simulate": ["SimulationRecord", "run_simulation"],
     })

@@ -330,8 +330,8 @@ class Explorer:
         target = Path(path) if path is not None else Path(f"{self.file_stem(self.params)}.png")
         fmt = format_from_path(target)
         points = [self._point] if self._point is not None else []
-        fig, _, _ = map_figure(self.params, data=self._map_data(self.params, self._point),
-                               dpi=DEFAULT_DPI, points=points)
+        fig, _, _ = map_figure(self._map_data(self.params, self._point), dpi=DEFAULT_DPI,
+                               points=points)
         self.write(fig, target, fmt, DEFAULT_DPI)
         if self.echo is not None:
             self.echo(str(target))

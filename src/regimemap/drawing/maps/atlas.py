@@ -3,10 +3,11 @@
 :func:`atlas_figure` draws the all-mode map (:func:`regimemap.drawing.maps.mapplot.draw_map`)
 for every pair of a list of gamma (rows) and a list of k' (columns), on
 shared axes, with one legend and each panel titled with its gamma and k';
-:func:`write_atlas` writes it to a file atomically.  What the panels sweep and
-the views they share are chosen in :mod:`regimemap.maps.sweeps` (no
-matplotlib); the animation over k' is :mod:`regimemap.drawing.maps.animation`.
-Limit: :data:`MAX_PANELS` panels.
+:func:`write_atlas` writes it to a file atomically.  The panels' blocks, the
+views they share and their maps are computed by
+:func:`regimemap.workflows.atlas.run_atlas` and handed over in its record; the
+animation over k' is :mod:`regimemap.drawing.maps.animation`.  Limit:
+:data:`MAX_PANELS` panels.
 
 matplotlib is imported inside the functions that draw, never at import time.
 """
@@ -20,7 +21,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ...maps.describe import format_value
-from ...maps.sweeps import SAMPLES, SWEEPS, checked_values, resolve_share, sweep_params
+from ...maps.sweeps import SWEEPS
 from ...mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..limits import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 
@@ -29,6 +30,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
     from ...maps.mapdata import MapData
+    from ...workflows.atlas import AtlasRecord
     from .artists import MapArtists
     from .mapplot import MapStyle
 
@@ -37,9 +39,7 @@ __all__ = [
     "ATLAS_DPI_RANGE",
     "MAX_PANELS",
     "PANEL_SIZE",
-    "SAMPLES",
     "atlas_figure",
-    "checked_values",
     "key_modes",
     "sweep_text",
     "write_atlas",
@@ -153,16 +153,6 @@ def _key_of(datas: Sequence[MapData], loaded: bool, dotted: bool) -> list[Any]:
     return _legend_handles(MAP_MODES, dotted=dotted)
 
 
-def _layout_options(layout: dict[str, Any]) -> tuple[tuple[float, float], Any]:
-    """``panel_size`` and ``extents`` of :func:`atlas_figure`'s ``**layout`` (TypeError for others)."""
-    unknown = sorted(set(layout) - {"panel_size", "extents"})
-    if unknown:
-        raise TypeError(f"atlas_figure() got unexpected keyword argument(s) {', '.join(unknown)}; "
-                        "its layout keywords are panel_size and extents")
-    pw, ph = layout.get("panel_size", PANEL_SIZE)
-    return (float(pw), float(ph)), layout.get("extents")
-
-
 def _draw_panel(ax: Axes, data: MapData, style: MapStyle, title: str, where: tuple[int, int, int],
                 share: str) -> MapArtists:
     """One panel: the map without its key and curve names, small texts, inner tick labels off.
@@ -215,100 +205,56 @@ def _draw_panels(fig: Figure, frame: _Frame, datas: Sequence[Sequence[MapData]],
     return arts
 
 
-def atlas_figure(gammas: Sequence[float], kprimes: Sequence[float], *, share: str = "all",
-                 k_max: float | None = None, mu_max: float | None = None,
-                 samples: int = SAMPLES, dpi: float = ATLAS_DPI, style: MapStyle | None = None,
-                 sweep: str = "kprime", fixed: dict[str, Any] | None = None,
-                 view: str = "designer", caption: str | None = None, **layout: Any) -> Figure:
+def atlas_figure(record: AtlasRecord, *, dpi: float = ATLAS_DPI, style: MapStyle | None = None,
+                 caption: str | None = None,
+                 panel_size: tuple[float, float] = PANEL_SIZE) -> Figure:
     """Small multiples of the all-mode map: rows gamma, columns k' (or a load).
 
     Parameters
     ----------
-    gammas, kprimes : sequence of float
-        Aspect ratios (rows) and the values of the columns, force heights k'
-        by default (in [-1, 1], or up to ``fixed["crest"]``); at most
-        :data:`MAX_PANELS` panels in all.
-    sweep : str
-        What the columns vary: ``"kprime"`` or a load of
-        :data:`regimemap.maps.sweeps.SWEEPS` (``"buoyancy"``, ``"uplift_ratio"`` ...).
-    fixed : dict, optional
-        What every panel shares: ``kprime`` when a load is swept, and the
-        other loads (keywords of :class:`Parameters`).
-    share : {"all", "row", "none"}
-        Share the axes over the whole figure (default; tick labels only on
-        the outer panels), within each row, or not at all
-        (:func:`regimemap.maps.sweeps.atlas_extents`; a shared view is
-        :func:`regimemap.maps.sweeps.shared_extent`).
-    k_max, mu_max : float, optional
-        Fix the view instead of the automatic one.
-    view : {"designer", "report"}
-        The panels' own views (:func:`regimemap.maps.designer_view.view_extent`).
+    record : AtlasRecord
+        The panels: their blocks, views and maps (:func:`regimemap.workflows.atlas.run_atlas`).
+    dpi : float
+        Resolution of raster output.
     style : MapStyle, optional
         How each panel is drawn (:class:`~regimemap.drawing.maps.mapplot.MapStyle`):
-        its ``curves`` (boundary curves and named points), ``labels`` (mode
-        symbols), ``hatches`` and ``tidy`` (mark the points off view and move any
-        text that collides, :func:`regimemap.drawing.text.tidy.tidy_figure`; False
+        its ``curves`` (boundary curves and named points, as computed), ``labels``
+        (mode symbols), ``hatches`` and ``tidy`` (mark the points off view and move
+        any text that collides, :func:`regimemap.drawing.text.tidy.tidy_figure`; False
         leaves every label where :func:`~regimemap.drawing.maps.mapplot.draw_map` put
         it).  Each panel has its own title and no key: the figure has one.
     caption : str, optional
         A first line of the title (a figure's number and caption); the top
         margin makes room for every line of the title.
-    samples : int
-        Samples of k per panel.
-    dpi : float
-        Resolution of raster output.
-    **layout
-        ``panel_size`` : (float, float), the size of one panel in inches (default
-        :data:`PANEL_SIZE`); ``extents`` : rows of (k_max, mu_max), the view of every
-        panel, as :func:`regimemap.maps.sweeps.atlas_extents` returns it (computed from
-        ``share``, ``k_max`` and ``mu_max`` when omitted, by
-        :func:`regimemap.maps.sweeps.resolve_share`: panels that a shared view would
-        cram get views of their own, and the suptitle says so).
+    panel_size : (float, float)
+        The size of one panel in inches.
 
     Returns
     -------
     matplotlib.figure.Figure
         With an Agg canvas (no pyplot); one Axes per panel, in row-major
         order, each with the title ``gamma = ..., k' = ...``, and one legend.
-
-    Raises
-    ------
-    ValueError
-        Invalid gamma or k', an empty list, or too many panels.
-    TypeError
-        An unknown keyword.
+        When a shared view would cram panels, each has its own and the title says so.
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from ...maps.mapdata import compute_map
     from ..style import style_context
     from .key import key_legend
     from .mapplot import MapStyle
 
-    panel_size, extents = _layout_options(layout)
     style = MapStyle() if style is None else style
-    gammas, kprimes = checked_values(gammas, kprimes, sweep, fixed)
+    pw, ph = float(panel_size[0]), float(panel_size[1])
+    gammas, kprimes, sweep, fixed = record.gammas, record.values, record.sweep, record.fixed
+    share, crammed, datas = record.share, record.crammed, record.maps
     nr, nc = len(gammas), len(kprimes)
-    if nr == 0 or nc == 0:
-        raise ValueError("an atlas needs at least one gamma and one kprime")
-    if nr * nc > MAX_PANELS:
-        raise ValueError(f"{nr} x {nc} = {nr * nc} panels exceed the limit of {MAX_PANELS}")
-    crammed: list[tuple[float, float]] = []
-    if extents is None:
-        share, extents, crammed = resolve_share(gammas, kprimes, share, k_max, mu_max, view=view,
-                                                sweep=sweep, fixed=fixed)
-    blocks = [[sweep_params(g, sweep, v, fixed) for v in kprimes] for g in gammas]
-    loaded = any(p.loaded for row in blocks for p in row)
-    datas = [[compute_map(p, k_max=extents[i][j][0], mu_max=extents[i][j][1], samples=samples,
-                          curves=style.curves) for j, p in enumerate(row)]
-             for i, row in enumerate(blocks)]
+    loaded = record.loaded
     handles = _key_of([d for row in datas for d in row], loaded, style.curves and min(
-        p.kprime for row in blocks for p in row) < 0.0)
+        p.kprime for row in record.blocks for p in row) < 0.0)
     title = _atlas_title(caption, sweep, fixed, share, crammed, loaded)
     key_cols = min(4, max(2, nc))
     # the title's lines, and one more for a long line wrapped to fit
-    frame = _frame(nr, nc, panel_size, share, style.tidy, title.count("\n") + 1 + (1 if crammed else 0),
+    frame = _frame(nr, nc, (pw, ph), share, style.tidy, title.count("\n") + 1 + (1 if crammed else 0),
                    -(-len(handles) // key_cols))
     titles = [[_panel_title(g, kp, sweep) for kp in kprimes] for g in gammas]
     with style_context():
@@ -348,19 +294,19 @@ def _atlas_title(caption: str | None, sweep: str, fixed: dict[str, Any] | None, 
     return title
 
 
-def write_atlas(path: str | os.PathLike[str], gammas: Sequence[float], kprimes: Sequence[float],
-                *, fmt: str | None = None, dpi: float | None = None, **kwargs: Any) -> Path:
+def write_atlas(path: str | os.PathLike[str], record: AtlasRecord, *, fmt: str | None = None,
+                dpi: float | None = None, **kwargs: Any) -> Path:
     """Draw :func:`atlas_figure` and save it atomically (png, svg or pdf).
 
     Parameters
     ----------
     path : path-like
         The file; its suffix gives the format unless ``fmt`` does.
-    gammas, kprimes : sequence of float
-        Rows and columns, as in :func:`atlas_figure`.
+    record : AtlasRecord
+        The panels (:func:`regimemap.workflows.atlas.run_atlas`).
     fmt : {"png", "svg", "pdf"}, optional
     dpi : float, optional
-        Resolution of PNG output (default: the figure's, :data:`ATLAS_DPI`).
+        Resolution of PNG output (default: the figure's, given in ``kwargs``).
     **kwargs
         The other keywords of :func:`atlas_figure`.
 
@@ -372,14 +318,12 @@ def write_atlas(path: str | os.PathLike[str], gammas: Sequence[float], kprimes: 
     Raises
     ------
     ValueError
-        For an unknown format (before anything is drawn) or invalid values.
+        For an unknown format (before anything is drawn).
     OSError
         If the file cannot be written (nothing is left behind).
     """
     from ..save import format_from_path, save_figure
 
     fmt = format_from_path(path, fmt)
-    fig = atlas_figure(gammas, kprimes, **kwargs)
+    fig = atlas_figure(record, **kwargs)
     return save_figure(fig, path, fmt=fmt, dpi=dpi)
-
-

@@ -3,7 +3,10 @@
 :func:`write_figures` shares the figures out among worker processes; each
 figure is drawn and written by one process alone, atomically
 (:func:`regimemap.drawing.save.save_figure`), so the files are byte-identical
-to a one-process run on the same machine.
+to a one-process run on the same machine.  :func:`render_figure` draws one of
+them by its id: its maps are computed by the workflows
+(:func:`regimemap.workflows.map.run_map`, :func:`regimemap.workflows.atlas.run_atlas`)
+and handed to the drawing functions.
 """
 
 from __future__ import annotations
@@ -16,7 +19,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-__all__ = ["cpu_count", "write_figures"]
+__all__ = ["cpu_count", "render_figure", "write_figures"]
 
 
 #: The figure a worker process keeps between its tasks (see :func:`_render_chunk`).
@@ -34,6 +37,31 @@ def _leave_ctrl_c() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
+def render_figure(fid: str, *, dpi: float, fig: Figure | None = None) -> Figure:
+    """One figure by its id: the model (2.1), a worked figure (W.1 ...) or the report's.
+
+    A figure's maps are computed by the workflows from what the figure shows
+    (:attr:`~regimemap.drawing.maps.presets.FigurePreset.map_keywords`,
+    :attr:`~regimemap.drawing.maps.worked.WorkedFigure.atlas_keywords`), then
+    drawn; pass the previous figure of a single map as ``fig`` to reuse it.
+    """
+    from ...workflows.atlas import run_atlas
+    from ...workflows.map import run_map
+    from .figure import render_preset
+    from .model import MODEL_FIGURE_ID, model_figure
+    from .presets import get_preset
+    from .worked import WORKED, render_worked
+
+    if fid == MODEL_FIGURE_ID:
+        return model_figure(dpi=dpi)
+    if fid.strip().upper() in WORKED:
+        w = WORKED[fid.strip().upper()]
+        record = run_atlas(**w.atlas_keywords) if w.sweep else run_map(**w.map_keywords)
+        return render_worked(w, record, dpi=dpi, fig=fig)
+    preset = get_preset(fid)
+    return render_preset(preset, run_map(**preset.map_keywords), dpi=dpi, fig=fig)
+
+
 def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: float,
                   progress: Callable[[int], None] | None = None, keep: bool = False
                   ) -> list[str]:
@@ -43,24 +71,19 @@ def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: 
     ``keep`` (a worker process) it is also kept for the worker's next task.
     """
     from ..save import save_figure
-    from .figure import render_preset
-    from .model import MODEL_FIGURE_ID, model_figure
+    from .model import MODEL_FIGURE_ID
     from .presets import get_preset
-    from .worked import WORKED, render_worked
+    from .worked import WORKED
 
     fig: Figure | None = _KEPT.pop("fig", None) if keep else None
     written: list[str] = []
     for fid in ids:
+        one = render_figure(fid, dpi=dpi, fig=fig)
         if fid == MODEL_FIGURE_ID:
-            one = model_figure(dpi=dpi)
-            name = f"fig-{fid}"
-        elif fid in WORKED:
-            one = fig = render_worked(WORKED[fid], dpi=dpi, fig=fig)
             name = f"fig-{fid}"
         else:
-            preset = get_preset(fid)
-            one = fig = render_preset(preset, dpi=dpi, fig=fig)
-            name = f"fig-{preset.id}"
+            fig = one
+            name = f"fig-{fid if fid in WORKED else get_preset(fid).id}"
         for fmt in formats:
             target = Path(folder) / f"{name}.{fmt}"
             save_figure(one, target, fmt, dpi=dpi)

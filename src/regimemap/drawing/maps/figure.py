@@ -1,22 +1,20 @@
 """A map on a figure of its own: its size, layout around the key, and the report's figures.
 
 :func:`map_figure` makes a Figure (Agg canvas, no pyplot)
-with one map drawn by :func:`regimemap.drawing.maps.mapplot.draw_map` and sized to
+with one map (a record of :func:`regimemap.workflows.map.run_map`) drawn by
+:func:`regimemap.drawing.maps.mapplot.draw_map` and sized to
 its key; :func:`render_preset` draws one of the report's figures.
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Sequence
 from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ...maps.geometry import DEFAULT_SAMPLES
-from ...maps.mapdata import MapData, map_for_view
-from ...mechanics.block import Parameters
-from ...mechanics.modes import Mode
+from ...maps.mapdata import MapData
 from ..save import DEFAULT_DPI
 from ..style import style_context
 from ..text.tidy import tidy_figure
@@ -27,7 +25,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
+    from ...maps.ambiguity import AmbiguousRegion
     from ...maps.points import DesignPoint
+    from ...workflows.map import MapRecord
     from .presets import FigurePreset
 
 __all__ = ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "preset_figure",
@@ -127,35 +127,27 @@ def fit_figure(fig: Figure, ax: Axes) -> None:
     ax.set_position(rect)
 
 
-# The front door of a map figure: what the map shows (map_for_view's keywords), the figure (size,
-# dpi, reuse) and the style, one keyword each, as render_map and the CLI pass them (PLR0913
-# accepted here).
-def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapData | None = None,  # noqa: PLR0913
-               view: str = "designer", k_max: float | None = None, mu_max: float | None = None,
-               modes: Iterable[Mode] | None = None, raw: bool = False,
-               samples: int = DEFAULT_SAMPLES, include: Iterable[tuple[float, float]] = (),
+def map_figure(record: MapRecord | MapData, *, style: MapStyle | None = None,
                figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_DPI,
-               points: Sequence[DesignPoint] = (), fig: Figure | None = None, **style_fields: Any
-               ) -> tuple[Figure, Axes, MapArtists]:
+               points: Sequence[DesignPoint] | None = None, fig: Figure | None = None,
+               **style_fields: Any) -> tuple[Figure, Axes, MapArtists]:
     """Draw a map on a new (or reused) Figure; return the figure, its axes and the artists.
 
     Parameters
     ----------
-    params : Parameters
-        The block.
+    record : MapRecord or MapData
+        The map (:func:`regimemap.workflows.map.run_map`, or its ``data``); a
+        record's design points are marked, and its parts where several modes are
+        admissible outlined when it has them.
     style : MapStyle, optional
         How the map is drawn (:func:`~regimemap.drawing.maps.mapplot.draw_map`).
-    data : MapData, optional
-        The map, computed beforehand (``view`` ... ``include`` are then ignored).
-    view, k_max, mu_max, modes, raw, samples, include
-        What the map shows: see :func:`regimemap.maps.mapdata.map_for_view`.
     figsize : (float, float), optional
         Size in inches; by default the axes are 5.5 x 3.6 inches and the
         figure's height is fitted to the key.
     dpi : float
-    points : sequence of DesignPoint
-        Design points, marked with :func:`~regimemap.drawing.maps.mapplot.draw_design_points`
-        and kept in the automatic view.
+    points : sequence of DesignPoint, optional
+        Design points to mark (:func:`~regimemap.drawing.maps.mapplot.draw_design_points`;
+        default: the record's).
     fig : Figure, optional
         A figure to reuse (see :func:`new_figure`).
     **style_fields
@@ -170,13 +162,20 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
     -----
     With ``tidy`` (the default) the title is fitted to the figure and any
     text that collides is moved (:func:`regimemap.drawing.text.tidy.tidy_figure`).
+
+    Examples
+    --------
+    >>> from regimemap.mechanics.block import Parameters
+    >>> from regimemap.workflows import run_map
+    >>> fig, ax, art = map_figure(run_map(Parameters(3.0, 0.4), samples=51), dpi=40)
+    >>> art.extent == (art.data.k_max, art.data.mu_max)
+    True
     """
     style = replace(style or MapStyle(), **style_fields)
+    data = record if isinstance(record, MapData) else record.data
+    if points is None:
+        points = () if isinstance(record, MapData) else record.points
     fig, ax = new_figure(figsize, dpi, fig)
-    if data is None:
-        include = list(include) + [(pt.k, pt.mu) for pt in points]
-        data = map_for_view(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
-                        samples=samples, curves=style.curves, include=include)
     with style_context():
         artists = draw_map(ax, data, style)
         if points:
@@ -185,34 +184,52 @@ def map_figure(params: Parameters, *, style: MapStyle | None = None, data: MapDa
             fit_figure(fig, ax)
         if style.tidy:
             tidy_figure(fig, [artists])
+    regions = None if isinstance(record, MapData) else record.ambiguity
+    if regions is not None:
+        _draw_ambiguity(fig, ax, artists, regions)
     return fig, ax, artists
 
 
-def render_map(params: Parameters, **kwargs: Any) -> Figure:
-    """A Figure with the map of ``params`` (the keywords of :func:`map_figure`)."""
-    return map_figure(params, **kwargs)[0]
+def _draw_ambiguity(fig: Figure, ax: Axes, artists: MapArtists,
+                    regions: Sequence[AmbiguousRegion]) -> None:
+    """The overlay of where several modes are admissible, drawn on the map with its legend
+    entries, the figure refitted and its labels tidied around the overlay."""
+    from .ambiguity import draw_ambiguity
+
+    k_max, mu_max = artists.extent
+    with style_context():
+        overlay = draw_ambiguity(ax, regions, k_max, mu_max) or []
+        artists.extra.extend(overlay)
+        artists.legend = ax.get_legend()  # rebuilt with one more entry
+        fit_figure(fig, ax)  # the overlay may have added legend entries
+        tidy_figure(fig, [artists], fixed=[a for a in overlay if hasattr(a, "get_text")])
 
 
-def preset_figure(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
-                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+def render_map(record: MapRecord | MapData, **kwargs: Any) -> Figure:
+    """A Figure with the map of a record (the keywords of :func:`map_figure`)."""
+    return map_figure(record, **kwargs)[0]
+
+
+def preset_figure(preset: FigurePreset | str, record: MapRecord | MapData, *,
+                  dpi: float = DEFAULT_DPI, hatches: bool = True, fig: Figure | None = None
                   ) -> tuple[Figure, Axes, MapArtists]:
     """One of the report's figures (:mod:`regimemap.drawing.maps.presets`): figure, axes and artists.
 
-    The preset's own view (the report's, with its explicit axes) and the tidy
-    pass of every map.  Pass the previous figure as ``fig`` to reuse it.
+    ``record`` is the preset's map in its own view (the report's, with its explicit
+    axes): ``run_map(**preset.map_keywords)``
+    (:func:`regimemap.workflows.map.run_map`).  The title is the preset's, with the
+    tidy pass of every map.  Pass the previous figure as ``fig`` to reuse it.
     """
     from .presets import get_preset
 
     if isinstance(preset, str):
         preset = get_preset(preset)
-    return map_figure(preset.params, dpi=dpi, fig=fig, k_max=preset.k_max,
-                      mu_max=preset.mu_max, modes=preset.modes, raw=preset.raw,
-                      samples=samples, view="report",
+    return map_figure(record, dpi=dpi, fig=fig,
                       style=MapStyle(title=preset.title, hatches=hatches))
 
 
-def render_preset(preset: FigurePreset | str, *, dpi: float = DEFAULT_DPI,
-                  samples: int = DEFAULT_SAMPLES, hatches: bool = True, fig: Figure | None = None
+def render_preset(preset: FigurePreset | str, record: MapRecord | MapData, *,
+                  dpi: float = DEFAULT_DPI, hatches: bool = True, fig: Figure | None = None
                   ) -> Figure:
     """A Figure of one of the report's figures (see :func:`preset_figure`)."""
-    return preset_figure(preset, dpi=dpi, samples=samples, hatches=hatches, fig=fig)[0]
+    return preset_figure(preset, record, dpi=dpi, hatches=hatches, fig=fig)[0]

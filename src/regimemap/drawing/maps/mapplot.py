@@ -10,7 +10,8 @@ data of a block and its view).  The texts are written by
 
 >>> from regimemap import Parameters
 >>> from regimemap.drawing import render_map, save_figure
->>> fig = render_map(Parameters(gamma=3, kprime=0.4))
+>>> from regimemap.workflows import run_map
+>>> fig = render_map(run_map(Parameters(gamma=3, kprime=0.4)))
 >>> save_figure(fig, "map.svg")  # doctest: +SKIP
 
 Output is byte-stable: two renders of the same map give identical PNG, SVG

@@ -21,6 +21,7 @@ import difflib
 import math
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 from ...mechanics.block import Case, Parameters
 from ...mechanics.modes import MAP_MODES, Mode
@@ -123,6 +124,13 @@ class FigurePreset:
     def params(self) -> Parameters:
         """The preset's :class:`~regimemap.params.Parameters`."""
         return Parameters(self.gamma, self.kprime)
+
+    @property
+    def map_keywords(self) -> dict[str, Any]:
+        """What the figure's map is: the keywords of :func:`regimemap.workflows.map.run_map`
+        (the block, the report's view, its axes, the modes shaded, raw or final)."""
+        return {"params": self.params, "view": "report", "k_max": self.k_max,
+                "mu_max": self.mu_max, "modes": self.modes, "raw": self.raw}
 
     def filename(self, ext: str) -> str:
         """``fig-<id>.<ext>``, e.g. ``fig-3.9a.png``."""

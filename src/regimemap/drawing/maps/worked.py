@@ -25,7 +25,7 @@ This module does not import matplotlib until it draws.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from ...maps.describe import load_items, loads_text
 from ...maps.points import DesignPoint
@@ -33,6 +33,9 @@ from ...mechanics.block import Parameters
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
+
+    from ...workflows.atlas import AtlasRecord
+    from ...workflows.map import MapRecord
 
 __all__ = ["WorkedFigure", "WORKED", "WORKED_IDS", "render_worked"]
 
@@ -71,6 +74,22 @@ class WorkedFigure:
     sweep: str | None = None
     values: tuple[float, ...] = field(default=())
 
+    @property
+    def map_keywords(self) -> dict[str, Any]:
+        """What a single map shows: the keywords of :func:`regimemap.workflows.map.run_map`
+        (the block, the report's view, its axes and the design points)."""
+        return {"params": self.params, "view": "report", "k_max": self.k_max,
+                "mu_max": self.mu_max, "points": self.points}
+
+    @property
+    def atlas_keywords(self) -> dict[str, Any]:
+        """What an atlas shows: the keywords of :func:`regimemap.workflows.atlas.run_atlas`
+        (one row, the columns sweeping ``sweep``, the other loads shared, the report's view)."""
+        p = self.params
+        fixed = {"kprime": p.kprime, **{k: v for k, v in load_items(p) if k != self.sweep}}
+        return {"gammas": [p.gamma], "values": list(self.values), "sweep": self.sweep,
+                "fixed": fixed, "k_max": self.k_max, "mu_max": self.mu_max, "view": "report"}
+
     def filename(self, ext: str) -> str:
         """``fig-<id>.<ext>``, e.g. ``fig-W.1.png``."""
         return f"fig-{self.id}.{ext.lstrip('.')}"
@@ -107,27 +126,24 @@ WORKED: dict[str, WorkedFigure] = _build()
 WORKED_IDS: tuple[str, ...] = tuple(WORKED)
 
 
-def render_worked(worked: WorkedFigure | str, *, dpi: float | None = None,
-                  fig: Figure | None = None, **kwargs: Any) -> Figure:
-    """A Figure of one worked figure (pass the previous ``fig`` of a single map to reuse it)."""
+def render_worked(worked: WorkedFigure | str, record: MapRecord | AtlasRecord, *,
+                  dpi: float | None = None, fig: Figure | None = None, **kwargs: Any) -> Figure:
+    """A Figure of one worked figure (pass the previous ``fig`` of a single map to reuse it).
+
+    ``record`` is its map, ``run_map(**worked.map_keywords)``, or for an atlas
+    (``worked.sweep``) its panels, ``run_atlas(**worked.atlas_keywords)``
+    (:mod:`regimemap.workflows`); ``kwargs`` go to the drawing function.
+    """
     from ..save import DEFAULT_DPI
     from .figure import map_figure
 
     w = WORKED[worked.upper()] if isinstance(worked, str) else worked
     dpi = DEFAULT_DPI if dpi is None else dpi
-    # drawn as the report's figures are: the report's view and the tidy pass of every map
-    kwargs.setdefault("view", "report")
     if w.sweep is not None:
         from .atlas import atlas_figure
 
-        p = w.params
-        fixed: dict[str, Any] = {"kprime": p.kprime, **{k: v for k, v in load_items(p)
-                                                          if k != w.sweep}}
-        out = atlas_figure([p.gamma], list(w.values), sweep=w.sweep, fixed=fixed, k_max=w.k_max,
-                           mu_max=w.mu_max, dpi=dpi, caption=f"Fig. {w.id}  {w.caption}",
-                           **kwargs)
-        return out
+        return atlas_figure(cast("AtlasRecord", record), dpi=dpi,
+                            caption=f"Fig. {w.id}  {w.caption}", **kwargs)
     if fig is not None and len(fig.axes) != 1:
         fig = None  # an atlas before: start afresh
-    return map_figure(w.params, dpi=dpi, fig=fig, k_max=w.k_max, mu_max=w.mu_max,
-                      points=list(w.points), title=w.title, **kwargs)[0]
+    return map_figure(cast("MapRecord", record), dpi=dpi, fig=fig, title=w.title, **kwargs)[0]
