@@ -19,10 +19,21 @@ from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
+    from .lifetime import (
+        ChartRecord,
+        LifetimeDesign,
+        LifetimeRecord,
+        read_lifetime_design,
+        run_chart,
+        run_lifetime,
+    )
 
-__all__ = ["Field", "Notice", "Record"]
+__all__ = ["ChartRecord", "Field", "LifetimeDesign", "LifetimeRecord", "Notice", "Record",
+           "read_lifetime_design", "run_chart", "run_lifetime"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
+        "lifetime": ["ChartRecord", "LifetimeDesign", "LifetimeRecord", "read_lifetime_design", "run_chart",
+                     "run_lifetime"],
     })
