@@ -39,10 +39,11 @@ def warn(notices: Sequence[Notice]) -> None:
         click.echo(f"regimemap: warning: {n.message}", err=True)
 
 
-def refuse_notices(notices: Sequence[Notice], code: str, why: str, param_hint: str) -> None:
-    """A usage error (exit 2) naming the first notice of ``code`` (and how many more), then ``why``
+def refuse_notices(notices: Sequence[Notice], codes: str | tuple[str, ...], why: str,
+                   param_hint: str) -> None:
+    """A usage error (exit 2) naming the first notice of ``codes`` (and how many more), then ``why``
     (``"--strict refuses implausible values"``); return when there is none."""
-    found = [n for n in notices if n.code == code]
+    found = [n for n in notices if n.code in ((codes,) if isinstance(codes, str) else codes)]
     if found:
         more = f" (and {len(found) - 1} more)" if len(found) > 1 else ""
         reason = f"; {why}" if why else ""

@@ -19,6 +19,7 @@ from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
+    from .climate import ClimateRecord, run_climate
     from .lifetime import (
         ChartRecord,
         LifetimeDesign,
@@ -28,12 +29,13 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
         run_lifetime,
     )
 
-__all__ = ["ChartRecord", "Field", "LifetimeDesign", "LifetimeRecord", "Notice", "Record",
-           "read_lifetime_design", "run_chart", "run_lifetime"]
+__all__ = ["ChartRecord", "ClimateRecord", "Field", "LifetimeDesign", "LifetimeRecord", "Notice", "Record",
+           "read_lifetime_design", "run_chart", "run_climate", "run_lifetime"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
+        "climate": ["ClimateRecord", "run_climate"],
         "lifetime": ["ChartRecord", "LifetimeDesign", "LifetimeRecord", "read_lifetime_design", "run_chart",
                      "run_lifetime"],
     })
