@@ -1,14 +1,22 @@
-"""One way for every command to report a file it cannot write."""
+"""How the commands write their files: one error for a file that cannot be written, the ``-o``
+files checked to be distinct, and each file written once with the figure drawn once."""
 
 from __future__ import annotations
 
 import contextlib
 import os
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
 
-from ._common import RunError
+import click
 
-__all__ = ["writing"]
+from ._common import RunError, import_matplotlib
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+__all__ = ["distinct_files", "file_suffix", "write_files", "writing"]
 
 
 @contextlib.contextmanager
@@ -35,3 +43,46 @@ def writing(path: str | os.PathLike[str] | None, what: str | None = None) -> Ite
         yield
     except OSError as exc:
         raise RunError(f"cannot write {path if what is None else what}: {exc.strerror or exc}") from None
+
+
+def file_suffix(path: str) -> str:
+    """The suffix of ``path`` in lower case, without its dot (``"svg"``; ``""`` for none)."""
+    return Path(path).suffix.lower().lstrip(".")
+
+
+def distinct_files(paths: Sequence[str], param_hint: str) -> None:
+    """Refuse (usage error, exit 2) a file given twice among ``paths``, however it is spelt
+    (``a.svg`` and ``./a.svg``); ``param_hint`` names the options (``"'-o' / '--output'"``)."""
+    if len({str(Path(p).resolve()) for p in paths}) < len(paths):
+        raise click.BadParameter("the same file is given twice", param_hint=param_hint)
+
+
+def write_files(paths: Sequence[str], draw: Callable[[], Figure], *,
+                data_formats: Sequence[str] = (), write_data: Callable[[str], object] | None = None
+                ) -> list[str]:
+    """Write each of ``paths`` atomically, in order: a file whose suffix is one of
+    ``data_formats`` by ``write_data(path)``, any other as the figure ``draw()`` returns (drawn
+    once, on the first figure file, and saved by :func:`regimemap.drawing.save.save_figure` in the
+    format of the suffix).  A file that cannot be written is :func:`writing`'s error.
+
+    Returns
+    -------
+    list of str
+        The paths written.
+    """
+    written: list[str] = []
+    fig: Figure | None = None
+    for path in paths:
+        with writing(path):
+            if file_suffix(path) in data_formats:
+                assert write_data is not None
+                write_data(path)
+            else:
+                if fig is None:
+                    import_matplotlib()
+                    fig = draw()
+                from ..drawing.save import save_figure
+
+                save_figure(fig, path)
+        written.append(path)
+    return written

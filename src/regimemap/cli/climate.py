@@ -1,21 +1,29 @@
 """``regimemap climate``: return values of the significant wave height, with their bands, from a record.
 
-Parses the options, reads the record (:func:`regimemap.io.records.read_record`), runs
-:func:`regimemap.climate.analyse` and writes the report (:mod:`regimemap.io.climate`) and the
-figures (:mod:`regimemap.drawing.climate`) atomically.
+Parses the options, calls :func:`regimemap.workflows.climate.run_climate` and writes its
+record: the report (:mod:`regimemap.io.climate`) and the figures
+(:mod:`regimemap.drawing.climate`), each drawn once and written atomically.
 """
 
 from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
-from ._common import ParamType, import_matplotlib, output_path, report_written
+from ._check import refuse_notices
+from ._common import ParamType, output_path, report_written
 from ._inputs import RECORD_FILE
-from ._writing import writing
+from ._writing import distinct_files, file_suffix, write_files
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from ..climate import ClimateOptions
+    from ..climate.analysis import ClimateResult, Curves, Diagnostics
+    from ..workflows.climate import ClimateRecord
 
 __all__ = ["climate_cmd"]
 
@@ -52,13 +60,12 @@ class _Periods(ParamType):
         return out
 
 
-def _figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
+def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
     """The ``-o`` and ``--diagnostics`` files, checked before any work."""
     every = [*outputs, *([diagnostics] if diagnostics else [])]
-    if len({str(Path(p).resolve()) for p in every}) < len(every):
-        raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--diagnostics'")
+    distinct_files(every, "'-o' / '--diagnostics'")
     for path in every:
-        kind = Path(path).suffix.lower().lstrip(".")
+        kind = file_suffix(path)
         if kind not in FIGURE_FORMATS:
             got = f".{kind}" if kind else "no suffix"
             raise click.BadParameter(f"{path!r} has {got}; the figures are written as .png, .svg or .pdf",
@@ -125,7 +132,7 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     """
     from ..climate import ClimateOptions
 
-    _figures(outputs, diagnostics)
+    _check_figures(outputs, diagnostics)
     options = ClimateOptions(method=method, threshold=threshold, gap_hours=gap_hours,
                              distribution=distribution, shape=shape, coverage=coverage,
                              return_periods=return_periods, confidence=confidence, bootstrap=bootstrap,
@@ -134,35 +141,31 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
         options.check()
     except ValueError as exc:
         raise click.BadParameter(str(exc), param_hint="'--distribution'") from None
-    result = _analyse(record, options, time_col, hs_col, period_col, drop_spikes)
-    warnings = result.warnings()
-    if strict and warnings:
-        more = f" (and {len(warnings) - 1} more)" if len(warnings) > 1 else ""
-        raise click.BadParameter(f"{record}: {warnings[0]}{more}; --strict refuses quality-control warnings",
-                                 param_hint="'RECORD'")
-    written = _write(result, outputs, diagnostics, Path(record).name)
-    from ..io.climate import climate_json, format_climate
-
+    result = _run(record, options, time_col, hs_col, period_col, drop_spikes, diagnostics is not None)
+    if strict:
+        refuse_notices(result.notices, ("record-quality", "fit"),
+                       "--strict refuses quality-control warnings", "'RECORD'")
+    title = Path(record).name
+    written = write_files(outputs, lambda: _climate_figure(result.result, result.curves, title))
+    if diagnostics is not None and result.diagnostics is not None:
+        found, threshold_used = result.diagnostics, result.result.fit.threshold
+        written += write_files([diagnostics], lambda: _diagnostics_figure(found, threshold_used, title))
     if as_json:
-        obj = climate_json(result, source=record)
-        if written:
-            obj["files"] = written
-        click.echo(json.dumps(obj, indent=2, allow_nan=False))
+        click.echo(json.dumps(result.report_json(written), indent=2, allow_nan=False))
         return
-    click.echo(format_climate(result, source=record))
+    click.echo(result.report_text())
     for path in written:
         report_written(path)
 
 
-def _analyse(record: str, options: Any, time_col: str | None, hs_col: str | None, period_col: str | None,
-             drop_spikes: bool) -> Any:
-    """Read and analyse: an unreadable record or an impossible analysis is a usage error naming it."""
-    from ..climate import analyse
-    from ..io.records import read_record
+def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,
+         period_col: str | None, drop_spikes: bool, diagnostics: bool) -> ClimateRecord:
+    """The workflow's call: an unreadable record or an impossible analysis is a usage error naming it."""
+    from ..workflows.climate import run_climate
 
     try:
-        rec = read_record(record, time=time_col, hs=hs_col, period=period_col, drop_spikes=drop_spikes)
-        return analyse(rec, options)
+        return run_climate(record, options, time=time_col, hs=hs_col, period=period_col,
+                           drop_spikes=drop_spikes, diagnostics=diagnostics)
     except ValueError as exc:
         message = str(exc)
         if not message.startswith(record):
@@ -170,29 +173,15 @@ def _analyse(record: str, options: Any, time_col: str | None, hs_col: str | None
         raise click.BadParameter(message, param_hint="'RECORD'") from None
 
 
-def _write(result: Any, outputs: tuple[str, ...], diagnostics: str | None, title: str) -> list[str]:
-    """The figures, each drawn once and written atomically."""
-    written: list[str] = []
-    if not outputs and diagnostics is None:
-        return written
-    import_matplotlib()
-    from ..drawing.climate.figures import climate_figure, diagnostics_figure
-    from ..drawing.save import save_figure
+def _climate_figure(result: ClimateResult, curves: Curves, title: str) -> Figure:
+    """The record, the return levels with the band and the observations, the QQ plot."""
+    from ..drawing.climate.figures import climate_figure as draw
 
-    if outputs:
-        from ..climate.analysis import curves
+    return draw(result, curves, title)
 
-        fig = climate_figure(result, curves(result), title)
-        for path in outputs:
-            with writing(path):
-                save_figure(fig, path)
-            written.append(path)
-    if diagnostics is not None:
-        from ..climate.analysis import diagnostics as compute
 
-        found = compute(result.record, result.options.gap_hours)
-        fig = diagnostics_figure(found, result.fit.threshold, title)
-        with writing(diagnostics):
-            save_figure(fig, diagnostics)
-        written.append(diagnostics)
-    return written
+def _diagnostics_figure(found: Diagnostics, threshold: float | None, title: str) -> Figure:
+    """Mean residual life and parameter stability, the threshold used marked."""
+    from ..drawing.climate.figures import diagnostics_figure as draw
+
+    return draw(found, threshold, title)

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from ..lifetime import DesignChart, LifetimeModel, LifetimeResult
+from ..lifetime.results import STATISTICS, threshold_key
 from ._numbers import json_number
 from .atomic import atomic_open
 from .checks import checks_json, checks_lines
@@ -37,10 +38,20 @@ _QUANTILES = (0.9, 0.99)
 # -- JSON ---------------------------------------------------------------------------------------
 
 
-def threshold_key(x: float) -> str:
-    """A threshold in metres as a JSON key: ``0.1`` -> ``"0.1"``, ``1.0`` -> ``"1"``."""
-    v = float(x)
-    return f"{int(v)}" if v == int(v) else repr(v)
+def _json_value(v: Any) -> Any:
+    """A value of :meth:`LifetimeResult.summary` for JSON: floats rounded (``null`` if not finite),
+    ints kept, dicts value by value."""
+    if isinstance(v, dict):
+        return {k: _json_value(x) for k, x in v.items()}
+    if v is None or isinstance(v, int):
+        return v
+    return json_number(v)
+
+
+def _units() -> dict[str, str]:
+    """The units of the statistics that have one: the lengths and probabilities, then the years."""
+    with_unit = sorted((s for s in STATISTICS if s.unit), key=lambda s: s.unit == "year")
+    return {s.key: s.unit + (", keys in m" if s.per_threshold else "") for s in with_unit}
 
 
 def _model_dict(model: LifetimeModel) -> dict[str, Any]:
@@ -72,13 +83,6 @@ def impulsive_text(impulsive: bool) -> str:
         return "impulsive = true (alpha* = max(alpha2, alpha_I), Takahashi's impulsive coefficient)"
     return ("impulsive = false (alpha* = alpha2: no impulsive coefficient on the sine pulse, "
             "docs/lifetime.md Sect. 5.1)")
-
-
-def _failure_json(failure: Any) -> dict[str, Any] | None:
-    if failure is None:
-        return None
-    return {"sliding_limit": json_number(failure.sliding_limit),
-            "probability": json_number(failure.probability), "std_error": json_number(failure.std_error)}
 
 
 def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | None = None,
@@ -113,31 +117,13 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
     if source is not None:
         out["source"] = source
     out["checks"] = checks_json(result.checks)
+    out.update(_json_value(result.summary()))
     out.update({
-        "expected_sliding": json_number(result.expected_sliding),
-        "std_error": json_number(result.std_error),
-        "std": json_number(result.std),
-        "median": json_number(result.median),
-        "quantile_90": json_number(result.quantile(0.9)),
-        "quantile_99": json_number(result.quantile(0.99)),
-        "exceedance": {threshold_key(x): json_number(result.exceedance(x)) for x in result.thresholds},
-        "storm_exceedance": {threshold_key(x): json_number(result.storm_exceedance(x))
-                             for x in result.thresholds},
-        "never_slides": json_number(result.never_slides),
-        "failure": _failure_json(result.failure),
-        "mean_storms": json_number(float(np.mean(result.storms))),
-        "trials": result.trials,
-        "seed": result.seed,
-        "years": result.years,
-        "width": json_number(result.width),
         "impulsive": model.impulsive,
         "climate": model.climate.describe(),
         "climate_as_written": written,
         "model": _model_dict(model),
-        "units": {"expected_sliding": "m", "std_error": "m", "std": "m", "median": "m",
-                  "quantile_90": "m", "quantile_99": "m", "exceedance": "probability, keys in m",
-                  "storm_exceedance": "probability, keys in m", "never_slides": "probability",
-                  "width": "m", "years": "year"},
+        "units": _units(),
     })
     return out
 

@@ -3,20 +3,23 @@
 numpy only.  A :class:`LifetimeResult` holds plain arrays (the lifetime
 sliding of every trial, the largest single-storm slide of every trial, the
 number of storms) and computes the expected sliding distance with its
-standard error, quantiles and exceedance probabilities from them.
+standard error, quantiles and exceedance probabilities from them.  One table,
+:data:`STATISTICS`, names the statistics a person reads: the result's dict
+(:meth:`LifetimeResult.summary`), its JSON (:func:`regimemap.io.lifetime.lifetime_json`)
+and its notebook table read it.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
 
 import numpy as np
 from numpy.typing import NDArray
 
 from ..mechanics.checks import Check
 
-__all__ = ["Failure", "LifetimeResult", "year_passing"]
+__all__ = ["STATISTICS", "Failure", "LifetimeResult", "Statistic", "threshold_key", "year_passing"]
 
 FloatArray = NDArray[np.float64]
 IntArray = NDArray[np.int64]
@@ -159,50 +162,43 @@ class LifetimeResult:
         keep = x > 0.0
         return x[keep], p[keep]
 
+    @property
+    def quantile_90(self) -> float:
+        """The 90 % quantile of the lifetime sliding [m]."""
+        return self.quantile(0.9)
+
+    @property
+    def quantile_99(self) -> float:
+        """The 99 % quantile of the lifetime sliding [m]."""
+        return self.quantile(0.99)
+
+    @property
+    def mean_storms(self) -> float:
+        """The mean number of storms in a lifetime."""
+        return float(np.mean(self.storms))
+
     def summary(self) -> dict[str, object]:
-        """The statistics as a plain dict (metres, probabilities)."""
-        return {
-            "expected_sliding": self.expected_sliding,
-            "std_error": self.std_error,
-            "std": self.std,
-            "median": self.median,
-            "quantile_90": self.quantile(0.9),
-            "quantile_99": self.quantile(0.99),
-            "exceedance": {_key(x): self.exceedance(x) for x in self.thresholds},
-            "storm_exceedance": {_key(x): self.storm_exceedance(x) for x in self.thresholds},
-            "never_slides": self.never_slides,
-            "trials": self.trials,
-            "years": self.years,
-            "seed": self.seed,
-            "width": self.width,
-            "mean_storms": float(np.mean(self.storms)),
-        }
+        """The statistics of :data:`STATISTICS` as a plain dict, in its order.
+
+        Lengths in metres, probabilities in [0, 1]; ``exceedance`` and
+        ``storm_exceedance`` map each threshold (:func:`threshold_key`) to its
+        probability; ``failure`` is ``{sliding_limit, probability, std_error}`` or None.
+        """
+        return {s.key: s.of(self) for s in STATISTICS}
 
     def __repr__(self) -> str:
         return (f"LifetimeResult(ESD={self.expected_sliding:.4g} m ± {self.std_error:.2g} m, "
                 f"trials={self.trials}, years={self.years}, width={self.width:g} m, seed={self.seed})")
 
     def _repr_html_(self) -> str:
-        """The statistics of :meth:`summary` as a small table (Jupyter's rich display)."""
+        """The statistics of :data:`STATISTICS` as a small table (Jupyter's rich display)."""
         from ..mechanics.htmltable import html_table, number
 
-        rows: list[tuple[object, ...]] = [
-            ("expected sliding (ESD)", f"{number(self.expected_sliding)} m",
-             f"± {number(self.std_error, 2)} m (standard error)"),
-            ("standard deviation", f"{number(self.std)} m", ""),
-            ("median", f"{number(self.median)} m", ""),
-            ("90 % / 99 % quantile", f"{number(self.quantile(0.9))} m / "
-             f"{number(self.quantile(0.99))} m", ""),
-            ("never slides", f"{100.0 * self.never_slides:.3g} %", "of the lifetimes"),
-        ]
-        for x in self.thresholds:
-            rows.append((f"P(S > {x:g} m)", f"{100.0 * self.exceedance(x):.3g} %",
-                         f"one storm alone: {100.0 * self.storm_exceedance(x):.3g} %"))
-        rows += [
-            ("trials", self.trials, f"lifetimes of {self.years} years, seed {self.seed}"),
-            ("storms", number(float(np.mean(self.storms))), "per lifetime, on average"),
-            ("width", f"{self.width:g} m", "of the caisson"),
-        ]
+        aside = {s.beside for s in STATISTICS}
+        rows: list[tuple[object, ...]] = []
+        for s in STATISTICS:
+            if s.key not in aside:
+                rows += s.html_rows(self)
         return html_table(rows, caption=f"Lifetime sliding: ESD = {number(self.expected_sliding)} m "
                           f"over {self.years} years", header=("", "value", ""))
 
@@ -231,6 +227,116 @@ def year_passing(by_year: FloatArray, limit: float) -> int | None:
     return int(over[0]) + 1 if over.size else None
 
 
-def _key(x: float) -> str:
-    """A threshold as a JSON key: ``0.1`` -> ``"0.1"`` (shortest repr)."""
-    return repr(float(x)) if float(x) != int(x) else f"{int(x)}"
+def threshold_key(x: float) -> str:
+    """A threshold in metres as a key: ``0.1`` -> ``"0.1"``, ``1.0`` -> ``"1"`` (the shortest repr)."""
+    v = float(x)
+    return f"{int(v)}" if v == int(v) else repr(v)
+
+
+def _percent(p: float) -> str:
+    return f"{100.0 * p:.3g} %"
+
+
+@dataclass(frozen=True)
+class Statistic:
+    """One statistic of a :class:`LifetimeResult`: the row that its dict, its JSON and its table read.
+
+    Attributes
+    ----------
+    key : str
+        The attribute of :class:`LifetimeResult` (a method of the threshold when
+        ``per_threshold``), and the key of :meth:`LifetimeResult.summary` and of the JSON.
+    label : str
+        Its name for people (``{x}`` stands for the threshold when ``per_threshold``).
+    unit : str
+        ``"m"``, ``"probability"``, ``"year"`` or ``""``.
+    description : str
+        What it is, in a few words.
+    count : bool
+        A whole number (kept as an int); the others are floats.
+    per_threshold : bool
+        One value per threshold of the result (``{threshold_key(x): value}``).
+    digits : int
+        Significant digits in the table.
+    beside : str
+        The key of the statistic the table shows in this one's row (``""``: its description).
+    aside : str
+        How this statistic reads beside another (``{}`` its value), when one shows it.
+    """
+
+    key: str
+    label: str
+    unit: str = ""
+    description: str = ""
+    count: bool = False
+    per_threshold: bool = False
+    digits: int = 4
+    beside: str = ""
+    aside: str = ""
+
+    def of(self, result: LifetimeResult) -> object:
+        """The value in ``result``: an int, a float, a dict by threshold, or the failure as a dict."""
+        value = getattr(result, self.key)
+        if self.per_threshold:
+            return {threshold_key(x): float(value(x)) for x in result.thresholds}
+        if isinstance(value, Failure):
+            return asdict(value)
+        if value is None:
+            return None
+        return int(value) if self.count else float(value)
+
+    def cell(self, result: LifetimeResult, x: float | None = None) -> str:
+        """Its value in ``result`` for people, with its unit (at the threshold ``x`` when
+        ``per_threshold``): ``0.32 m``, ``40 %``, ``5``."""
+        from ..mechanics.htmltable import number
+
+        value = getattr(result, self.key)
+        if self.per_threshold:
+            value = value(x)
+        if self.unit == "probability":
+            return _percent(float(value))
+        if self.count:
+            return str(int(value))
+        return number(float(value), self.digits) + (f" {self.unit}" if self.unit else "")
+
+    def html_rows(self, result: LifetimeResult) -> list[tuple[object, ...]]:
+        """Its rows of the table: ``(label, value with its unit, note)``, one per threshold when
+        ``per_threshold``, none for an absent value; the note is the statistic ``beside`` when
+        there is one, its ``description`` otherwise."""
+        other = _BY_KEY[self.beside] if self.beside else None
+        if self.per_threshold:
+            return [(self.label.format(x=f"{x:g}"), self.cell(result, x),
+                     self.description if other is None else other.aside.format(other.cell(result, x)))
+                    for x in result.thresholds]
+        value = getattr(result, self.key)
+        if value is None:
+            return []
+        if isinstance(value, Failure):
+            return [(self.label, _percent(value.probability),
+                     f"{self.description} (S > {value.sliding_limit:g} m), ± {_percent(value.std_error)}")]
+        note = self.description if other is None else other.aside.format(other.cell(result))
+        return [(self.label, self.cell(result), note)]
+
+
+#: The statistics of a lifetime result, in the order of its dict, its JSON and its table.
+STATISTICS: tuple[Statistic, ...] = (
+    Statistic("expected_sliding", "expected sliding (ESD)", "m", "the mean lifetime sliding",
+              beside="std_error"),
+    Statistic("std_error", "standard error", "m", "of the ESD", digits=2, aside="± {} (standard error)"),
+    Statistic("std", "standard deviation", "m", "of the lifetime sliding"),
+    Statistic("median", "median", "m", "of the lifetime sliding"),
+    Statistic("quantile_90", "90 % quantile", "m", "of the lifetime sliding"),
+    Statistic("quantile_99", "99 % quantile", "m", "of the lifetime sliding"),
+    Statistic("exceedance", "P(S > {x} m)", "probability", "over the life", per_threshold=True,
+              beside="storm_exceedance"),
+    Statistic("storm_exceedance", "P(one storm > {x} m)", "probability",
+              "one storm alone (Kim & Suh 2013)", per_threshold=True, aside="one storm alone: {}"),
+    Statistic("never_slides", "never slides", "probability", "of the lifetimes"),
+    Statistic("failure", "probability of failure", "", "sliding off the mound"),
+    Statistic("mean_storms", "storms", "", "per lifetime, on average"),
+    Statistic("trials", "trials", "", "lifetimes simulated", count=True),
+    Statistic("seed", "seed", "", "the root seed", count=True),
+    Statistic("years", "design life", "year", "years", count=True),
+    Statistic("width", "width", "m", "of the caisson"),
+)
+_BY_KEY = {s.key: s for s in STATISTICS}

@@ -21,6 +21,15 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from ._record import Field, Notice, Record
     from .atlas import AnimationRecord, AtlasRecord, run_animation, run_atlas
     from .caisson import CaissonError, CaissonNumbers, CaissonRecord, ImplausibleDesignError, run_caisson
+    from .climate import ClimateRecord, run_climate
+    from .lifetime import (
+        ChartRecord,
+        LifetimeDesign,
+        LifetimeRecord,
+        read_lifetime_design,
+        run_chart,
+        run_lifetime,
+    )
     from .map import MapRecord, points_of_map, run_map
     from .outcome import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
     from .query import QueryRecord, run_query
@@ -32,9 +41,13 @@ __all__ = [
     "CaissonError",
     "CaissonNumbers",
     "CaissonRecord",
+    "ChartRecord",
+    "ClimateRecord",
     "DynamicsFigureRecord",
     "Field",
     "ImplausibleDesignError",
+    "LifetimeDesign",
+    "LifetimeRecord",
     "MapRecord",
     "Notice",
     "OutcomeRecord",
@@ -42,10 +55,14 @@ __all__ = [
     "Record",
     "SimulationRecord",
     "points_of_map",
+    "read_lifetime_design",
     "run_animation",
     "run_atlas",
     "run_caisson",
+    "run_chart",
+    "run_climate",
     "run_dynamics_figure",
+    "run_lifetime",
     "run_map",
     "run_outcome",
     "run_query",
@@ -62,6 +79,15 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
             "CaissonRecord",
             "ImplausibleDesignError",
             "run_caisson",
+        ],
+        "climate": ["ClimateRecord", "run_climate"],
+        "lifetime": [
+            "ChartRecord",
+            "LifetimeDesign",
+            "LifetimeRecord",
+            "read_lifetime_design",
+            "run_chart",
+            "run_lifetime",
         ],
         "map": ["MapRecord", "points_of_map", "run_map"],
         "outcome": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
