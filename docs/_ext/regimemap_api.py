@@ -109,9 +109,11 @@ def _alias(module: Any, name: str) -> dict[str, str]:
     source = inspect.getsource(module)
     value = ""
     for node in ast.parse(source).body:
-        target = node.targets[0] if isinstance(node, ast.Assign) and len(node.targets) == 1 else (
-            node.target if isinstance(node, ast.AnnAssign) else None)
-        if isinstance(target, ast.Name) and target.id == name and node.value is not None:
+        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or node.value is None:
+            continue
+        target = node.target if isinstance(node, ast.AnnAssign) else (
+            node.targets[0] if len(node.targets) == 1 else None)
+        if isinstance(target, ast.Name) and target.id == name:
             value = " ".join((ast.get_source_segment(source, node.value) or "").split())
     doc = ModuleAnalyzer.for_module(module.__name__).find_attr_docs().get(("", name), [])
     return {"name": name, "value": value,

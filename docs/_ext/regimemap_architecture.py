@@ -41,9 +41,10 @@ ROW_ORDER = ("dynamics", "maps", "lifetime", "climate")
 def read_layers(test_file: Path) -> dict[str, float]:
     """The ``LAYER`` dict literal of ``tests/test_layers.py``."""
     for node in ast.parse(test_file.read_text(encoding="utf-8")).body:
-        targets = node.targets if isinstance(node, ast.Assign) else (
-            [node.target] if isinstance(node, ast.AnnAssign) else [])
-        if any(isinstance(t, ast.Name) and t.id == "LAYER" for t in targets) and node.value is not None:
+        if not isinstance(node, (ast.Assign, ast.AnnAssign)) or node.value is None:
+            continue
+        targets = [node.target] if isinstance(node, ast.AnnAssign) else node.targets
+        if any(isinstance(t, ast.Name) and t.id == "LAYER" for t in targets):
             return dict(ast.literal_eval(node.value))
     raise ValueError(f"{test_file}: no LAYER table")
 
@@ -159,7 +160,7 @@ def draw(layers: dict[str, float], edges: set[tuple[str, str]], records: list[st
     boxes = {n: (x - HALF_W, x + HALF_W, y - HALF_H, y + HALF_H) for n, (x, y) in pos.items()}
     if "workflows" in pos:   # the records, beside the package that returns them
         x, y = pos["workflows"]
-        lines = textwrap.wrap(", ".join(records), 26) if records else ["(none yet)"]
+        lines = textwrap.wrap(", ".join(records), 26) if records else ["(none)"]
         ax.plot([x + HALF_W, XMAX + 0.3], [y, y], color="#0072B2", linestyle="--", linewidth=0.8, zorder=1)
         ax.text(XMAX + 0.4, y, "returns the records\n" + "\n".join(lines), ha="left", va="center",
                 fontsize=8.5, linespacing=1.3, color="#0072B2", zorder=4,
