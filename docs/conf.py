@@ -4,9 +4,12 @@ Built offline, warnings as errors (``-W --keep-going``): the pages in MyST
 markdown (the notes ``derivation.md``, ``errata.md``, ``waves.md``,
 ``dynamics.md`` and ``lifetime.md`` among them), the gallery
 (``examples/``, run by sphinx-gallery at every build), the API reference
-(autodoc + numpydoc, one page per public package), the command-line
-reference (sphinx-click) and the design-file reference (generated from the
-reader's own tables by ``_ext/regimemap_docs.py``).  ``make docs`` also runs
+(autosummary's pages from ``_templates/autosummary/api.rst``, a page per
+public package and module, whose entries ``_ext/regimemap_api.py`` computes;
+autodoc + numpydoc), the architecture's picture (drawn from the code by
+``_ext/regimemap_architecture.py``), the command-line reference (sphinx-click)
+and the design-file reference (generated from the reader's own tables by
+``_ext/regimemap_docs.py``).  ``make docs`` also runs
 the ``doctest`` builder: every ``>>>`` example of the pages and of the
 docstrings shown in the API reference.
 """
@@ -38,6 +41,7 @@ version = ".".join(release.split(".")[:2])
 extensions = [
     "myst_parser",
     "sphinx.ext.autodoc",
+    "sphinx.ext.autosummary",
     "sphinx.ext.doctest",
     "sphinx.ext.mathjax",
     "sphinx.ext.viewcode",
@@ -46,6 +50,8 @@ extensions = [
     "sphinx_copybutton",
     "sphinx_gallery.gen_gallery",
     "regimemap_docs",
+    "regimemap_api",
+    "regimemap_architecture",
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
@@ -61,6 +67,10 @@ exclude_patterns = [
     "auto_examples/**/*.codeobj.json",
     "auto_examples/**/*.zip",
     "sg_execution_times.rst",
+    # text that a package's API page includes (docs/_ext/regimemap_api.py)
+    "api/intro",
+    # the pictures drawn from the code when the pages are built (docs/_ext/regimemap_architecture.py)
+    "_generated",
 ]
 # quotes and ellipses, but not dashes: "--gamma" in the command-line examples stays two hyphens
 smartquotes_action = "qe"
@@ -101,6 +111,16 @@ numpydoc_show_class_members = False     # no autosummary tables of each class's 
 numpydoc_class_members_toctree = False
 numpydoc_validation_checks: set[str] = set()
 numpydoc_xref_param_type = False
+
+# -- autosummary: the API pages ---------------------------------------------------------------
+
+from regimemap_api import api_context  # noqa: E402
+
+templates_path = ["_templates"]
+autosummary_generate = True
+# every public package a page (docs/api/index.md lists them) with its modules below it; the
+# template (_templates/autosummary/api.rst) reads what regimemap_api finds in the code
+autosummary_context = api_context()
 
 # -- doctest ---------------------------------------------------------------------------------
 
