@@ -122,8 +122,9 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 
 def _check_section(record: StudyRecord, section: str | None) -> None:
     if section is not None and section not in {name for name, _ in record.sections}:
-        raise click.BadParameter(f"{section!r} is not a section of the study; accepted: "
-                                 f"{', '.join(name for name, _ in record.sections)}", param_hint="'--section'")
+        names = ", ".join(name for name, _ in record.sections)
+        raise click.BadParameter(f"{section!r} is not a section of the study; accepted: {names}",
+                                 param_hint="'--section'")
 
 
 @click.command("study", short_help="A breakwater's sections under climate scenarios (resumable, parallel).")

@@ -106,9 +106,9 @@ def study_lines(record: StudyRecord) -> list[str]:
                 extra += f" ({r.required_width_interval[0]:.2f}-{r.required_width_interval[1]:.2f})"
             if r.required_width_upper is not None:
                 extra += f", {r.required_width_upper:.2f} m at the band's upper level"
-        out.append(f"{r.section[:16]:<16} {r.scenario[:20]:<20} {r.width:>8.2f} {r.expected_sliding:>10.4g} "
-                   f"{r.std_error:>8.2g} {p[0.1]:>6.3f} {p[0.3]:>6.3f} {_year(y[0.1]):>5} {_year(y[0.3]):>5}  "
-                   f"{extra}".rstrip())
+        out.append(f"{r.section[:16]:<16} {r.scenario[:20]:<20} {r.width:>8.2f} "
+                   f"{r.expected_sliding:>10.4g} {r.std_error:>8.2g} {p[0.1]:>6.3f} {p[0.3]:>6.3f} "
+                   f"{_year(y[0.1]):>5} {_year(y[0.3]):>5}  {extra}".rstrip())
     return out
 
 

@@ -19,10 +19,12 @@ from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
     from ._record import Field, Notice, Record
+    from .study import StudyRecord, StudyRow, run_study
 
-__all__ = ["Field", "Notice", "Record"]
+__all__ = ["Field", "Notice", "Record", "StudyRecord", "StudyRow", "run_study"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "_record": ["Field", "Notice", "Record"],
+        "study": ["StudyRecord", "StudyRow", "run_study"],
     })

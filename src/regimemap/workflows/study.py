@@ -29,7 +29,7 @@ from ._record import Field, Notice, Record
 from .study_tasks import LIMITS, StudyTask, run_task, task_seed
 
 if TYPE_CHECKING:
-    from regimemap.io.study import Study
+    from regimemap.io.study import SectionSpec, Study
     from regimemap.io.study_store import StudyStore
 
 __all__ = ["BAND_LEVEL", "StudyRecord", "StudyRow", "run_study", "study_tasks"]
@@ -289,7 +289,6 @@ def _assemble(s: Study, climates: list[Any] | None, kept: StudyStore | None,
               memory: dict[str, dict[str, Any]]) -> StudyRecord:
     """The record, from the stored results of every task, in the study's order."""
     from regimemap.io.study_store import task_name
-    from regimemap.lifetime.replicates import ChartBand
 
     def get(name: str) -> dict[str, Any]:
         got = kept.load(name) if kept is not None else memory.get(name)
@@ -304,36 +303,45 @@ def _assemble(s: Study, climates: list[Any] | None, kept: StudyStore | None,
         for j, scenario in enumerate(s.scenarios):
             main = get(task_name(i, j, 0))
             reps = [get(task_name(i, j, r)) for r in range(1, n_rep + 1)]
-            upper = None
-            if section.target is not None and reps:
-                band = ChartBand(widths=np.asarray(section.widths), esd=np.array([r["chart_esd"] for r in reps]),
-                                 level=BAND_LEVEL, target=section.target, seed=s.seed, trials=s.trials)
-                upper = band.width_for_target
             if main.get("bracket"):
                 notices.append(Notice("target-not-bracketed", f"section {section.name!r}, scenario "
                                       f"{scenario.name!r}: {main['bracket']}", "width", None))
-            for k, width in enumerate(main["widths"]):
-                band_k = None
-                if section.target is None and len(reps) >= 2:
-                    esd = np.array([r["esd"][k] for r in reps])
-                    q = np.quantile(esd, [0.5 * (1.0 - BAND_LEVEL), 0.5 * (1.0 + BAND_LEVEL)])
-                    band_k = (float(q[0]), float(q[1]))
-                interval = main.get("interval")
-                rows.append(StudyRow(
-                    section=section.name, chainage=section.chainage, scenario=scenario.name, width=float(width),
-                    expected_sliding=float(main["esd"][k]), std_error=_nan(main["std_error"][k]),
-                    exceedance=tuple(zip(LIMITS, (float(p) for p in main["exceedance"][k]))),
-                    by_year=tuple(float(x) for x in main["by_year"][k]), passes=_passes(main["by_year"][k]),
-                    band=band_k,
-                    required_width=None if section.target is None else main.get("required_width"),
-                    required_width_interval=None if interval is None else (float(interval[0]),
-                                                                           float(interval[1])),
-                    required_width_upper=upper))
+            rows += _rows(s, section, scenario.name, main, reps)
     targets = [sec.target for sec in s.sections if sec.target is not None]
     return StudyRecord(source=s.source, study_hash=s.study_hash, seed=s.seed, trials=s.trials, years=s.years,
                        sections=tuple((sec.name, sec.chainage) for sec in s.sections),
                        scenarios=tuple(sc.name for sc in s.scenarios), target=targets[0] if targets else None,
                        rows=tuple(rows), notices=tuple(notices))
+
+
+def _rows(s: Study, section: SectionSpec, scenario: str, main: dict[str, Any],
+          reps: list[dict[str, Any]]) -> list[StudyRow]:
+    """The rows of a section under a scenario: its design climate's task ``main`` and the bootstrap
+    climates' ``reps`` (the band of each width's ESD; of a target, the width at the band's upper level)."""
+    from regimemap.lifetime.replicates import ChartBand
+
+    upper = None
+    if section.target is not None and reps:
+        chart = ChartBand(widths=np.asarray(section.widths), esd=np.array([r["chart_esd"] for r in reps]),
+                          level=BAND_LEVEL, target=section.target, seed=s.seed, trials=s.trials)
+        upper = chart.width_for_target
+    interval = main.get("interval")
+    rows = []
+    for k, width in enumerate(main["widths"]):
+        band = None
+        if section.target is None and len(reps) >= 2:
+            q = np.quantile(np.array([r["esd"][k] for r in reps]),
+                            [0.5 * (1.0 - BAND_LEVEL), 0.5 * (1.0 + BAND_LEVEL)])
+            band = (float(q[0]), float(q[1]))
+        rows.append(StudyRow(
+            section=section.name, chainage=section.chainage, scenario=scenario, width=float(width),
+            expected_sliding=float(main["esd"][k]), std_error=_nan(main["std_error"][k]),
+            exceedance=tuple(zip(LIMITS, (float(p) for p in main["exceedance"][k]))),
+            by_year=tuple(float(x) for x in main["by_year"][k]), passes=_passes(main["by_year"][k]),
+            band=band, required_width=None if section.target is None else main.get("required_width"),
+            required_width_interval=None if interval is None else (float(interval[0]), float(interval[1])),
+            required_width_upper=upper))
+    return rows
 
 
 def _nan(x: Any) -> float:
