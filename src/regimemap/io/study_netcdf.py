@@ -21,7 +21,7 @@ from __future__ import annotations
 import importlib.util
 import math
 import os
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
@@ -47,7 +47,7 @@ def _xarray() -> Any:
     return xr
 
 
-def netcdf_engine() -> str:
+def netcdf_engine() -> Literal["netcdf4", "scipy"]:
     """The engine :func:`write_study_netcdf` writes with: ``"netcdf4"`` if installed, else ``"scipy"``."""
     return "netcdf4" if importlib.util.find_spec("netCDF4") is not None else "scipy"
 
@@ -147,7 +147,7 @@ def study_dataset(record: StudyRecord) -> xarray.Dataset:
                   {"units": "m", "long_name": "tolerable sliding distance"}),
         "year": ("year", years, {"units": "year", "long_name": "service year"}),
     }
-    attrs = {
+    attrs: dict[str, str | int | float] = {
         "title": "regimemap study: expected sliding of a breakwater's sections under climate scenarios",
         "study_hash": record.study_hash,
         "seed": int(record.seed) if -2**31 <= record.seed < 2**31 else str(record.seed),  # NetCDF-3: int32
@@ -159,7 +159,8 @@ def study_dataset(record: StudyRecord) -> xarray.Dataset:
     }
     if record.target is not None:
         attrs["target"] = float(record.target)
-    return xr.Dataset(data, coords=coords, attrs=attrs)
+    ds: xarray.Dataset = xr.Dataset(data, coords=coords, attrs=attrs)
+    return ds
 
 
 def write_study_netcdf(path: str | os.PathLike[str], record: StudyRecord) -> None:
