@@ -80,12 +80,13 @@ def test_the_table_the_csv_and_the_json(run_cli, tmp_path):
     (["STUDY", "--scheduler", "tcp://h:1", "--jobs", "2"], "--jobs and --scheduler ADDRESS exclude"),
     (["STUDY", "--section", "nowhere"], "'nowhere' is not a section of the study; accepted: a, b"),
     (["STUDY", "--figure", "map"], "Invalid value for '--figure'"),
+    (["STUDY", "--scheduler", "nowhere"], "scheduler must be the address of a Dask scheduler"),
 ])
 def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, args, says):
     path = _small(tmp_path)
     (tmp_path / "x.toml").write_text("")
     args = [str(path) if a == "STUDY" else str(tmp_path / a) if a in ("x.toml", "t.xlsx") else a for a in args]
-    out = run_cli(["study", *args, "--jobs", "1"] if "--scheduler" not in args else ["study", *args])
+    out = run_cli(["study", *args] if "--jobs" in args else ["study", *args, "--jobs", "1"])
     assert out.code == 2, out.output
     assert says in out.stderr and out.stderr.count("\n") == 1
 

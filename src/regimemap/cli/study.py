@@ -36,6 +36,23 @@ def _suffix(path: str) -> str:
     return Path(path).suffix.lower().lstrip(".")
 
 
+class _Scheduler(click.ParamType):
+    """``local``, or a Dask scheduler's address (:func:`regimemap.io.lifetime_options.check_scheduler`)."""
+
+    name = "text"
+
+    def convert(self, value: object, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        from ..io.lifetime_options import check_scheduler
+
+        text = str(value).strip()
+        if text == "local":
+            return text
+        try:
+            return check_scheduler(text)
+        except ValueError as exc:
+            self.fail(f"{exc} (or 'local', a Dask LocalCluster)", param, ctx)
+
+
 def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], scheduler: str | None,
                 jobs: int | None) -> None:
     """The options that go together; the outputs' suffixes and folders."""
@@ -141,7 +158,7 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
               help="Worker processes on this machine (default: one per core; 1: this process); with "
                    "--scheduler local, the LocalCluster's workers.")
-@click.option("--scheduler", default=None, metavar="local|ADDRESS",
+@click.option("--scheduler", type=_Scheduler(), default=None, metavar="local|ADDRESS",
               help="Run the tasks on Dask: 'local' starts a LocalCluster, else a scheduler's address "
                    "(tcp://host:8786); needs the 'cluster' extra.")
 @click.option("--resume", is_flag=True, help="Run only the tasks missing from the store (the same numbers "
