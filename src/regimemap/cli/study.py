@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._common import RunError, import_matplotlib, output_path, report_written
+from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._writing import writing
 
@@ -36,7 +36,7 @@ def _suffix(path: str) -> str:
     return Path(path).suffix.lower().lstrip(".")
 
 
-class _Scheduler(click.ParamType):
+class _Scheduler(ParamType):
     """``local``, or a Dask scheduler's address (:func:`regimemap.io.lifetime_options.check_scheduler`)."""
 
     name = "text"
