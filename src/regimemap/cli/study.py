@@ -17,11 +17,12 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._common import RunError, import_matplotlib, output_path, report_written
+from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._writing import writing
 
 if TYPE_CHECKING:
+    from ..io.study import Study
     from ..workflows.study import StudyRecord
 
 __all__ = ["study_cmd"]
@@ -33,6 +34,23 @@ FIGURE_KINDS = ("chainage", "years", "width")
 
 def _suffix(path: str) -> str:
     return Path(path).suffix.lower().lstrip(".")
+
+
+class _Scheduler(ParamType):
+    """``local``, or a Dask scheduler's address (:func:`regimemap.io.lifetime_options.check_scheduler`)."""
+
+    name = "text"
+
+    def convert(self, value: object, param: click.Parameter | None, ctx: click.Context | None) -> str:
+        from ..io.lifetime_options import check_scheduler
+
+        text = str(value).strip()
+        if text == "local":
+            return text
+        try:
+            return check_scheduler(text)
+        except ValueError as exc:
+            self.fail(f"{exc} (or 'local', a Dask LocalCluster)", param, ctx)
 
 
 def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], scheduler: str | None,
@@ -73,24 +91,37 @@ def _progress(quiet: bool) -> Iterator[Callable[[int, int], None]]:
         yield step
 
 
-def _run(study: str, jobs: int | None, scheduler: str | None, resume: bool, store: str | None,
-         quiet: bool) -> StudyRecord:
-    """Run the study; a refused file or store is a usage error (exit 2), a missing cluster a failure."""
+def _read(study: str, section: str | None) -> Study:
+    """The study file (refused: a usage error, exit 2) and ``--section`` among its sections."""
     from ..io.study import StudyFileError, read_study
+
+    try:
+        parsed = read_study(study)
+    except StudyFileError as exc:
+        raise click.UsageError(str(exc), ctx=click.get_current_context()) from None
+    names = [s.name for s in parsed.sections]
+    if section is not None and section not in names:
+        raise click.BadParameter(f"{section!r} is not a section of the study; accepted: {', '.join(names)}",
+                                 param_hint="'--section'")
+    return parsed
+
+
+def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, store: str | None,
+         quiet: bool) -> StudyRecord:
+    """Run the study; a refused store is a usage error (exit 2), a missing cluster a failure."""
     from ..io.study_store import StudyStoreError
     from ..lifetime import ClusterUnavailable, available_cores
     from ..workflows.study import run_study
 
-    ctx = click.get_current_context()
-    folder = Path(store) if store is not None else Path(study).parent / f"{Path(study).stem}.store"
+    source = Path(study.source)
+    folder = Path(store) if store is not None else source.parent / f"{source.stem}.store"
     workers = jobs if jobs is not None else available_cores()
     try:
-        parsed = read_study(study)
         with _progress(quiet) as step:
-            return run_study(parsed, jobs=workers, scheduler=scheduler, store=folder, resume=resume,
+            return run_study(study, jobs=workers, scheduler=scheduler, store=folder, resume=resume,
                              progress=step)
-    except (StudyFileError, StudyStoreError) as exc:
-        raise click.UsageError(str(exc), ctx=ctx) from None
+    except StudyStoreError as exc:
+        raise click.UsageError(str(exc), ctx=click.get_current_context()) from None
     except ClusterUnavailable as exc:
         raise RunError(str(exc)) from None
 
@@ -120,13 +151,6 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
         report_written(path)
 
 
-def _check_section(record: StudyRecord, section: str | None) -> None:
-    if section is not None and section not in {name for name, _ in record.sections}:
-        names = ", ".join(name for name, _ in record.sections)
-        raise click.BadParameter(f"{section!r} is not a section of the study; accepted: {names}",
-                                 param_hint="'--section'")
-
-
 @click.command("study", short_help="A breakwater's sections under climate scenarios (resumable, parallel).")
 @click.argument("study", type=DESIGN_FILE, metavar="STUDY.toml", required=False)
 @click.option("--example", is_flag=True, help="Print the commented example study (three sections, two "
@@ -134,7 +158,7 @@ def _check_section(record: StudyRecord, section: str | None) -> None:
 @click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
               help="Worker processes on this machine (default: one per core; 1: this process); with "
                    "--scheduler local, the LocalCluster's workers.")
-@click.option("--scheduler", default=None, metavar="local|ADDRESS",
+@click.option("--scheduler", type=_Scheduler(), default=None, metavar="local|ADDRESS",
               help="Run the tasks on Dask: 'local' starts a LocalCluster, else a scheduler's address "
                    "(tcp://host:8786); needs the 'cluster' extra.")
 @click.option("--resume", is_flag=True, help="Run only the tasks missing from the store (the same numbers "
@@ -184,8 +208,7 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
         click.echo(example_study_text(), nl=False)
         return
     assert study is not None
-    record = _run(study, jobs, scheduler, resume, store, quiet)
-    _check_section(record, section)
+    record = _run(_read(study, section), jobs, scheduler, resume, store, quiet)
     for notice in record.notices:
         click.echo(f"regimemap: warning: {notice.message}", err=True)
     _write(record, outputs, figure, section)

@@ -109,16 +109,19 @@ class ScenarioSpec:
         Rise above today's mean sea level in each service year [m].
     wave_height, storm_rate : tuple of float
         Factors on the storm peaks and on the number of storms in each year.
+    today : bool
+        The scenario gives none of them: today's climate, run without a trend.
     """
 
     name: str
     sea_level: tuple[float, ...]
     wave_height: tuple[float, ...]
     storm_rate: tuple[float, ...]
+    today: bool = False
 
     @property
     def stationary(self) -> bool:
-        """Today's climate: no rise and every factor 1 (the scenario gave none)."""
+        """No rise and every factor 1 in every year (today's climate, given or written out)."""
         return (all(x == 0.0 for x in self.sea_level) and all(x == 1.0 for x in self.wave_height)
                 and all(x == 1.0 for x in self.storm_rate))
 
@@ -162,9 +165,9 @@ class Study:
         return spec.climate_replicates if spec.record is not None else 0
 
     def model(self, section: SectionSpec, scenario: ScenarioSpec) -> LifetimeModel:
-        """The section's lifetime model under the scenario (today's climate: no trend)."""
+        """The section's lifetime model under the scenario (a scenario that gives no change: no trend)."""
         model = section.design.lifetime_model(self.years)
-        return model if scenario.stationary else model.with_(trend=scenario.trend())
+        return model if scenario.today else model.with_(trend=scenario.trend())
 
 
 def _fingerprint(data: Mapping[str, Any], base_text: str | None, record_path: str | None) -> str:
@@ -296,7 +299,7 @@ def _section(where: Where, i: int, sec: Mapping[str, Any], base: Merged,
                 merged.set(key, sub, x, Origin(where.source, where.item("section", i, f"{key}.{sub}")))
             continue
         table, k = section_key(where, i, key)
-        check_override(where, i, table, k)
+        check_override(where, i, table, k, key)
         merged.set(table, k, value, Origin(where.source, where.item("section", i, key)))
     widths, target, tolerance = section_widths(where, i, sec)
     design = design_of(merged, where.source, name, i, where)

@@ -216,9 +216,9 @@ def section_key(where: Where, index: int, key: str) -> tuple[str, str]:
     return tables[0], key
 
 
-def check_override(where: Where, index: int, table: str, key: str) -> None:
+def check_override(where: Where, index: int, table: str, key: str, written: str | None = None) -> None:
     keys = LIFETIME_KEYS if table == "lifetime" else DESIGN_KEYS[table]
-    line = where.item("section", index, f"{table}.{key}")
+    line = where.item("section", index, written or f"{table}.{key}")
     if key not in keys:
         raise where.fail(line, f"[[section]] {table}.{key}: unknown key{did_you_mean(key, keys)}; accepted "
                          f"keys of [{table}]: {', '.join(keys)}")
@@ -308,8 +308,9 @@ def year_table(where: Where, index: int, key: str, value: Any, years: int, facto
 
 
 def scenario_values(where: Where, index: int, sc: Mapping[str, Any], years: int
-                    ) -> tuple[str, tuple[float, ...], tuple[float, ...], tuple[float, ...]]:
-    """A ``[[scenario]]``: its name and, per service year, the rise [m] and the two factors."""
+                    ) -> tuple[str, tuple[float, ...], tuple[float, ...], tuple[float, ...], bool]:
+    """A ``[[scenario]]``: its name; per service year, the rise [m] and the two factors; and whether
+    it gives none of them (today's climate)."""
     for key in sc:
         if key not in SCENARIO_KEYS:
             raise where.fail(where.item("scenario", index, key), f"[[scenario]] {key}: unknown key"
@@ -334,7 +335,8 @@ def scenario_values(where: Where, index: int, sc: Mapping[str, Any], years: int
               if "wave_height_factor" in sc else ones)
     rate = (year_table(where, index, "storm_rate_factor", sc["storm_rate_factor"], years, True)
             if "storm_rate_factor" in sc else ones)
-    return name, sea, height, rate
+    today = not any(key in sc for key in SCENARIO_KEYS if key != "name")
+    return name, sea, height, rate, today
 
 
 def check_names(where: Where, array: str, items: list[Any]) -> list[str]:

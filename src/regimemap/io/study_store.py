@@ -11,8 +11,10 @@ stored as Python's shortest repr, which reads back to the same bits.
 
 Opening a store that exists: ``resume`` with the same hash reuses its tasks; a
 different hash is refused whether resuming or not (the store is left untouched);
-the same hash without ``resume`` is refused with the hint to ``--resume`` or to
-give another ``--store``, so a finished study is never overwritten by accident.
+the same hash without ``resume`` is refused, when it holds a task, with the hint to
+``--resume`` or to give another ``--store``, so finished tasks are never run again
+by accident (an empty store of the study, left by a run that never got going, is
+reused).
 """
 
 from __future__ import annotations
@@ -80,7 +82,7 @@ class StudyStore:
                     f"{self.folder}: the store of another study (its hash {str(old.get('study_hash'))[:12]}, "
                     f"this study's {study_hash[:12]}: {source} has changed); refused, the store is "
                     "untouched: give a new --store, or remove this one to start again")
-            if not resume:
+            if not resume and any(self.tasks_folder.glob("*.json")):
                 raise StudyStoreError(
                     f"{self.folder}: already holds this study's results; give --resume to finish (or "
                     "reuse) them, or a new --store to start again")
