@@ -9,6 +9,8 @@ Standalone script (not a test): ``.venv/bin/python bench/bench_study.py [--quick
 * the same breakwater's first 4 sections x 3 scenarios under the 44007 record's climate and
   10 bootstrap climates (``climate_replicates = 10``): 132 tasks on two workers (skipped
   without the shared data beside the clone);
+* the CPU time per task (user + system, of the process and its workers): on a shared machine
+  the wall clock depends on the other work, the CPU time much less;
 * memory: each run in a fresh Python process, which reports ``resource.getrusage``'s peak
   resident size of itself (``RUSAGE_SELF``) and of the largest of its worker processes
   (``RUSAGE_CHILDREN``, the maximum over the children it waited for): the peak of the run
@@ -76,6 +78,13 @@ def _peak_mb() -> tuple[float, float]:
     return own, children
 
 
+def _cpu() -> float:
+    """CPU seconds (user + system) of this process and of its finished children so far."""
+    own = resource.getrusage(resource.RUSAGE_SELF)
+    children = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return own.ru_utime + own.ru_stime + children.ru_utime + children.ru_stime
+
+
 def run_one(sections: int, trials: int, replicates: int, jobs: int) -> dict[str, float]:
     """One study in this process (called in a fresh process by :func:`measure`)."""
     from regimemap.workflows import run_study
@@ -83,13 +92,13 @@ def run_one(sections: int, trials: int, replicates: int, jobs: int) -> dict[str,
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "bench.toml"
         path.write_text(study_text(sections, trials, replicates), encoding="utf-8")
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), _cpu()
         record = run_study(path, jobs=jobs, store=Path(tmp) / "store")
-        wall = time.perf_counter() - t0
+        wall, cpu = time.perf_counter() - t0, _cpu() - c0
     own, children = _peak_mb()
     tasks = sections * 3 * (1 + replicates)
     esd = [r.expected_sliding for r in record.rows]
-    return {"wall": wall, "tasks": tasks, "own_mb": own, "children_mb": children,
+    return {"wall": wall, "cpu": cpu, "tasks": tasks, "own_mb": own, "children_mb": children,
             "esd_max": max(esd), "rows": len(record.rows)}
 
 
@@ -102,7 +111,7 @@ def measure(sections: int, trials: int, replicates: int, jobs: int) -> dict[str,
 
 
 def _line(what: str, r: dict[str, float]) -> str:
-    return (f"{what:52s} {r['wall']:8.1f} s   {r['wall'] / r['tasks']:6.2f} s/task   "
+    return (f"{what:52s} {r['wall']:8.1f} s   {r['cpu'] / r['tasks']:6.2f} CPU s/task   "
             f"peak {r['own_mb']:4.0f} MB (this process), {r['children_mb']:4.0f} MB (largest worker)")
 
 

@@ -146,14 +146,18 @@ def test_width_draws_the_required_width_its_interval_and_the_band_level() -> Non
     rec = hand_record(band=True)
     fig = study_figure(rec, "width")
     ax = _axes(fig)
-    marks = [ln for ln in ax.get_lines() if len(ln.get_xdata()) == 1]
+    fixed = [ln for ln in ax.get_lines() if ln.get_marker() == "_" and ln.get_linestyle() == "None"]
+    assert len(fixed) == 1 and list(fixed[0].get_ydata()) == [12.0, 15.0, 20.0]
+    drawn = [ln for ln in ax.get_lines() if ln not in fixed]
+    marks = [ln for ln in drawn if len(ln.get_xdata()) == 1]
     # per scenario: the width (one target section), its upper-level width
     assert sorted(float(m.get_ydata()[0]) for m in marks) == [30.0, 34.0, 34.0, 38.0]
-    bars = [ln for ln in ax.get_lines() if len(ln.get_xdata()) == 2]
+    bars = [ln for ln in drawn if len(ln.get_xdata()) == 2]
     assert sorted(tuple(b.get_ydata()) for b in bars) == [(28.0, 33.0), (32.0, 37.0)]
     text = _text(fig)
     assert "Width for an expected sliding distance of 0.1 m" in text
     assert "today: at the climate band's upper level" in text
+    assert "the fixed widths of the other sections" in text
     assert [t.get_text() for t in _axes(fig, "sections").get_xticklabels()] == ["head 18 m"]
 
 

@@ -33,6 +33,8 @@ __all__ = ["FIGURE_KINDS", "study_figure"]
 
 #: The kinds of :func:`study_figure`.
 FIGURE_KINDS = ("chainage", "years", "width")
+#: The fixed widths of the sections without a target, on the width figure.
+FIXED_WIDTH = "0.45"
 #: Markers of the first service year over each tolerable limit (0.1 m, 0.3 m).
 _PASS_MARKERS = ("D", "s")
 
@@ -54,7 +56,8 @@ def study_figure(record: StudyRecord, kind: str = "chainage", section: str | Non
         width), a line per scenario, the limits, and the first year over each limit marked on
         the curves (the years in the key).  ``"width"``: the width for the target ESD of each
         section that asks for one, a line per scenario, its Monte Carlo interval as error bars
-        and the width at the climate band's upper level as open markers.
+        and the width at the climate band's upper level as open markers; the fixed widths of
+        the other sections as grey ticks.
     section : str, optional
         The section of ``"years"`` (default: the first).
     dpi : float
@@ -323,10 +326,18 @@ def _width(record: StudyRecord, dpi: float) -> Figure:
             key.append((Line2D([], [], color=s.color, lw=0.9, dashes=(2.0, 2.0), marker=s.marker,
                                markersize=4.5, markerfacecolor="white"),
                         f"{sc}: at the climate band's upper level"))
+    fixed = [(r.chainage, r.width) for n, _ in record.sections if (n, _) not in targets
+             for r in record.rows_for(section=n, scenario=record.scenarios[0])]
+    if fixed:
+        key.append((Line2D([], [], ls="none", marker="_", markersize=8.0, color=FIXED_WIDTH),
+                    "the fixed widths of the other sections"))
     rotate, names_h = _names_rotated(record, targets)
     fig, ax, _h = new_frame(title, key_columns(key)[1], dpi=dpi, top_extra=names_h)
     ax.set_xlim(*_chainage_limits(record))
-    values: list[float] = []
+    values: list[float] = [w for _, w in fixed]
+    if fixed:
+        ax.plot([c for c, _ in fixed], [w for _, w in fixed], ls="none", marker="_", markersize=8.0,
+                color=FIXED_WIDTH, zorder=2)
     for j, sc in enumerate(record.scenarios):
         s = scenario_style(j)
         dx = _dodge(record, j)
