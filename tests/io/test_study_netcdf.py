@@ -54,7 +54,12 @@ def hand_record(*, band: bool = False, target: bool = True, years: int = YEARS,
 
 xr = pytest.importorskip("xarray")
 
-from regimemap.io.study_netcdf import netcdf_engine, study_dataset, write_study_netcdf  # noqa: E402
+from regimemap.io.study_netcdf import (  # noqa: E402
+    check_netcdf,
+    netcdf_engine,
+    study_dataset,
+    write_study_netcdf,
+)
 
 
 def test_the_dataset_is_the_table_row_by_row() -> None:
@@ -149,9 +154,13 @@ def test_a_failed_write_leaves_no_file(tmp_path, monkeypatch) -> None:
 
 
 def test_without_xarray_the_error_names_the_extra(monkeypatch) -> None:
+    check_netcdf()  # installed here: nothing to say
     monkeypatch.setitem(sys.modules, "xarray", None)
     with pytest.raises(ImportError, match=r"regimemap\[metocean\]"):
         study_dataset(hand_record())
+    monkeypatch.setattr("importlib.util.find_spec", lambda name, *a: None)
+    with pytest.raises(ImportError, match=r"needs xarray: pip install 'regimemap\[metocean\]'"):
+        check_netcdf()
 
 
 def test_a_large_seed_is_kept_whole() -> None:

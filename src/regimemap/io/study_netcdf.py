@@ -32,19 +32,29 @@ if TYPE_CHECKING:
 
     from regimemap.workflows.study import StudyRecord
 
-__all__ = ["netcdf_engine", "study_dataset", "write_study_netcdf"]
+__all__ = ["NO_XARRAY", "check_netcdf", "netcdf_engine", "study_dataset", "write_study_netcdf"]
 
 #: The tidy layout's dimensions: the rows, the tolerable limits, the service years.
 DIMS = ("row", "limit", "year")
+
+
+#: The message when xarray is missing.
+NO_XARRAY = "writing the study as NetCDF needs xarray: pip install 'regimemap[metocean]'"
 
 
 def _xarray() -> Any:
     try:
         import xarray as xr
     except ImportError:
-        raise ImportError("writing the study as NetCDF needs xarray: "
-                          "pip install 'regimemap[metocean]'") from None
+        raise ImportError(NO_XARRAY) from None
     return xr
+
+
+def check_netcdf() -> None:
+    """Raise :class:`ImportError` (:data:`NO_XARRAY`) now if xarray is missing, e.g. before a long run
+    whose table is to be written as NetCDF."""
+    if importlib.util.find_spec("xarray") is None:
+        raise ImportError(NO_XARRAY)
 
 
 def netcdf_engine() -> Literal["netcdf4", "scipy"]:
