@@ -34,10 +34,6 @@ if TYPE_CHECKING:
 
 __all__ = ["NO_XARRAY", "check_netcdf", "netcdf_engine", "study_dataset", "write_study_netcdf"]
 
-#: The tidy layout's dimensions: the rows, the tolerable limits, the service years.
-DIMS = ("row", "limit", "year")
-
-
 #: The message when xarray is missing.
 NO_XARRAY = "writing the study as NetCDF needs xarray: pip install 'regimemap[metocean]'"
 
