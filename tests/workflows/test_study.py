@@ -151,6 +151,8 @@ def test_a_store_is_refused_without_resume_and_for_a_changed_study(tmp_path):
     (tmp_path / "other" / "notes.txt").write_text("mine")
     with pytest.raises(StudyStoreError, match="not a study store"):
         StudyStore(tmp_path / "other", "h", "x", 1)
+    with pytest.raises(StudyStoreError, match="not a folder"):
+        StudyStore(tmp_path / "other" / "notes.txt", "h", "x", 1)
 
 
 def test_a_failed_store_loses_only_the_task_in_flight(tmp_path, monkeypatch):

@@ -163,7 +163,7 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
                    "(tcp://host:8786); needs the 'cluster' extra.")
 @click.option("--resume", is_flag=True, help="Run only the tasks missing from the store (the same numbers "
               "as an uninterrupted run); refused when the study file has changed.")
-@click.option("--store", type=click.Path(file_okay=False), default=None, metavar="DIR",
+@click.option("--store", default=None, metavar="DIR",
               help="The results store, one file per finished task (default: STUDY.store beside the "
                    "study file).")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows) instead of text.")

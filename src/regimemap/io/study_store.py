@@ -71,6 +71,8 @@ class StudyStore:
         self.folder = Path(folder)
         self.tasks_folder = self.folder / "tasks"
         manifest = self.folder / MANIFEST
+        if self.folder.exists() and not self.folder.is_dir():
+            raise StudyStoreError(f"{self.folder}: not a folder; give --store a folder (created if missing)")
         if manifest.exists():
             try:
                 old = json.loads(manifest.read_text(encoding="utf-8"))
