@@ -141,7 +141,7 @@ def _names_rotated(record: StudyRecord, sections: list[tuple[str, float]]) -> tu
     return True, 0.12 + wide / 72.0
 
 
-def _limits(ax: Axes, target: float | None = None) -> Placed:
+def _limits(ax: Axes) -> Placed:
     """The tolerable limits as horizontal lines; their labels, to be placed."""
     out: Placed = []
     for (lim, _), dashes in zip(TOLERABLE, LIMIT_DASHES):
@@ -326,7 +326,7 @@ def _width(record: StudyRecord, dpi: float) -> Figure:
             key.append((Line2D([], [], color=s.color, lw=0.9, dashes=(2.0, 2.0), marker=s.marker,
                                markersize=4.5, markerfacecolor="white"),
                         f"{sc}: at the climate band's upper level"))
-    fixed = [(r.chainage, r.width) for n, _ in record.sections if (n, _) not in targets
+    fixed = [(r.chainage, r.width) for n, c in record.sections if (n, c) not in targets
              for r in record.rows_for(section=n, scenario=record.scenarios[0])]
     if fixed:
         key.append((Line2D([], [], ls="none", marker="_", markersize=8.0, color=FIXED_WIDTH),
