@@ -177,3 +177,26 @@ def test_kill_9_halfway_then_resume_gives_the_same_bytes(tmp_path):
                                       "-o", str(tmp_path / "resumed.csv")), capture_output=True, text=True)
     assert resumed.returncode == 0, resumed.stderr
     assert (tmp_path / "resumed.csv").read_bytes() == (tmp_path / "whole.csv").read_bytes()
+
+
+@pytest.mark.render
+def test_the_netcdf_table_and_the_figures(run_cli, tmp_path):
+    pytest.importorskip("xarray")
+    import xarray as xr
+
+    path = _small(tmp_path)
+    out = run_cli(["study", str(path), "--jobs", "1", "-q", "-o", str(tmp_path / "t.nc"),
+                   "-o", str(tmp_path / "esd.svg")])
+    assert out.code == 0, out.output
+    assert out.stdout.split() == [str(tmp_path / "t.nc"), str(tmp_path / "esd.svg")]
+    with xr.open_dataset(tmp_path / "t.nc") as ds:
+        assert ds.sizes["row"] == 6 and ds.sizes["year"] == 50
+        csv_out = run_cli(["study", str(path), "--resume", "-q", "-o", str(tmp_path / "t.csv")])
+        rows = list(csv.DictReader((tmp_path / "t.csv").open()))
+        assert [float(r["expected_sliding"]) for r in rows] == ds["expected_sliding"].values.tolist()
+    assert csv_out.code == 0
+    assert (tmp_path / "esd.svg").read_text().lstrip().startswith("<?xml")
+    years = run_cli(["study", str(path), "--resume", "-q", "--figure", "years", "--section", "b",
+                     "-o", str(tmp_path / "years.svg")])
+    assert years.code == 0, years.output
+    assert (tmp_path / "years.svg").stat().st_size > 1000

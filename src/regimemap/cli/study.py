@@ -70,6 +70,13 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
             raise click.BadParameter(f"{path!r}: the table is written as .csv or .nc and the figure as .png, "
                                      ".svg or .pdf (from the file suffix)", param_hint="'--output'")
         output_path(path, "--output")
+    if any(_suffix(path) == "nc" for path in outputs):  # before a long run, not after it
+        from ..io.study_netcdf import check_netcdf
+
+        try:
+            check_netcdf()
+        except ImportError as exc:
+            raise RunError(str(exc)) from None
 
 
 @contextlib.contextmanager
@@ -136,13 +143,13 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 
                 write_study_csv(path, record)
             elif _suffix(path) == "nc":
-                from ..io.study_netcdf import write_study_netcdf  # type: ignore[import-not-found,unused-ignore]
+                from ..io.study_netcdf import write_study_netcdf
 
                 write_study_netcdf(path, record)
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.study import study_figure  # type: ignore[import-not-found,unused-ignore]
+                    from ..drawing.study import study_figure
 
                     fig = study_figure(record, kind=figure, section=section)
                 from ..drawing.save import save_figure
