@@ -6,8 +6,9 @@ plotting timings of bench/bench_plot.py (``regimemap plot`` against a bare matpl
 drawing the same polygons, and ``regimemap figures --set all``) and the outcome-map benchmark of
 bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics) and the lifetime benchmark of
 bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart) and the
-explorer's redraw of bench/bench_explore.py, and the climate analysis of a 10-year record
-(``climate``).  Times are
+explorer's redraw of bench/bench_explore.py, the climate analysis of a 10-year record
+(``climate``) and a whole breakwater's study of bench/bench_study.py (20 sections x 3 scenarios on
+one and two workers, and with climate replicates).  Times are
 the best of several runs (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
@@ -151,6 +152,14 @@ def main() -> int:
     lifetime = Path(__file__).with_name("bench_lifetime.py")
     if lifetime.exists():  # regimemap.lifetime: 5000 lifetimes on one core, the 21-width chart
         spec = importlib.util.spec_from_file_location("bench_lifetime", lifetime)
+        mod = importlib.util.module_from_spec(spec)
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        mod.main()
+    study = Path(__file__).with_name("bench_study.py")
+    if study.exists():  # regimemap study: 20 sections x 3 scenarios on one and two workers, replicates
+        spec = importlib.util.spec_from_file_location("bench_study", study)
         mod = importlib.util.module_from_spec(spec)
         assert spec.loader is not None
         spec.loader.exec_module(mod)

@@ -67,12 +67,14 @@ def _register(group: click.Group) -> None:
     from .plot import figure_command, figures_command, plot_command
     from .query import classify_cmd
     from .simulate import simulate_cmd
+    from .study import study_cmd
 
     for command in (plot_command, figure_command, figures_command, classify_cmd, export_cmd,
                     atlas_cmd, animate_cmd):
         group.add_command(command)
     group.add_command(caisson_cmd)
     group.add_command(lifetime_cmd)
+    group.add_command(study_cmd)
     group.add_command(climate_cmd)
     group.add_command(simulate_cmd)
     group.add_command(outcome_cmd)

@@ -34,6 +34,7 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .outcome import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
     from .query import QueryRecord, run_query
     from .simulate import SimulationRecord, run_simulation
+    from .study import StudyRecord, StudyRow, run_study
 
 __all__ = [
     "AnimationRecord",
@@ -54,6 +55,8 @@ __all__ = [
     "QueryRecord",
     "Record",
     "SimulationRecord",
+    "StudyRecord",
+    "StudyRow",
     "points_of_map",
     "read_lifetime_design",
     "run_animation",
@@ -67,6 +70,7 @@ __all__ = [
     "run_outcome",
     "run_query",
     "run_simulation",
+    "run_study",
 ]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
@@ -93,4 +97,5 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
         "outcome": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
         "query": ["QueryRecord", "run_query"],
         "simulate": ["SimulationRecord", "run_simulation"],
+        "study": ["StudyRecord", "StudyRow", "run_study"],
     })

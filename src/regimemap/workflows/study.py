@@ -1,0 +1,348 @@
+"""``run_study``: a whole breakwater -- its sections under climate scenarios -- as one record.
+
+Every section x scenario x climate replicate is a task
+(:mod:`regimemap.workflows.study_tasks`); replicate 0 is the design's climate, 1..N
+the bootstrap climates of its wave record (``[lifetime] climate_replicates``).
+The tasks run in this process, in ``jobs`` local processes
+(:func:`regimemap.lifetime.parallel.worker_pool`) or on Dask (``scheduler``:
+``"local"`` starts a LocalCluster, else a scheduler's address), submitted lazily,
+a few per worker at a time, so memory is bounded by the tasks in flight.  Each
+finished task is stored at once (:class:`regimemap.io.study_store.StudyStore`) and
+the record is built from the stored results only, in the study's order: the same
+seed gives the same bytes whatever ran the tasks, and however often the run was
+interrupted and resumed.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+from collections.abc import Callable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Future, wait
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, ClassVar
+
+import numpy as np
+
+from ._record import Field, Notice, Record
+from .study_tasks import LIMITS, StudyTask, run_task, task_seed
+
+if TYPE_CHECKING:
+    from regimemap.io.study import SectionSpec, Study
+    from regimemap.io.study_store import StudyStore
+
+__all__ = ["BAND_LEVEL", "StudyRecord", "StudyRow", "run_study", "study_tasks"]
+
+#: Level of the climate band (the replicates' percentile interval), as ``regimemap lifetime``'s.
+BAND_LEVEL = 0.9
+#: Tasks in flight per worker.
+_WINDOW = 2
+
+
+@dataclass(frozen=True)
+class StudyRow:
+    """One section under one scenario at one width (see :class:`StudyRecord`)."""
+
+    section: str
+    chainage: float
+    scenario: str
+    width: float
+    expected_sliding: float
+    std_error: float
+    exceedance: tuple[tuple[float, float], ...]
+    by_year: tuple[float, ...]
+    passes: tuple[tuple[float, int | None], ...]
+    band: tuple[float, float] | None
+    required_width: float | None = None
+    required_width_interval: tuple[float, float] | None = None
+    required_width_upper: float | None = None
+
+
+@dataclass(frozen=True)
+class StudyRecord(Record):
+    """A study's results: one row per section x scenario x width, in the study's order.
+
+    Attributes
+    ----------
+    source : str or None
+        The study file.
+    study_hash : str
+        sha256 of the study's canonical content (what the store remembers).
+    seed, trials, years : int
+        Root seed, lifetimes per task, design life.
+    sections : tuple of (str, float)
+        (name, chainage [m]) in file order.
+    scenarios : tuple of str
+        In file order.
+    target : float or None
+        The target ESD [m] if a section asks for one.
+    rows : tuple of StudyRow
+        Section-major, then scenario, then width.
+    notices : tuple of Notice
+    """
+
+    source: str | None
+    study_hash: str
+    seed: int
+    trials: int
+    years: int
+    sections: tuple[tuple[str, float], ...]
+    scenarios: tuple[str, ...]
+    target: float | None
+    rows: tuple[StudyRow, ...]
+    notices: tuple[Notice, ...]
+
+    FIELDS: ClassVar[tuple[Field, ...]] = (
+        Field("source", "study", "", "the study file"),
+        Field("seed", "seed", "", "the root seed of every task"),
+        Field("trials", "trials", "", "lifetimes per task"),
+        Field("years", "L", "years", "design life"),
+        Field("target", "target ESD", "m", "the tolerable expected sliding distance"),
+    )
+    CAPTION: ClassVar[str] = "A breakwater's sections under climate scenarios"
+
+    def rows_for(self, section: str | None = None, scenario: str | None = None) -> tuple[StudyRow, ...]:
+        """The rows of one section and/or one scenario (None: all)."""
+        return tuple(r for r in self.rows if (section is None or r.section == section)
+                     and (scenario is None or r.scenario == scenario))
+
+
+def study_tasks(study: Study, climates: list[Any] | None = None) -> Iterator[tuple[str, StudyTask]]:
+    """The study's tasks in order, each with its store name, built one at a time.
+
+    ``climates`` holds the bootstrap climates (replicates 1..N), None without them.
+    """
+    from regimemap.io.study_store import task_name
+
+    for i, section in enumerate(study.sections):
+        caisson = section.caisson()
+        for j, scenario in enumerate(study.scenarios):
+            model = study.model(section, scenario)
+            for r, climate in enumerate([None, *(climates or [])]):
+                kind = "widths" if section.target is None else ("target" if r == 0 else "chart")
+                task = StudyTask(kind=kind, caisson=caisson,
+                                 model=model if climate is None else model.with_(climate=climate),
+                                 widths=section.widths, trials=study.trials, seed=task_seed(study.seed, i, r),
+                                 target=section.target, tolerance=section.tolerance,
+                                 sf_impulsive=section.design.caisson.impulsive)
+                yield task_name(i, j, r), task
+
+
+def _climates(study: Study) -> list[Any] | None:
+    """The bootstrap climates of the study's record (its ``climate_replicates``), None without."""
+    if study.replicates < 2:
+        return None
+    from regimemap.climate.life import replicate_climates
+    from regimemap.io.design_record import record_analysis
+
+    record = study.sections[0].design.lifetime_spec().record
+    assert record is not None
+    boot = int(np.random.SeedSequence(study.seed, spawn_key=(2**32 - 2,)).generate_state(1, np.uint32)[0])
+    return list(replicate_climates(record_analysis(record, study.replicates, boot)))
+
+
+def _serial(todo: Iterator[tuple[str, StudyTask]]) -> Iterator[tuple[str, dict[str, Any]]]:
+    for name, task in todo:
+        yield name, run_task(task)
+
+
+def _processes(todo: Iterator[tuple[str, StudyTask]], jobs: int) -> Iterator[tuple[str, dict[str, Any]]]:
+    from regimemap.lifetime.parallel import submit_all, worker_pool
+
+    with worker_pool(jobs) as pool:
+        flying: dict[Future[dict[str, Any]], str] = {}
+        for name, task in todo:
+            flying[submit_all(pool, run_task, [(task,)])[0]] = name
+            while len(flying) >= _WINDOW * jobs:
+                done, _ = wait(flying, return_when=FIRST_COMPLETED)
+                for f in done:
+                    yield flying.pop(f), f.result()
+        while flying:
+            done, _ = wait(flying, return_when=FIRST_COMPLETED)
+            for f in done:
+                yield flying.pop(f), f.result()
+
+
+def _dask(todo: Iterator[tuple[str, StudyTask]], scheduler: str,
+          jobs: int) -> Iterator[tuple[str, dict[str, Any]]]:
+    from regimemap.lifetime.parallel import ClusterUnavailable
+
+    try:
+        from distributed import Client, LocalCluster, as_completed
+    except ImportError:
+        raise ClusterUnavailable(
+            "--scheduler needs Dask's distributed package: pip install 'regimemap[cluster]'") from None
+    with contextlib.ExitStack() as stack:
+        if scheduler == "local":
+            cluster = stack.enter_context(LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
+                                                       dashboard_address=None))
+            client = stack.enter_context(Client(cluster))
+        else:
+            try:
+                client = stack.enter_context(Client(scheduler, timeout="10s"))
+            except Exception as exc:  # noqa: BLE001 - any failure to connect
+                raise ClusterUnavailable(f"cannot reach the Dask scheduler at {scheduler!r}: "
+                                         f"{str(exc) or type(exc).__name__}") from None
+        workers = max(1, len(client.scheduler_info().get("workers", {})))
+        names: dict[Any, str] = {}
+        queue = as_completed()
+        try:
+            for name, task in todo:
+                f = client.submit(run_task, task, pure=False)
+                names[f] = name
+                queue.add(f)
+                while queue.count() >= _WINDOW * workers:
+                    done = next(queue)
+                    yield names.pop(done), done.result()
+            for done in queue:
+                yield names.pop(done), done.result()
+        except BaseException:
+            with contextlib.suppress(Exception):
+                client.cancel(list(names))
+            raise
+
+
+def run_study(study: Study | str | Path, *, jobs: int = 1, scheduler: str | None = None,
+              store: str | Path | None = None, resume: bool = False,
+              progress: Callable[[int, int], None] | None = None) -> StudyRecord:
+    """Run a study: every section under every scenario (and climate replicate), stored as it goes.
+
+    Parameters
+    ----------
+    study : Study, str or Path
+        A parsed study (:func:`regimemap.io.study.read_study`) or its file.
+    jobs : int, optional
+        Local worker processes (1: this process); with ``scheduler="local"``
+        the LocalCluster's workers.
+    scheduler : str, optional
+        ``"local"`` (a Dask LocalCluster) or a Dask scheduler's address.
+    store : str or Path, optional
+        The results store's folder (:class:`regimemap.io.study_store.StudyStore`);
+        None: none (the results are kept in memory).
+    resume : bool, optional
+        Run only the tasks missing from ``store``.
+    progress : callable, optional
+        ``progress(done, total)`` after each task (and once at the start).
+
+    Returns
+    -------
+    StudyRecord
+
+    Raises
+    ------
+    regimemap.io.study.StudyFileError
+        The study file is refused.
+    regimemap.io.study_store.StudyStoreError
+        The store is another study's, or this study's without ``resume``.
+    regimemap.lifetime.ClusterUnavailable
+        Dask is missing or its scheduler cannot be reached.
+    """
+    from regimemap.io.study import read_study
+    from regimemap.io.study_store import StudyStore
+
+    s = study if not isinstance(study, (str, Path)) else read_study(study)
+    climates = _climates(s)
+    total = len(s.sections) * len(s.scenarios) * (1 + len(climates or []))
+    kept: StudyStore | None = None
+    memory: dict[str, dict[str, Any]] = {}
+    if store is not None:
+        kept = StudyStore(store, s.study_hash, s.source, total, resume=resume)
+    have = kept.done() if kept is not None else set()
+    done = len(have)
+    if progress is not None:
+        progress(done, total)
+    todo = ((name, task) for name, task in study_tasks(s, climates) if name not in have)
+    if scheduler is not None:
+        results = _dask(todo, scheduler, max(1, jobs))
+    elif jobs > 1 and total - done > 1:
+        results = _processes(todo, min(jobs, total - done))
+    else:
+        results = _serial(todo)
+    with contextlib.closing(results):  # type: ignore[type-var]
+        for name, result in results:
+            if kept is not None:
+                kept.save(name, result)
+            else:
+                memory[name] = _round_trip(result)
+            done += 1
+            if progress is not None:
+                progress(done, total)
+    return _assemble(s, climates, kept, memory)
+
+
+def _round_trip(result: dict[str, Any]) -> dict[str, Any]:
+    """A result as the store would give it back (JSON), so a record never depends on having a store."""
+    import json
+
+    out: dict[str, Any] = json.loads(json.dumps(result))
+    return out
+
+
+def _passes(by_year: list[float]) -> tuple[tuple[float, int | None], ...]:
+    from regimemap.lifetime.results import year_passing
+
+    return tuple((x, year_passing(np.asarray(by_year), x)) for x in LIMITS)
+
+
+def _assemble(s: Study, climates: list[Any] | None, kept: StudyStore | None,
+              memory: dict[str, dict[str, Any]]) -> StudyRecord:
+    """The record, from the stored results of every task, in the study's order."""
+    from regimemap.io.study_store import task_name
+
+    def get(name: str) -> dict[str, Any]:
+        got = kept.load(name) if kept is not None else memory.get(name)
+        if got is None:  # pragma: no cover - every task was run above
+            raise RuntimeError(f"task {name} has no result")
+        return got
+
+    n_rep = len(climates or [])
+    rows: list[StudyRow] = []
+    notices: list[Notice] = []
+    for i, section in enumerate(s.sections):
+        for j, scenario in enumerate(s.scenarios):
+            main = get(task_name(i, j, 0))
+            reps = [get(task_name(i, j, r)) for r in range(1, n_rep + 1)]
+            if main.get("bracket"):
+                notices.append(Notice("target-not-bracketed", f"section {section.name!r}, scenario "
+                                      f"{scenario.name!r}: {main['bracket']}", "width", None))
+            rows += _rows(s, section, scenario.name, main, reps)
+    targets = [sec.target for sec in s.sections if sec.target is not None]
+    return StudyRecord(source=s.source, study_hash=s.study_hash, seed=s.seed, trials=s.trials, years=s.years,
+                       sections=tuple((sec.name, sec.chainage) for sec in s.sections),
+                       scenarios=tuple(sc.name for sc in s.scenarios), target=targets[0] if targets else None,
+                       rows=tuple(rows), notices=tuple(notices))
+
+
+def _rows(s: Study, section: SectionSpec, scenario: str, main: dict[str, Any],
+          reps: list[dict[str, Any]]) -> list[StudyRow]:
+    """The rows of a section under a scenario: its design climate's task ``main`` and the bootstrap
+    climates' ``reps`` (the band of each width's ESD; of a target, the width at the band's upper level)."""
+    from regimemap.lifetime.replicates import ChartBand
+
+    upper = None
+    if section.target is not None and reps:
+        chart = ChartBand(widths=np.asarray(section.widths), esd=np.array([r["chart_esd"] for r in reps]),
+                          level=BAND_LEVEL, target=section.target, seed=s.seed, trials=s.trials)
+        upper = chart.width_for_target
+    interval = main.get("interval")
+    rows = []
+    for k, width in enumerate(main["widths"]):
+        band = None
+        if section.target is None and len(reps) >= 2:
+            q = np.quantile(np.array([r["esd"][k] for r in reps]),
+                            [0.5 * (1.0 - BAND_LEVEL), 0.5 * (1.0 + BAND_LEVEL)])
+            band = (float(q[0]), float(q[1]))
+        rows.append(StudyRow(
+            section=section.name, chainage=section.chainage, scenario=scenario, width=float(width),
+            expected_sliding=float(main["esd"][k]), std_error=_nan(main["std_error"][k]),
+            exceedance=tuple(zip(LIMITS, (float(p) for p in main["exceedance"][k]))),
+            by_year=tuple(float(x) for x in main["by_year"][k]), passes=_passes(main["by_year"][k]),
+            band=band, required_width=None if section.target is None else main.get("required_width"),
+            required_width_interval=None if interval is None else (float(interval[0]), float(interval[1])),
+            required_width_upper=upper))
+    return rows
+
+
+def _nan(x: Any) -> float:
+    return math.nan if x is None else float(x)
