@@ -88,10 +88,13 @@ def test_dimensionless_axes_round_trip() -> None:
 
 @pytest.mark.slow
 def test_outcome_map_shapes_and_categories() -> None:
+    """The grid of runs: its shapes, categories and cells (refine=False: the refinement adds
+    crossings and leaves the grid as it is; tests/dynamics/test_outcome_boundaries.py checks it)."""
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     kp = np.array([0.2, 0.4, 0.6, 1.5, 3.0])
     dur = np.array([0.1, 0.5, 1.0])
-    m = outcome_map(blk, "half-sine", ("k_peak", kp), ("duration", dur))
+    m = outcome_map(blk, "half-sine", ("k_peak", kp), ("duration", dur), refine=False)
+    assert not m.refined
     assert m.category.shape == (3, 5) and m.overturned.shape == (3, 5)
     assert m.labels == CATEGORY_LABELS
     assert np.all(m.category[:, 0] == 0) and np.all(m.max_rotation[:, 0] == 0)

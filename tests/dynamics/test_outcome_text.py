@@ -35,10 +35,35 @@ def _check_labels(fig, art) -> None:
         assert lookup(np.asarray([t.get_position()]))[0] in codes, t.get_text()
 
 
+#: The cache ``make figures`` fills (``regimemap dynamics-figures --cache``), under the repository's root.
+MAKE_FIGURES_CACHE = ".cache/dynamics-figures"
+
+
 @pytest.fixture(scope="module")
 def cache_dir(pytestconfig, tmp_path_factory):
+    """Where the maps of D.1-D.3 are kept between runs: pytest's cache (a folder of this module's
+    own with ``-p no:cacheprovider``), holding copies of the maps ``make figures`` computed.
+
+    Computing the three maps takes about a minute of one core; ``make figures`` (``make``)
+    computes the same ones (the same names and keys: :func:`regimemap.io.dynamics.cached_outcome`
+    keys a map by the figure's definition, the versions, numpy's CPU dispatch and the source of
+    :mod:`regimemap.dynamics`, and reads back the very arrays a fresh computation gives).  Its
+    files are copied, never changed: :func:`cached_outcome` skips those of other keys and
+    computes the maps still missing.
+    """
+    import os
+    import shutil
+
     cache = getattr(pytestconfig, "cache", None)  # None with -p no:cacheprovider
-    return cache.mkdir("dynamics-figures") if cache is not None else tmp_path_factory.mktemp("dyn")
+    folder = cache.mkdir("dynamics-figures") if cache is not None else tmp_path_factory.mktemp("dyn")
+    made = pytestconfig.rootpath / MAKE_FIGURES_CACHE
+    for fid in DYNAMICS_FIGURE_IDS:
+        for npz in sorted(made.glob(f"{fid}-*.npz")):
+            if not (folder / npz.name).is_file():  # whole or not at all (xdist workers share it)
+                part = folder / f".{npz.name}.{os.getpid()}"
+                shutil.copyfile(npz, part)
+                os.replace(part, folder / npz.name)
+    return folder
 
 
 @pytest.mark.render

@@ -71,19 +71,37 @@ def test_rock_about_O_prime_never_admissible():
 
 # The two sweeps below: k' every 0.25 and at every case threshold of the report (tests/_sweep.py),
 # for the 12 aspect ratios (149 pairs; the modes change only at the thresholds, which are all in).
-@pytest.mark.slow
-def test_admissible_set_never_empty():
+# They share one solve of every hypothesis at 3000 random points a pair (a module fixture: the
+# solve is the cost, the properties hold at any sample of the map).
+@pytest.fixture(scope="module")
+def swept_hypotheses():
+    """``[(gamma, kprime, k, mu, admissible_hypotheses(k, mu, gamma, kprime)), ...]`` over the sweep."""
+    out = []
     for g, kp in sweep(9):
         k, mu = sample_points(g, kp, 3000, seed=2)
-        adm = admissible(k, mu, g, kp)
-        assert np.stack(list(adm.values())).any(axis=0).all(), (g, kp)
+        out.append((g, kp, k, mu, admissible_hypotheses(k, mu, g, kp)))
+    return out
 
 
 @pytest.mark.slow
-def test_slide_right_and_slide_rock_prime_plus_never_admissible():
-    for g, kp in sweep(9):
-        k, mu = sample_points(g, kp, 3000, seed=3)
-        hyp = admissible_hypotheses(k, mu, g, kp)
+def test_admissible_set_never_empty(swept_hypotheses):
+    for g, kp, k, mu, hyp in swept_hypotheses:
+        assert np.stack(list(hyp.values())).any(axis=0).all(), (g, kp)
+        # admissible() is that: each mode admissible where one of its hypotheses is (checked on
+        # the first 200 points of the pair)
+        adm = admissible(k[:200], mu[:200], g, kp)
+        assert set(adm) == set(Mode)
+        for m in Mode:
+            expected = np.zeros(200, bool)
+            for h, ok in hyp.items():
+                if h.mode is m:
+                    expected |= ok[:200]
+            assert np.array_equal(adm[m], expected), (g, kp, m)
+
+
+@pytest.mark.slow
+def test_slide_right_and_slide_rock_prime_plus_never_admissible(swept_hypotheses):
+    for _g, _kp, _k, _mu, hyp in swept_hypotheses:
         assert not hyp[Hypothesis.SLIDE_RIGHT].any()
         assert not hyp[Hypothesis.SLIDE_ROCK_O_PRIME_RIGHT].any()
 
