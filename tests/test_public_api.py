@@ -40,6 +40,8 @@ PUBLIC_API = {
         "chart_figure", "lifetime_figure",
         # a wave record's extremes (regimemap.climate)
         "climate_figure", "diagnostics_figure",
+        # a whole breakwater (regimemap study)
+        "study_figure",
     ],
     "regimemap.io": [
         "atomic_open", "atomic_path", "export_map", "format_result", "parse_point_spec",
@@ -76,6 +78,17 @@ PUBLIC_API = {
         "equivalent_block", "given_heights", "goda_pressures", "heel_pressure", "impulsive_coefficient",
         "linear_shoaling_coefficient", "section_from_densities", "section_from_weight", "shoaling_coefficient",
         "stability", "static_rest_check", "wave_duration", "wavelength", "wavenumber",
+    ],
+    "regimemap.workflows": [
+        "Field", "Notice", "Record",
+        "AnimationRecord", "AtlasRecord", "MapRecord", "QueryRecord", "points_of_map", "run_animation",
+        "run_atlas", "run_map", "run_query",
+        "CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError", "run_caisson",
+        "DynamicsFigureRecord", "OutcomeRecord", "SimulationRecord", "run_dynamics_figure", "run_outcome",
+        "run_simulation",
+        "ChartRecord", "ClimateRecord", "LifetimeDesign", "LifetimeRecord", "read_lifetime_design",
+        "run_chart", "run_climate", "run_lifetime",
+        "StudyRecord", "StudyRow", "run_study",
     ],
     "regimemap.cli": ["cli", "console_main", "main"],
 }

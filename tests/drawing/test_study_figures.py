@@ -17,7 +17,7 @@ import pytest
 pytest.importorskip("matplotlib")
 
 from regimemap.drawing.save import print_figure  # noqa: E402
-from regimemap.drawing.study import FIGURE_KINDS, study_figure  # noqa: E402
+from regimemap.drawing.study.figures import FIGURE_KINDS, study_figure  # noqa: E402
 from regimemap.drawing.text.labelplacer import figure_texts  # noqa: E402
 from regimemap.workflows.study import StudyRecord  # noqa: E402
 from tests.drawing.test_legible import _check_boxes  # noqa: E402

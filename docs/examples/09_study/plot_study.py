@@ -18,7 +18,7 @@ Command line::
     regimemap study breakwater.toml --resume --figure width -o width.png
 """
 
-from regimemap.drawing.study import study_figure
+from regimemap.drawing.study.figures import study_figure
 from regimemap.io.study import parse_study
 from regimemap.io.study_example import example_study_text
 from regimemap.workflows import run_study

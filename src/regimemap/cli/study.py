@@ -149,7 +149,7 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
             else:
                 if fig is None:
                     import_matplotlib()
-                    from ..drawing.study import study_figure
+                    from ..drawing.study.figures import study_figure
 
                     fig = study_figure(record, kind=figure, section=section)
                 from ..drawing.save import save_figure

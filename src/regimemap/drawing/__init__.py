@@ -11,6 +11,8 @@ One room per family of figures, and what they share at the top:
   design life;
 * :mod:`.climate` -- a wave record's extremes: the record, return levels, QQ and
   threshold diagnostics;
+* :mod:`.study` -- a whole breakwater: sliding along the chainage, by service
+  year, and the width for a target, a line per climate scenario;
 * :mod:`.explore` -- ``regimemap explore``, the map with sliders;
 * :mod:`.text` -- label placement and the passes that keep texts legible;
 * :mod:`.style`, :mod:`.save`, :mod:`.limits`, :mod:`.verdict` -- the style of
@@ -42,6 +44,7 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .motion.history import motion_figure
     from .outcome.figure import OutcomeStyle, draw_outcome_map, outcome_figure
     from .save import save_figure
+    from .study.figures import study_figure
     from .style import MODE_STYLE, OUTCOME_STYLE, style_context
 
 __all__ = [
@@ -70,6 +73,7 @@ __all__ = [
     "render_map",
     "render_preset",
     "save_figure",
+    "study_figure",
     "style_context",
     "write_animation",
     "write_atlas",
@@ -99,5 +103,6 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
         "motion.history": ["motion_figure"],
         "outcome.figure": ["OutcomeStyle", "draw_outcome_map", "outcome_figure"],
         "save": ["save_figure"],
+        "study.figures": ["study_figure"],
         "style": ["MODE_STYLE", "OUTCOME_STYLE", "style_context"],
     })
