@@ -218,9 +218,10 @@ def test_the_rules_can_fail(tmp_path):
     assert _layer("regimemap.drawing.style") > _layer("regimemap.maps.x")
 
 
-#: The packages that compute the physics (and the statistics): drawing/ imports from them only
-#: the data types and pure helpers below, and draws what its caller computed.
-PHYSICS = ("mechanics", "waves", "maps", "dynamics", "lifetime", "climate")
+#: The packages that compute the physics (and the statistics), and the workflows that call
+#: them: drawing/ imports from them only the data types and pure helpers below (a record's type
+#: only for type checking), and draws what its caller computed.
+PHYSICS = ("mechanics", "waves", "maps", "dynamics", "lifetime", "climate", "workflows")
 #: What drawing/ may import from :data:`PHYSICS`, each with why it computes nothing.
 DRAWING_MAY_IMPORT = {
     # data types, enumerations and constants: records a figure is handed
@@ -309,3 +310,6 @@ def test_the_drawing_rule_can_fail(tmp_path):
     assert found == [("regimemap.drawing.maps.x", 1, "maps.mapdata.MapData"),
                      ("regimemap.drawing.maps.x", 3, "maps.mapdata.compute_map")]
     assert [n for *_, n in found if n not in DRAWING_MAY_IMPORT] == ["maps.mapdata.compute_map"]
+    f.write_text("def g():\n    from ...workflows.map import run_map\n")  # a workflow computes too
+    assert _drawing_physics_imports({"regimemap.drawing.maps.x": f}) == [
+        ("regimemap.drawing.maps.x", 2, "workflows.map.run_map")]

@@ -154,10 +154,12 @@ def test_figures_progress(tmp_path, terminal):
 @pytest.mark.subprocess
 @pytest.mark.slow
 def test_write_figures_reports_each_figure_from_the_workers(tmp_path):
+    from regimemap.cli.plot import figure_maps
     from regimemap.drawing.maps.batch import write_figures
 
     done: list[int] = []
-    written = write_figures(tmp_path, ["W.1", "W.2", "W.3"], ["png"], 40, jobs=2, progress=done.append)
+    written = write_figures(tmp_path, ["W.1", "W.2", "W.3"], ["png"], 40, figure_maps, jobs=2,
+                            progress=done.append)
     assert sum(done) == 3 and [p.name for p in written] == ["fig-W.1.png", "fig-W.2.png", "fig-W.3.png"]
 
 

@@ -7,7 +7,7 @@ fast); the commands import :mod:`regimemap.drawing` when they run.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -39,7 +39,11 @@ from ._plot_options import (
 from ._plot_options import number_text as _num
 from ._writing import writing
 
-__all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command",
+if TYPE_CHECKING:  # pragma: no cover
+    from ..workflows.atlas import AtlasRecord
+    from ..workflows.map import MapRecord
+
+__all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command", "figure_maps",
            "figures_command", "plot_command", "plot_stem"]
 
 _LO, _HI = DPI_RANGE
@@ -243,7 +247,8 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     from ..drawing.maps.batch import render_figure
     from ..drawing.save import save_figure
 
-    fig = render_figure(MODEL_ID if preset is None else preset.id, dpi=dpi)
+    fid = MODEL_ID if preset is None else preset.id
+    fig = render_figure(fid, figure_maps(fid), dpi=dpi)
     with writing(path):
         save_figure(fig, path, fmt, dpi=dpi)
     _written(path)
@@ -307,12 +312,29 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
 
     try:  # the file that failed is known only from the error (not writing(path))
         with progress_bar(len(ids), "figures", quiet, unit=" figures") as step:
-            written = write_figures(folder, ids, formats, dpi, jobs=jobs, progress=step)
+            written = write_figures(folder, ids, formats, dpi, figure_maps, jobs=jobs, progress=step)
     except OSError as exc:
         where = f"cannot write {exc.filename}" if exc.filename else "cannot write a figure"
         raise RunError(f"{where}: {exc.strerror or exc}") from None
     for path in written:
         report_written(path)
+
+
+def figure_maps(fid: str) -> MapRecord | AtlasRecord | None:
+    """The maps a figure of the report shows, by its id, from the workflows (None for the model
+    figure, 2.1): what :func:`regimemap.drawing.maps.batch.render_figure` draws."""
+    from ..drawing.maps.model import MODEL_FIGURE_ID
+    from ..drawing.maps.presets import get_preset
+    from ..drawing.maps.worked import WORKED
+    from ..workflows.atlas import run_atlas
+    from ..workflows.map import run_map
+
+    if fid == MODEL_FIGURE_ID:
+        return None
+    worked = WORKED.get(fid.strip().upper())
+    if worked is None:
+        return run_map(**get_preset(fid).map_keywords)
+    return run_atlas(**worked.atlas_keywords) if worked.sweep else run_map(**worked.map_keywords)
 
 
 def _list_figures(which: str) -> None:

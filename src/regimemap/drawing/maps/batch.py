@@ -4,9 +4,10 @@
 figure is drawn and written by one process alone, atomically
 (:func:`regimemap.drawing.save.save_figure`), so the files are byte-identical
 to a one-process run on the same machine.  :func:`render_figure` draws one of
-them by its id: its maps are computed by the workflows
-(:func:`regimemap.workflows.map.run_map`, :func:`regimemap.workflows.atlas.run_atlas`)
-and handed to the drawing functions.
+them by its id from its maps; the maps are computed by the function the caller
+hands over (``compute``: the command line's, which calls the workflows
+:func:`regimemap.workflows.map.run_map` and :func:`regimemap.workflows.atlas.run_atlas`),
+in the worker that draws the figure.
 """
 
 from __future__ import annotations
@@ -19,7 +20,14 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-__all__ = ["cpu_count", "render_figure", "write_figures"]
+    from ...workflows.atlas import AtlasRecord
+    from ...workflows.map import MapRecord
+
+__all__ = ["FigureMaps", "cpu_count", "render_figure", "write_figures"]
+
+#: The maps of a figure by its id: a map, an atlas, or None for the model figure (2.1), which
+#: draws no map.  A module-level function, so that worker processes can be handed it.
+FigureMaps = Callable[[str], "MapRecord | AtlasRecord | None"]
 
 
 #: The figure a worker process keeps between its tasks (see :func:`_render_chunk`).
@@ -37,16 +45,17 @@ def _leave_ctrl_c() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-def render_figure(fid: str, *, dpi: float, fig: Figure | None = None) -> Figure:
-    """One figure by its id: the model (2.1), a worked figure (W.1 ...) or the report's.
+def render_figure(fid: str, maps: MapRecord | AtlasRecord | None, *, dpi: float,
+                  fig: Figure | None = None) -> Figure:
+    """One figure by its id, from its computed maps: the model (2.1), a worked figure (W.1 ...)
+    or the report's.
 
-    A figure's maps are computed by the workflows from what the figure shows
-    (:attr:`~regimemap.drawing.maps.presets.FigurePreset.map_keywords`,
-    :attr:`~regimemap.drawing.maps.worked.WorkedFigure.atlas_keywords`), then
-    drawn; pass the previous figure of a single map as ``fig`` to reuse it.
+    ``maps`` is what the figure shows, computed from
+    :attr:`~regimemap.drawing.maps.presets.FigurePreset.map_keywords` or
+    :attr:`~regimemap.drawing.maps.worked.WorkedFigure.map_keywords` /
+    :attr:`~regimemap.drawing.maps.worked.WorkedFigure.atlas_keywords` (None for the model
+    figure); pass the previous figure of a single map as ``fig`` to reuse it.
     """
-    from ...workflows.atlas import run_atlas
-    from ...workflows.map import run_map
     from .figure import render_preset
     from .model import MODEL_FIGURE_ID, model_figure
     from .presets import get_preset
@@ -54,17 +63,16 @@ def render_figure(fid: str, *, dpi: float, fig: Figure | None = None) -> Figure:
 
     if fid == MODEL_FIGURE_ID:
         return model_figure(dpi=dpi)
+    if maps is None:
+        raise ValueError(f"figure {fid} draws maps: give them (its map_keywords' record)")
     if fid.strip().upper() in WORKED:
-        w = WORKED[fid.strip().upper()]
-        record = run_atlas(**w.atlas_keywords) if w.sweep else run_map(**w.map_keywords)
-        return render_worked(w, record, dpi=dpi, fig=fig)
-    preset = get_preset(fid)
-    return render_preset(preset, run_map(**preset.map_keywords), dpi=dpi, fig=fig)
+        return render_worked(WORKED[fid.strip().upper()], maps, dpi=dpi, fig=fig)
+    return render_preset(get_preset(fid), maps, dpi=dpi, fig=fig)  # type: ignore[arg-type]
 
 
 def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: float,
-                  progress: Callable[[int], None] | None = None, keep: bool = False
-                  ) -> list[str]:
+                  compute: FigureMaps, progress: Callable[[int], None] | None = None,
+                  keep: bool = False) -> list[str]:
     """Draw the figures ``ids`` and write them in every format (one process).
 
     One Figure is reused for all the maps: its renderer keeps the text caches warm.  With
@@ -78,7 +86,7 @@ def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: 
     fig: Figure | None = _KEPT.pop("fig", None) if keep else None
     written: list[str] = []
     for fid in ids:
-        one = render_figure(fid, dpi=dpi, fig=fig)
+        one = render_figure(fid, compute(fid), dpi=dpi, fig=fig)
         if fid == MODEL_FIGURE_ID:
             name = f"fig-{fid}"
         else:
@@ -111,7 +119,7 @@ def cpu_count() -> int:
 
 
 def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: Sequence[str],
-                  dpi: float, jobs: int | None = None,
+                  dpi: float, compute: FigureMaps, jobs: int | None = None,
                   progress: Callable[[int], None] | None = None) -> list[Path]:
     """Write the figures ``ids`` into ``folder``, in every format, on every core.
 
@@ -127,6 +135,9 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
         ``"png"``, ``"svg"``, ``"pdf"``.
     dpi : float
         Resolution of the figures and of PNG output.
+    compute : callable
+        The maps of a figure by its id (:data:`FigureMaps`), called in the process that
+        draws it: a module-level function (a worker process is handed it by name).
     jobs : int, optional
         Worker processes (default: one per core; 1 draws them here).
     progress : callable, optional
@@ -147,7 +158,7 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
     jobs = min(jobs, len(ids))
     folder_s = os.fspath(folder)
     if jobs <= 1:
-        return [Path(p) for p in _render_chunk(ids, folder_s, formats, dpi, progress)]
+        return [Path(p) for p in _render_chunk(ids, folder_s, formats, dpi, compute, progress)]
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
@@ -158,7 +169,7 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
     # keeps its figure between tasks
     done: dict[str, list[str]] = {}
     with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx, initializer=_leave_ctrl_c) as pool:
-        futures = {pool.submit(_render_chunk, [fid], folder_s, tuple(formats), dpi, None, True):
+        futures = {pool.submit(_render_chunk, [fid], folder_s, tuple(formats), dpi, compute, None, True):
                    fid for fid in _longest_first(ids)}
         try:
             for fut in as_completed(futures):
