@@ -1,4 +1,7 @@
-"""Options, validation and error handling shared by the commands."""
+"""Options, validation and error handling shared by the commands.
+
+One module of some length: every command imports its options and its error handling from
+this one place, so that they read and fail alike."""
 
 from __future__ import annotations
 

@@ -25,7 +25,9 @@ Three formats, chosen by the file's suffix (:func:`export_map`):
     parts where several modes are admissible (:mod:`regimemap.ambiguity`).
     Non-finite numbers are written as ``null``.
 
-All files are written atomically (a temporary file renamed into place).
+All files are written atomically (a temporary file renamed into place).  The three formats
+share one description of the map (its grid, curves, points and polygons), hence one module
+of some length.
 """
 
 from __future__ import annotations

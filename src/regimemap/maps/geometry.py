@@ -1,5 +1,8 @@
 """Regions of the k-mu plane as vector polygons (for crisp SVG/PDF fills).
 
+The column rule and the polygons it labels are one argument, kept in one module of some
+length (the bisection of the edges is :mod:`regimemap.maps.bisection`'s).
+
 Along any vertical line (fixed k) every region of the report is one interval
 of mu, so a region is exactly described by its lower and upper edges as
 functions of k.  The polygons below sample those edges on a fine k grid that

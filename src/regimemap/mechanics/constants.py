@@ -3,7 +3,8 @@
 Every function takes floats or numpy arrays (broadcast together) and is written
 with the same operations, in the same order, wherever it is used, so that the
 map (:mod:`regimemap.maps.classify`), the curves, the raw regions, the polygons
-and the point queries compare against identical floats.
+and the point queries compare against identical floats.  Every closed form in one module,
+hence its length.
 
 One sign convention serves both chapters: ``kprime`` is signed, ``h = kprime*H``,
 positive above the centre of mass C (Chapter III) and negative below it

@@ -2,7 +2,8 @@
 
 Written from the mechanics of a plane rigid body, not from the report's
 inequalities, so that the closed-form regions of :mod:`regimemap.mechanics.regions` can be
-checked against it.
+checked against it.  The contact hypotheses, their solution and the choice among them are
+one argument, kept whole in one module of some length.
 
 Model (Chapter II of the report)
 --------------------------------
