@@ -29,7 +29,7 @@ from ._numbers import round_sig
 from .atomic import atomic_open
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..workflows.outcome import OutcomeRecord
+    from ..dynamics.records import OutcomeRecord
 
 __all__ = [
     "HISTORY_FORMATS",
@@ -182,7 +182,7 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
 
 
 def write_outcome_record(path: str | os.PathLike[str], record: OutcomeRecord) -> str:
-    """Write the data of an outcome map (:class:`~regimemap.workflows.outcome.OutcomeRecord`) with
+    """Write the data of an outcome map (:class:`~regimemap.dynamics.records.OutcomeRecord`) with
     :func:`write_outcome`: its fixed inputs, and its dimensionless axes when it has them; the format."""
     m = record.outcome
     return write_outcome(path, m, m.first_name, m.second_name, inputs=record.inputs, axes=record.extra_axes)

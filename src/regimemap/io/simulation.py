@@ -1,6 +1,6 @@
 """One run of ``regimemap simulate`` as JSON, text and a time-history file.
 
-* :func:`simulation_record` -- a :class:`~regimemap.workflows.simulate.SimulationRecord` as a
+* :func:`simulation_record` -- a :class:`~regimemap.dynamics.records.SimulationRecord` as a
   JSON-ready dict (numbers rounded to 12 significant digits), :func:`simulation_json` as one
   JSON object, :func:`format_simulation` as text for people;
 * :func:`write_simulation_history` -- its time history, ``.csv`` or ``.npz``
@@ -20,7 +20,7 @@ from ._numbers import round_sig
 from .dynamics import json_inputs, write_history
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..workflows.simulate import SimulationRecord
+    from ..dynamics.records import SimulationRecord
 
 __all__ = ["format_simulation", "phase_description", "simulation_json", "simulation_record",
            "write_simulation_history"]
@@ -35,7 +35,7 @@ def phase_description(label: str) -> str:
 
 
 def simulation_record(record: SimulationRecord) -> dict[str, Any]:
-    """A run (:class:`~regimemap.workflows.simulate.SimulationRecord`) as a JSON-ready dict.
+    """A run (:class:`~regimemap.dynamics.records.SimulationRecord`) as a JSON-ready dict.
 
     Keys: ``overturned``, ``category`` (rocking counted above the record's ``min_rotation``),
     ``max_rotation`` (rad), ``max_rotation_deg``, ``residual_rotation`` (rad),
@@ -104,7 +104,7 @@ def format_simulation(record: SimulationRecord | Mapping[str, Any]) -> str:
     pulse, the phases of the motion with their start times, the outcome, and the design file's
     requirements, PASS or FAIL.
 
-    ``record`` is a :class:`~regimemap.workflows.simulate.SimulationRecord`, or its JSON dict
+    ``record`` is a :class:`~regimemap.dynamics.records.SimulationRecord`, or its JSON dict
     (:func:`simulation_record`), which gives the lines of the run alone.
     """
     if isinstance(record, Mapping):

@@ -30,7 +30,7 @@ from .atomic import atomic_path
 if TYPE_CHECKING:
     import xarray
 
-    from regimemap.workflows.study import StudyRecord
+    from ..lifetime.study import StudyRecord
 
 __all__ = ["NO_XARRAY", "check_netcdf", "netcdf_engine", "study_dataset", "write_study_netcdf"]
 

@@ -1,6 +1,6 @@
 """A study's record as tidy data: the CSV table and the JSON summary of ``regimemap study``.
 
-One row per section x scenario x width (:class:`regimemap.workflows.study.StudyRow`),
+One row per section x scenario x width (:class:`regimemap.lifetime.study.StudyRow`),
 in the record's order; numbers are written as Python's shortest repr (they read
 back to the same bits), an absent value as an empty cell (CSV) or null (JSON).
 """
@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 from .atomic import atomic_open
 
 if TYPE_CHECKING:
-    from regimemap.workflows.study import StudyRecord, StudyRow
+    from ..lifetime.study import StudyRecord, StudyRow
 
 __all__ = ["STUDY_COLUMNS", "study_csv_text", "study_json", "study_lines", "write_study_csv"]
 

@@ -12,92 +12,22 @@ from __future__ import annotations
 
 import math
 import os
-from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any, ClassVar
+from dataclasses import replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 from numpy.typing import NDArray
 
-from ..mechanics.notices import Notice
-from ._record import Field, Record
+from ..dynamics.records import DynamicsFigureRecord, OutcomeRecord
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..dynamics import Block
     from ..dynamics.options import MapOptions
-    from ..dynamics.outcome import Bars, OutcomeMap
+    from ..dynamics.outcome import Bars
     from ..dynamics.presets import DynamicsFigure
 
 __all__ = ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"]
 
 FloatArray = NDArray[np.float64]
-
-
-@dataclass(frozen=True)
-class OutcomeRecord(Record):
-    """An outcome map of :func:`run_outcome`: its inputs, the map and what is derived from it.
-
-    Attributes
-    ----------
-    options : MapOptions
-        The inputs: the pulse shape, the two swept inputs (columns, rows) and their values,
-        the fixed ones (:func:`regimemap.dynamics.options.map_options`).
-    restitution : float or None
-        The ratio of a rocking impact; None is Housner's plastic impact.
-    min_rotation : float
-        Rocking counts only above this largest rotation (degrees).
-    block : Block
-        The block of the map (a swept field holds its first value).
-    outcome : OutcomeMap
-        The map, its axes named and valued as the swept inputs (``first_name``, ``first_values``
-        ...), its boundaries refined unless ``refine=False``.
-    counts : dict
-        The number of cells of each category, by label (every label, zeros included).
-    dimensionless_axes : dict
-        With ``dimensionless``: the swept inputs among k_peak, duration and omega_p by name, their
-        values as omega_p/p or k_peak/tan(alpha) (Makris & Roussos 2000).
-    notices : tuple of Notice
-    """
-
-    options: MapOptions
-    restitution: float | None
-    min_rotation: float
-    block: Block
-    outcome: OutcomeMap
-    counts: dict[str, int]
-    dimensionless_axes: dict[str, FloatArray] = field(default_factory=dict)
-    notices: tuple[Notice, ...] = ()
-
-    CAPTION: ClassVar[str] = "regimemap outcome: an outcome map over two swept inputs"
-    FIELDS: ClassVar[tuple[Field, ...]] = (
-        Field("options.shape", "pulse", "", "shape of the force pulse"),
-        Field("options.swept", "swept", "", "the inputs along the columns and the rows"),
-        Field("n_runs", "runs", "", "cells of the grid"),
-        Field("counts", "categories", "", "cells of each category"),
-        Field("outcome.seconds", "grid time", "s", "time of the grid's runs"),
-        Field("outcome.refined", "refined", "", "boundaries refined by bisection to 1/1000 of each axis"),
-    )
-
-    @property
-    def n_runs(self) -> int:
-        """The cells (runs) of the grid."""
-        return self.options.n_runs
-
-    @property
-    def inputs(self) -> dict[str, Any]:
-        """The inputs not swept, as the data files hold them: ``pulse`` (the shape), the fixed
-        values given, ``restitution`` and ``min_rotation`` (degrees) when given."""
-        out: dict[str, Any] = {"pulse": self.options.shape}
-        out.update({n: v for n, v in self.options.fixed.items() if v is not None})
-        if self.restitution is not None:
-            out["restitution"] = self.restitution
-        if self.min_rotation:
-            out["min_rotation"] = self.min_rotation
-        return out
-
-    @property
-    def extra_axes(self) -> dict[str, FloatArray]:
-        """The dimensionless axes as the data files name them (``k_peak_dimensionless`` ...)."""
-        return {f"{n}_dimensionless": v for n, v in self.dimensionless_axes.items()}
 
 
 def run_outcome(options: MapOptions, *, restitution: float | None = None, min_rotation: float = 0.0,
@@ -147,49 +77,6 @@ def run_outcome(options: MapOptions, *, restitution: float | None = None, min_ro
            if dimensionless and n in DIMENSIONLESS}
     return OutcomeRecord(options=options, restitution=restitution, min_rotation=min_rotation, block=block,
                          outcome=m, counts=dict(zip(m.labels, counts.tolist())), dimensionless_axes=dim)
-
-
-@dataclass(frozen=True)
-class DynamicsFigureRecord(Record):
-    """One of the figures D.1-D.3 of :func:`run_dynamics_figure`: its definition and its map.
-
-    Attributes
-    ----------
-    figure : DynamicsFigure
-        The figure's block, pulse and swept inputs (:data:`regimemap.dynamics.presets.DYNAMICS_FIGURES`).
-    outcome : OutcomeMap
-        Its map, boundaries refined.
-    x, y : ndarray
-        The values of the map's columns and rows as drawn (dimensionless for D.1 and D.2).
-    from_cache : bool
-        Whether the map was read from the cache.
-    notices : tuple of Notice
-    """
-
-    figure: DynamicsFigure
-    outcome: OutcomeMap
-    x: FloatArray
-    y: FloatArray
-    from_cache: bool = False
-    notices: tuple[Notice, ...] = ()
-
-    CAPTION: ClassVar[str] = "regimemap dynamics-figures: one figure's outcome map"
-    FIELDS: ClassVar[tuple[Field, ...]] = (
-        Field("figure.id", "figure", "", "D.1, D.2 or D.3"),
-        Field("outcome.category.size", "runs", "", "cells of the grid"),
-        Field("refine_runs", "boundary runs", "", "runs of the bisection of the boundaries"),
-        Field("from_cache", "from the cache", "", "whether the map was read from the cache"),
-    )
-
-    @property
-    def data(self) -> tuple[OutcomeMap, FloatArray, FloatArray]:
-        """The map and the values of its columns and rows as drawn."""
-        return self.outcome, self.x, self.y
-
-    @property
-    def refine_runs(self) -> int:
-        """The runs of the bisection of the boundaries (0 when not refined)."""
-        return self.outcome.crossings.runs if self.outcome.crossings is not None else 0
 
 
 def run_dynamics_figure(figure: DynamicsFigure, *, cache: str | os.PathLike[str] | None = None,

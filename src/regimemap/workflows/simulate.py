@@ -15,14 +15,13 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Mapping
-from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..dynamics.options import OptionError
+from ..dynamics.records import SimulationRecord
 from ..mechanics.notices import Notice
-from ._record import Field, Record
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..dynamics import Block, Pulse, Simulation
@@ -45,120 +44,6 @@ _OPTION_DEFAULTS: dict[str, Any] = {
 #: The inputs of a record, in order.
 _INPUTS = ("gamma", "half_width", "kprime", "mu", "pulse", "k_peak", "duration", "pulse_file", "restitution",
            "buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration", "design", "min_rotation")
-
-
-@dataclass(frozen=True)
-class SimulationRecord(Record):
-    """One run of :func:`run_simulation`: its inputs, what a designer checks, its warnings, the run.
-
-    Attributes
-    ----------
-    block : Block
-        The block of the run (one run: scalar fields).
-    pulse : Pulse
-        Its force pulse.
-    inputs : dict
-        The inputs as given, by the names of ``regimemap simulate``'s options: ``gamma``,
-        ``half_width`` (m), ``kprime``, ``mu``, ``pulse`` (the shape, ``"file"`` for a sampled
-        history), ``k_peak``, ``duration`` (s), ``pulse_file``, ``restitution``, ``buoyancy``,
-        ``uplift``, ``uplift_ratio``, ``uplift_arm``, ``gyration``, ``design`` (the design
-        file) and ``min_rotation`` (degrees); None where not given.
-    design : str or None
-        The design file the block and the pulse came from.
-    design_numbers : dict or None
-        Where a design file's numbers came from
-        (:func:`regimemap.dynamics.design_wave.design_wave_numbers`: Hmax, tau0, P, U ...).
-    checks : tuple of Check
-        The design file's requirements: Goda's sliding and overturning safety factors of the
-        design wave against ``[caisson] required_*`` (:func:`regimemap.maps.caisson.stability_checks`).
-    p, alpha, H : float
-        Frequency parameter (rad/s), slenderness angle atan(1/gamma) (rad) and height of the
-        centre of mass above the base (m).
-    housner_ratio : float
-        Housner's (I + m(H^2 - B^2))/(I + m(H^2 + B^2)); <= 0 for a squat block.
-    impact_ratio : float or None
-        The ratio of a rocking impact used: ``restitution`` if given, else Housner's; None when
-        Housner's does not apply (a squat block: its rocking ends at the first impact).
-    k_peak, duration, omega_p : float
-        The pulse's peak |k|, duration (s) and circular frequency (rad/s).
-    min_rotation : float
-        Rocking counts only above this largest rotation (degrees).
-    simulation : Simulation
-        The run (its time history when asked for).
-    notices : tuple of Notice
-        ``implausible-value`` (a design file's value valid but unlikely, a unit slip),
-        ``still-moving`` (not at rest at the time limit), ``unresolved-contact`` (steps with no
-        admissible contact state).
-    """
-
-    block: Block
-    pulse: Pulse
-    inputs: dict[str, Any]
-    design: str | None
-    design_numbers: dict[str, float] | None
-    checks: tuple[Check, ...]
-    p: float
-    alpha: float
-    H: float
-    housner_ratio: float
-    impact_ratio: float | None
-    k_peak: float
-    duration: float
-    omega_p: float
-    min_rotation: float
-    simulation: Simulation
-    notices: tuple[Notice, ...] = ()
-
-    CAPTION: ClassVar[str] = "regimemap simulate: one run past initiation"
-    FIELDS: ClassVar[tuple[Field, ...]] = (
-        Field("p", "p", "rad/s", "frequency parameter sqrt(m g R / I_O)"),
-        Field("alpha", "α", "rad", "slenderness angle atan(1/γ)"),
-        Field("H", "H", "m", "height of the centre of mass above the base"),
-        Field("housner_ratio", "Housner's ratio", "", "(I + m(H² − B²))/(I + m(H² + B²))"),
-        Field("impact_ratio", "impact ratio", "", "θ̇+/θ̇− of a rocking impact (None: not applicable)"),
-        Field("k_peak", "k_peak", "", "peak of the pulse, F/(m g)"),
-        Field("duration", "duration", "s", "duration of the pulse"),
-        Field("omega_p", "ω_p", "rad/s", "circular frequency of the pulse"),
-        Field("category", "outcome", "", "rest, slide only, rock only, slide-rock, overturned, still moving"),
-        Field("max_rotation", "max |θ|", "rad", "largest rotation"),
-        Field("residual_slide", "residual slide", "m",
-              "of the base, positive towards O (None: still moving)"),
-    )
-
-    @property
-    def derived(self) -> dict[str, float | None]:
-        """The quantities a designer checks, by name: p, alpha, H, impact_ratio, housner_ratio,
-        k_peak, duration, omega_p."""
-        return {"p": self.p, "alpha": self.alpha, "H": self.H, "impact_ratio": self.impact_ratio,
-                "housner_ratio": self.housner_ratio, "k_peak": self.k_peak, "duration": self.duration,
-                "omega_p": self.omega_p}
-
-    @property
-    def category(self) -> str:
-        """The outcome of the run, rocking counted above :attr:`min_rotation`."""
-        from ..dynamics.stepper import CATEGORY_LABELS
-
-        return CATEGORY_LABELS[int(self.simulation.categories(math.radians(self.min_rotation))[0])]
-
-    @property
-    def overturned(self) -> bool:
-        """Whether the block overturned."""
-        return bool(self.simulation.overturned[0])
-
-    @property
-    def finished(self) -> bool:
-        """Whether the run ended at rest or overturned (not at the time limit)."""
-        return bool(self.simulation.settled[0] or self.simulation.overturned[0])
-
-    @property
-    def max_rotation(self) -> float:
-        """The largest |theta| (rad)."""
-        return float(self.simulation.max_rotation[0])
-
-    @property
-    def residual_slide(self) -> float | None:
-        """The residual slide of the base (m, positive towards O); None while still moving."""
-        return float(self.simulation.residual_slide[0]) if self.finished else None
 
 
 def run_simulation(block_or_design: Block | Mapping[str, Any] | str | os.PathLike[str],

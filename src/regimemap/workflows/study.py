@@ -19,13 +19,13 @@ import contextlib
 import math
 from collections.abc import Callable, Iterator
 from concurrent.futures import FIRST_COMPLETED, Future, wait
-from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ._record import Field, Notice, Record
+from ..lifetime.study import StudyRecord, StudyRow
+from ..mechanics.notices import Notice
 from .study_tasks import LIMITS, StudyTask, run_task, task_seed
 
 if TYPE_CHECKING:
@@ -38,74 +38,6 @@ __all__ = ["BAND_LEVEL", "StudyRecord", "StudyRow", "run_study", "study_tasks"]
 BAND_LEVEL = 0.9
 #: Tasks in flight per worker.
 _WINDOW = 2
-
-
-@dataclass(frozen=True)
-class StudyRow:
-    """One section under one scenario at one width (see :class:`StudyRecord`)."""
-
-    section: str
-    chainage: float
-    scenario: str
-    width: float
-    expected_sliding: float
-    std_error: float
-    exceedance: tuple[tuple[float, float], ...]
-    by_year: tuple[float, ...]
-    passes: tuple[tuple[float, int | None], ...]
-    band: tuple[float, float] | None
-    required_width: float | None = None
-    required_width_interval: tuple[float, float] | None = None
-    required_width_upper: float | None = None
-
-
-@dataclass(frozen=True)
-class StudyRecord(Record):
-    """A study's results: one row per section x scenario x width, in the study's order.
-
-    Attributes
-    ----------
-    source : str or None
-        The study file.
-    study_hash : str
-        sha256 of the study's canonical content (what the store remembers).
-    seed, trials, years : int
-        Root seed, lifetimes per task, design life.
-    sections : tuple of (str, float)
-        (name, chainage [m]) in file order.
-    scenarios : tuple of str
-        In file order.
-    target : float or None
-        The target ESD [m] if a section asks for one.
-    rows : tuple of StudyRow
-        Section-major, then scenario, then width.
-    notices : tuple of Notice
-    """
-
-    source: str | None
-    study_hash: str
-    seed: int
-    trials: int
-    years: int
-    sections: tuple[tuple[str, float], ...]
-    scenarios: tuple[str, ...]
-    target: float | None
-    rows: tuple[StudyRow, ...]
-    notices: tuple[Notice, ...]
-
-    FIELDS: ClassVar[tuple[Field, ...]] = (
-        Field("source", "study", "", "the study file"),
-        Field("seed", "seed", "", "the root seed of every task"),
-        Field("trials", "trials", "", "lifetimes per task"),
-        Field("years", "L", "years", "design life"),
-        Field("target", "target ESD", "m", "the tolerable expected sliding distance"),
-    )
-    CAPTION: ClassVar[str] = "A breakwater's sections under climate scenarios"
-
-    def rows_for(self, section: str | None = None, scenario: str | None = None) -> tuple[StudyRow, ...]:
-        """The rows of one section and/or one scenario (None: all)."""
-        return tuple(r for r in self.rows if (section is None or r.section == section)
-                     and (scenario is None or r.scenario == scenario))
 
 
 def study_tasks(study: Study, climates: list[Any] | None = None) -> Iterator[tuple[str, StudyTask]]:

@@ -1,6 +1,6 @@
 """The figures of a run of :func:`regimemap.workflows.simulate.run_simulation`: its history and its GIF.
 
-They read a :class:`~regimemap.workflows.simulate.SimulationRecord` -- its time history, its
+They read a :class:`~regimemap.dynamics.records.SimulationRecord` -- its time history, its
 block and the inputs it came from (for the title) -- and draw with
 :func:`~regimemap.drawing.motion.history.motion_figure` and
 :func:`~regimemap.drawing.motion.history.write_block_animation`.

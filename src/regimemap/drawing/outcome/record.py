@@ -1,6 +1,6 @@
 """The figure of an outcome map of :func:`regimemap.workflows.outcome.run_outcome` (``regimemap outcome``).
 
-It reads an :class:`~regimemap.workflows.outcome.OutcomeRecord` -- the map, its swept inputs,
+It reads an :class:`~regimemap.dynamics.records.OutcomeRecord` -- the map, its swept inputs,
 their dimensionless values when the record has them, the fixed inputs for the title -- and
 draws it with :func:`~regimemap.drawing.outcome.figure.outcome_figure`.
 """

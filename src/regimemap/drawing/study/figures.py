@@ -1,6 +1,6 @@
 """The figures of ``regimemap study``: a breakwater's sections under its climate scenarios.
 
-:func:`study_figure` draws a :class:`~regimemap.workflows.study.StudyRecord` as it is,
+:func:`study_figure` draws a :class:`~regimemap.lifetime.study.StudyRecord` as it is,
 computing nothing: ``"chainage"``, the expected sliding distance (ESD) of each section along
 the breakwater, a line per scenario; ``"years"``, one section's expected cumulative sliding
 against the service year, a line per scenario, with the year it passes each tolerable limit;
