@@ -25,14 +25,15 @@ from .study_sections import Where
 if TYPE_CHECKING:
     from .design import Design
 
-__all__ = ["check_scenario_limits", "falling_sea_level"]
+__all__ = ["SEA_LEVEL_LIMITS", "check_scenario_limits", "falling_sea_level"]
 
 #: What a rise does to a design's lengths: (table, key, symbol, sign of the rise, what a failure does
-#: to the section ``{}``).
-_MOVED = (("caisson", "crest", "hc", -1.0, "puts the crest of section {} under water"),
-          ("site", "armour_depth", "d", 1.0, "leaves the mound of section {} dry"),
-          ("caisson", "base_depth", "h'", 1.0, "lifts the base of section {} out of the water"),
-          ("site", "depth", "h", 1.0, "takes the water depth of section {} out of range"))
+#: to the section ``{}``); each risen length is checked against the design file's declaration of its
+#: key (:data:`~regimemap.io.design_keys.DESIGN_KEYS`), and the crest must stay above the water.
+SEA_LEVEL_LIMITS = (("caisson", "crest", "hc", -1.0, "puts the crest of section {} under water"),
+                    ("site", "armour_depth", "d", 1.0, "leaves the mound of section {} dry"),
+                    ("caisson", "base_depth", "h'", 1.0, "lifts the base of section {} out of the water"),
+                    ("site", "depth", "h", 1.0, "takes the water depth of section {} out of range"))
 #: A rise of this many metres or more is no projection of the sea level (about 1 m by 2100, a few
 #: metres in the worst cases): a value that passes once divided by 1000 or 100 was typed in mm or cm.
 _SLIP_RISE = 10.0
@@ -53,7 +54,7 @@ def _value(design: Design, table: str, key: str) -> float:
 def _problem(design: Design, rise: float) -> tuple[str, str, float, float, str] | None:
     """The first of the design's lengths the sea-level ``rise`` puts out of range: (symbol, what it
     does, today's value, the value risen, what is accepted); None when all stay in range."""
-    for table, key, symbol, sign, what in _MOVED:
+    for table, key, symbol, sign, what in SEA_LEVEL_LIMITS:
         spec = DESIGN_KEYS[table][key]
         today = _value(design, table, key)
         moved = today + sign * rise
