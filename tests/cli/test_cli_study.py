@@ -357,3 +357,24 @@ def test_check_prints_a_line_per_section_and_scenario_and_exits_1_on_a_fail(run_
                         "--check", "--overwrite", "-q")
     assert none.code == 0, none.output
     assert none.stdout.count("  PASS  ") == 4 and "verdict: PASS (every requirement met)" in none.stdout
+
+
+def test_the_study_is_in_the_help_of_regimemap_and_its_help_says_what_it_prints(run_cli):
+    top = run_cli(["--help"])
+    assert top.code == 0
+    assert "regimemap study --example > breakwater.toml" in top.stdout
+    assert "regimemap study breakwater.toml --jobs 2 --check -o table.csv" in top.stdout
+    own = run_cli(["study", "--help"])
+    flat = " ".join(own.stdout.split())
+    assert "also with -o, unless --quiet" in flat and "--overwrite" in flat and "--check" in flat
+
+
+def test_a_stored_task_that_is_not_finite_is_refused_not_printed(run_cli, tmp_path):
+    path = _small(tmp_path)
+    assert _quiet_table(run_cli, path, "-q").code == 0
+    task = tmp_path / "study.store" / "tasks" / "s0001-c00-r0000.json"
+    task.write_text(task.read_text().replace('"esd":[', '"esd":[Infinity,', 1))
+    out = _quiet_table(run_cli, path, "-q", "--resume")
+    assert out.code == 1 and out.stdout == ""
+    assert out.stderr.strip() == (f"regimemap: error: {task}: the stored esd is not finite (inf in 1 of 3 values, "
+                                  "nan in 0): the model is outside the range of its formulas; nothing is written")

@@ -197,7 +197,8 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.option("--store", default=None, metavar="DIR",
               help="The results store, one file per finished task (default: STUDY.store beside the "
                    "study file).")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows) instead of text.")
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows; with --check, the "
+              "requirements) instead of text.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
               help="Output file (repeatable), written atomically: .csv or .nc the table, .png, .svg or "
                    ".pdf the figure (--figure).")

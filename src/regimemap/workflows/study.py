@@ -24,6 +24,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..lifetime.finite import require_finite
 from ..lifetime.study import StudyCheck, StudyRecord, StudyRow
 from ..mechanics.checks import Check
 from ..mechanics.notices import Notice
@@ -253,6 +254,9 @@ def _assemble(s: Study, climates: list[Any] | None, kept: StudyStore | None,
         got = kept.load(name) if kept is not None else memory.get(name)
         if got is None:  # pragma: no cover - every task was run above
             raise RuntimeError(f"task {name} has no result")
+        where = f"{kept.path(name)}" if kept is not None else f"task {name}"
+        for key in ("esd", "exceedance", "by_year", "chart_esd"):  # a store written before the check
+            require_finite(f"the stored {key}", got.get(key, []), where)
         return got
 
     n_rep = len(climates or [])
