@@ -118,9 +118,8 @@ class StudyStore:
     def save(self, name: str, result: Mapping[str, Any]) -> None:
         """Store a task's result, atomically; one that holds ``inf`` or ``nan`` is refused
         (:class:`ValueError`) and nothing is stored."""
-        text = json.dumps(result, separators=(",", ":"), allow_nan=False)
         with atomic_open(self.path(name), "w", encoding="utf-8") as f:
-            f.write(text)
+            json.dump(result, f, separators=(",", ":"), allow_nan=False)
 
     def done(self) -> set[str]:
         """The names of the tasks stored."""
