@@ -47,7 +47,7 @@ def cli() -> None:
       regimemap lifetime goda.toml --width 10:25:16 -o chart.svg
       regimemap -v lifetime goda.toml -o life.png
       regimemap study --example > breakwater.toml
-      regimemap study breakwater.toml --jobs 2 --check -o table.csv
+      regimemap study breakwater.toml --jobs 2 -o table.csv
       regimemap climate buoy.csv -o return-levels.png
     """
 
