@@ -89,7 +89,10 @@ def study_keys_rst() -> str:
                     "and takes from the crest.  The first service year that fails stops the study with "
                     "exit status 2 and one line naming the file, the scenario's line, the year and the "
                     "section (with a hint when the values read in millimetres or centimetres would pass); "
-                    "a sea level that falls is a warning.  Each width of a section is checked as the "
+                    "a sea level that falls is a warning.  A ``wave_height_factor`` must keep each "
+                    "section's 50-year H0' (``H0_50``, or its largest annual maximum) within the design "
+                    "file's ``[lifetime] H0_50``: " + _cell(LIFETIME_KEYS["H0_50"].accepted) + ".  "
+                    "Each width of a section is checked as the "
                     "design file's ``[caisson] width``: " + _cell(DESIGN_KEYS["caisson"]["width"].accepted)
                     + ".", head="risen length")
     return "\n".join(lines)

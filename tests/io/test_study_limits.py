@@ -106,3 +106,15 @@ def test_a_falling_sea_level_table_is_a_notice(tmp_path):
 def test_a_negative_rate_falls_from_today(tmp_path):
     (n,) = read_study(_study(tmp_path, "rate = -0.01")).notices
     assert "from 0 m (today) to -0.5 m in service year 50" in n.message
+
+
+def test_a_wave_height_factor_typed_as_a_per_cent_is_refused(tmp_path):
+    path = _study(tmp_path, "wave_height_factor = { 50 = 10 }")
+    with pytest.raises(StudyFileError) as err:
+        read_study(path)
+    assert str(err.value).startswith(
+        f"{path}, line {_line(path, 'wave_height_factor')}: [[scenario]] 'bad' wave_height_factor: service year "
+        "21 = 4.78 makes the 50-year H0' of section 'trunk' 30.11 m (6.3 m x 4.78; accepted in every service "
+        "year: the 50-year return value of H0', H0_10 < H0_50 <= 30 m)")
+    assert str(err.value).endswith("a per cent for a factor (1.1 for 10 % higher)?")
+    assert read_study(_study(tmp_path, "wave_height_factor = { 50 = 1.2 }")).scenarios[1].wave_height[-1] == 1.2

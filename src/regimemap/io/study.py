@@ -37,7 +37,7 @@ from ..mechanics.notices import Notice
 from .design_errors import did_you_mean
 from .design_lifetime_keys import MAX_TRIALS
 from .inputs import read_design_text
-from .study_limits import check_scenario_limits, falling_sea_level
+from .study_limits import check_scenario_limits, check_wave_heights, falling_sea_level
 from .study_sections import (
     DESIGN_TABLES,
     OVERRIDABLE,
@@ -246,6 +246,7 @@ def parse_study(text: str, source: str = "<study>") -> Study:
     named = [(sec.name, sec.design) for sec in sections]
     for j, (sc, spec) in enumerate(zip(scenarios_raw, scenarios)):
         check_scenario_limits(where, j, sc, spec.sea_level, named)
+        check_wave_heights(where, j, sc, spec.wave_height, named)
         falling = falling_sea_level(where, j, sc, spec.sea_level)
         if falling is not None:
             notices.append(falling)

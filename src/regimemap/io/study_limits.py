@@ -20,12 +20,13 @@ from typing import TYPE_CHECKING, Any
 
 from ..mechanics.notices import Notice
 from .design_keys import DESIGN_KEYS
+from .design_lifetime_keys import LIFETIME_KEYS
 from .study_sections import Where
 
 if TYPE_CHECKING:
     from .design import Design
 
-__all__ = ["SEA_LEVEL_LIMITS", "check_scenario_limits", "falling_sea_level"]
+__all__ = ["SEA_LEVEL_LIMITS", "check_scenario_limits", "check_wave_heights", "falling_sea_level"]
 
 #: What a rise does to a design's lengths: (table, key, symbol, sign of the rise, what a failure does
 #: to the section ``{}``); each risen length is checked against the design file's declaration of its
@@ -135,3 +136,40 @@ def falling_sea_level(where: Where, index: int, sc: Mapping[str, Any], sea: Sequ
                           quantity=key, value=float(low))
         before, last_year = eta, year
     return None
+
+
+def _largest_height(design: Design) -> float | None:
+    """The section's 50-year ``H0'`` as its file gives it (``H0_50``, or the largest of its
+    ``annual_maxima``, a lower bound); None for a record's climate (fitted when the study runs)."""
+    spec = design.lifetime_spec()
+    if spec.H0_50 is not None:
+        return float(spec.H0_50)
+    if spec.annual_maxima:
+        return float(max(spec.annual_maxima))
+    return None
+
+
+def check_wave_heights(where: Where, index: int, sc: Mapping[str, Any], factors: Sequence[float],
+                       sections: Sequence[tuple[str, Design]]) -> None:
+    """Refuse the ``index``-th ``[[scenario]]`` when its ``wave_height_factor`` of a service year
+    lifts a section's 50-year ``H0'`` out of the design file's range of ``[lifetime] H0_50``
+    (:data:`~regimemap.io.design_lifetime_keys.LIFETIME_KEYS`): a factor of 10 for 10 %.
+
+    Raises
+    ------
+    regimemap.io.study_sections.StudyFileError
+        Naming the file, the line of ``wave_height_factor``, the service year and the section.
+    """
+    spec = LIFETIME_KEYS["H0_50"]
+    for year, f in enumerate(factors, start=1):
+        if f == 1.0:
+            continue
+        for name, design in sections:
+            h = _largest_height(design)
+            if h is None or spec.check(h * f):
+                continue
+            hint = "; a per cent for a factor (1.1 for 10 % higher)?" if f >= 2.0 else ""
+            line = where.item("scenario", index, "wave_height_factor")
+            raise where.fail(line, f"[[scenario]] {sc['name']!r} wave_height_factor: service year {year} = "
+                             f"{f:g} makes the 50-year H0' of section {name!r} {h * f:.4g} m "
+                             f"({h:g} m x {f:g}; accepted in every service year: {spec.accepted}){hint}")
