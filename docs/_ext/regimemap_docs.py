@@ -18,6 +18,9 @@ Directives
     accepts (range and unit), whether it is required and its default, read
     from the tables :mod:`regimemap.io.design` validates against (``_SPEC``,
     ``LIFETIME_KEYS``, ``ERROR_FACTORS``) and the defaults of its dataclasses.
+``regimemap-study-keys``
+    Every key of the study file (``regimemap study``), from the declarations its reader
+    reads (:mod:`regimemap_study_keys`).
 ``regimemap-run``, ``regimemap-file NAME``
     Commands run when the pages are built, and the files they read: in
     ``regimemap_run`` (set up from here; :func:`run_command` is importable
@@ -170,6 +173,18 @@ class DesignKeys(SphinxDirective):
             out += [f"   * - ``{key}``", f"     - {kind}", f"     - {_cell(accepted)}",
                     f"     - {default}" if default else "     -"]
         return out + [""]
+
+
+class StudyKeys(SphinxDirective):
+    """``.. regimemap-study-keys::``: every key of the study file, from its reader's declarations
+    (:func:`regimemap_study_keys.study_keys_rst`)."""
+
+    has_content = False
+
+    def run(self) -> list[nodes.Node]:
+        from regimemap_study_keys import study_keys_rst
+
+        return self.parse_text_to_nodes(study_keys_rst(), allow_section_headings=True)
 
 
 # -- docstrings: plain-text |x| is not a substitution ---------------------------------------
@@ -345,6 +360,7 @@ def _copy_mathjax(app: Sphinx, exception: Exception | None) -> None:
 
 def setup(app: Sphinx) -> dict[str, Any]:
     app.add_directive("regimemap-design-keys", DesignKeys)
+    app.add_directive("regimemap-study-keys", StudyKeys)
     app.setup_extension("regimemap_run")
     app.connect("missing-reference", _missing_reference)
     app.connect("autodoc-process-docstring", _plain_pipes, priority=600)

@@ -87,12 +87,15 @@ class RunCommands(SphinxDirective):
     of the outputs, ``text`` by default), ``:copy-first: NAME PATH [PATH ...]`` (copy
     the first of the PATHs that exists -- relative to the repository, such as the
     shared data beside a clone -- to NAME in the folder before the commands run;
-    when none exists the commands are shown, marked as not run, and not run).
+    when none exists the commands are shown, marked as not run, and not run), ``:exit-code: N``
+    (the exit status every command is expected to end with, 0 by default: ``--check`` of a
+    design that fails exits 1; any other status is a warning).
     """
 
     has_content = True
     option_spec = {"hide-output": directives.flag, "max-lines": directives.nonnegative_int,
-                   "output-language": directives.unchanged, "copy-first": directives.unchanged}
+                   "output-language": directives.unchanged, "copy-first": directives.unchanged,
+                   "exit-code": directives.nonnegative_int}
 
     def _copy_first(self, folder: Path) -> bool:
         name, *paths = self.options["copy-first"].split()
@@ -121,7 +124,7 @@ class RunCommands(SphinxDirective):
             except ValueError as exc:
                 raise self.error(str(exc)) from None
             result = run_command(command, folder)
-            if result.exit_code != 0:
+            if result.exit_code != self.options.get("exit-code", 0):
                 why = result.stderr.strip() or repr(result.exception)
                 logger.warning("regimemap-run: %r exited with %s: %s", command, result.exit_code, why,
                                location=self.get_location())

@@ -12,6 +12,7 @@ import sys
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from regimemap.io.design import example_design_text
@@ -54,7 +55,9 @@ def test_the_table_the_csv_and_the_json(run_cli, tmp_path):
     path = _small(tmp_path)
     out = run_cli(["study", str(path), "--jobs", "1", "-o", str(tmp_path / "t.csv")])
     assert out.code == 0, out.output
-    assert out.stdout.strip() == str(tmp_path / "t.csv")
+    lines = out.stdout.splitlines()  # the table, then the file written
+    assert lines[0] == f"study: {path}" and lines[-1] == str(tmp_path / "t.csv")
+    assert sum(line.startswith(("a ", "b ")) for line in lines) == 6
     assert (tmp_path / "study.store" / "manifest.json").is_file()
     rows = list(csv.DictReader(io.StringIO((tmp_path / "t.csv").read_text())))
     assert tuple(rows[0]) == STUDY_COLUMNS
@@ -81,6 +84,7 @@ def test_the_table_the_csv_and_the_json(run_cli, tmp_path):
     (["STUDY", "--section", "nowhere"], "'nowhere' is not a section of the study; accepted: a, b"),
     (["STUDY", "--figure", "map"], "Invalid value for '--figure'"),
     (["STUDY", "--scheduler", "nowhere"], "scheduler must be the address of a Dask scheduler"),
+    (["STUDY", "--resume", "--overwrite"], "--resume and --overwrite exclude each other"),
 ])
 def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, args, says):
     path = _small(tmp_path)
@@ -200,3 +204,177 @@ def test_the_netcdf_table_and_the_figures(run_cli, tmp_path):
                      "-o", str(tmp_path / "years.svg")])
     assert years.code == 0, years.output
     assert (tmp_path / "years.svg").stat().st_size > 1000
+
+
+def _quiet_table(run_cli, path: Path, *args: str):
+    return run_cli(["study", str(path), "--jobs", "1", *args])
+
+
+def test_with_o_quiet_prints_only_the_files(run_cli, tmp_path):
+    path = _small(tmp_path)
+    out = _quiet_table(run_cli, path, "-q", "-o", str(tmp_path / "t.csv"))
+    assert out.code == 0, out.output
+    assert out.stdout.strip() == str(tmp_path / "t.csv")
+
+
+def test_millimetres_for_metres_exit_2_in_one_line_before_any_store(run_cli, tmp_path):
+    path = _small(tmp_path, SMALL.replace("rate = 0.01", "sea_level_rise = { 50 = 1000 }"))
+    out = _quiet_table(run_cli, path, "-o", str(tmp_path / "t.csv"))
+    assert out.code == 2, out.output
+    assert f"{path}, line 23: [[scenario]] 'rise' sea_level_rise: service year 1 = 20 m puts the crest of " \
+           "section 'a' under water" in out.stderr
+    assert out.stderr.count("\n") == 1 and "RuntimeWarning" not in out.stderr and out.stdout == ""
+    assert not (tmp_path / "study.store").exists() and not (tmp_path / "t.csv").exists()
+
+
+def test_a_falling_sea_level_is_warned_on_stderr(run_cli, tmp_path):
+    path = _small(tmp_path, SMALL.replace("rate = 0.01", "sea_level_rise = { 20 = 0.5, 50 = 0.2 }"))
+    out = _quiet_table(run_cli, path, "-q")
+    assert out.code == 0, out.output
+    warnings = [line for line in out.stderr.splitlines() if line.startswith("regimemap: warning:")]
+    assert len(warnings) == 1 and "the sea level falls, from 0.5 m (service year 20)" in warnings[0]
+    assert "falls" not in out.stdout
+
+
+def test_a_non_finite_result_is_an_error_and_the_tasks_stored_stay(run_cli, tmp_path, monkeypatch):
+    import regimemap.lifetime.parallel as parallel
+
+    real = parallel.run_chunks
+
+    def broken(caissons, model, chunks, **kw):  # the sliding of the scenario with a trend: inf
+        out = real(caissons, model, chunks, **kw)
+        if model.trend is None:
+            return out
+        sliding = out.sliding.copy()
+        sliding[:, 0] = np.inf
+        return type(out)(**{**out.__dict__, "sliding": sliding})
+
+    monkeypatch.setattr(parallel, "run_chunks", broken)
+    path = _small(tmp_path)
+    out = _quiet_table(run_cli, path, "-q", "-o", str(tmp_path / "t.csv"))
+    assert out.code == 1, out.output
+    assert out.stderr.strip() == (f"regimemap: error: {path}: section 'a', scenario 'rise', width 12 m: the "
+                                  "lifetime sliding is not finite (inf in 1 of 100 values, nan in 0): the model "
+                                  "is outside the range of its formulas; nothing is written")
+    assert out.stdout == "" and not (tmp_path / "t.csv").exists()
+    tasks = sorted(p.name for p in (tmp_path / "study.store" / "tasks").iterdir())
+    assert tasks == ["s0000-c00-r0000.json"]
+    assert all(np.isfinite(json.loads((tmp_path / "study.store" / "tasks" / t).read_text())["esd"]).all()
+               for t in tasks)
+    monkeypatch.setattr(parallel, "run_chunks", real)
+    resumed = _quiet_table(run_cli, path, "-q", "--resume", "-o", str(tmp_path / "t.csv"))
+    assert resumed.code == 0, resumed.output
+    whole = _quiet_table(run_cli, path, "-q", "--store", str(tmp_path / "w"), "-o", str(tmp_path / "w.csv"))
+    assert whole.code == 0 and (tmp_path / "t.csv").read_bytes() == (tmp_path / "w.csv").read_bytes()
+
+
+def test_overwrite_runs_the_tour_again_and_replaces_only_a_study_store(run_cli, tmp_path):
+    path = _small(tmp_path)
+    store = tmp_path / "study.store"
+    assert _quiet_table(run_cli, path, "-q").code == 0
+    again = _quiet_table(run_cli, path, "-q")
+    assert again.code == 2 and "give --resume to finish" in again.stderr and "--overwrite" in again.stderr
+    (store / "tasks" / "stale.json").write_text("{}")  # not a task of this run: gone after --overwrite
+    first = (store / "tasks" / "s0000-c00-r0000.json").read_bytes()
+    out = _quiet_table(run_cli, path, "-q", "--overwrite")
+    assert out.code == 0, out.output
+    assert sorted(p.name for p in (store / "tasks").iterdir()) == [
+        "s0000-c00-r0000.json", "s0000-c01-r0000.json", "s0001-c00-r0000.json", "s0001-c01-r0000.json"]
+    assert (store / "tasks" / "s0000-c00-r0000.json").read_bytes() == first
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml", "study.store", "study.toml"]
+    other = tmp_path / "notes"
+    other.mkdir()
+    (other / "mine.txt").write_text("keep")
+    refused = _quiet_table(run_cli, path, "-q", "--overwrite", "--store", str(other))
+    assert refused.code == 2 and "not a study store" in refused.stderr and refused.stderr.count("\n") == 1
+    assert [p.name for p in other.iterdir()] == ["mine.txt"]
+
+
+def test_an_interrupted_overwrite_leaves_the_old_store_whole(run_cli, tmp_path, monkeypatch):
+    import regimemap.workflows.study as study
+
+    path = _small(tmp_path)
+    store = tmp_path / "study.store"
+    assert _quiet_table(run_cli, path, "-q").code == 0
+    before = {p: p.read_bytes() for p in store.rglob("*") if p.is_file()}
+    calls = []
+
+    def interrupted(task):
+        calls.append(task)
+        if len(calls) == 3:
+            raise KeyboardInterrupt
+        return study.run_task(task)
+
+    monkeypatch.setattr(study, "_serial", lambda todo: ((n, interrupted(t)) for n, t in todo))
+    out = _quiet_table(run_cli, path, "-q", "--overwrite")
+    assert out.code == 130, out.output
+    assert {p: p.read_bytes() for p in store.rglob("*") if p.is_file()} == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml", "study.store", "study.toml"]
+
+
+@pytest.mark.parametrize(("module", "args", "says"), [
+    ("distributed", ["--scheduler", "local"], "Invalid value for '--scheduler': --scheduler needs Dask's "
+                                              "distributed package: pip install 'regimemap[cluster]'"),
+    ("xarray", ["-o", "t.csv", "-o", "bw.nc"], "pip install 'regimemap[metocean]'"),
+])
+def test_a_missing_extra_exits_2_before_anything_is_made(run_cli, tmp_path, monkeypatch, module, args, says):
+    monkeypatch.setitem(sys.modules, module, None)  # as if not installed: import and find_spec fail
+    path = _small(tmp_path)
+    args = [str(tmp_path / a) if a.endswith((".csv", ".nc")) else a for a in args]
+    out = run_cli(["study", str(path), *args])
+    assert out.code == 2, out.output
+    assert says in out.stderr and out.stderr.count("\n") == 1
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml", "study.toml"]
+
+
+def test_check_prints_a_line_per_section_and_scenario_and_exits_1_on_a_fail(run_cli, tmp_path):
+    path = _small(tmp_path)
+    out = _quiet_table(run_cli, path, "-q", "--check", "-o", str(tmp_path / "t.csv"))
+    assert out.code == 1, out.output
+    lines = out.stdout.splitlines()
+    assert lines[0] == "requirements:" and lines[-1] == str(tmp_path / "t.csv") and len(lines) == 7
+    rows = {(r["section"], r["scenario"], float(r["width"])): float(r["expected_sliding"])
+            for r in csv.DictReader((tmp_path / "t.csv").open())}
+    assert lines[1:6] == [
+        f"  PASS  a / today: the ESD of the design's climate at 12 m: {rows['a', 'today', 12.0]:.4g} m <= 0.1 m",
+        f"  PASS  a / rise: the ESD of the design's climate at 12 m: {rows['a', 'rise', 12.0]:.4g} m <= 0.1 m",
+        "  FAIL  b / today: the ESD of the design's climate at 16 m, the widest of 14, 16 m; none meets it: "
+        f"{rows['b', 'today', 16.0]:.4g} m <= 0.1 m",
+        "  FAIL  b / rise: the ESD of the design's climate at 16 m, the widest of 14, 16 m; none meets it: "
+        f"{rows['b', 'rise', 16.0]:.4g} m <= 0.1 m",
+        "  verdict: FAIL (2 of 4 requirements not met)"]
+    assert rows["b", "today", 16.0] > 0.1 > rows["a", "rise", 12.0]
+    # the narrowest width that meets the section's own target ([lifetime] target, overridden)
+    lax = SMALL.replace('widths = [14.0, 16.0]', 'widths = [14.0, 16.0]\nlifetime.target = 1.0')
+    ok = _quiet_table(run_cli, _small(tmp_path, lax), "--check", "--overwrite", "--json")
+    assert ok.code == 1, ok.output
+    data = json.loads(ok.stdout)
+    assert [(c["section"], c["scenario"], c["pass"]) for c in data["checks"]] == [
+        ("a", "today", True), ("a", "rise", True), ("b", "today", True), ("b", "rise", False)]
+    assert data["checks"][2]["basis"] == ("the ESD of the design's climate at 16 m, the narrowest of 14, 16 m "
+                                          "that meets it") and data["checks"][2]["required"] == 1.0
+    none = _quiet_table(run_cli, _small(tmp_path, SMALL.replace('widths = [14.0, 16.0]', 'widths = [30.0]')),
+                        "--check", "--overwrite", "-q")
+    assert none.code == 0, none.output
+    assert none.stdout.count("  PASS  ") == 4 and "verdict: PASS (every requirement met)" in none.stdout
+
+
+def test_the_study_is_in_the_help_of_regimemap_and_its_help_says_what_it_prints(run_cli):
+    top = run_cli(["--help"])
+    assert top.code == 0
+    assert "regimemap study --example > breakwater.toml" in top.stdout
+    assert "regimemap study breakwater.toml --jobs 2 -o table.csv" in top.stdout
+    own = run_cli(["study", "--help"])
+    flat = " ".join(own.stdout.split())
+    assert "also with -o, unless --quiet" in flat and "--overwrite" in flat and "--check" in flat
+
+
+def test_a_stored_task_that_is_not_finite_is_refused_not_printed(run_cli, tmp_path):
+    path = _small(tmp_path)
+    assert _quiet_table(run_cli, path, "-q").code == 0
+    task = tmp_path / "study.store" / "tasks" / "s0001-c00-r0000.json"
+    task.write_text(task.read_text().replace('"esd":[', '"esd":[Infinity,', 1))
+    out = _quiet_table(run_cli, path, "-q", "--resume")
+    assert out.code == 1 and out.stdout == ""
+    assert out.stderr.strip() == (f"regimemap: error: {task}: the stored esd is not finite (inf in 1 of 3 values, "
+                                  "nan in 0): the model is outside the range of its formulas; nothing is written")

@@ -46,6 +46,8 @@ def cli() -> None:
       regimemap lifetime goda.toml -o life.png
       regimemap lifetime goda.toml --width 10:25:16 -o chart.svg
       regimemap -v lifetime goda.toml -o life.png
+      regimemap study --example > breakwater.toml
+      regimemap study breakwater.toml --jobs 2 -o table.csv
       regimemap climate buoy.csv -o return-levels.png
     """
 

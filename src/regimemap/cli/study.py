@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 import click
 
+from ._check import warn
 from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._writing import writing
@@ -53,9 +54,23 @@ class _Scheduler(ParamType):
             self.fail(f"{exc} (or 'local', a Dask LocalCluster)", param, ctx)
 
 
+#: The message when Dask's distributed is missing (found before anything is made).
+NO_DASK = "--scheduler needs Dask's distributed package: pip install 'regimemap[cluster]'"
+
+
+def _missing(module: str) -> bool:
+    """Whether ``module`` cannot be imported (not installed, or blocked in ``sys.modules``)."""
+    import importlib.util
+
+    try:
+        return importlib.util.find_spec(module) is None
+    except (ImportError, ValueError):
+        return True
+
+
 def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], scheduler: str | None,
-                jobs: int | None) -> None:
-    """The options that go together; the outputs' suffixes and folders."""
+                jobs: int | None, resume: bool = False, overwrite: bool = False) -> None:
+    """The options that go together; the outputs' suffixes and folders; the extras they need."""
     ctx = click.get_current_context()
     if example and study is not None:
         raise click.UsageError("--example prints the example study and takes no STUDY.toml", ctx=ctx)
@@ -65,18 +80,23 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
     if scheduler is not None and scheduler != "local" and jobs is not None:
         raise click.UsageError("--jobs and --scheduler ADDRESS exclude each other: the cluster's workers "
                                "run the tasks (with --scheduler local, --jobs is its workers)", ctx=ctx)
+    if resume and overwrite:
+        raise click.UsageError("--resume and --overwrite exclude each other: --resume finishes the "
+                               "store's run, --overwrite replaces the store with a new run", ctx=ctx)
     for path in outputs:
         if _suffix(path) not in TABLE_FORMATS + FIGURE_FORMATS:
             raise click.BadParameter(f"{path!r}: the table is written as .csv or .nc and the figure as .png, "
                                      ".svg or .pdf (from the file suffix)", param_hint="'--output'")
         output_path(path, "--output")
-    if any(_suffix(path) == "nc" for path in outputs):  # before a long run, not after it
-        from ..io.study_netcdf import check_netcdf
+    # the extras, before the store or any file is made and before a long run
+    if scheduler is not None and _missing("distributed"):
+        raise click.BadParameter(NO_DASK, param_hint="'--scheduler'")
+    if any(_suffix(path) == "nc" for path in outputs) and _missing("xarray"):
+        from ..io.study_netcdf import NO_XARRAY
 
-        try:
-            check_netcdf()
-        except ImportError as exc:
-            raise RunError(str(exc)) from None
+        bad = next(path for path in outputs if _suffix(path) == "nc")
+        raise click.BadParameter(f"{bad!r}: {NO_XARRAY} (or write the table as .csv)",
+                                 param_hint="'--output'")
 
 
 @contextlib.contextmanager
@@ -113,8 +133,8 @@ def _read(study: str, section: str | None) -> Study:
     return parsed
 
 
-def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, store: str | None,
-         quiet: bool) -> StudyRecord:
+def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, overwrite: bool,
+         store: str | None, quiet: bool) -> StudyRecord:
     """Run the study; a refused store is a usage error (exit 2), a missing cluster a failure."""
     from ..io.study_store import StudyStoreError
     from ..lifetime import ClusterUnavailable, available_cores
@@ -126,15 +146,16 @@ def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, st
     try:
         with _progress(quiet) as step:
             return run_study(study, jobs=workers, scheduler=scheduler, store=folder, resume=resume,
-                             progress=step)
+                             overwrite=overwrite, progress=step)
     except StudyStoreError as exc:
         raise click.UsageError(str(exc), ctx=click.get_current_context()) from None
     except ClusterUnavailable as exc:
         raise RunError(str(exc)) from None
 
 
-def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: str | None) -> None:
-    """Each output file: the table (.csv, .nc) or the figure (.png, .svg, .pdf, drawn once)."""
+def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: str | None) -> list[str]:
+    """Each output file: the table (.csv, .nc) or the figure (.png, .svg, .pdf, drawn once); the files
+    written, in order."""
     fig = None
     for path in outputs:
         with writing(path):
@@ -155,7 +176,7 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
                 from ..drawing.save import save_figure
 
                 save_figure(fig, path)
-        report_written(path)
+    return list(outputs)
 
 
 @click.command("study", short_help="A breakwater's sections under climate scenarios (resumable, parallel).")
@@ -170,10 +191,14 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
                    "(tcp://host:8786); needs the 'cluster' extra.")
 @click.option("--resume", is_flag=True, help="Run only the tasks missing from the store (the same numbers "
               "as an uninterrupted run); refused when the study file has changed.")
+@click.option("--overwrite", is_flag=True, help="Run the study again in place of its store (or of another "
+              "study's): the old store is replaced only when every task of the new run is stored; not "
+              "with --resume.")
 @click.option("--store", default=None, metavar="DIR",
               help="The results store, one file per finished task (default: STUDY.store beside the "
                    "study file).")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows) instead of text.")
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows; with --check, the "
+              "requirements) instead of text.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
               help="Output file (repeatable), written atomically: .csv or .nc the table, .png, .svg or "
                    ".pdf the figure (--figure).")
@@ -182,44 +207,69 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
                    "or the required width along the chainage.")
 @click.option("--section", default=None, metavar="NAME", help="The section of --figure years (default: "
               "the first).")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar.")
+@click.option("--quiet", "-q", is_flag=True, help="No progress bar; with -o, no table either (the files "
+              "hold it).")
+@click.option("--check", is_flag=True, help="Print one requirement line per section x scenario (PASS or "
+              "FAIL: the section's [lifetime] target ESD, or its width against the width for its target) "
+              "and exit with status 1 when any fails (the files are written first).")
 def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str | None, resume: bool,
-              store: str | None, as_json: bool, outputs: tuple[str, ...], figure: str, section: str | None,
-              quiet: bool) -> None:
+              overwrite: bool, store: str | None, as_json: bool, outputs: tuple[str, ...], figure: str,
+              section: str | None, quiet: bool, check: bool) -> None:
     """A whole breakwater: every section of STUDY.toml under every climate scenario.
 
     A study file holds a base design (the tables of a design file inline, or
     base = "design.toml"), [[section]] tables (name, chainage, the design keys
     they change, the widths or a target ESD) and [[scenario]] tables (sea-level
-    rise, wave-height and storm-rate factors by service year). Every section x
-    scenario (x bootstrap climate of a wave record) is a task on the section's
-    own random numbers, the same for every scenario; each finished task is kept
-    in the store, so an interrupted run is finished by --resume, to the same
-    numbers. Prints one line per section x scenario x width: the expected
-    sliding distance (ESD), P(S > 0.1 m), P(S > 0.3 m), the first service year
-    the expected sliding passes 0.1 m and 0.3 m, and the width for a target.
+    rise, wave-height and storm-rate factors by service year). Every scenario's
+    sea level is checked against every section in every service year before
+    any task runs (a crest under water is refused). Every section x scenario
+    (x bootstrap climate of a wave record) is a task on the section's own
+    random numbers, the same for every scenario; each finished task is kept in
+    the store, so an interrupted run is finished by --resume, to the same
+    numbers, and --overwrite runs it again. Prints one line per section x
+    scenario x width (also with -o, unless --quiet): the expected sliding
+    distance (ESD), P(S > 0.1 m), P(S > 0.3 m), the first service year the
+    expected sliding passes 0.1 m and 0.3 m, and the width for a target; with
+    --check, one requirement line per section x scenario.
 
     \b
     Examples:
       regimemap study --example > breakwater.toml
       regimemap study breakwater.toml --jobs 2 -o table.csv
       regimemap study breakwater.toml --resume --json
+      regimemap study breakwater.toml --overwrite --check
       regimemap study breakwater.toml --scheduler local -o esd.svg
     """
-    from ..io.study_table import study_json, study_lines
+    from ..io.study_table import study_check_lines, study_checks_json, study_json, study_lines
+    from ..workflows.study import study_checks
 
-    _check_call(study, example, outputs, scheduler, jobs)
+    _check_call(study, example, outputs, scheduler, jobs, resume, overwrite)
     if example:
         from ..io.study_example import example_study_text
 
         click.echo(example_study_text(), nl=False)
         return
     assert study is not None
-    record = _run(_read(study, section), jobs, scheduler, resume, store, quiet)
-    for notice in record.notices:
-        click.echo(f"regimemap: warning: {notice.message}", err=True)
-    _write(record, outputs, figure, section)
+    parsed = _read(study, section)
+    warn(parsed.notices)  # before the run: the file's warnings
+    record = _run(parsed, jobs, scheduler, resume, overwrite, store, quiet)
+    warn([n for n in record.notices if n not in parsed.notices])
+    checks = study_checks(parsed, record) if check else ()
+    written = _write(record, outputs, figure, section)
     if as_json:
-        click.echo(json.dumps(study_json(record), indent=1))
-    elif not outputs:
-        click.echo("\n".join(study_lines(record)))
+        data = study_json(record)
+        if check:
+            data["checks"] = study_checks_json(checks)
+        if written:
+            data["written"] = written
+        click.echo(json.dumps(data, indent=1, allow_nan=False))
+    else:
+        if not (outputs and quiet):
+            click.echo("\n".join(study_lines(record)))
+        if check:
+            click.echo("requirements:")
+            click.echo("\n".join(f"  {line}" for line in study_check_lines(checks)))
+        for path in written:
+            report_written(path)
+    if check and not all(c.passed for c in checks):
+        raise click.exceptions.Exit(1)

@@ -33,9 +33,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from ..mechanics.notices import Notice
 from .design_errors import did_you_mean
 from .design_lifetime_keys import MAX_TRIALS
 from .inputs import read_design_text
+from .study_limits import check_scenario_limits, check_wave_heights, falling_sea_level
 from .study_sections import (
     DESIGN_TABLES,
     OVERRIDABLE,
@@ -148,6 +150,8 @@ class Study:
         In file order.
     study_hash : str
         sha256 of the study's canonical content.
+    notices : tuple of Notice
+        The warnings of the file (a falling sea level, ``falling-sea-level``).
     """
 
     source: str
@@ -157,6 +161,7 @@ class Study:
     sections: tuple[SectionSpec, ...]
     scenarios: tuple[ScenarioSpec, ...]
     study_hash: str
+    notices: tuple[Notice, ...] = ()
 
     @property
     def replicates(self) -> int:
@@ -202,7 +207,9 @@ def parse_study(text: str, source: str = "<study>") -> Study:
         Naming the file, the line and the key: a TOML error, an unknown key,
         duplicate names, a chainage that goes back, a scenario year outside
         the design life, a factor <= 0, a section's design refused by the
-        design file's checks.
+        design file's checks, a width outside the design file's range, a
+        scenario whose sea level of a service year takes a section out of the
+        design file's limits (:func:`regimemap.io.study_limits.check_scenario_limits`).
     """
     where = Where(text, source)
     data = load_toml(text, source)
@@ -235,10 +242,18 @@ def parse_study(text: str, source: str = "<study>") -> Study:
     years = sections[0].design.lifetime_spec().years
     scenarios = tuple(ScenarioSpec(*scenario_values(where, j, sc, years))
                       for j, sc in enumerate(scenarios_raw))
+    notices = []
+    named = [(sec.name, sec.design) for sec in sections]
+    for j, (sc, spec) in enumerate(zip(scenarios_raw, scenarios)):
+        check_scenario_limits(where, j, sc, spec.sea_level, named)
+        check_wave_heights(where, j, sc, spec.wave_height, named)
+        falling = falling_sea_level(where, j, sc, spec.sea_level)
+        if falling is not None:
+            notices.append(falling)
     record = sections[0].design.lifetime_spec().record
     digest = _fingerprint(data, base_text, None if record is None else record.path)
     return Study(source=source, seed=int(seed), trials=int(trials), years=int(years),
-                 sections=tuple(sections), scenarios=scenarios, study_hash=digest)
+                 sections=tuple(sections), scenarios=scenarios, study_hash=digest, notices=tuple(notices))
 
 
 def _base_tables(data: Mapping[str, Any], text: str, source: str, where: Where) -> tuple[Merged, str | None]:

@@ -22,7 +22,7 @@ else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 from .design_errors import DesignFileError, did_you_mean
-from .design_keys import DESIGN_KEYS
+from .design_keys import DESIGN_KEYS, KeySpec
 from .design_lifetime_keys import LIFETIME_KEYS, MAX_TRIALS
 
 if TYPE_CHECKING:
@@ -227,6 +227,10 @@ def check_override(where: Where, index: int, table: str, key: str, written: str 
         raise where.fail(line, f"[[section]] lifetime.{key}: the same for every section; accepted: {place}")
 
 
+def _why(spec: KeySpec, x: float) -> str:
+    return spec.why(x) if spec.why is not None else "out of range"
+
+
 def section_widths(where: Where, index: int, sec: Mapping[str, Any]
                    ) -> tuple[tuple[float, ...] | None, float | None, float]:
     """A section's ``width`` or ``widths`` (None: neither), ``target`` and ``tolerance``, checked."""
@@ -237,18 +241,26 @@ def section_widths(where: Where, index: int, sec: Mapping[str, Any]
     if "width" in sec and "widths" in sec:
         raise where.fail(line("widths"), "[[section]] widths together with width; accepted: one of them")
     widths: tuple[float, ...] | None = None
+    spec = DESIGN_KEYS["caisson"]["width"]  # the design file's range of a width, and its words
     if "width" in sec:
         w = number(sec["width"])
-        if w is None or not (math.isfinite(w) and w > 0.0):
+        if w is None or not math.isfinite(w):
             raise where.fail(line("width"), f"[[section]] width = {sec['width']!r}: accepted: "
-                             f"{SECTION_KEYS['width']}, > 0")
+                             f"{SECTION_KEYS['width']}, {spec.accepted}")
+        if not spec.check(w):
+            raise where.fail(line("width"), f"[[section]] width = {sec['width']!r}: out of range, "
+                             f"{_why(spec, w)}; accepted: {spec.accepted}")
         widths = (w,)
     if "widths" in sec:
         v = sec["widths"]
         ws = [number(x) for x in v] if isinstance(v, list) else [None]
-        if not ws or any(x is None or not (math.isfinite(x) and x > 0.0) for x in ws):
+        if not ws or any(x is None or not math.isfinite(x) for x in ws):
             raise where.fail(line("widths"), f"[[section]] widths = {v!r}: accepted: "
-                             f"{SECTION_KEYS['widths']}")
+                             f"{SECTION_KEYS['widths']}, each {spec.accepted}")
+        bad = [x for x in ws if x is not None and not spec.check(x)]
+        if bad:
+            raise where.fail(line("widths"), f"[[section]] widths = {v!r}: {bad[0]:g} m is out of range, "
+                             f"{_why(spec, bad[0])}; accepted: each {spec.accepted}")
         got = [float(x) for x in ws if x is not None]
         if any(b <= a for a, b in zip(got, got[1:])):
             raise where.fail(line("widths"), f"[[section]] widths = {v!r}: not increasing; accepted: "

@@ -14,20 +14,24 @@ different hash is refused whether resuming or not (the store is left untouched);
 the same hash without ``resume`` is refused, when it holds a task, with the hint to
 ``--resume`` or to give another ``--store``, so finished tasks are never run again
 by accident (an empty store of the study, left by a run that never got going, is
-reused).
+reused).  :func:`replacing_store` replaces a study store (``--overwrite``): the new
+run is stored in a folder beside it, which takes the old one's place only when the
+run has finished, so an interrupted or failed run leaves the old store whole.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
-from collections.abc import Mapping
+import shutil
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
 from .atomic import atomic_open
 
-__all__ = ["MANIFEST", "StudyStore", "StudyStoreError", "task_name"]
+__all__ = ["MANIFEST", "StudyStore", "StudyStoreError", "replacing_store", "task_name"]
 
 #: The manifest's file name in the store's folder.
 MANIFEST = "manifest.json"
@@ -83,11 +87,11 @@ class StudyStore:
                 raise StudyStoreError(
                     f"{self.folder}: the store of another study (its hash {str(old.get('study_hash'))[:12]}, "
                     f"this study's {study_hash[:12]}: {source} has changed); refused, the store is "
-                    "untouched: give a new --store, or remove this one to start again")
+                    "untouched: give --overwrite to replace it, or a new --store")
             if not resume and any(self.tasks_folder.glob("*.json")):
                 raise StudyStoreError(
                     f"{self.folder}: already holds this study's results; give --resume to finish (or "
-                    "reuse) them, or a new --store to start again")
+                    "reuse) them, --overwrite to run the study again in their place, or a new --store")
         elif self.folder.exists() and any(self.folder.iterdir()):
             raise StudyStoreError(f"{self.folder}: a folder that is not a study store and not empty; "
                                   "give a new --store")
@@ -112,10 +116,54 @@ class StudyStore:
         return data
 
     def save(self, name: str, result: Mapping[str, Any]) -> None:
-        """Store a task's result, atomically."""
+        """Store a task's result, atomically; one that holds ``inf`` or ``nan`` is refused
+        (:class:`ValueError`) and nothing is stored."""
         with atomic_open(self.path(name), "w", encoding="utf-8") as f:
-            json.dump(result, f, separators=(",", ":"))
+            json.dump(result, f, separators=(",", ":"), allow_nan=False)
 
     def done(self) -> set[str]:
         """The names of the tasks stored."""
         return {p.name for p in self.tasks_folder.glob("*.json")}
+
+
+def _is_store(folder: Path) -> bool:
+    return (folder / MANIFEST).is_file()
+
+
+@contextlib.contextmanager
+def replacing_store(folder: str | os.PathLike[str], study_hash: str, source: str,
+                    tasks: int) -> Iterator[StudyStore]:
+    """A new, empty store that replaces the study store at ``folder`` when the block ends without
+    an error (``--overwrite``); the old store is whole until then.
+
+    The new store is made in ``.NAME.new`` beside ``folder`` (a stale one, left by a run that was
+    killed, is removed first); at the end the old store is renamed ``.NAME.old``, the new one
+    takes its name, and the old one is removed.  On an error or an interrupt the new folder is
+    removed and the old store is left as it was.  A ``folder`` that does not exist is simply
+    created; one that is not a study store (no manifest) is refused and left untouched.
+
+    Raises
+    ------
+    StudyStoreError
+        ``folder`` exists and is not a study store (or not a folder).
+    """
+    target = Path(folder)
+    if not target.exists():
+        yield StudyStore(target, study_hash, source, tasks)
+        return
+    if not target.is_dir() or not _is_store(target):
+        raise StudyStoreError(f"{target}: not a study store (no {MANIFEST}); --overwrite replaces only a "
+                              "study store: give a new --store")
+    staging = target.with_name(f".{target.name}.new")
+    retired = target.with_name(f".{target.name}.old")
+    for stale in (staging, retired):
+        if stale.exists() and _is_store(stale):
+            shutil.rmtree(stale)
+    try:
+        yield StudyStore(staging, study_hash, source, tasks)
+    except BaseException:
+        shutil.rmtree(staging, ignore_errors=True)
+        raise
+    os.replace(target, retired)
+    os.replace(staging, target)
+    shutil.rmtree(retired, ignore_errors=True)

@@ -13,12 +13,16 @@ import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from ._numbers import json_number
 from .atomic import atomic_open
 
 if TYPE_CHECKING:
-    from ..lifetime.study import StudyRecord, StudyRow
+    from collections.abc import Sequence
 
-__all__ = ["STUDY_COLUMNS", "study_csv_text", "study_json", "study_lines", "write_study_csv"]
+    from ..lifetime.study import StudyCheck, StudyRecord, StudyRow
+
+__all__ = ["STUDY_COLUMNS", "study_check_lines", "study_checks_json", "study_csv_text", "study_json",
+           "study_lines", "write_study_csv"]
 
 #: The CSV table's columns (units: m, years; probabilities).
 STUDY_COLUMNS = ("section", "chainage", "scenario", "width", "expected_sliding", "std_error",
@@ -106,11 +110,47 @@ def study_lines(record: StudyRecord) -> list[str]:
                 extra += f" ({r.required_width_interval[0]:.2f}-{r.required_width_interval[1]:.2f})"
             if r.required_width_upper is not None:
                 extra += f", {r.required_width_upper:.2f} m at the band's upper level"
+        se = "-" if math.isnan(r.std_error) else f"{r.std_error:.2g}"  # one lifetime: no error
         out.append(f"{r.section[:16]:<16} {r.scenario[:20]:<20} {r.width:>8.2f} "
-                   f"{r.expected_sliding:>10.4g} {r.std_error:>8.2g} {p[0.1]:>6.3f} {p[0.3]:>6.3f} "
+                   f"{r.expected_sliding:>10.4g} {se:>8} {p[0.1]:>6.3f} {p[0.3]:>6.3f} "
                    f"{_year(y[0.1]):>5} {_year(y[0.3]):>5}  {extra}".rstrip())
     return out
 
 
 def _year(y: int | None) -> str:
     return "-" if y is None else str(y)
+
+
+def _length(x: float) -> str:
+    return f"{x:.4g} m" if math.isfinite(x) else "none"
+
+
+def study_check_lines(checks: Sequence[StudyCheck]) -> list[str]:
+    """One line per section x scenario, PASS or FAIL first (as ``regimemap lifetime``'s
+    requirements, :func:`regimemap.io.checks.checks_lines`), then the overall verdict.
+
+    Examples
+    --------
+    >>> from regimemap.lifetime.study import StudyCheck
+    >>> from regimemap.mechanics.checks import Check
+    >>> c = StudyCheck("trunk", "today", Check.at_most("expected sliding distance", 0.04, 0.1, "m"),
+    ...                "the ESD of the design's climate at 15 m")
+    >>> for line in study_check_lines([c]):
+    ...     print(line)
+    PASS  trunk / today: the ESD of the design's climate at 15 m: 0.04 m <= 0.1 m
+    verdict: PASS (every requirement met)
+    """
+    lines = [f"{c.check.verdict}  {c.section} / {c.scenario}: {c.basis}: {_length(c.check.value)} "
+             f"{c.check.relation} {_length(c.check.required)}" for c in checks]
+    bad = sum(not c.passed for c in checks)
+    lines.append("verdict: PASS (every requirement met)" if bad == 0
+                 else f"verdict: FAIL ({bad} of {len(checks)} requirements not met)")
+    return lines
+
+
+def study_checks_json(checks: Sequence[StudyCheck]) -> list[dict[str, Any]]:
+    """``[{"section", "scenario", "name", "basis", "value", "required", "relation", "unit", "pass"}]``
+    (numbers to 12 digits; a value not found is null)."""
+    return [{"section": c.section, "scenario": c.scenario, "name": c.check.name, "basis": c.basis,
+             "value": json_number(c.check.value), "required": json_number(c.check.required),
+             "relation": c.check.relation, "unit": c.check.unit, "pass": c.passed} for c in checks]

@@ -22,6 +22,7 @@ from typing import Any, TypeVar
 import numpy as np
 
 from .engine import BLOCK, BlockResult, YearStats, simulate_blocks
+from .finite import quiet_arithmetic
 from .model import Caisson, LifetimeModel
 
 __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
@@ -82,8 +83,10 @@ def make_chunks(trials: int, seed: int, chunk: int = DEFAULT_CHUNK) -> list[Chun
 
 def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk,
               guides: int = 0) -> BlockResult:
-    """Simulate one chunk's blocks and keep its share of the lifetimes (``guides``: :func:`run_chunks`)."""
-    parts = simulate_blocks(caissons, model, chunk.streams, guides=guides, keep=chunk.keep)
+    """Simulate one chunk's blocks and keep its share of the lifetimes (``guides``: :func:`run_chunks`);
+    numpy's warnings silenced, the results are checked (:mod:`regimemap.lifetime.finite`)."""
+    with quiet_arithmetic():
+        parts = simulate_blocks(caissons, model, chunk.streams, guides=guides, keep=chunk.keep)
     sliding = np.concatenate([p.sliding for p in parts], axis=1)[:, :chunk.keep]
     max_storm = np.concatenate([p.max_storm for p in parts], axis=1)[:, :chunk.keep]
     storms = np.concatenate([p.storms for p in parts])[:chunk.keep]

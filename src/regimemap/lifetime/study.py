@@ -11,10 +11,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ..mechanics.checks import Check
 from ..mechanics.notices import Notice
 from ..mechanics.records import Field, Record
 
-__all__ = ["StudyRecord", "StudyRow"]
+__all__ = ["StudyCheck", "StudyRecord", "StudyRow"]
 
 
 @dataclass(frozen=True)
@@ -83,3 +84,30 @@ class StudyRecord(Record):
         """The rows of one section and/or one scenario (None: all)."""
         return tuple(r for r in self.rows if (section is None or r.section == section)
                      and (scenario is None or r.scenario == scenario))
+
+
+@dataclass(frozen=True)
+class StudyCheck:
+    """The requirement of one section under one scenario (``regimemap study --check``).
+
+    Attributes
+    ----------
+    section, scenario : str
+    check : Check
+        The value against the limit: the ESD [m] against the section's target, or the width
+        found for the target [m] against the section's width.  A value that is not finite
+        (no width found) never passes.
+    basis : str
+        What was judged, in words: which width and which ESD (of the design's climate, or at
+        the climate band's upper level), or which width.
+    """
+
+    section: str
+    scenario: str
+    check: Check
+    basis: str
+
+    @property
+    def passed(self) -> bool:
+        """Whether the requirement is met."""
+        return self.check.passed

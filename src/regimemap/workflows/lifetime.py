@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
+from ..lifetime.finite import quiet_arithmetic, require_finite
 from ..lifetime.results import STATISTICS
 from ._lifetime_design import LifetimeDesign, read_lifetime_design
 from ._record import Field, Notice, Record
@@ -331,8 +332,10 @@ def run_lifetime(design: LifetimeDesign | Design | str | Path, *, trials: int | 
     bars: Progress = _no_bar if progress is None else progress
     root = inputs.spec.seed if seed is None else seed
     t0 = time.perf_counter()
-    with bars(n, "lifetimes") as step:
+    with bars(n, "lifetimes") as step, quiet_arithmetic():
         result = lifetime_sliding(inputs.caisson, inputs.model, n, root, progress=step, **run)
+    require_finite("the lifetime sliding", result.sliding)
+    require_finite("the expected sliding by year", result.by_year)
     result = judge_lifetime(result, req)
     seconds = time.perf_counter() - t0
     band, band_seconds = _band(inputs, n, result.seed, run, bars)
@@ -388,10 +391,11 @@ def run_chart(design: LifetimeDesign | Design | str | Path, widths: Any, *, targ
     goal = req.target if target is None else float(target)
     t0 = time.perf_counter()
     # the chart, then at most one bisection run per halving of a chart step to the tolerance
-    with bars(n * (1 + bisection_steps(ws[1] - ws[0], tol)), "design chart") as step:
+    with bars(n * (1 + bisection_steps(ws[1] - ws[0], tol)), "design chart") as step, quiet_arithmetic():
         chart = design_chart(inputs.caisson, inputs.model, ws, n, root, progress=step, target=goal,
                              sf_impulsive=inputs.design.caisson.impulsive, tolerance=tol,
                              failure_sliding=req.failure_sliding, **run)
+    require_finite("the design chart's ESD", chart.expected_sliding)
     seconds = time.perf_counter() - t0
     problem = chart.bracket_problem()
     notices: tuple[Notice, ...] = ()

@@ -24,7 +24,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..lifetime.study import StudyRecord, StudyRow
+from ..lifetime.finite import require_finite
+from ..lifetime.study import StudyCheck, StudyRecord, StudyRow
+from ..mechanics.checks import Check
 from ..mechanics.notices import Notice
 from .study_tasks import LIMITS, StudyTask, run_task, task_seed
 
@@ -32,7 +34,7 @@ if TYPE_CHECKING:
     from regimemap.io.study import SectionSpec, Study
     from regimemap.io.study_store import StudyStore
 
-__all__ = ["BAND_LEVEL", "StudyRecord", "StudyRow", "run_study", "study_tasks"]
+__all__ = ["BAND_LEVEL", "StudyCheck", "StudyRecord", "StudyRow", "run_study", "study_checks", "study_tasks"]
 
 #: Level of the climate band (the replicates' percentile interval), as ``regimemap lifetime``'s.
 BAND_LEVEL = 0.9
@@ -57,8 +59,15 @@ def study_tasks(study: Study, climates: list[Any] | None = None) -> Iterator[tup
                                  model=model if climate is None else model.with_(climate=climate),
                                  widths=section.widths, trials=study.trials, seed=task_seed(study.seed, i, r),
                                  target=section.target, tolerance=section.tolerance,
-                                 sf_impulsive=section.design.caisson.impulsive)
+                                 sf_impulsive=section.design.caisson.impulsive,
+                                 label=_label(study, section, scenario.name, r))
                 yield task_name(i, j, r), task
+
+
+def _label(study: Study, section: SectionSpec, scenario: str, replicate: int) -> str:
+    """A task in words, for its messages: the study file, the section, the scenario, the climate."""
+    climate = "" if replicate == 0 else f", bootstrap climate {replicate}"
+    return f"{study.source}: section {section.name!r}, scenario {scenario!r}{climate}"
 
 
 def _climates(study: Study) -> list[Any] | None:
@@ -136,7 +145,7 @@ def _dask(todo: Iterator[tuple[str, StudyTask]], scheduler: str,
 
 
 def run_study(study: Study | str | Path, *, jobs: int = 1, scheduler: str | None = None,
-              store: str | Path | None = None, resume: bool = False,
+              store: str | Path | None = None, resume: bool = False, overwrite: bool = False,
               progress: Callable[[int, int], None] | None = None) -> StudyRecord:
     """Run a study: every section under every scenario (and climate replicate), stored as it goes.
 
@@ -154,6 +163,11 @@ def run_study(study: Study | str | Path, *, jobs: int = 1, scheduler: str | None
         None: none (the results are kept in memory).
     resume : bool, optional
         Run only the tasks missing from ``store``.
+    overwrite : bool, optional
+        Replace the study store at ``store`` (this study's or another's): the run is stored
+        in a new folder beside it, which replaces the old one only once every task is
+        stored (:func:`regimemap.io.study_store.replacing_store`); an interrupted or failed
+        run leaves the old store as it was.  Not with ``resume``.
     progress : callable, optional
         ``progress(done, total)`` after each task (and once at the start).
 
@@ -166,20 +180,34 @@ def run_study(study: Study | str | Path, *, jobs: int = 1, scheduler: str | None
     regimemap.io.study.StudyFileError
         The study file is refused.
     regimemap.io.study_store.StudyStoreError
-        The store is another study's, or this study's without ``resume``.
+        The store is another study's, or this study's without ``resume`` or ``overwrite``
+        (or, with ``overwrite``, a folder that is not a study store).
     regimemap.lifetime.ClusterUnavailable
         Dask is missing or its scheduler cannot be reached.
+    regimemap.lifetime.finite.NonFiniteResult
+        A task's result is not finite (nothing of it is stored; the tasks stored stay).
     """
     from regimemap.io.study import read_study
-    from regimemap.io.study_store import StudyStore
+    from regimemap.io.study_store import StudyStore, replacing_store
 
     s = study if not isinstance(study, (str, Path)) else read_study(study)
+    if resume and overwrite:
+        raise ValueError("resume and overwrite exclude each other: resume finishes a store, overwrite "
+                         "replaces it")
     climates = _climates(s)
     total = len(s.sections) * len(s.scenarios) * (1 + len(climates or []))
-    kept: StudyStore | None = None
+    with contextlib.ExitStack() as stack:
+        kept: StudyStore | None = None
+        if store is not None:
+            kept = (stack.enter_context(replacing_store(store, s.study_hash, s.source, total)) if overwrite
+                    else StudyStore(store, s.study_hash, s.source, total, resume=resume))
+        return _run(s, climates, total, kept, jobs, scheduler, progress)
+
+
+def _run(s: Study, climates: list[Any] | None, total: int, kept: StudyStore | None, jobs: int,
+         scheduler: str | None, progress: Callable[[int, int], None] | None) -> StudyRecord:
+    """The tasks missing from ``kept`` (all without a store), stored as they finish; the record."""
     memory: dict[str, dict[str, Any]] = {}
-    if store is not None:
-        kept = StudyStore(store, s.study_hash, s.source, total, resume=resume)
     have = kept.done() if kept is not None else set()
     done = len(have)
     if progress is not None:
@@ -226,11 +254,14 @@ def _assemble(s: Study, climates: list[Any] | None, kept: StudyStore | None,
         got = kept.load(name) if kept is not None else memory.get(name)
         if got is None:  # pragma: no cover - every task was run above
             raise RuntimeError(f"task {name} has no result")
+        where = f"{kept.path(name)}" if kept is not None else f"task {name}"
+        for key in ("esd", "exceedance", "by_year", "chart_esd"):  # a store written before the check
+            require_finite(f"the stored {key}", got.get(key, []), where)
         return got
 
     n_rep = len(climates or [])
     rows: list[StudyRow] = []
-    notices: list[Notice] = []
+    notices: list[Notice] = list(s.notices)
     for i, section in enumerate(s.sections):
         for j, scenario in enumerate(s.scenarios):
             main = get(task_name(i, j, 0))
@@ -278,3 +309,70 @@ def _rows(s: Study, section: SectionSpec, scenario: str, main: dict[str, Any],
 
 def _nan(x: Any) -> float:
     return math.nan if x is None else float(x)
+
+
+def study_checks(study: Study, record: StudyRecord) -> tuple[StudyCheck, ...]:
+    """The requirement of each section under each scenario, in the study's order.
+
+    A section of fixed widths meets its ``[lifetime] target`` (the tolerable ESD) when one of its
+    widths does: the narrowest that does is named (none: the widest, which fails).  A section with
+    a ``target`` meets it when the width found is at most the section's ``[caisson] width``.  The
+    ESD judged is the row's upper end of the climate band when the row holds one (a record
+    climate with ``climate_replicates``), else the ESD of the design's climate; for a target, the
+    width at the band's upper level when the row holds it.  The basis says which.
+
+    Parameters
+    ----------
+    study : Study
+        The study run (its sections' targets and widths).
+    record : StudyRecord
+        Its record (:func:`run_study`).
+
+    Returns
+    -------
+    tuple of StudyCheck
+        One per section x scenario.
+    """
+    out = []
+    for section in study.sections:
+        for scenario in study.scenarios:
+            rows = record.rows_for(section.name, scenario.name)
+            out.append(StudyCheck(section.name, scenario.name, *_check(section, rows)))
+    return tuple(out)
+
+
+def _widths_text(widths: tuple[float, ...]) -> str:
+    return ", ".join(f"{w:g}" for w in widths) + " m"
+
+
+def _check(section: SectionSpec, rows: tuple[StudyRow, ...]) -> tuple[Check, str]:
+    """The check of a section under one scenario (its ``rows``) and its basis in words."""
+    if section.target is not None:
+        own = section.design.caisson.width
+        row = rows[0] if rows else None
+        upper = None if row is None else row.required_width_upper
+        found = None if row is None else (upper if upper is not None else row.required_width)
+        which = "at the climate band's upper level" if upper is not None else "of the design's climate"
+        basis = (f"the width for ESD {section.target:g} m ({which}) against the section's [caisson] width"
+                 if found is not None else
+                 f"the width for ESD {section.target:g} m (not found between {_widths_text(section.widths)}) "
+                 "against the section's [caisson] width")
+        width = math.nan if found is None else found
+        return Check.at_most("width for the target ESD", width, own, "m"), basis
+    target = section.design.lifetime_spec().target
+    banded = bool(rows) and all(r.band is not None for r in rows)
+
+    def esd(r: StudyRow) -> float:
+        return r.band[1] if r.band is not None else r.expected_sliding
+
+    which = (f"the ESD at the upper end of the {BAND_LEVEL:.0%} climate band" if banded
+             else "the ESD of the design's climate")
+    passing = [r for r in rows if esd(r) <= target]
+    if len(rows) == 1:
+        chosen, how = rows[0], ""
+    elif passing:
+        chosen, how = passing[0], f", the narrowest of {_widths_text(section.widths)} that meets it"
+    else:
+        chosen, how = rows[-1], f", the widest of {_widths_text(section.widths)}; none meets it"
+    basis = f"{which} at {chosen.width:g} m{how}"
+    return Check.at_most("expected sliding distance", esd(chosen), target, "m"), basis
