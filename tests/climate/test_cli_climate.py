@@ -57,7 +57,7 @@ def test_text_report_annual_maxima_needs_years(run_cli):
     r = ok(run_cli(["climate", OREGON, "--threshold", "4.5", "--gap", "24", "--bootstrap", "20"]))
     assert "peaks over threshold: u = 4.500 m (given), gap 24 h" in r.stdout
     assert "90 % interval" in r.stdout and "50 years" in r.stdout
-    assert "posterior interval (grid posterior" in r.stdout
+    assert "posterior draws (a grid posterior" in r.stdout
 
 
 @pytest.mark.render

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..climate import ClimateOptions
-    from ..climate.analysis import ClimateResult, Curves, Diagnostics
+    from ..climate.analysis import ClimateResult, Curves, Diagnostics, Sensitivity
     from ..workflows.climate import ClimateRecord
 
 __all__ = ["climate_cmd"]
@@ -156,8 +156,9 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     title = Path(record).name
     written = write_files(outputs, lambda: _climate_figure(result.result, result.curves, title))
     if diagnostics is not None and result.diagnostics is not None:
-        found, threshold_used = result.diagnostics, result.result.fit.threshold
-        written += write_files([diagnostics], lambda: _diagnostics_figure(found, threshold_used, title))
+        found, threshold_used, moved = result.diagnostics, result.result.fit.threshold, result.sensitivity
+        written += write_files([diagnostics],
+                               lambda: _diagnostics_figure(found, threshold_used, title, moved))
     if as_json:
         click.echo(json.dumps(result.report_json(written), indent=2, allow_nan=False))
         return
@@ -188,8 +189,10 @@ def _climate_figure(result: ClimateResult, curves: Curves, title: str) -> Figure
     return draw(result, curves, title)
 
 
-def _diagnostics_figure(found: Diagnostics, threshold: float | None, title: str) -> Figure:
-    """Mean residual life and parameter stability, the threshold used marked."""
+def _diagnostics_figure(found: Diagnostics, threshold: float | None, title: str,
+                        moved: Sensitivity | None) -> Figure:
+    """Mean residual life, parameter stability and the return value across thresholds, the
+    threshold used marked."""
     from ..drawing.climate.figures import diagnostics_figure as draw
 
-    return draw(found, threshold, title)
+    return draw(found, threshold, title, sensitivity=moved)

@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 from ._record import Field, Notice, Record
 
 if TYPE_CHECKING:
-    from ..climate.analysis import ClimateOptions, ClimateResult, Curves, Diagnostics
+    from ..climate.analysis import ClimateOptions, ClimateResult, Curves, Diagnostics, Sensitivity
     from ..climate.record import Record as WaveRecord
 
 __all__ = ["ClimateRecord", "run_climate"]
@@ -44,6 +44,9 @@ class ClimateRecord(Record):
         The return-level curve with its band and the observations (the figure's data).
     diagnostics : Diagnostics or None
         Mean residual life and parameter stability over thresholds; None unless asked for.
+    sensitivity : Sensitivity or None
+        The 50-year value and its interval refitted above the 98 to 99.7 % quantiles (peaks over
+        a threshold with an interval; else None).
     """
 
     CAPTION: ClassVar[str] = "Wave climate"
@@ -63,6 +66,7 @@ class ClimateRecord(Record):
     result: ClimateResult
     curves: Curves
     diagnostics: Diagnostics | None
+    sensitivity: Sensitivity | None = None
 
     @property
     def return_value_text(self) -> str:
@@ -78,13 +82,13 @@ class ClimateRecord(Record):
         """The report for people (:func:`regimemap.io.climate.format_climate`)."""
         from ..io.climate import format_climate
 
-        return format_climate(self.result, source=self.source)
+        return format_climate(self.result, source=self.source, sensitivity=self.sensitivity)
 
     def report_json(self, files: list[str] | tuple[str, ...] = ()) -> dict[str, Any]:
         """The JSON-ready report (:func:`regimemap.io.climate.climate_json`), with the ``files`` written."""
         from ..io.climate import climate_json
 
-        out = climate_json(self.result, source=self.source)
+        out = climate_json(self.result, source=self.source, sensitivity=self.sensitivity)
         if files:
             out["files"] = list(files)
         return out
@@ -121,7 +125,7 @@ def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None 
         message names the file).
     """
     from ..climate import ClimateOptions, analyse
-    from ..climate.analysis import curves
+    from ..climate.analysis import curves, sensitivity
     from ..climate.analysis import diagnostics as threshold_diagnostics
 
     opts = ClimateOptions() if options is None else options
@@ -137,7 +141,7 @@ def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None 
     am = opts.method == "annual-maxima"
     notices = tuple(Notice("record-quality", f"{source}: {w}")
                     for w in wave.quality.warnings(opts.coverage if am else None))
-    notices += tuple(Notice("fit", f"{source}: {n}") for n in result.notes)
-    found = threshold_diagnostics(wave, opts.gap_hours) if diagnostics else None
+    notices += tuple(Notice(n.code, f"{source}: {n.message}", n.quantity, n.value) for n in result.notices)
+    found = threshold_diagnostics(wave, opts.gap_hours, confidence=opts.confidence) if diagnostics else None
     return ClimateRecord(source=source, options=opts, notices=notices, result=result, curves=curves(result),
-                         diagnostics=found)
+                         diagnostics=found, sensitivity=sensitivity(wave, opts))
