@@ -59,7 +59,7 @@ DEFAULT_INTERVAL = "posterior"
 #: The GPD shape's prior range (uniform; the likelihood is unbounded below -1).
 XI_PRIOR = (-1.0, 1.5)
 #: Posterior draws behind an interval (at least; the replicate fits are the first of them).
-POSTERIOR_DRAWS = 4000
+POSTERIOR_DRAWS = 20_000
 #: Log-likelihood drop [nepers] below its maximum that bounds the grid (e^-16: nothing left).
 DROP = 16.0
 #: Points per axis of the coarse and of the fine grid, by number of parameters.
