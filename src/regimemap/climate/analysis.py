@@ -1,6 +1,8 @@
-"""From a record to return values with their confidence band: the steps of ``regimemap climate``.
+"""From a record to return values with their intervals: the steps of ``regimemap climate``.
 
-numpy and scipy: threshold, storms (or annual maxima), fit, bootstrap, return values.
+numpy and scipy: threshold, storms (or annual maxima), fit, interval
+(:mod:`regimemap.climate.intervals`), the fit's guards (:mod:`regimemap.climate.guards`), return
+values; the curves the figures draw, the threshold diagnostics and the threshold sensitivity.
 """
 
 from __future__ import annotations
@@ -180,7 +182,7 @@ class ClimateResult:
 
 
 def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
-    """Threshold, storms or annual maxima, fit, bootstrap and return values.
+    """Threshold, storms or annual maxima, fit, interval, guards and return values.
 
     Raises
     ------

@@ -1,10 +1,10 @@
-"""The climate workflow: return values of the significant wave height, with their bands, from a record.
+"""The climate workflow: return values of the significant wave height, with their intervals, from a record.
 
 :func:`run_climate` reads a wave record (:func:`regimemap.io.records.read_record`; or takes a
 :class:`regimemap.climate.record.Record` made from arrays with
 :func:`regimemap.climate.make_record`), runs the extreme-value analysis
 (:func:`regimemap.climate.analyse`: quality control, storms or annual maxima, the maximum
-likelihood fit, the bootstrap bands) and computes what its figures draw (the return-level
+likelihood fit, the intervals, the fit's warnings) and computes what its figures draw (the return-level
 curve, the observations at their plotting positions and, when asked, the threshold
 diagnostics).  It returns one :class:`ClimateRecord`; ``regimemap climate`` is this call
 followed by writing the record.
@@ -97,7 +97,7 @@ class ClimateRecord(Record):
 def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None = None, *,
                 time: str | None = None, hs: str | None = None, period: str | None = None,
                 drop_spikes: bool = False, diagnostics: bool = False) -> ClimateRecord:
-    """Return values of the significant wave height, with bootstrap bands, from a wave record.
+    """Return values of the significant wave height, with their intervals, from a wave record.
 
     Parameters
     ----------
@@ -106,7 +106,7 @@ def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None 
         :class:`regimemap.climate.record.Record` made from arrays.
     options : ClimateOptions, optional
         How to analyse it (default :class:`~regimemap.climate.ClimateOptions`: peaks over the
-        99.5 % quantile, a 48-hour gap, a GPD, 200 bootstrap replicates).
+        99.5 % quantile, a 48-hour gap, a GPD, the posterior interval with 200 replicate fits).
     time, hs, period : str, optional
         The columns of a file (CSV, NetCDF; NDBC: the period column).
     drop_spikes : bool, optional
