@@ -21,12 +21,14 @@ _NAMES = {"gpd": "generalised Pareto", "weibull": "Weibull (shape fixed)", "gumb
 
 _METHOD_TEXT = {
     "posterior": "{level} equal-tailed interval of {draws} posterior draws (a grid posterior: prior flat "
-                 "in ln sigma and in xi on [-1, 1.5], the storm rate's Jeffreys posterior; {n} kept as "
-                 "replicate fits)",
-    "profile": "{level} profile-likelihood interval of the storm count and the peaks ({n} replicate fits "
-               "drawn from the normalised likelihood)",
+                 "in {prior}; {n} kept as replicate fits)",
+    "profile": "{level} profile-likelihood interval of {what} ({n} replicate fits drawn from the "
+               "normalised likelihood)",
     "bootstrap": "{level} percentile interval of {n} non-parametric bootstrap replicates",
 }
+_PRIOR_TEXT = {"gpd": "ln sigma and in xi on [-1, 1.5], the storm rate's Jeffreys posterior",
+               "weibull": "ln A with k fixed, the storm rate's Jeffreys posterior",
+               "gumbel": "B and ln A", "gev": "mu, ln sigma and xi on [-1, 1.5]"}
 
 
 def _num(v: float | None) -> float | None:
@@ -130,7 +132,9 @@ def format_climate(result: ClimateResult, source: str | None = None,
         b = result.band
         fitted = f", {len(b.fits)} fitted" if b.failed else ""
         draws = len(b.draws["rate"]) if "rate" in b.draws else b.requested
-        method = _METHOD_TEXT[b.method].format(level=f"{100 * o.confidence:g} %", n=b.requested, draws=draws)
+        what = "the storm count and the peaks" if result.storms is not None else "the annual maxima"
+        method = _METHOD_TEXT[b.method].format(level=f"{100 * o.confidence:g} %", n=b.requested, draws=draws,
+                                               prior=_PRIOR_TEXT[f.distribution], what=what)
         lines.append(f"  interval: {method}{fitted} (seed {b.seed})")
     lines.append("")
     lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % interval" if result.band else ""))
