@@ -187,3 +187,32 @@ def test_threshold_sensitivity_refits_each_quantile():
     ok = np.isfinite(s.value)
     assert ok.sum() >= 4 and np.all(s.lower[ok] < s.upper[ok])
     assert sensitivity(rec, ClimateOptions(replicates=0)) is None
+
+
+def test_stability_panels_have_their_intervals():
+    from regimemap.climate.analysis import diagnostics
+
+    d = diagnostics(read_record(DATA / "ndbc44007_1996_hs_tz.txt.gz"), points=6, confidence=0.9)
+    assert d.xi_interval.shape == (6, 2) and d.sigma_star_interval.shape == (6, 2)
+    fitted = np.isfinite(d.xi)
+    assert fitted.sum() >= 3
+    assert np.all(np.isnan(d.xi_interval[~fitted]))
+    lo, hi = d.xi_interval[fitted].T
+    assert np.all(lo < hi) and np.all(lo >= -1.0) and np.all(hi <= 1.5)
+    s_lo, s_hi = d.sigma_star_interval[fitted].T
+    assert np.all(s_lo < s_hi)
+
+
+@pytest.mark.render
+@pytest.mark.parametrize(("method", "label"), [("posterior", "90 % posterior interval"),
+                                               ("profile", "90 % profile-likelihood interval"),
+                                               ("bootstrap", "90 % bootstrap interval")])
+def test_the_figure_names_the_method(method, label):
+    from regimemap.climate.analysis import curves
+    from regimemap.drawing.climate.figures import climate_figure
+
+    r = analyse(read_record(DATA / "ndbc44007_1996_hs_tz.txt.gz"),
+                ClimateOptions(threshold=("quantile", 0.99), interval=method, replicates=20))
+    fig = climate_figure(r, curves(r))
+    ax = next(a for a in fig.axes if a.get_label() == "return levels")
+    assert label in [t.get_text() for t in ax.get_legend().get_texts()]
