@@ -12,9 +12,17 @@ from dataclasses import InitVar, dataclass, field, replace
 import numpy as np
 
 from ..mechanics.notices import Notice
-from .fits import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Band, Fit, fit, return_values
+from .fits import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Fit, fit
 from .guards import endpoint, fit_notices, limit_notices
-from .intervals import DEFAULT_INTERVAL, INTERVALS, grid_quantiles, interval_band, likelihood_grid
+from .intervals import (
+    DEFAULT_INTERVAL,
+    INTERVALS,
+    Band,
+    grid_quantiles,
+    interval_band,
+    likelihood_grid,
+    return_values,
+)
 from .peaks import (
     DEFAULT_COVERAGE,
     DEFAULT_GAP,

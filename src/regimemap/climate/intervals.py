@@ -25,7 +25,7 @@ known truth -- docs/guide/wave-record.md)
     leaves inside the cut.  Its replicate fits are draws from the likelihood normalised over the
     same grid (the posterior's, as the prior is flat in the grid's coordinates).
 ``bootstrap``
-    The non-parametric percentile bootstrap (:func:`regimemap.climate.fits.bootstrap`): honest
+    The non-parametric percentile bootstrap (:func:`bootstrap`): honest
     about what it is, and known to cover less than it claims on short records (it cannot resample
     a storm larger than the record's largest).
 
@@ -45,10 +45,10 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import stats
 
-from .fits import AM_DISTRIBUTIONS, GEV_XI, Band, Fit, return_levels
+from .fits import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Fit, fit, return_levels
 
-__all__ = ["DEFAULT_INTERVAL", "INTERVALS", "POSTERIOR_DRAWS", "XI_PRIOR", "Grid", "grid_quantiles",
-           "interval_band", "likelihood_grid", "profile_interval"]
+__all__ = ["DEFAULT_INTERVAL", "INTERVALS", "POSTERIOR_DRAWS", "XI_PRIOR", "Band", "Grid", "bootstrap",
+           "grid_quantiles", "interval_band", "likelihood_grid", "profile_interval", "return_values"]
 
 FloatArray = NDArray[np.float64]
 
@@ -104,6 +104,132 @@ class Grid:
     high: FloatArray
     count: int
     years: float | None
+
+
+@dataclass(frozen=True)
+class Band:
+    """The uncertainty of a fit: its interval method, the draws behind it and the replicate fits.
+
+    Attributes
+    ----------
+    fits : list of Fit
+        The replicate fits (each with its own rate) the lifetime's climate replicates are drawn
+        from: posterior draws (``posterior``), draws from the normalised likelihood (``profile``),
+        the refits that could be fitted (``bootstrap``).
+    requested : int
+        Replicates asked for.
+    seed : int
+        The root seed.
+    method : str
+        ``posterior``, ``profile`` or ``bootstrap`` (:data:`INTERVALS`).
+    draws : dict of ndarray
+        The parameter draws behind a ``posterior`` or ``bootstrap`` interval (and the ``rate``).
+    grid : Grid or None
+        The likelihood grid (``posterior``, ``profile``).
+    distribution, threshold : str or None, float or None
+        The fit's distribution and threshold (the draws' return values).
+    """
+
+    fits: list[Fit] = field(repr=False)
+    requested: int
+    seed: int
+    method: str = "bootstrap"
+    draws: dict[str, FloatArray] = field(default_factory=dict, repr=False)
+    grid: Grid | None = field(default=None, repr=False)
+    distribution: str | None = None
+    threshold: float | None = None
+
+    @property
+    def failed(self) -> int:
+        """Replicates that had too few values to fit (bootstrap; 0 for the other methods)."""
+        return self.requested - len(self.fits) if self.method == "bootstrap" else 0
+
+    def return_values(self, years: float) -> FloatArray:
+        """Each draw's ``R``-year value (NaN where ``lambda R <= 1``)."""
+        if self.draws:
+            params = {k: v for k, v in self.draws.items() if k != "rate"}
+            assert self.distribution is not None
+            return return_levels(self.distribution, params, self.threshold, self.draws["rate"], years)
+        if not self.fits:
+            return np.zeros(0)
+        first = self.fits[0]
+        params = {k: np.array([f.parameters[k] for f in self.fits]) for k in first.parameters}
+        rates = np.array([f.rate for f in self.fits])
+        return return_levels(first.distribution, params, first.threshold, rates, years)
+
+    def interval(self, years: float, confidence: float) -> tuple[float, float]:
+        """The ``confidence`` interval of the ``R``-year value: equal-tailed quantiles of the draws
+        (``posterior``, ``bootstrap``) or the profile-likelihood interval (``profile``)."""
+        if self.method == "profile":
+            assert self.grid is not None
+            return profile_interval(self.grid, years, confidence)
+        v = self.return_values(years)
+        v = v[np.isfinite(v)]
+        if v.size == 0:
+            return math.nan, math.nan
+        a = 0.5 * (1.0 - confidence)
+        lo, hi = np.quantile(v, [a, 1.0 - a])
+        return float(lo), float(hi)
+
+    def label(self, confidence: float) -> str:
+        """``90 % posterior interval`` (the figures' and the report's name of the band)."""
+        name = {"posterior": "posterior interval", "profile": "profile-likelihood interval",
+                "bootstrap": "bootstrap interval"}[self.method]
+        return f"{100 * confidence:g} % {name}"
+
+
+
+def bootstrap(values: ArrayLike, estimate: Fit, n: int, seed: int, years: float | None = None,
+              shape: float = 2.0) -> Band:
+    """Non-parametric bootstrap of a fit: each replicate resamples the values with replacement --
+    their number drawn from a Poisson distribution with the observed count as its mean for peaks
+    over a threshold (the storms of a record are a Poisson process, and ``lambda = N/years`` varies
+    with their number), the number of years fixed for annual maxima -- and refits (Efron &
+    Tibshirani 1993, Ch. 13, percentile intervals).
+
+    Parameters
+    ----------
+    values : array_like
+        The values fitted.
+    estimate : Fit
+        The fit of ``values`` (its distribution, threshold; the start of every refit).
+    n : int
+        Replicates (>= 1).
+    seed : int
+        Root seed: replicate ``i`` draws from ``SeedSequence(seed).spawn(n)[i]``.
+    years : float, optional
+        Record length: for peaks over a threshold each replicate's rate is its count / ``years``.
+    shape : float, optional
+        Weibull ``k``.
+
+    Returns
+    -------
+    Band
+    """
+    x = np.asarray(values, dtype=np.float64).ravel()
+    pot = estimate.distribution in POT_DISTRIBUTIONS
+    fits = []
+    for child in np.random.SeedSequence(seed).spawn(n):
+        rng = np.random.Generator(np.random.PCG64(child))
+        m = int(rng.poisson(x.size)) if pot else x.size
+        sample = x[rng.integers(0, x.size, m)]
+        rate = m / years if (pot and years) else estimate.rate
+        try:
+            fits.append(fit(sample, estimate.distribution, estimate.threshold, rate, shape,
+                            start=estimate.parameters))
+        except ValueError:
+            continue
+    return Band(fits=fits, requested=n, seed=seed)
+
+
+def return_values(estimate: Fit, band: Band | None, periods: list[float],
+                  confidence: float) -> list[dict[str, float | None]]:
+    """``[{period, value, lower, upper}]`` for each return period (bounds None without a band)."""
+    out: list[dict[str, float | None]] = []
+    for R in periods:
+        lo, hi = band.interval(R, confidence) if band is not None else (None, None)
+        out.append({"period": float(R), "value": estimate.return_value(R), "lower": lo, "upper": hi})
+    return out
 
 
 def _parameters(distribution: str, c: FloatArray, shape: float) -> dict[str, FloatArray]:
@@ -341,8 +467,6 @@ def interval_band(values: ArrayLike, estimate: Fit, method: str, n: int, seed: i
     -------
     Band
     """
-    from .fits import bootstrap
-
     if method not in INTERVALS:
         raise ValueError(f"interval must be one of {', '.join(INTERVALS)}, got {method!r}")
     if method == "bootstrap":
