@@ -244,7 +244,8 @@ class Curves:
     level : ndarray
         The fit's return values there [m].
     lower, upper : ndarray or None
-        The band's bounds there (None without a bootstrap).
+        The interval's bounds there (None without replicates): quantiles of the same draws, or
+        the profile over the same grid, at every period (no refit).
     observed : ndarray
         The values fitted, ascending [m].
     observed_periods : ndarray
