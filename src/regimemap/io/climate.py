@@ -173,7 +173,7 @@ def climate_band_json(band: ClimateBand) -> dict[str, Any]:
 def climate_band_lines(band: ClimateBand) -> list[str]:
     """The band for people: two lines."""
     return [f"ESD with the climate's uncertainty {band.expected_sliding:.3g} m ± {band.std_error:.2g} m "
-            f"({band.replicates} bootstrap climates x {band.trials} lifetimes)",
+            f"({band.replicates} replicate climates of the record x {band.trials} lifetimes)",
             f"  {100 * band.level:g} % climate band: {band.lower:.3g} m to {band.upper:.3g} m"]
 
 
@@ -194,7 +194,7 @@ def chart_band_lines(band: ChartBand) -> list[str]:
     """The chart's climate band for people: the width for the target at the band's upper level."""
     top = f"{100 * (0.5 + 0.5 * band.level):g} %"
     head = (f"at the upper end of the {100 * band.level:g} % climate band ({top} quantile of "
-            f"{band.replicates} bootstrap climates x {band.trials} lifetimes per width):")
+            f"{band.replicates} replicate climates x {band.trials} lifetimes per width):")
     w = band.width_for_target
     if w is None:
         return [head, f"  no width of the chart has ESD <= {band.target:g} m"]
