@@ -216,3 +216,27 @@ def test_the_figure_names_the_method(method, label):
     fig = climate_figure(r, curves(r))
     ax = next(a for a in fig.axes if a.get_label() == "return levels")
     assert label in [t.get_text() for t in ax.get_legend().get_texts()]
+
+
+def test_gev_posterior_on_a_three_dimensional_grid():
+    rng = np.random.default_rng(6)
+    x = stats.genextreme.rvs(0.1, loc=6.0, scale=0.8, size=25, random_state=rng)  # xi = -0.1
+    est = fit(x, "gev")
+    band = interval_band(x, est, "posterior", 10, seed=4)
+    assert band.grid is not None and band.grid.names == ("mu", "ln_sigma", "xi")
+    assert np.all(band.draws["rate"] == 1.0)  # annual maxima: no storm rate to draw
+    lo, hi = band.interval(50.0, 0.9)
+    assert lo < est.return_value(50.0) < hi
+    assert np.all((band.draws["xi"] >= -1.0) & (band.draws["xi"] <= 1.5))
+
+
+def test_the_lifetimes_replicate_climates_are_the_posterior_draws():
+    from regimemap.climate.life import replicate_climates
+
+    r = analyse(read_record(DATA / "ndbc44007_1996_hs_tz.txt.gz"),
+                ClimateOptions(threshold=("quantile", 0.99), replicates=12, seed=8))
+    assert r.band is not None and r.band.method == "posterior"
+    climates = replicate_climates(r)
+    assert len(climates) == 12
+    assert [c.shape for c in climates] == r.band.draws["xi"][:12].tolist()
+    assert [c.storms_per_year for c in climates] == r.band.draws["rate"][:12].tolist()
