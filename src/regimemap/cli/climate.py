@@ -136,7 +136,7 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     "flat" prior), times the storm rate's Jeffreys posterior Gamma(N + 1/2, years).  On records
     of known truth (10 to 40 years, xi from -0.3 to 0.4) its 90 % interval held the true 50-year
     value 89 % of the time (86 to 93 % by case), the profile likelihood's 88 %, the
-    non-parametric bootstrap's 74 % (docs: the wave-record page).  A ten-year record
+    non-parametric bootstrap's 75 % (docs: the wave-record page).  A ten-year record
     cannot pin a 50-year wave: the interval says how little it knows, and a bounded tail
     (xi < 0) fitted to a few storms is warned.  The fit's breakdowns (xi < -0.5, a search
     bound, an end point close to the largest storm, values above 30 m) are warnings;
