@@ -114,7 +114,8 @@ def test_each_method_brackets_the_estimate_of_a_regular_fit(method):
 
 
 def test_options_old_spelling_and_unknown_method():
-    assert ClimateOptions(bootstrap=40).replicates == 40
+    assert ClimateOptions(bootstrap=40).replicates == 40 and ClimateOptions(bootstrap=40).bootstrap == 40
+    assert ClimateOptions().bootstrap == 200  # read back, the old name is the replicates
     assert ClimateOptions().interval == "posterior"
     with pytest.raises(ValueError, match="interval must be one of posterior, profile, bootstrap"):
         ClimateOptions(interval="bayes").check()

@@ -136,6 +136,15 @@ class ClimateOptions:
             raise ValueError(f"replicates must be a number >= 0, got {self.replicates!r}")
 
 
+def _old_bootstrap(self: ClimateOptions) -> int:
+    """The old name of ``replicates``, read-only."""
+    return self.replicates
+
+
+# ``bootstrap`` is an init-only argument; read back, it is ``replicates`` (not the InitVar's default)
+ClimateOptions.bootstrap = property(_old_bootstrap)  # type: ignore[attr-defined]
+
+
 @dataclass(frozen=True)
 class ClimateResult:
     """The analysis of a record.
