@@ -267,6 +267,7 @@ DRAWING_MAY_IMPORT = {
     "climate.analysis.ClimateResult": "a computed wave climate, a record",
     "climate.analysis.Curves": "computed return-level curves, a record",
     "climate.analysis.Diagnostics": "computed threshold diagnostics, a record",
+    "climate.analysis.Sensitivity": "a computed threshold sensitivity, a record",
 }
 #: Computations drawing/ still makes itself, to be moved to its callers: (module, name).
 DRAWING_STILL_COMPUTES: set[tuple[str, str]] = set()

@@ -1,4 +1,4 @@
-"""Extreme-value fits of storm peaks and annual maxima, and their bootstrap.
+"""Extreme-value fits of storm peaks and annual maxima, by maximum likelihood.
 
 numpy and scipy.stats, by maximum likelihood:
 
@@ -17,30 +17,23 @@ numpy and scipy.stats, by maximum likelihood:
 
 In every case :math:`F(H_R) = 1 - 1/(\\lambda R)` (:math:`\\lambda = 1` for annual maxima).
 
-The confidence intervals are a non-parametric bootstrap with percentile intervals (Efron &
-Tibshirani 1993, Ch. 13): each replicate resamples the observed peaks with replacement -- their
-number drawn from a Poisson distribution with the observed count as its mean for peaks over a
-threshold (the storms of a record are a Poisson process: how many storms ten years hold is
-itself uncertain, and ``lambda = N/years`` varies with it), the number of years fixed for annual
-maxima -- and refits.  Non-parametric rather than parametric because it does not assume the
-fitted distribution is the true one: a short record's peaks carry the shape's uncertainty
-whatever family is fitted.  Each replicate draws from its own child of one
-:class:`numpy.random.SeedSequence` (``spawn``), so the band is the same in any order or chunking.
+The intervals of the return values (the grid posterior, the profile likelihood, the bootstrap)
+are in :mod:`regimemap.climate.intervals`.
 """
 
 from __future__ import annotations
 
 import math
 import warnings
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 from scipy import optimize, stats
 
-__all__ = ["AM_DISTRIBUTIONS", "GEV_XI", "MIN_MAXIMA", "MIN_PEAKS", "POT_DISTRIBUTIONS", "Band", "Fit",
-           "bootstrap", "fit", "return_levels", "return_values"]
+__all__ = ["AM_DISTRIBUTIONS", "GEV_XI", "MIN_MAXIMA", "MIN_PEAKS", "POT_DISTRIBUTIONS", "Fit", "fit",
+           "return_levels"]
 
 FloatArray = NDArray[np.float64]
 
@@ -271,95 +264,3 @@ def fit(values: ArrayLike, distribution: str, threshold: float | None = None, ra
     return Fit(distribution=distribution, parameters=params,
                threshold=None if distribution in AM_DISTRIBUTIONS else float(threshold),  # type: ignore[arg-type]
                rate=float(rate), n=int(x.size))
-
-
-@dataclass(frozen=True)
-class Band:
-    """Bootstrap replicates of a fit.
-
-    Attributes
-    ----------
-    fits : list of Fit
-        The replicates that could be fitted (each with its own rate).
-    requested : int
-        Replicates drawn.
-    seed : int
-        The root seed.
-    """
-
-    fits: list[Fit] = field(repr=False)
-    requested: int
-    seed: int
-
-    @property
-    def failed(self) -> int:
-        """Replicates that had too few values to fit."""
-        return self.requested - len(self.fits)
-
-    def return_values(self, years: float) -> FloatArray:
-        """Each replicate's ``R``-year value (NaN where ``lambda R <= 1``)."""
-        if not self.fits:
-            return np.zeros(0)
-        first = self.fits[0]
-        params = {k: np.array([f.parameters[k] for f in self.fits]) for k in first.parameters}
-        rates = np.array([f.rate for f in self.fits])
-        return return_levels(first.distribution, params, first.threshold, rates, years)
-
-    def interval(self, years: float, confidence: float) -> tuple[float, float]:
-        """The percentile interval of the ``R``-year value at ``confidence``."""
-        v = self.return_values(years)
-        v = v[np.isfinite(v)]
-        if v.size == 0:
-            return math.nan, math.nan
-        a = 0.5 * (1.0 - confidence)
-        lo, hi = np.quantile(v, [a, 1.0 - a])
-        return float(lo), float(hi)
-
-
-def bootstrap(values: ArrayLike, estimate: Fit, n: int, seed: int, years: float | None = None,
-              shape: float = 2.0) -> Band:
-    """Non-parametric bootstrap of a fit (the module's docstring says why and how).
-
-    Parameters
-    ----------
-    values : array_like
-        The values fitted.
-    estimate : Fit
-        The fit of ``values`` (its distribution, threshold; the start of every refit).
-    n : int
-        Replicates (>= 1).
-    seed : int
-        Root seed: replicate ``i`` draws from ``SeedSequence(seed).spawn(n)[i]``.
-    years : float, optional
-        Record length: for peaks over a threshold each replicate's rate is its count / ``years``.
-    shape : float, optional
-        Weibull ``k``.
-
-    Returns
-    -------
-    Band
-    """
-    x = np.asarray(values, dtype=np.float64).ravel()
-    pot = estimate.distribution in POT_DISTRIBUTIONS
-    fits = []
-    for child in np.random.SeedSequence(seed).spawn(n):
-        rng = np.random.Generator(np.random.PCG64(child))
-        m = int(rng.poisson(x.size)) if pot else x.size
-        sample = x[rng.integers(0, x.size, m)]
-        rate = m / years if (pot and years) else estimate.rate
-        try:
-            fits.append(fit(sample, estimate.distribution, estimate.threshold, rate, shape,
-                            start=estimate.parameters))
-        except ValueError:
-            continue
-    return Band(fits=fits, requested=n, seed=seed)
-
-
-def return_values(estimate: Fit, band: Band | None, periods: list[float],
-                  confidence: float) -> list[dict[str, float | None]]:
-    """``[{period, value, lower, upper}]`` for each return period (bounds None without a band)."""
-    out: list[dict[str, float | None]] = []
-    for R in periods:
-        lo, hi = band.interval(R, confidence) if band is not None else (None, None)
-        out.append({"period": float(R), "value": estimate.return_value(R), "lower": lo, "upper": hi})
-    return out
