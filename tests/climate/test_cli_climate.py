@@ -109,7 +109,8 @@ def test_strict_refuses_warnings(run_cli, tmp_path):
     rec = tmp_path / "spiky.csv"
     rec.write_text("time,hs\n" + "".join(f"{a},{b:.3f}\n" for a, b in zip(t.astype(str), hs)))
     r = ok(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%"]))
-    assert "warning: 1 isolated spike(s) kept and flagged: 2000-02-11T16:00Z" in r.stdout
+    assert f"regimemap: warning: {rec}: 1 isolated spike(s) kept and flagged: 2000-02-11T16:00Z" in r.stderr
+    assert "warning:" not in r.stdout and "isolated spike" not in r.stdout
     failed(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%", "--strict"]),
            "isolated spike", "--strict refuses")
     r = ok(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%", "--drop-spikes", "--json"]))

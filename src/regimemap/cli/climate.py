@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
-from ._check import refuse_notices
+from ._check import refuse_notices, warn
 from ._common import ParamType, output_path, report_written
 from ._inputs import RECORD_FILE
 from ._writing import distinct_files, file_suffix, write_files
@@ -145,6 +145,7 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     if strict:
         refuse_notices(result.notices, ("record-quality", "fit"),
                        "--strict refuses quality-control warnings", "'RECORD'")
+    warn(result.notices)
     title = Path(record).name
     written = write_files(outputs, lambda: _climate_figure(result.result, result.curves, title))
     if diagnostics is not None and result.diagnostics is not None:
