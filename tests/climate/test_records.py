@@ -164,12 +164,12 @@ def test_conflicts_counted_with_the_largest_difference_and_the_period():
     q = make_record("x", t, hs, tz, "Tz").quality
     assert q.duplicates == 4 and q.conflicts is not None
     c = q.conflicts
-    assert (c.count, c.time, c.hs, c.lines) == (3, "2000-01-01T01:00Z", (1.1, 1.4), ())
+    assert (c.count, c.time, c.hs, c.lines, c.period) == (3, "2000-01-01T01:00Z", (1.1, 1.4), (), (5.0, 5.0))
     assert c.hs_spread == pytest.approx(1.7) and c.period_spread == pytest.approx(1.5)
     assert q.warnings()[0].endswith("copies differ by up to 1.70 m in Hs, 1.50 s in Tz")
     only_period = make_record("x", t[[0, 7, 8]], hs[[0, 7, 8]], tz[[0, 7, 8]], "Tz").quality
     assert only_period.conflicts is not None and only_period.conflicts.hs_spread == 0.0
-    assert only_period.warnings()[0].endswith("copies differ by up to 1.50 s in Tz")
+    assert only_period.warnings()[0].endswith("Tz 6.00 s kept, 7.50 s dropped; copies differ by up to 1.50 s in Tz")
 
 
 def test_a_bad_copy_before_the_largest_storm_peak_is_named(tmp_path):

@@ -54,6 +54,8 @@ class Conflicts:
         Its copies' heights [m] (NaN: missing), the kept one first, then the others in file order.
     lines : tuple of int
         The copies' lines in the file, in the order of ``hs`` (empty when the reader gave none).
+    period : tuple of float
+        The copies' periods [s], in the order of ``hs`` (empty without a period).
     hs_spread : float
         The largest difference between the heights of the copies of one time [m].
     period_spread : float
@@ -64,6 +66,7 @@ class Conflicts:
     time: str
     hs: tuple[float, ...]
     lines: tuple[int, ...] = ()
+    period: tuple[float, ...] = ()
     hs_spread: float = 0.0
     period_spread: float = 0.0
 
@@ -71,17 +74,23 @@ class Conflicts:
         """What the quality report says of them, e.g. ``1 repeated time(s) with differing copies,
         the first observed of each kept: 2003-12-07T05:00Z (lines 67644, 67645) Hs 12.10 m kept,
         7.10 m dropped; copies differ by up to 5.00 m in Hs``."""
+        h = np.asarray(self.hs)
+        agree = bool(np.all(h == h[0]) or not np.any(np.isfinite(h)))
+        by_period = agree and len(self.period) == len(self.hs)  # the heights agree: show the periods
+        values, unit = (self.period, "s") if by_period else (self.hs, "m")
+
         def m(v: float) -> str:
-            return "missing" if not np.isfinite(v) else f"{v:.2f} m"
+            return "missing" if not np.isfinite(v) else f"{v:.2f} {unit}"
 
         more = ", ..." if len(self.lines) > 4 else ""
         where = f" (lines {', '.join(str(n) for n in self.lines[:4])}{more})" if self.lines else ""
-        dropped = ", ".join(m(v) for v in self.hs[1:4]) + (", ..." if len(self.hs) > 4 else "")
+        dropped = ", ".join(m(v) for v in values[1:4]) + (", ..." if len(values) > 4 else "")
+        name = (period_name or "period") if by_period else "Hs"
         spread = [f"{self.hs_spread:.2f} m in Hs"] if self.hs_spread > 0.0 else []
         if self.period_spread > 0.0:
             spread.append(f"{self.period_spread:.2f} s in {period_name or 'the period'}")
         return (f"{self.count} repeated time(s) with differing copies, the first observed of each kept: "
-                f"{self.time}{where} Hs {m(self.hs[0])} kept, {dropped} dropped; "
+                f"{self.time}{where} {name} {m(values[0])} kept, {dropped} dropped; "
                 f"copies differ by up to {', '.join(spread)}")
 
 
@@ -300,6 +309,7 @@ def _conflicts(t: TimeArray, h: FloatArray, p: FloatArray | None, first: NDArray
     return Conflicts(count=int(np.count_nonzero(differ)), time=_iso(t[copies.start]),
                      hs=tuple(float(v) for v in h[copies]),
                      lines=() if lines is None else tuple(int(n) for n in lines[copies]),
+                     period=() if p is None else tuple(float(v) for v in p[copies]),
                      hs_spread=float(np.max(dh[differ], initial=0.0, where=np.isfinite(dh[differ]))),
                      period_spread=float(np.max(dp[differ], initial=0.0, where=np.isfinite(dp[differ]))))
 
