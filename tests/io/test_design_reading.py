@@ -78,7 +78,7 @@ def _record_design(tmp_path: Path, record: str) -> tuple[Path, list[str]]:
      '[lifetime.record] threshold = "99.99%": '),
     ('path = "buoy.txt.gz"\nthreshold = 99.5', "threshold = 99.5",
      '[lifetime.record] threshold = 99.5: above any sea state (Hs at most 30 m); did you mean "99.5%"?'),
-    ('path = "absent.csv"', 'path = "absent.csv"', "[lifetime.record] path = 'absent.csv': "),
+    ('path = "absent.csv"', 'path = "absent.csv"', '[lifetime.record] path = "absent.csv": '),
     ('path = "buoy.txt.gz"\nmethod = "annual-maxima"\ncoverage = 0.9', "coverage = 0.9",
      "[lifetime.record] coverage = 0.9: 1 annual maxima: a fit needs at least 5 years (lower coverage,"),
     ('path = "buoy.txt.gz"\nmethod = "annual-maxima"', "[lifetime.record]",

@@ -169,7 +169,8 @@ def _check_analysis(text: str, source: str, table: Mapping[str, Any], spec: Reco
         record_analysis(spec)
         record_period_law(spec)
     except RecordError as exc:
-        raise _fail(text, source, "path", f"[lifetime.record] path = {table['path']!r}: {exc}") from None
+        shown = key_text(text, "lifetime.record", "path") or repr(table["path"])
+        raise _fail(text, source, "path", f"[lifetime.record] path = {shown}: {exc}") from None
     except ValueError as exc:
         message = str(exc)
         law = message.startswith("[lifetime.record] period_ratio")
