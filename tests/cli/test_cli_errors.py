@@ -728,3 +728,94 @@ def test_case_threshold_a_zero_runs(tmp_path, args):
     needs(args[0])
     r = invoke_cli([a.replace("{out}", str(tmp_path / "out")) for a in args])
     assert r.code == 0 and "error" not in r.stderr, r.output
+
+
+# -- warnings on standard error, every command ---------------------------------------------------------
+
+def _slipped_design(folder: Path) -> str:
+    """The example design with its weight in N/m (an implausible value: a warning, not an error)."""
+    from regimemap.io.design import example_design_text
+
+    p = folder / "slip.toml"
+    p.write_text(example_design_text().replace("buoyant_weight = 2312", "buoyant_weight = 2312000"))
+    return str(p)
+
+
+def _record_with_copies(folder: Path) -> str:
+    """The one-year excerpt of 44007 with its largest height given twice, the first copy 1 m higher."""
+    import gzip
+
+    excerpt = Path(__file__).parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
+    lines = gzip.decompress(excerpt.read_bytes()).decode().splitlines()
+    top = 1 + max(range(len(lines) - 1), key=lambda i: float(lines[i + 1].split(";")[1]))
+    stamp, hs, tz = (x.strip() for x in lines[top].split(";"))
+    p = folder / "copies.txt"
+    p.write_text("\n".join([*lines[:top], f"{stamp}; {float(hs) + 1.0:.4f}; {tz}", *lines[top:]]) + "\n")
+    return str(p)
+
+
+def _record_design(folder: Path) -> str:
+    """The example design whose climate is ``[lifetime.record]`` of :func:`_record_with_copies`."""
+    from regimemap.io.design import example_design_text
+
+    _record_with_copies(folder)
+    text = example_design_text()
+    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
+    climate = ("H0_10", "H0_50", "annual_maxima", "distribution", "shape", "storms_per_year")
+    kept = [line for line in text[i:j].splitlines() if line.split("=")[0].strip() not in climate]
+    p = folder / "site.toml"
+    p.write_text(text[:i] + "\n".join(kept) + '\n\n[lifetime.record]\npath = "copies.txt"\nthreshold = "97%"\n\n'
+                 + text[j:])
+    return str(p)
+
+
+def _study_not_bracketed(folder: Path) -> str:
+    """A study of one section whose widths all meet the target (a warning: give narrower widths)."""
+    from regimemap.io.design import example_design_text
+
+    (folder / "goda.toml").write_text(example_design_text())
+    p = folder / "study.toml"
+    p.write_text('seed = 1\ntrials = 20\nbase = "goda.toml"\n[[section]]\nname = "a"\nchainage = 0.0\n'
+                 'widths = [40.0, 45.0]\ntarget = 0.1\n\n[[scenario]]\nname = "today"\n')
+    return str(p)
+
+
+def _points(folder: Path, sep: str = ",") -> str:
+    """Points of the block gamma = 3, k' = 0.4, and one (C) of another block."""
+    p = folder / ("pts.csv" if sep == "," else "pts.tsv")
+    p.write_text("\n".join(sep.join(r) for r in [("k", "mu", "name", "gamma", "kprime"),
+                                                    ("0.45", "0.6", "A", "3", "0.4"),
+                                                    ("0.3", "0.3", "C", "2", "0.4")]) + "\n")
+    return str(p)
+
+
+WARNING_RUNS = {
+    "caisson": (lambda d: ["caisson", _slipped_design(d)], "[caisson] buoyant_weight = 2312000"),
+    "lifetime": (lambda d: ["lifetime", _slipped_design(d), "--trials", "20", "-q"],
+                 "[caisson] buoyant_weight = 2312000"),
+    "lifetime-record": (lambda d: ["lifetime", _record_design(d), "--trials", "20", "-q"],
+                        "copies.txt: 1 repeated time(s) with differing copies"),
+    "simulate": (lambda d: ["simulate", "--design", _slipped_design(d)], "[caisson] buoyant_weight = 2312000"),
+    "climate": (lambda d: ["climate", _record_with_copies(d), "--threshold", "97%", "--bootstrap", "0"],
+                "copies.txt: 1 repeated time(s) with differing copies"),
+    "climate-json": (lambda d: ["climate", _record_with_copies(d), "--threshold", "97%", "--bootstrap", "0",
+                                "--json"], "copies.txt: 1 repeated time(s) with differing copies"),
+    "study": (lambda d: ["study", _study_not_bracketed(d), "--jobs", "1", "--store", str(d / "store")],
+              "section 'a', scenario 'today': the target ESD 0.1 m is not between"),
+    "classify": (lambda d: ["classify", "--gamma", "3", "--kprime", "0.4", "--points", _points(d, "\t")],
+                 "pts.tsv is tab-separated"),
+    "plot": (lambda d: ["plot", "--gamma", "3", "--kprime", "0.4", "--points", _points(d), "-o",
+                        str(d / "m.png"), "--dpi", "40"], "1 point(s) have another gamma or kprime"),
+}
+
+
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.render) if n == "plot" else n
+                                  for n in sorted(WARNING_RUNS)])
+def test_warnings_go_to_stderr_and_stdout_stays_clean(run_cli, tmp_path, name):
+    args, warning = WARNING_RUNS[name]
+    r = run_cli(args(tmp_path))
+    assert r.code == 0 and "Traceback" not in r.stderr, r.stderr
+    assert r.stdout.strip(), "the report is on stdout"
+    found = [line for line in r.stderr.splitlines() if warning in line]
+    assert len(found) == 1 and found[0].startswith(("regimemap: warning: ", "regimemap: note: ")), r.stderr
+    assert warning not in r.stdout and "warning:" not in r.stdout.replace('"warnings":', "")

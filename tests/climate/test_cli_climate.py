@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gzip
 import json
 from pathlib import Path
 
@@ -113,7 +114,8 @@ def test_strict_refuses_warnings(run_cli, tmp_path):
     rec = tmp_path / "spiky.csv"
     rec.write_text("time,hs\n" + "".join(f"{a},{b:.3f}\n" for a, b in zip(t.astype(str), hs)))
     r = ok(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%"]))
-    assert "warning: 1 isolated spike(s) kept and flagged: 2000-02-11T16:00Z" in r.stdout
+    assert f"regimemap: warning: {rec}: 1 isolated spike(s) kept and flagged: 2000-02-11T16:00Z" in r.stderr
+    assert "warning:" not in r.stdout and "isolated spike" not in r.stdout
     failed(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%", "--strict"]),
            "isolated spike", "--strict refuses")
     r = ok(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%", "--drop-spikes", "--json"]))
@@ -122,7 +124,7 @@ def test_strict_refuses_warnings(run_cli, tmp_path):
 
 def test_interval_methods_endpoint_sensitivity_and_strict(run_cli):
     """The 1996 excerpt above its 97 % quantile: the GPD fit at its search bound (xi = -1.5) is warned
-    on standard output with its value in the JSON's notices, --strict refuses it, and each method
+    with its value in the JSON's notices, --strict refuses it, and each method
     names itself."""
     args = ["climate", EXCERPT, "--threshold", "97%", "--replicates", "20", "--json"]
     obj = json.loads(ok(run_cli(args)).stdout)
@@ -139,3 +141,73 @@ def test_interval_methods_endpoint_sensitivity_and_strict(run_cli):
     assert "90 % profile-likelihood interval of the storm count and the peaks" in text.stdout
     assert "50-year value across thresholds (90 % profile interval)" in text.stdout
     failed(run_cli(["climate", EXCERPT, "--interval", "bayes"]), "--interval")
+
+
+@pytest.mark.parametrize(("args", "option", "parts"), [
+    (["--diagnostics", "nodir/d.png"], "'--diagnostics'", ["folder 'nodir' does not exist"]),
+    (["--diagnostics", "d.txt"], "'--diagnostics'", ["'d.txt' has .txt"]),
+    (["-o", "nodir/r.png"], "'--output'", ["folder 'nodir' does not exist"]),
+    (["--threshold", "99.5"], "'--threshold'", ["threshold 99.5 m is above any sea state", "did you mean 99.5%?"]),
+    (["--threshold", "30"], "'--threshold'", ["threshold 30 m is at or above every height"]),
+    (["--threshold", "6.5"], "'--threshold'", ["a fit needs at least 10", "lower the threshold"]),
+    (["--threshold", "99.99%"], "'--threshold'", ["a fit needs at least 10"]),
+    (["--method", "annual-maxima", "--coverage", "1"], "'--coverage'", ["annual maxima: a fit needs"]),
+    (["--time", "when"], "'--time'", ["no column 'when' for the time"]),
+    (["--hs", "swell"], "'--hs'", ["no column 'swell' for the significant wave height"]),
+    (["--period", "tp"], "'--period'", ["no column 'tp' for the period"]),
+])
+def test_each_error_names_its_option(run_cli, args, option, parts):
+    line = failed(run_cli(["climate", OREGON if "--time" in args or "--hs" in args or "--period" in args
+                           else EXCERPT, "--bootstrap", "0", *args]), option, *parts)
+    assert "'RECORD'" not in line
+
+
+def test_a_threshold_far_above_any_sea_state_has_no_percent_hint(run_cli):
+    line = failed(run_cli(["climate", EXCERPT, "--threshold", "250"]), "'--threshold'", "above any sea state")
+    assert "did you mean" not in line
+
+
+def test_the_record_itself_is_still_blamed_on_record(run_cli, tmp_path):
+    short = tmp_path / "short.csv"
+    short.write_text("time,hs\n" + "".join(f"2000-01-{d:02d}T00:00,{1 + d / 10}\n" for d in range(1, 29)))
+    failed(run_cli(["climate", str(short), "--threshold", "1.5"]), "'RECORD'", "needs at least 1 year")
+    failed(run_cli(["climate", str(tmp_path / "absent.csv")]), "'RECORD'", "No such file")
+
+
+def _copies(tmp_path: Path, bump: float) -> Path:
+    """The excerpt with its largest storm peak given twice: first a copy ``bump`` metres higher."""
+    lines = gzip.decompress(Path(EXCERPT).read_bytes()).decode().splitlines()
+    top = 1 + max(range(len(lines) - 1), key=lambda i: float(lines[i + 1].split(";")[1]))
+    stamp, hs, tz = (x.strip() for x in lines[top].split(";"))
+    rows = [*lines[:top], f"{stamp}; {float(hs) + bump:.4f}; {tz}", *lines[top:]]
+    p = tmp_path / "copies.txt"
+    p.write_text("\n".join(rows) + "\n")
+    return p
+
+
+def test_conflicting_copies_warned_on_stderr_and_refused_by_strict(run_cli, tmp_path):
+    p = _copies(tmp_path, 1.0)
+    r = ok(run_cli(["climate", str(p), "--bootstrap", "0", "--threshold", "97%"]))
+    warning = [ln for ln in r.stderr.splitlines() if "differing copies" in ln]
+    assert len(warning) == 1 and warning[0].startswith(f"regimemap: warning: {p}: 1 repeated time(s) with")
+    assert "dropped; copies differ by up to 1.00 m in Hs" in warning[0]
+    assert "(1 with differing copies)" in r.stdout and "warning:" not in r.stdout
+    line = failed(run_cli(["climate", str(p), "--bootstrap", "0", "--threshold", "97%", "--strict"]),
+                  "differing copies", "--strict refuses")
+    assert "(lines " in line
+    assert json.loads(ok(run_cli(["climate", str(p), "--bootstrap", "0", "--threshold", "97%", "--json"])).stdout)[
+        "record"]["conflicting"] == 1
+
+
+def test_identical_copies_change_nothing_not_even_strict(run_cli, tmp_path):
+    p = _copies(tmp_path, 0.0)
+    same = tmp_path / "excerpt.txt"
+    same.write_bytes(gzip.decompress(Path(EXCERPT).read_bytes()))
+    for extra in ([], ["--strict"]):
+        r = run_cli(["climate", str(p), "--bootstrap", "0", "--threshold", "97%", *extra])
+        again = run_cli(["climate", str(same), "--bootstrap", "0", "--threshold", "97%", *extra])
+        assert "differing copies" not in r.stderr and "repeated" not in r.stderr
+        assert (r.code, r.stderr.replace(str(p), "X")) == (again.code, again.stderr.replace(str(same), "X"))
+        if r.code == 0:
+            assert "1 repeated," in r.stdout and "0 repeated," in again.stdout
+            assert r.stdout.splitlines()[3:] == again.stdout.splitlines()[3:]  # the same analysis

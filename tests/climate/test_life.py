@@ -157,7 +157,7 @@ def test_period_ratio_needs_a_period(tmp_path):
     lines = ["time,hs"] + [f"{a},{1 + (h % 97) / 20:.2f}" for h, a in enumerate(t.astype(str))]
     p = _record_design(tmp_path, 'path = "nop.csv"\nthreshold = "90%"\ngap_hours = 1\nperiod_ratio = 1.2')
     (tmp_path / "nop.csv").write_text("\n".join(lines) + "\n")
-    with pytest.raises(DesignFileError, match="period_ratio: .*nop.csv gives no period"):
+    with pytest.raises(DesignFileError, match="period_ratio = 1.2: .*nop.csv gives no period"):
         read_design(p).lifetime_model()
 
 

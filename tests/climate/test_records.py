@@ -138,7 +138,55 @@ def test_duplicates_and_sorting(tmp_path):
     r = read_record(p)
     assert r.quality.duplicates == 1 and r.quality.unsorted == 1
     np.testing.assert_array_equal(r.hs, [1.0, 1.1, 1.2])
-    assert any("repeated" in w for w in r.quality.warnings())
+    assert r.quality.warnings()[0] == (
+        "1 repeated time(s) with differing copies, the first observed of each kept: 2000-01-01T01:00Z "
+        "(lines 4, 5) Hs 1.10 m kept, 9.90 m dropped; copies differ by up to 8.80 m in Hs")
+
+
+def test_identical_copies_are_a_counted_quiet_drop():
+    t = np.datetime64("2000-01-01T00", "s") + np.array([0, 1, 1, 2, 3, 3, 3]) * np.timedelta64(3600, "s")
+    r = make_record("x", t, np.array([1.0, 1.1, 1.1, 1.2, 1.3, 1.3, 1.3]))
+    assert r.quality.duplicates == 3 and r.quality.conflicts is None and r.quality.warnings() == []
+    np.testing.assert_array_equal(r.hs, [1.0, 1.1, 1.2, 1.3])
+
+
+def test_a_missing_copy_gives_way_to_the_observed_one():
+    t = np.datetime64("2000-01-01T00", "s") + np.array([0, 1, 1, 2]) * np.timedelta64(3600, "s")
+    r = make_record("x", t, np.array([1.0, np.nan, 1.1, 1.2]), lines=np.array([2, 3, 4, 5]))
+    np.testing.assert_array_equal(r.hs, [1.0, 1.1, 1.2])
+    assert r.quality.duplicates == 1 and r.quality.conflicts is None and r.quality.missing == 0
+
+
+def test_conflicts_counted_with_the_largest_difference_and_the_period():
+    t = np.datetime64("2000-01-01T00", "s") + np.array([0, 5, 1, 1, 2, 2, 2, 3, 3]) * np.timedelta64(3600, "s")
+    hs = np.array([1.0, 1.5, 1.1, 1.4, 1.2, 2.9, 1.2, 1.3, 1.3])
+    tz = np.array([5.0, 5.0, 5.0, 5.0, 6.0, 6.0, 6.0, 6.0, 7.5])
+    q = make_record("x", t, hs, tz, "Tz").quality
+    assert q.duplicates == 4 and q.conflicts is not None
+    c = q.conflicts
+    assert (c.count, c.time, c.hs, c.lines, c.period) == (3, "2000-01-01T01:00Z", (1.1, 1.4), (), (5.0, 5.0))
+    assert c.hs_spread == pytest.approx(1.7) and c.period_spread == pytest.approx(1.5)
+    assert q.warnings()[0].endswith("copies differ by up to 1.70 m in Hs, 1.50 s in Tz")
+    only_period = make_record("x", t[[0, 7, 8]], hs[[0, 7, 8]], tz[[0, 7, 8]], "Tz").quality
+    assert only_period.conflicts is not None and only_period.conflicts.hs_spread == 0.0
+    assert only_period.warnings()[0].endswith("Tz 6.00 s kept, 7.50 s dropped; copies differ by up to 1.50 s in Tz")
+
+
+def test_a_bad_copy_before_the_largest_storm_peak_is_named(tmp_path):
+    lines = _lines(NDBC44007)
+    top = 1 + int(np.argmax([float(x.split(";")[1]) for x in lines[1:]]))
+    stamp, hs, tz = (x.strip() for x in lines[top].split(";"))
+    bad = f"{stamp}; {float(hs) + 5.0:.4f}; {tz}"
+    r = read_record(_write(tmp_path, "dup.txt", [*lines[:top], bad, *lines[top:]]))
+    first = read_record(NDBC44007)
+    assert r.quality.duplicates == 1 and r.quality.conflicts is not None
+    assert r.hs.max() == pytest.approx(float(hs) + 5.0)  # the first copy kept, as it always was
+    assert np.count_nonzero(r.hs != first.hs) == 1
+    when = f"{stamp[:10]}T{stamp[11:]}:00Z"
+    assert r.quality.warnings() == [
+        f"1 repeated time(s) with differing copies, the first observed of each kept: {when} "
+        f"(lines {top + 1}, {top + 2}) Hs {float(hs) + 5.0:.2f} m kept, {float(hs):.2f} m dropped; "
+        "copies differ by up to 5.00 m in Hs"]
 
 
 def test_spikes_flagged_then_dropped_on_request():

@@ -46,7 +46,7 @@ def test_a_record_of_arrays_gives_the_numbers_of_its_file() -> None:
 def test_the_warnings_are_notices_naming_the_record() -> None:
     wave = read_record(NDBC)
     repeated = make_record("dup", np.concatenate([wave.time[:100], wave.time[99:]]),
-                           np.concatenate([wave.hs[:100], wave.hs[99:]]))
+                           np.concatenate([wave.hs[:100], wave.hs[99:100] + 1.0, wave.hs[100:]]))
     rec = run_climate(repeated, OPTIONS)
     # one year above its 98 % quantile: the fit's own warnings (code fit) follow the record's
     assert [n.code for n in rec.notices if n.code != "fit"] == ["record-quality"]

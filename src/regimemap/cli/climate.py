@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
-from ._check import refuse_notices
+from ._check import refuse_notices, warn
 from ._common import ParamType, output_path, report_written
 from ._inputs import RECORD_FILE
 from ._writing import distinct_files, file_suffix, write_files
@@ -28,6 +28,10 @@ if TYPE_CHECKING:
 __all__ = ["climate_cmd"]
 
 FIGURE_FORMATS = ("png", "svg", "pdf")
+#: The option of each field of ClimateOptions that an analysis's error may blame.
+_OPTIONS = {"threshold": "--threshold", "coverage": "--coverage", "return_periods": "--return-periods"}
+#: The option that names each column of a record.
+_COLUMNS = {"time": "--time", "significant wave height": "--hs", "period": "--period"}
 
 
 class _Threshold(ParamType):
@@ -37,11 +41,18 @@ class _Threshold(ParamType):
         if not isinstance(value, str):
             return value
         from ..climate.peaks import parse_threshold
+        from ..climate.record import HS_MAX
 
         try:
-            return parse_threshold(value)
+            kind, u = parse_threshold(value)
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
+        if kind == "value" and u > HS_MAX:  # a bare number is metres: 99.5 is above any sea state
+            hint = (f"did you mean {value.strip()}%? (a quantile of the heights is written with %)"
+                    if u < 100.0 else "give a height in metres or a quantile such as 99.5%")
+            self.fail(f"threshold {u:g} m is above any sea state (Hs at most {HS_MAX:g} m); {hint}",
+                      param, ctx)
+        return kind, u
 
 
 class _Periods(ParamType):
@@ -61,16 +72,18 @@ class _Periods(ParamType):
 
 
 def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
-    """The ``-o`` and ``--diagnostics`` files, checked before any work."""
-    every = [*outputs, *([diagnostics] if diagnostics else [])]
-    distinct_files(every, "'-o' / '--diagnostics'")
-    for path in every:
+    """The ``-o`` and ``--diagnostics`` files, checked before any work; an error names the option
+    of the file it refuses."""
+    every = [(path, "--output") for path in outputs]
+    every += [(diagnostics, "--diagnostics")] if diagnostics else []
+    distinct_files([path for path, _ in every], "'-o' / '--diagnostics'")
+    for path, option in every:
         kind = file_suffix(path)
         if kind not in FIGURE_FORMATS:
             got = f".{kind}" if kind else "no suffix"
             raise click.BadParameter(f"{path!r} has {got}; the figures are written as .png, .svg or .pdf",
-                                     param_hint="'-o' / '--diagnostics'")
-        output_path(path, "--output")
+                                     param_hint=f"'{option}'")
+        output_path(path, option)
 
 
 @click.command("climate", short_help="Return values of Hs with confidence bands from a wave record.")
@@ -164,6 +177,7 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     if strict:
         refuse_notices(result.notices, ("record-quality", "fit"),
                        "--strict refuses quality-control warnings", "'RECORD'")
+    warn(result.notices)
     title = Path(record).name
     written = write_files(outputs, lambda: _climate_figure(result.result, result.curves, title))
     if diagnostics is not None and result.diagnostics is not None:
@@ -180,7 +194,10 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
 
 def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,
          period_col: str | None, drop_spikes: bool, diagnostics: bool) -> ClimateRecord:
-    """The workflow's call: an unreadable record or an impossible analysis is a usage error naming it."""
+    """The workflow's call: an unreadable record or an impossible analysis is a usage error naming the
+    record and the option it blames (:func:`regimemap.io.design_record.analysis_fault`), or RECORD."""
+    from ..io.design_record import analysis_fault
+    from ..io.records import RecordError
     from ..workflows.climate import run_climate
 
     try:
@@ -190,7 +207,13 @@ def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str
         message = str(exc)
         if not message.startswith(record):
             message = f"{record}: {message}"
-        raise click.BadParameter(message, param_hint="'RECORD'") from None
+        if isinstance(exc, RecordError):  # a column named by --time, --hs or --period that is not there
+            given = {"time": time_col, "significant wave height": hs_col, "period": period_col}
+            option = next((_COLUMNS[what] for what, col in given.items()
+                           if col is not None and f" for the {what} (columns: " in message), "RECORD")
+        else:
+            option = _OPTIONS.get(analysis_fault(str(exc)) or "", "RECORD")
+        raise click.BadParameter(message, param_hint=f"'{option}'") from None
 
 
 def _climate_figure(result: ClimateResult, curves: Curves, title: str) -> Figure:

@@ -5,7 +5,9 @@ arrays and call :func:`make_record`, which sorts the times, drops repeated
 times, finds the sampling step, the gaps, the isolated spikes and the
 coverage of each calendar year, and reports all of it in a :class:`Quality`:
 nothing is changed silently.  A spike is flagged and listed, and dropped only
-when asked (``drop_spikes``).
+when asked (``drop_spikes``).  A time given twice with the same values is a
+counted drop; with values that differ (:class:`Conflicts`) it is a warning that
+names the first such time, its copies and how far apart the copies are.
 """
 
 from __future__ import annotations
@@ -15,8 +17,8 @@ from dataclasses import dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["HS_MAX", "PERIOD_MAX", "SPIKE_JUMP", "SPIKE_RATIO", "Quality", "Record", "find_spikes",
-           "make_record"]
+__all__ = ["HS_MAX", "PERIOD_MAX", "SPIKE_JUMP", "SPIKE_RATIO", "Conflicts", "Quality", "Record",
+           "find_spikes", "make_record"]
 
 FloatArray = NDArray[np.float64]
 TimeArray = NDArray[np.datetime64]
@@ -35,6 +37,64 @@ _HOUR = np.timedelta64(3600, "s")
 
 
 @dataclass(frozen=True)
+class Conflicts:
+    """Repeated times whose copies give different values (the first observed copy of each is kept).
+
+    Two copies conflict when both have a height and the heights differ, or both have a period
+    and the periods differ; a missing copy (a missing code, an empty field) gives no value and
+    conflicts with none.
+
+    Attributes
+    ----------
+    count : int
+        Times with copies that differ.
+    time : str
+        The first (earliest) of them (ISO, UTC).
+    hs : tuple of float
+        Its copies' heights [m] (NaN: missing), the kept one first, then the others in file order.
+    lines : tuple of int
+        The copies' lines in the file, in the order of ``hs`` (empty when the reader gave none).
+    period : tuple of float
+        The copies' periods [s], in the order of ``hs`` (empty without a period).
+    hs_spread : float
+        The largest difference between the heights of the copies of one time [m].
+    period_spread : float
+        The largest difference between their periods [s] (0 without a period or a difference).
+    """
+
+    count: int
+    time: str
+    hs: tuple[float, ...]
+    lines: tuple[int, ...] = ()
+    period: tuple[float, ...] = ()
+    hs_spread: float = 0.0
+    period_spread: float = 0.0
+
+    def message(self, period_name: str | None = None) -> str:
+        """What the quality report says of them, e.g. ``1 repeated time(s) with differing copies,
+        the first observed of each kept: 2003-12-07T05:00Z (lines 67644, 67645) Hs 12.10 m kept,
+        7.10 m dropped; copies differ by up to 5.00 m in Hs``."""
+        h = np.asarray(self.hs)
+        agree = bool(np.all(h == h[0]) or not np.any(np.isfinite(h)))
+        by_period = agree and len(self.period) == len(self.hs)  # the heights agree: show the periods
+        values, unit = (self.period, "s") if by_period else (self.hs, "m")
+
+        def m(v: float) -> str:
+            return "missing" if not np.isfinite(v) else f"{v:.2f} {unit}"
+
+        more = ", ..." if len(self.lines) > 4 else ""
+        where = f" (lines {', '.join(str(n) for n in self.lines[:4])}{more})" if self.lines else ""
+        dropped = ", ".join(m(v) for v in values[1:4]) + (", ..." if len(values) > 4 else "")
+        name = (period_name or "period") if by_period else "Hs"
+        spread = [f"{self.hs_spread:.2f} m in Hs"] if self.hs_spread > 0.0 else []
+        if self.period_spread > 0.0:
+            spread.append(f"{self.period_spread:.2f} s in {period_name or 'the period'}")
+        return (f"{self.count} repeated time(s) with differing copies, the first observed of each kept: "
+                f"{self.time}{where} {name} {m(values[0])} kept, {dropped} dropped; "
+                f"copies differ by up to {', '.join(spread)}")
+
+
+@dataclass(frozen=True)
 class Quality:
     """What the quality control found in a record.
 
@@ -43,7 +103,8 @@ class Quality:
     missing : int
         Samples without a height (missing codes such as NDBC's ``99.00``, empty fields, NaN).
     duplicates : int
-        Samples dropped because their time repeats an earlier one (the first is kept).
+        Samples dropped because their time repeats another's (the first observed copy is kept; a
+        copy with the same values is a quiet drop).
     unsorted : int
         Samples whose time is earlier than the one before them in the file (the record is sorted).
     gaps : list of (str, str, float)
@@ -55,6 +116,10 @@ class Quality:
         Whether the spikes were removed from the record (else they are kept and flagged).
     coverage : dict of int to float
         Share of each calendar year's hours that are observed (0 to 1).
+    conflicts : Conflicts or None
+        The repeated times whose copies differ (a warning), None when there are none.
+    period_name : str or None
+        The period's column, for the messages.
     """
 
     missing: int
@@ -64,13 +129,15 @@ class Quality:
     spikes: list[tuple[str, float]] = field(default_factory=list)
     spikes_dropped: bool = False
     coverage: dict[int, float] = field(default_factory=dict)
+    conflicts: Conflicts | None = None
+    period_name: str | None = None
 
     def warnings(self, min_coverage: float | None = None) -> list[str]:
         """The findings a careful user must see (``--strict`` makes them errors); the calendar
         years below ``min_coverage`` too when it is given (annual maxima)."""
         out = []
-        if self.duplicates:
-            out.append(f"{self.duplicates} repeated time(s) dropped (the first value of each kept)")
+        if self.conflicts is not None:
+            out.append(self.conflicts.message(self.period_name))
         if self.unsorted:
             out.append(f"{self.unsorted} sample(s) out of time order (the record was sorted)")
         if self.spikes:
@@ -219,8 +286,37 @@ def _coverage(time: TimeArray, observed: NDArray[np.bool_], step: float) -> dict
     return out
 
 
+def _spread(x: FloatArray, starts: NDArray[np.intp]) -> FloatArray:
+    """The largest minus the smallest observed value of each group (NaN: none observed)."""
+    with np.errstate(invalid="ignore"):
+        return np.fmax.reduceat(x, starts) - np.fmin.reduceat(x, starts)
+
+
+def _conflicts(t: TimeArray, h: FloatArray, p: FloatArray | None, first: NDArray[np.bool_],
+               lines: NDArray[np.int64] | None) -> Conflicts | None:
+    """The repeated times of ``t`` (sorted; ``first`` marks the first copy of each time) whose
+    observed heights, or periods, differ; None when every repeated copy agrees."""
+    starts = np.flatnonzero(first)
+    dh = _spread(h, starts)
+    dp = np.zeros_like(dh) if p is None else _spread(p, starts)
+    with np.errstate(invalid="ignore"):
+        differ = (dh > 0.0) | (dp > 0.0)
+    if not np.any(differ):
+        return None
+    g = int(np.flatnonzero(differ)[0])
+    end = int(starts[g + 1]) if g + 1 < starts.size else t.size
+    copies = slice(int(starts[g]), end)
+    return Conflicts(count=int(np.count_nonzero(differ)), time=_iso(t[copies.start]),
+                     hs=tuple(float(v) for v in h[copies]),
+                     lines=() if lines is None else tuple(int(n) for n in lines[copies]),
+                     period=() if p is None else tuple(float(v) for v in p[copies]),
+                     hs_spread=float(np.max(dh[differ], initial=0.0, where=np.isfinite(dh[differ]))),
+                     period_spread=float(np.max(dp[differ], initial=0.0, where=np.isfinite(dp[differ]))))
+
+
 def make_record(source: str, time: TimeArray, hs: FloatArray, period: FloatArray | None = None,
-                period_name: str | None = None, drop_spikes: bool = False) -> Record:
+                period_name: str | None = None, drop_spikes: bool = False,
+                lines: NDArray[np.int64] | None = None) -> Record:
     """A :class:`Record` from parsed arrays, with its quality control.
 
     Parameters
@@ -237,6 +333,8 @@ def make_record(source: str, time: TimeArray, hs: FloatArray, period: FloatArray
         The period's column name.
     drop_spikes : bool, optional
         Remove the isolated spikes (:func:`find_spikes`) instead of only flagging them.
+    lines : ndarray of int, optional
+        The line of each sample in its file, for the messages (the copies of a repeated time).
 
     Returns
     -------
@@ -252,11 +350,16 @@ def make_record(source: str, time: TimeArray, hs: FloatArray, period: FloatArray
     p = None if period is None else np.asarray(period, dtype=np.float64)
     unsorted = int(np.count_nonzero(np.diff(t) < np.timedelta64(0, "s")))
     order = np.argsort(t, kind="stable")
+    keep = np.ones(t.size, dtype=bool)
+    keep[1:] = t[order][1:] != t[order][:-1]
+    duplicates = int(t.size - np.count_nonzero(keep))
+    conflicts = None
+    if duplicates:  # the observed copies of a time first, each in file order
+        order = np.lexsort((~np.isfinite(h), t))
+        conflicts = _conflicts(t[order], h[order], None if p is None else p[order], keep,
+                               None if lines is None else np.asarray(lines)[order])
     t, h = t[order], h[order]
     p = None if p is None else p[order]
-    keep = np.ones(t.size, dtype=bool)
-    keep[1:] = t[1:] != t[:-1]
-    duplicates = int(t.size - np.count_nonzero(keep))
     t, h = t[keep], h[keep]
     p = None if p is None else p[keep]
     missing = int(np.count_nonzero(~np.isfinite(h)))
@@ -271,7 +374,8 @@ def make_record(source: str, time: TimeArray, hs: FloatArray, period: FloatArray
     observed = np.isfinite(h)
     quality = Quality(missing=missing, duplicates=duplicates, unsorted=unsorted,
                       gaps=_gaps(t, observed, step), spikes=spike_list, spikes_dropped=drop_spikes,
-                      coverage=_coverage(t, observed, step))
+                      coverage=_coverage(t, observed, step), conflicts=conflicts,
+                      period_name=period_name if p is not None else None)
     if p is not None and not np.any(np.isfinite(p)):
         p, period_name = None, None
     return Record(source=source, time=t, hs=h, period=p, period_name=period_name, step_hours=step,

@@ -52,7 +52,8 @@ def climate_json(result: ClimateResult, source: str | None = None,
     """The analysis as one JSON object.
 
     Keys: ``record`` {``source``, ``start``, ``end``, ``years``, ``step_hours``, ``coverage``,
-    ``coverage_by_year``, ``missing``, ``duplicates``, ``unsorted``, ``gaps``, ``flagged`` (the
+    ``coverage_by_year``, ``missing``, ``duplicates``, ``conflicting`` (the repeated times whose
+    copies differ), ``unsorted``, ``gaps``, ``flagged`` (the
     spikes: ``[{time, hs}]``), ``spikes_dropped``, ``period``}, ``method``, ``threshold`` (m;
     null for annual maxima), ``gap_hours``, ``storms`` (count; for annual maxima the years used),
     ``rate_per_year``, ``distribution``, ``parameters``, ``return_values`` [{``period``,
@@ -71,7 +72,8 @@ def climate_json(result: ClimateResult, source: str | None = None,
             "start": r.start, "end": r.end, "years": json_number(r.years),
             "step_hours": json_number(r.step_hours), "coverage": json_number(r.coverage),
             "coverage_by_year": {str(y): json_number(c) for y, c in q.coverage.items()},
-            "missing": q.missing, "duplicates": q.duplicates, "unsorted": q.unsorted,
+            "missing": q.missing, "duplicates": q.duplicates,
+            "conflicting": 0 if q.conflicts is None else q.conflicts.count, "unsorted": q.unsorted,
             "gaps": len(q.gaps),
             "flagged": [{"time": t, "hs": json_number(h)} for t, h in q.spikes],
             "spikes_dropped": q.spikes_dropped, "period": r.period_name,
@@ -105,14 +107,18 @@ def parameter_text(result: ClimateResult) -> str:
 def format_climate(result: ClimateResult, source: str | None = None,
                    sensitivity: Sensitivity | None = None) -> str:
     """The analysis for people: the record and its quality, the extremes, the fit, the return values
-    with their bands, and the warnings."""
+    with their bands.
+
+    The warnings are not in it: they are the analysis's (:meth:`ClimateResult.warnings`), which the
+    command line prints on standard error."""
     r, o, q, f = result.record, result.options, result.record.quality, result.fit
     lines = [f"wave climate: {source if source is not None else r.source}"]
     period = f", period {r.period_name}" if r.period_name else ", no period"
     lines.append(f"  record {r.start} to {r.end}: {r.years:.2f} years observed, step {r.step_hours:g} h, "
                  f"coverage {100 * r.coverage:.1f} %{period}")
-    lines.append(f"  quality: {q.missing} missing, {q.duplicates} repeated, {q.unsorted} out of order, "
-                 f"{len(q.gaps)} gaps, {len(q.spikes)} spikes flagged"
+    differing = "" if q.conflicts is None else f" ({q.conflicts.count} with differing copies)"
+    lines.append(f"  quality: {q.missing} missing, {q.duplicates} repeated{differing}, "
+                 f"{q.unsorted} out of order, {len(q.gaps)} gaps, {len(q.spikes)} spikes flagged"
                  + (" (dropped)" if q.spikes_dropped and q.spikes else ""))
     if result.storms is not None:
         s = result.storms
@@ -154,10 +160,6 @@ def format_climate(result: ClimateResult, source: str | None = None,
             got = (f"{v:6.2f} m  {lo:.2f} to {hi:.2f} m" if np.isfinite(v) and np.isfinite(lo)
                    else "too few storms to fit")
             lines.append(f"  u = {u:6.3f} m {f'({100 * q:g} %)':10s}{n:5d} storms  {got}")
-    warnings = result.warnings()
-    if warnings:
-        lines.append("")
-        lines.extend(f"warning: {w}" for w in warnings)
     return "\n".join(lines)
 
 

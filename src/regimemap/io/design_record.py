@@ -12,20 +12,23 @@ from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Mapping
+import re
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from regimemap.climate.record import HS_MAX
+
 from .design_errors import DesignFileError, did_you_mean
-from .toml_lines import key_line
+from .toml_lines import key_line, key_text
 
 if TYPE_CHECKING:
     from regimemap.climate import ClimateResult
     from regimemap.lifetime import Climate
 
-__all__ = ["MAX_REPLICATES", "RECORD_KEYS", "RecordSpec", "read_record_table", "record_analysis",
-           "record_climate", "record_period_law"]
+__all__ = ["MAX_REPLICATES", "RECORD_KEYS", "RecordSpec", "analysis_fault", "read_record_table",
+           "record_analysis", "record_climate", "record_period_law"]
 
 #: Most replicate climates of ``climate_replicates``.
 MAX_REPLICATES = 10_000
@@ -46,6 +49,29 @@ RECORD_KEYS: dict[str, str] = {
                     "1.35 for a zero-crossing Tz): T1/3 = a H0'^b is then fitted on the storm peaks "
                     "(default: none, Goda's T1/3 = 3.3 H0'^0.63)",
 }
+
+
+#: The option of the analysis (a field of :class:`regimemap.climate.ClimateOptions`) that a
+#: ValueError of :func:`regimemap.climate.analyse` blames, told by its message.
+_FAULTS: tuple[tuple[re.Pattern[str], str], ...] = (
+    (re.compile(r"threshold \S+ m is at or above every height"), "threshold"),
+    (re.compile(r"\d+ storm\(s\) above the threshold"), "threshold"),
+    (re.compile(r"\d+ annual maxima: a fit needs"), "coverage"),
+    (re.compile(r"return period \S+ years is shorter|no \S+-year return value"), "return_periods"),
+)
+
+
+def analysis_fault(message: str) -> str | None:
+    """The option of the analysis that an error of :func:`regimemap.climate.analyse` blames:
+    ``"threshold"`` (above every height, too few storms over it), ``"coverage"`` (too few annual
+    maxima), ``"return_periods"``; None when it is the record itself (too short, all equal).
+
+    Examples
+    --------
+    >>> analysis_fault("4 storm(s) above the threshold 6.5 m: a fit needs at least 10")
+    'threshold'
+    """
+    return next((key for pattern, key in _FAULTS if pattern.search(message)), None)
 
 
 @dataclass(frozen=True)
@@ -72,6 +98,21 @@ def _number(v: Any) -> float | None:
     return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else None
 
 
+def _threshold(v: Any, bad: Callable[[str, str], DesignFileError]) -> tuple[str, float]:
+    """``threshold``: a height in metres (a number; at most :data:`HS_MAX`, so ``99.5`` is the
+    quantile ``"99.5%"`` mistyped) or a quantile (a string such as ``"99.5%"``)."""
+    from regimemap.climate.peaks import parse_threshold
+
+    try:
+        kind, u = parse_threshold(v if isinstance(v, str) else repr(_number(v)))
+    except ValueError:
+        raise bad("threshold", "neither a height > 0 nor a percentage") from None
+    if kind == "value" and u > HS_MAX:
+        hint = f'; did you mean "{u:g}%"?' if u < 100.0 else ""
+        raise bad("threshold", f"above any sea state (Hs at most {HS_MAX:g} m){hint}")
+    return kind, u
+
+
 def read_record_table(text: str, source: str, table: Mapping[str, Any]) -> RecordSpec:
     """The checked ``[lifetime.record]`` table.
 
@@ -80,8 +121,6 @@ def read_record_table(text: str, source: str, table: Mapping[str, Any]) -> Recor
     DesignFileError
         Naming the file, the line, the key, the value and what is accepted.
     """
-    from regimemap.climate.peaks import parse_threshold
-
     def bad(key: str, why: str) -> DesignFileError:
         return _fail(text, source, key, f"[lifetime.record] {key} = {table[key]!r}: {why}; "
                      f"accepted: {RECORD_KEYS[key]}")
@@ -101,11 +140,7 @@ def read_record_table(text: str, source: str, table: Mapping[str, Any]) -> Recor
             raise bad("method", "not one of the accepted values")
         got["method"] = table["method"]
     if "threshold" in table:
-        v = table["threshold"]
-        try:
-            got["threshold"] = parse_threshold(v if isinstance(v, str) else repr(_number(v)))
-        except ValueError:
-            raise bad("threshold", "neither a height > 0 nor a percentage") from None
+        got["threshold"] = _threshold(table["threshold"], bad)
     for key, lo, hi, open_lo in (("gap_hours", 0.0, 8760.0, True), ("shape", 0.5, 5.0, False),
                                  ("coverage", 0.0, 1.0, True), ("period_ratio", 0.5, 2.0, False)):
         if key in table:
@@ -119,7 +154,34 @@ def read_record_table(text: str, source: str, table: Mapping[str, Any]) -> Recor
         if table["distribution"] not in allowed:
             raise bad("distribution", f"not a distribution of {method}")
         got["distribution"] = table["distribution"]
-    return RecordSpec(**got)
+    spec = RecordSpec(**got)
+    _check_analysis(text, source, table, spec)
+    return spec
+
+
+def _check_analysis(text: str, source: str, table: Mapping[str, Any], spec: RecordSpec) -> None:
+    """The record read and fitted (once: :func:`record_analysis` keeps it), and ``period_ratio``'s
+    law; an error names the line of the key it blames -- ``path`` for a record that cannot be
+    read, ``threshold``, ``coverage``, ``period_ratio`` -- or of ``[lifetime.record]``."""
+    from .records import RecordError
+
+    try:
+        record_analysis(spec)
+        record_period_law(spec)
+    except RecordError as exc:
+        shown = key_text(text, "lifetime.record", "path") or repr(table["path"])
+        raise _fail(text, source, "path", f"[lifetime.record] path = {shown}: {exc}") from None
+    except ValueError as exc:
+        message = str(exc)
+        law = message.startswith("[lifetime.record] period_ratio")
+        key = "period_ratio" if law else analysis_fault(message)
+        if key is None or key not in table:
+            raise _fail(text, source, None, message if message.startswith("[lifetime.record]")
+                        else f"[lifetime.record]: {message}") from None
+        shown = key_text(text, "lifetime.record", key) or repr(table[key])
+        message = message.removeprefix(f"[lifetime.record] {key}: ")
+        message = message.replace("lower --coverage", "lower coverage")  # the key, not the option
+        raise _fail(text, source, key, f"[lifetime.record] {key} = {shown}: {message}") from None
 
 
 @functools.lru_cache(maxsize=8)

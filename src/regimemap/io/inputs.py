@@ -178,7 +178,9 @@ def check_design_file(path: str | os.PathLike[str]) -> int:
 
 def read_design_text(path: str | os.PathLike[str]) -> str:
     """The text of a design file, after :func:`check_design_file` (UTF-8, newlines as ``\\n``,
-    as ``Path.read_text`` gives them).
+    as ``Path.read_text`` gives them, and a byte order mark at its start dropped, as editors on
+    Windows write one).  Every TOML file the tool reads -- a design file, a study file, a study's
+    base design -- is read here.
 
     Raises
     ------
@@ -191,4 +193,4 @@ def read_design_text(path: str | os.PathLike[str]) -> str:
         data = read_limited(path, max_bytes=MAX_DESIGN_FILE_BYTES, what="design file")
     except InputFileError as exc:
         raise _design_error(exc) from None
-    return data.decode("utf-8").replace("\r\n", "\n").replace("\r", "\n")
+    return data.decode("utf-8-sig").replace("\r\n", "\n").replace("\r", "\n")

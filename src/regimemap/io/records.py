@@ -190,7 +190,7 @@ def _read_csv(path: str, text: str, time: str | None, hs: str | None, period: st
     t = _times([r[it] for _, r in data], lines, path, header[it])
     pname = None if ip is None else header[ip]
     _check_values(path, h, p, lines, header[ih], pname)
-    return make_record(path, t, h, p, pname, drop_spikes)
+    return make_record(path, t, h, p, pname, drop_spikes, lines=np.asarray(lines, dtype=np.int64))
 
 
 def _read_semicolon(path: str, lines_text: list[str], drop_spikes: bool) -> Record:
@@ -211,7 +211,7 @@ def _read_semicolon(path: str, lines_text: list[str], drop_spikes: bool) -> Reco
     t = _times(times, lines, path, "time")
     h, p = np.array(hs), np.array(tz)
     _check_values(path, h, p, lines, "Hs", "Tz")
-    return make_record(path, t, h, p, "Tz", drop_spikes)
+    return make_record(path, t, h, p, "Tz", drop_spikes, lines=np.asarray(lines, dtype=np.int64))
 
 
 def _read_ndbc(path: str, lines_text: list[str], period: str | None, drop_spikes: bool) -> Record:
@@ -252,7 +252,8 @@ def _read_ndbc(path: str, lines_text: list[str], period: str | None, drop_spikes
         raise RecordError(f"{path}: no data lines after the header")
     h, p = np.array(hs), np.array(per)
     _check_values(path, h, p, lines, "WVHT", pname)
-    return make_record(path, np.array(times, dtype="datetime64[s]"), h, p, pname, drop_spikes)
+    return make_record(path, np.array(times, dtype="datetime64[s]"), h, p, pname, drop_spikes,
+                       lines=np.asarray(lines, dtype=np.int64))
 
 
 def _read_netcdf(path: str, time: str | None, hs: str | None, period: str | None,

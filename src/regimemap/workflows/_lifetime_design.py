@@ -37,7 +37,8 @@ class LifetimeDesign:
     caisson : Caisson
         The section at its site.
     notices : tuple of Notice
-        The implausible values of the file (code ``implausible-value``; likely unit slips).
+        The implausible values of the file (code ``implausible-value``; likely unit slips), and the
+        warnings of its ``[lifetime.record]`` (codes ``record-quality`` and ``fit``).
     """
 
     source: str | None
@@ -80,4 +81,11 @@ def read_lifetime_design(design: Design | str | Path, years: int | None = None) 
     named = d.source if source is None else source
     notices = tuple(Notice("implausible-value", f"{named}: {item}", quantity=item.key, value=item.value)
                     for item in implausible_values(d, analysis))
+    if spec.record is not None:  # the record's quality control, as `regimemap climate` reports it
+        from ..io.design_record import record_analysis
+
+        fitted = record_analysis(spec.record)
+        notices += tuple(Notice("record-quality", f"{spec.record.path}: {w}") for w in fitted.warnings()
+                         if w not in fitted.notes)
+        notices += tuple(Notice("fit", f"{spec.record.path}: {n}") for n in fitted.notes)
     return LifetimeDesign(source, d, spec, model, caisson, notices)
