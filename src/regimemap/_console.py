@@ -1,0 +1,88 @@
+"""The ``regimemap`` process's exit on Ctrl-C and SIGTERM, from its first line of regimemap code.
+
+Standard library only: :func:`exit_on_signal_at_start` runs when this module is imported, the
+package's first import (``regimemap/__init__.py``), and does something only in the ``regimemap`` command's
+own process (the console script, ``python -m regimemap``), never in a program that imports the
+library.  Until the command runs, Ctrl-C or SIGTERM there ends the process at once, with the
+command's one line and exit code: nothing is written yet, and an interpreter importing numpy
+would print a traceback.  While the command runs, :mod:`regimemap.cli._signals` takes over; its
+handlers raise, so that cleanups run, and :func:`exit_now` ends the process (the line, then
+``os._exit``) once they have.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import threading
+
+__all__ = ["INTERRUPTED", "TERMINATED", "exit_now", "exit_on_signal_at_start", "is_console"]
+
+#: The line and exit code of Ctrl-C (SIGINT) and of SIGTERM (128 + the signal's number, as a shell
+#: reports a process the signal ended).
+INTERRUPTED = ("regimemap: interrupted", 128 + int(signal.SIGINT))
+TERMINATED = ("regimemap: terminated", 128 + int(signal.SIGTERM))
+
+_exiting = threading.Lock()
+
+
+def is_console() -> bool:
+    """Whether this process is the ``regimemap`` command (its console script or ``-m regimemap``)."""
+    argv: list[str] = [str(a) for a in getattr(sys, "orig_argv", [])][1:]
+    i = 0
+    while i < len(argv):
+        a = argv[i]
+        if a == "-m":
+            return i + 1 < len(argv) and argv[i + 1] == "regimemap"
+        if a.startswith("-m"):
+            return a[2:] == "regimemap"
+        if a in ("-c", "-") or a.startswith("-c"):
+            return False
+        if a in ("-X", "-W", "--check-hash-based-pycs"):
+            i += 2
+            continue
+        if a.startswith("-"):
+            i += 1
+            continue
+        return os.path.basename(a) in ("regimemap", "regimemap.exe", "regimemap-script.py")
+    return False
+
+
+def exit_now(code: int, line: str | None) -> None:
+    """End the process now: ``line`` on standard error (once), the streams flushed, ``os._exit(code)``.
+
+    No interpreter teardown: no thread is joined, no atexit handler runs (every file was
+    closed or removed before).  Safe from any thread; the first caller wins.
+    """
+    _exiting.acquire()  # never released: a second caller waits for the exit
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except Exception:  # noqa: BLE001, S110 - closed, or a broken pipe: exiting anyway
+            pass
+    if line:
+        try:
+            os.write(2, (line + "\n").encode())
+        except OSError:
+            pass
+    os._exit(code)
+
+
+def _exit_on(signum: int, frame: object) -> None:
+    line, code = TERMINATED if signum == signal.SIGTERM else INTERRUPTED
+    exit_now(code, line)
+
+
+def exit_on_signal_at_start() -> None:
+    """In the ``regimemap`` process only: Ctrl-C and SIGTERM exit at once with the command's line
+    and code, until the command installs its own handlers (a signal ignored stays ignored)."""
+    if not is_console() or threading.current_thread() is not threading.main_thread():
+        return
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        if signal.getsignal(sig) is not signal.SIG_IGN:
+            signal.signal(sig, _exit_on)
+
+
+# the package's first import (regimemap/__init__.py): in the regimemap process only, from here on
+exit_on_signal_at_start()
