@@ -49,13 +49,45 @@ def is_console() -> bool:
     return False
 
 
+def _children() -> list[int]:
+    """This process's live children (Linux: /proc; elsewhere none are known)."""
+    out: list[int] = []
+    try:
+        tasks = os.listdir("/proc/self/task")
+    except OSError:
+        return out
+    for task in tasks:
+        try:
+            with open(f"/proc/self/task/{task}/children") as fh:
+                out += [int(pid) for pid in fh.read().split()]
+        except (OSError, ValueError):
+            continue
+    return out
+
+
+def _kill_children() -> None:
+    """SIGKILL the children still alive (a Dask worker still starting), but multiprocessing's
+    resource tracker, which removes their semaphores once they are gone."""
+    for pid in _children():
+        try:
+            with open(f"/proc/{pid}/cmdline", "rb") as fh:
+                if b"resource_tracker" in fh.read():
+                    continue
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            continue
+
+
 def exit_now(code: int, line: str | None) -> None:
     """End the process now: ``line`` on standard error (once), the streams flushed, ``os._exit(code)``.
 
     No interpreter teardown: no thread is joined, no atexit handler runs (every file was
-    closed or removed before).  Safe from any thread; the first caller wins.
+    closed or removed before).  A child process still alive (a Dask worker that is still
+    starting, and so not yet watching its parent) is killed.  Safe from any thread; the first
+    caller wins.
     """
     _exiting.acquire()  # never released: a second caller waits for the exit
+    _kill_children()
     for stream in (sys.stdout, sys.stderr):
         try:
             stream.flush()

@@ -375,6 +375,32 @@ def worker_pool(jobs: int) -> Iterator[WorkerPool]:
     pool.close()
 
 
+def _start_resource_tracker() -> None:
+    """Start multiprocessing's resource tracker now, on /dev/null.
+
+    Started by the cluster's first worker, it would unblock SIGINT and SIGTERM
+    in the thread that spawns the workers.  Its standard streams are not the
+    command's: it outlives an interrupted ``regimemap`` by a moment, and would
+    write there a warning about the semaphores it cleans up.
+    """
+    from multiprocessing import resource_tracker
+
+    saved = [os.dup(1), os.dup(2)]
+    try:
+        null = os.open(os.devnull, os.O_WRONLY)
+        try:
+            os.dup2(null, 1)
+            os.dup2(null, 2)
+            resource_tracker.ensure_running()
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            os.close(null)
+    finally:
+        for fd in saved:
+            os.close(fd)
+
+
 @contextlib.contextmanager
 def local_cluster(jobs: int) -> Iterator[Any]:
     """A Dask ``LocalCluster`` of ``jobs`` single-threaded worker processes, for the block.
@@ -394,8 +420,12 @@ def local_cluster(jobs: int) -> Iterator[Any]:
 
     def start() -> None:
         try:
+            # no dashboard; the scheduler's HTTP server on a free port of this machine's loopback,
+            # not on 8787 (taken by another cluster: a warning)
             made["cluster"] = LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
-                                           dashboard_address=None)
+                                           dashboard_address=None,
+                                           scheduler_kwargs={"dashboard": False,
+                                                             "dashboard_address": "127.0.0.1:0"})
         except BaseException as exc:  # noqa: BLE001 - handed to the main thread
             made["error"] = exc
             return
@@ -403,6 +433,7 @@ def local_cluster(jobs: int) -> Iterator[Any]:
             with contextlib.suppress(Exception):
                 made["cluster"].close()
 
+    _start_resource_tracker()
     with signals_held():
         starter = threading.Thread(target=start, name="regimemap-local-cluster", daemon=True)
         starter.start()
