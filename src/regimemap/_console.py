@@ -7,7 +7,9 @@ library.  Until the command runs, Ctrl-C or SIGTERM there ends the process at on
 command's one line and exit code: nothing is written yet, and an interpreter importing numpy
 would print a traceback.  While the command runs, :mod:`regimemap.cli._signals` takes over; its
 handlers raise, so that cleanups run, and :func:`exit_now` ends the process (the line, then
-``os._exit``) once they have.
+``os._exit``) once they have.  A Dask worker that the process spawns (``study --scheduler
+local``) imports regimemap too, as it starts: :func:`die_with_spawning_parent` has it die with
+its parent from then on.
 """
 
 from __future__ import annotations
@@ -17,7 +19,8 @@ import signal
 import sys
 import threading
 
-__all__ = ["INTERRUPTED", "TERMINATED", "exit_now", "exit_on_signal_at_start", "is_console"]
+__all__ = ["INTERRUPTED", "TERMINATED", "die_with_spawning_parent", "exit_now", "exit_on_signal_at_start",
+           "is_console"]
 
 #: The line and exit code of Ctrl-C (SIGINT) and of SIGTERM (128 + the signal's number, as a shell
 #: reports a process the signal ended).
@@ -116,5 +119,17 @@ def exit_on_signal_at_start() -> None:
             signal.signal(sig, _exit_on)
 
 
-# the package's first import (regimemap/__init__.py): in the regimemap process only, from here on
+def die_with_spawning_parent() -> None:
+    """In a process spawned for a LocalCluster of the ``regimemap`` process (a Dask worker, which
+    imports regimemap as it starts): SIGKILL when that parent dies, from this moment on."""
+    parent = os.environ.get("REGIMEMAP_DIE_WITH_PARENT", "")  # regimemap.lifetime.workers.PARENT_VARIABLE
+    if parent.isdigit() and int(parent) != os.getpid() and os.getppid() in (int(parent), 1):
+        from .lifetime.workers import die_with_parent
+
+        die_with_parent(int(parent), signal.SIGKILL)
+
+
+# the package's first import (regimemap/__init__.py): from here on, in the regimemap process
+# and in the Dask workers it spawns
 exit_on_signal_at_start()
+die_with_spawning_parent()

@@ -47,8 +47,8 @@ from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
 from typing import Any, TypeVar
 
-__all__ = ["STOP_GRACE", "STOP_SIGNAL", "PoolBroken", "WorkerPool", "WorkerStopped", "local_cluster",
-           "worker_pool"]
+__all__ = ["PARENT_VARIABLE", "STOP_GRACE", "STOP_SIGNAL", "PoolBroken", "WorkerPool", "WorkerStopped",
+           "die_with_parent", "local_cluster", "worker_pool"]
 
 _T = TypeVar("_T")
 
@@ -66,6 +66,11 @@ _STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 #: The signal by which the parent stops a worker (and the kernel, when the parent dies): it raises
 #: :class:`WorkerStopped` in the worker.  Not SIGTERM, which a group-wide ``kill`` also sends.
 STOP_SIGNAL = signal.SIGUSR1
+
+#: The environment variable that tells a process spawned for a LocalCluster (a Dask worker) its
+#: parent's pid: it asks for SIGKILL when that parent dies, as soon as it imports regimemap
+#: (:mod:`regimemap._console`), so even while it is still starting.
+PARENT_VARIABLE = "REGIMEMAP_DIE_WITH_PARENT"
 
 #: The signals held off while a worker starts.
 _HELD = (*_STOP_SIGNALS, STOP_SIGNAL)
@@ -114,19 +119,21 @@ def _raise_stopped(signum: int, frame: object) -> None:
     raise WorkerStopped(signum)
 
 
-def _watch_parent(parent: int) -> None:  # pragma: no cover - not Linux
-    """A worker's thread where prctl is missing: :data:`STOP_SIGNAL` to itself once the parent is gone."""
+def _watch_parent(parent: int, signum: int) -> None:  # pragma: no cover - not Linux
+    """A worker's thread where prctl is missing: ``signum`` to itself once the parent is gone."""
     while os.getppid() == parent:
         time.sleep(0.5)
-    os.kill(os.getpid(), STOP_SIGNAL)
+    os.kill(os.getpid(), signum)
 
 
-def die_with_parent(parent: int) -> None:
-    """Make this (worker) process receive :data:`STOP_SIGNAL` when the process ``parent`` dies.
+def die_with_parent(parent: int, signum: int = STOP_SIGNAL) -> None:
+    """Make this (worker) process receive ``signum`` when the process ``parent`` dies.
 
     Linux: ``prctl(PR_SET_PDEATHSIG)``, then a check that the parent did not
     die before it (the worker is then an orphan already).  Elsewhere a daemon
-    thread polls the parent's pid.
+    thread polls the parent's pid.  Called by a pool's worker as it starts, and
+    by a LocalCluster's worker (SIGKILL) as it imports regimemap
+    (:data:`PARENT_VARIABLE`).
     """
     done = False
     if sys.platform.startswith("linux"):
@@ -134,14 +141,14 @@ def die_with_parent(parent: int) -> None:
             import ctypes
 
             libc = ctypes.CDLL(None, use_errno=True)
-            done = libc.prctl(_PR_SET_PDEATHSIG, int(STOP_SIGNAL), 0, 0, 0) == 0
+            done = libc.prctl(_PR_SET_PDEATHSIG, int(signum), 0, 0, 0) == 0
         except (OSError, AttributeError):  # pragma: no cover - no libc prctl
             done = False
     if not done:  # pragma: no cover - not Linux
-        threading.Thread(target=_watch_parent, args=(parent,), daemon=True,
+        threading.Thread(target=_watch_parent, args=(parent, signum), daemon=True,
                          name="regimemap-parent-watch").start()
     if os.getppid() != parent:  # the parent died before prctl
-        os.kill(os.getpid(), STOP_SIGNAL)
+        os.kill(os.getpid(), signum)
 
 
 def _worker_main(conn: Connection, parent: int, others: list[Connection]) -> None:
@@ -413,6 +420,23 @@ def local_cluster(jobs: int) -> Iterator[Any]:
     Interrupted, the cluster is closed quietly, at most :data:`STOP_GRACE`
     seconds (the process exits right after).
     """
+    _start_resource_tracker()
+    was = os.environ.get(PARENT_VARIABLE)
+    os.environ[PARENT_VARIABLE] = str(os.getpid())  # inherited by the spawned workers
+    with contextlib.ExitStack() as stack:
+        stack.callback(_restore_variable, was)
+        yield stack.enter_context(_started_cluster(jobs))
+
+
+def _restore_variable(was: str | None) -> None:
+    if was is None:
+        os.environ.pop(PARENT_VARIABLE, None)
+    else:
+        os.environ[PARENT_VARIABLE] = was
+
+
+@contextlib.contextmanager
+def _started_cluster(jobs: int) -> Iterator[Any]:
     from distributed import LocalCluster
 
     made: dict[str, Any] = {}
@@ -433,7 +457,6 @@ def local_cluster(jobs: int) -> Iterator[Any]:
             with contextlib.suppress(Exception):
                 made["cluster"].close()
 
-    _start_resource_tracker()
     with signals_held():
         starter = threading.Thread(target=start, name="regimemap-local-cluster", daemon=True)
         starter.start()
