@@ -16,7 +16,6 @@ from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import click
 
-from .._console import INTERRUPTED, TERMINATED, exit_now
 from ..mechanics.validation import (
     GAMMA_MAX,
     GAMMA_MIN,
@@ -28,6 +27,7 @@ from ..mechanics.validation import (
     check_positive,
     check_resolution,
 )
+from ..process import INTERRUPTED, TERMINATED, exit_now
 from ._signals import Terminated, stop_signals
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -437,7 +437,7 @@ def _guess_path(group: click.Command, argv: list[str] | None) -> str:
 def _stopped(how: tuple[str, int], exiting: bool) -> int:
     """The end of an interrupted command: its one line and exit code.  ``exiting`` (the
     ``regimemap`` process): the process ends here, without the interpreter's teardown
-    (:func:`regimemap._console.exit_now`; every cleanup of the command has run)."""
+    (:func:`regimemap.process.exit_now`; every cleanup of the command has run)."""
     line, code = how
     if exiting:
         exit_now(code, _one_line(line))

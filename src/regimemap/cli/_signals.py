@@ -4,7 +4,7 @@
 :class:`Terminated` for the duration of a command (:func:`regimemap.cli._common.run_main`),
 so the cleanups of an interrupted run -- a process pool stopped, a temporary file removed --
 run for both, and a second signal cannot break them half-way.  Before the command runs (the
-imports of the process's start) and after it, :mod:`regimemap._console` ends the ``regimemap``
+imports of the process's start) and after it, :mod:`regimemap.process` ends the ``regimemap``
 process at once on either signal; the worker processes ignore both
 (:mod:`regimemap.lifetime.workers`): the parent stops them.
 """
@@ -18,7 +18,7 @@ import threading
 from collections.abc import Iterator
 from typing import Any
 
-from .._console import INTERRUPTED, TERMINATED, exit_now
+from ..process import INTERRUPTED, TERMINATED, exit_now
 
 __all__ = ["EXIT_DEADLINE", "Terminated", "stop_signals"]
 
@@ -35,7 +35,7 @@ class Terminated(BaseException):
 _STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
 #: Seconds the ``regimemap`` process may take to end after the first signal: then it ends anyway
-#: (:func:`regimemap._console.exit_now`), whatever it was doing.
+#: (:func:`regimemap.process.exit_now`), whatever it was doing.
 EXIT_DEADLINE = 1.5
 
 

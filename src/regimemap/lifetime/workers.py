@@ -69,7 +69,7 @@ STOP_SIGNAL = signal.SIGUSR1
 
 #: The environment variable that tells a process spawned for a LocalCluster (a Dask worker) its
 #: parent's pid: it asks for SIGKILL when that parent dies, as soon as it imports regimemap
-#: (:mod:`regimemap._console`), so even while it is still starting.
+#: (:mod:`regimemap.process`), so even while it is still starting.
 PARENT_VARIABLE = "REGIMEMAP_DIE_WITH_PARENT"
 
 #: The signals held off while a worker starts.

@@ -1,15 +1,15 @@
 """The ``regimemap`` process's exit on Ctrl-C and SIGTERM, from its first line of regimemap code.
 
-Standard library only: :func:`exit_on_signal_at_start` runs when this module is imported, the
-package's first import (``regimemap/__init__.py``), and does something only in the ``regimemap`` command's
-own process (the console script, ``python -m regimemap``), never in a program that imports the
-library.  Until the command runs, Ctrl-C or SIGTERM there ends the process at once, with the
-command's one line and exit code: nothing is written yet, and an interpreter importing numpy
-would print a traceback.  While the command runs, :mod:`regimemap.cli._signals` takes over; its
-handlers raise, so that cleanups run, and :func:`exit_now` ends the process (the line, then
-``os._exit``) once they have.  A Dask worker that the process spawns (``study --scheduler
-local``) imports regimemap too, as it starts: :func:`die_with_spawning_parent` has it die with
-its parent from then on.
+The standard library only, at import: :func:`exit_on_signal_at_start` runs when this module is
+imported, the package's first import (``regimemap/__init__.py``), and does something only in the
+``regimemap`` command's own process (the console script, ``python -m regimemap``), never in a
+program that imports the library. Until the command runs, Ctrl-C or SIGTERM there ends the
+process at once, with the command's one line and exit code: nothing is written yet, and an
+interpreter importing numpy would print a traceback. While the command runs,
+:mod:`regimemap.cli._signals` takes over; its handlers raise, so that cleanups run, and
+:func:`exit_now` ends the process (the line, then ``os._exit``) once they have. A Dask worker
+that the process spawns (``study --scheduler local``) imports regimemap too, as it starts:
+:func:`die_with_spawning_parent` has it die with its parent from then on.
 """
 
 from __future__ import annotations
