@@ -18,6 +18,7 @@ import os
 import signal
 import sys
 import threading
+import time
 
 __all__ = ["INTERRUPTED", "TERMINATED", "die_with_spawning_parent", "exit_now", "exit_on_signal_at_start",
            "is_console"]
@@ -28,6 +29,7 @@ INTERRUPTED = ("regimemap: interrupted", 128 + int(signal.SIGINT))
 TERMINATED = ("regimemap: terminated", 128 + int(signal.SIGTERM))
 
 _exiting = threading.Lock()
+_exiting_thread: list[int] = []
 
 
 def is_console() -> bool:
@@ -87,9 +89,14 @@ def exit_now(code: int, line: str | None) -> None:
     No interpreter teardown: no thread is joined, no atexit handler runs (every file was
     closed or removed before).  A child process still alive (a Dask worker that is still
     starting, and so not yet watching its parent) is killed.  Safe from any thread; the first
-    caller wins.
+    caller wins (a signal handler that interrupts it in its own thread returns at once).
     """
-    _exiting.acquire()  # never released: a second caller waits for the exit
+    me = threading.get_ident()
+    if not _exiting.acquire(blocking=False):  # never released: the first caller is ending the process
+        while _exiting_thread and _exiting_thread[0] != me:  # another thread is: wait for the end
+            time.sleep(1.0)
+        return  # a second signal, whose handler interrupted the first one's exit here: it goes on
+    _exiting_thread.append(me)
     _kill_children()
     for stream in (sys.stdout, sys.stderr):
         try:

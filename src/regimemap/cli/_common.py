@@ -28,7 +28,7 @@ from ..mechanics.validation import (
     check_resolution,
 )
 from ..process import INTERRUPTED, TERMINATED, exit_now
-from ._signals import Terminated, stop_signals
+from ._signals import EXIT_DEADLINE, Terminated, stop_signals
 
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
@@ -464,7 +464,7 @@ def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bo
       second signal is ignored).
     """
     try:
-        with stop_signals(exiting=exiting):
+        with stop_signals(exiting=exiting, deadline=EXIT_DEADLINE if exiting else None):
             # without standalone mode click returns the code of a click.exceptions.Exit (--check's 1)
             code = group.main(args=argv, prog_name="regimemap", standalone_mode=False)
     except Terminated:

@@ -39,17 +39,17 @@ _STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 EXIT_DEADLINE = 1.5
 
 
-def _arm_deadline(signum: int) -> None:
-    """End the process :data:`EXIT_DEADLINE` seconds from now, with the signal's line and code."""
+def _arm_deadline(signum: int, seconds: float) -> None:
+    """End the process ``seconds`` from now, with the signal's line and code."""
     line, code = TERMINATED if signum == signal.SIGTERM else INTERRUPTED
-    timer = threading.Timer(EXIT_DEADLINE, exit_now, args=(code, line))
+    timer = threading.Timer(seconds, exit_now, args=(code, line))
     timer.daemon = True
     timer.name = "regimemap-exit-deadline"
     timer.start()
 
 
 @contextlib.contextmanager
-def stop_signals(*, exiting: bool = False) -> Iterator[None]:
+def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Iterator[None]:
     """While the block runs, SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`.
 
     Only the first of them raises: a second Ctrl-C (or the same signal sent to
@@ -59,8 +59,9 @@ def stop_signals(*, exiting: bool = False) -> Iterator[None]:
     ignored`` and carry on, is taken back and raised again in the code that
     runs next.  Afterwards the handlers are restored, unless ``exiting`` (the
     ``regimemap`` process itself, which ends now) and a signal came: both are
-    then ignored until the process has exited, and it exits at the latest
-    :data:`EXIT_DEADLINE` seconds after the signal.  A signal the process was
+    then ignored until the process has exited.  With a ``deadline`` (the
+    ``regimemap`` process: :data:`EXIT_DEADLINE`), the process ends that many
+    seconds after the first signal at the latest, whatever it is doing.  A signal the process was
     started with ignored (``nohup``, a background job of a script) stays
     ignored.  Outside the main thread nothing is changed.
     """
@@ -74,8 +75,8 @@ def stop_signals(*, exiting: bool = False) -> Iterator[None]:
         if caught:  # the first one is being handled
             return
         caught.append(signum)
-        if exiting:
-            _arm_deadline(signum)
+        if deadline is not None:
+            _arm_deadline(signum, deadline)
         if signum == signal.SIGTERM:
             raise Terminated(signum)
         raise KeyboardInterrupt
