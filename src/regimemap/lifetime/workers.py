@@ -65,7 +65,7 @@ _STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
 #: The signal by which the parent stops a worker (and the kernel, when the parent dies): it raises
 #: :class:`WorkerStopped` in the worker.  Not SIGTERM, which a group-wide ``kill`` also sends.
-STOP_SIGNAL = signal.SIGUSR1
+STOP_SIGNAL = getattr(signal, "SIGUSR1", signal.SIGTERM)  # no SIGUSR1 on Windows
 
 #: The environment variable that tells a process spawned for a LocalCluster (a Dask worker) its
 #: parent's pid: it asks for SIGKILL when that parent dies, as soon as it imports regimemap
