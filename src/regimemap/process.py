@@ -19,9 +19,10 @@ import signal
 import sys
 import threading
 import time
+from typing import Any
 
 __all__ = ["INTERRUPTED", "TERMINATED", "die_with_spawning_parent", "exit_now", "exit_on_signal_at_start",
-           "is_console"]
+           "flush_on_exit", "is_console"]
 
 #: The line and exit code of Ctrl-C (SIGINT) and of SIGTERM (128 + the signal's number, as a shell
 #: reports a process the signal ended).
@@ -30,6 +31,7 @@ TERMINATED = ("regimemap: terminated", 128 + int(signal.SIGTERM))
 
 _exiting = threading.Lock()
 _exiting_thread: list[int] = []
+_flushed: list[Any] = []
 
 
 def is_console() -> bool:
@@ -83,8 +85,15 @@ def _kill_children() -> None:
             continue
 
 
+def flush_on_exit(*streams: Any) -> None:
+    """The streams :func:`exit_now` flushes before the end (the command line's standard output
+    and error: this module writes to neither but for the one line, on file descriptor 2)."""
+    _flushed[:] = streams
+
+
 def exit_now(code: int, line: str | None) -> None:
-    """End the process now: ``line`` on standard error (once), the streams flushed, ``os._exit(code)``.
+    """End the process now: the streams of :func:`flush_on_exit` flushed, ``line`` on standard error
+    (once), ``os._exit(code)``.
 
     No interpreter teardown: no thread is joined, no atexit handler runs (every file was
     closed or removed before).  A child process still alive (a Dask worker that is still
@@ -98,7 +107,7 @@ def exit_now(code: int, line: str | None) -> None:
         return  # a second signal, whose handler interrupted the first one's exit here: it goes on
     _exiting_thread.append(me)
     _kill_children()
-    for stream in (sys.stdout, sys.stderr):
+    for stream in _flushed:
         try:
             stream.flush()
         except Exception:  # noqa: BLE001, S110 - closed, or a broken pipe: exiting anyway

@@ -49,6 +49,16 @@ def design(tmp_path: Path) -> Path:
 @pytest.mark.parametrize("sig,code,message", [(signal.SIGTERM, 143, "regimemap: terminated"),
                                               (signal.SIGINT, 130, "regimemap: interrupted")])
 def test_a_signal_ends_the_command_with_its_code(monkeypatch, tmp_path, design, sig, code, message):
+    # as a terminal's Ctrl-C reaches an interactive process (a background job's SIGINT is ignored,
+    # and stays so: test_an_ignored_sigint_stays_ignored)
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        _run_and_check(monkeypatch, tmp_path, design, sig, code, message)
+    finally:
+        signal.signal(signal.SIGINT, old)
+
+
+def _run_and_check(monkeypatch, tmp_path, design, sig, code, message):
     before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
     after = _signal_while_reading(monkeypatch, sig, times=3)
     out = tmp_path / "life.csv"

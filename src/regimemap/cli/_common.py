@@ -27,7 +27,7 @@ from ..mechanics.validation import (
     check_positive,
     check_resolution,
 )
-from ..process import INTERRUPTED, TERMINATED, exit_now
+from ..process import INTERRUPTED, TERMINATED, exit_now, flush_on_exit
 from ._signals import EXIT_DEADLINE, Terminated, stop_signals
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -463,6 +463,8 @@ def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bo
       ``exiting``, the process ends here, at the latest 1.5 s after the signal, and a
       second signal is ignored).
     """
+    if exiting:
+        flush_on_exit(sys.stdout, sys.stderr)
     try:
         with stop_signals(exiting=exiting, deadline=EXIT_DEADLINE if exiting else None):
             # without standalone mode click returns the code of a click.exceptions.Exit (--check's 1)

@@ -172,9 +172,6 @@ def _worker_main(conn: Connection, parent: int, others: list[Connection]) -> Non
         pass
     finally:
         # no interpreter teardown (atexit, the parent's inherited threads): the parent reaps us
-        with contextlib.suppress(BaseException):
-            sys.stdout.flush()
-            sys.stderr.flush()
         os._exit(0)
 
 
