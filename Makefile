@@ -1,7 +1,8 @@
 # regimemap: `make figures` regenerates figures/, `make test` runs the tests (`make test-fast`
 # the quick ones, `make test-portable` those marked portable again at each of numpy's CPU
-# dispatch levels), `make lint` runs ruff and mypy, `make bench` the benchmarks, `make docs`
-# builds the documentation site into docs/_build/html.
+# dispatch levels, `make test-stress` the interrupts at random moments), `make lint` runs ruff
+# and mypy, `make bench` the benchmarks, `make docs` builds the documentation site into
+# docs/_build/html.
 # Both create the virtual environment .venv when it is missing.
 PYTHON ?= python3
 VENV   ?= .venv
@@ -9,7 +10,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.docs-installed
 
-.PHONY: all venv figures test test-fast test-portable lint bench docs clean distclean
+.PHONY: all venv figures test test-fast test-stress test-portable lint bench docs clean distclean
 
 all: figures
 
@@ -42,13 +43,18 @@ figures: $(STAMP)
 # `make test`: every test and doctest, on every core (pytest-xdist; worksteal evens out the long
 # ones).  `make test-fast`: the edit loop -- engine, io, validation, layers -- without the tests
 # marked render, subprocess or slow (pyproject.toml lists the markers).
-TEST_FAST := not render and not subprocess and not slow
+# `make test-stress`: the stress tier (Ctrl-C 1-5 times at random moments, 50 runs across the
+# commands; a few minutes), which the other two leave out; CI runs it after `make test`.
+TEST_FAST := not render and not subprocess and not slow and not stress
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto --dist worksteal
+	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "not stress"
 
 test-fast: $(STAMP)
 	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "$(TEST_FAST)"
+
+test-stress: $(STAMP)
+	$(BIN)/python -m pytest -q -n auto --dist worksteal -m stress
 
 # `make test-portable`: the tests marked portable (pinned numbers, the same bits within a run) once
 # per numpy dispatch level of this CPU above the baseline, the highest dropped first

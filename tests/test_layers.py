@@ -235,6 +235,7 @@ DRAWING_MAY_IMPORT = {
     "mechanics.checks.all_pass": "whether every given check passed (a comparison, no physics)",
     "mechanics.validation.check_gamma": "input range check, raises ValueError",
     "mechanics.validation.check_resolution": "input range check, raises ValueError",
+    "lifetime.workers.worker_pool": "the one process pool, which runs the figures (no physics)",
     "maps.mapdata.MapData": "a computed map, a record",
     "maps.mapdata.CurveData": "a computed boundary curve, a record",
     "maps.caisson.CaissonReport": "a computed caisson analysis, a record",

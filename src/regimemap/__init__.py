@@ -16,6 +16,10 @@ from __future__ import annotations
 import logging
 from typing import TYPE_CHECKING
 
+# first: in the regimemap command's own process (only), Ctrl-C while it starts is one line
+from .process import is_console  # noqa: F401 - imported for its effect (regimemap.process)
+
+# isort: split
 from ._lazy import attach
 from ._version import __version__
 from .maps.classify import PRIORITY, classify, label_grid

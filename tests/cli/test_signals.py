@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 import signal
+import sys
 import time
 from pathlib import Path
 
@@ -48,6 +49,16 @@ def design(tmp_path: Path) -> Path:
 @pytest.mark.parametrize("sig,code,message", [(signal.SIGTERM, 143, "regimemap: terminated"),
                                               (signal.SIGINT, 130, "regimemap: interrupted")])
 def test_a_signal_ends_the_command_with_its_code(monkeypatch, tmp_path, design, sig, code, message):
+    # as a terminal's Ctrl-C reaches an interactive process (a background job's SIGINT is ignored,
+    # and stays so: test_an_ignored_sigint_stays_ignored)
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        _run_and_check(monkeypatch, tmp_path, design, sig, code, message)
+    finally:
+        signal.signal(signal.SIGINT, old)
+
+
+def _run_and_check(monkeypatch, tmp_path, design, sig, code, message):
     before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
     after = _signal_while_reading(monkeypatch, sig, times=3)
     out = tmp_path / "life.csv"
@@ -90,3 +101,24 @@ def test_an_ignored_sigint_stays_ignored():
         assert signal.getsignal(signal.SIGINT) is signal.SIG_IGN
     finally:
         signal.signal(signal.SIGINT, old)
+
+
+@pytest.mark.parametrize("argv,console", [
+    (["/venv/bin/python", "/venv/bin/regimemap", "lifetime", "x.toml"], True),
+    (["python", "-m", "regimemap", "plot"], True),
+    (["python", "-X", "importtime", "-mregimemap"], True),
+    (["python", "-m", "pytest", "tests"], False),
+    (["python", "-c", "import regimemap"], False),
+    (["python", "script.py", "regimemap"], False),
+    (["python"], False),
+])
+def test_only_the_regimemap_process_exits_on_a_signal_at_start(monkeypatch, argv, console):
+    """regimemap.process acts in the command's own process only, never in a program importing it."""
+    from regimemap import process
+
+    monkeypatch.setattr(sys, "orig_argv", argv, raising=False)
+    assert process.is_console() is console
+    before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    if not console:
+        process.exit_on_signal_at_start()
+        assert {s: signal.getsignal(s) for s in before} == before

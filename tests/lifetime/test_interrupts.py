@@ -225,3 +225,41 @@ def test_ctrl_c_during_a_climate_band(tmp_path: Path) -> None:
     proc = _start(["lifetime", str(d / "site.toml"), "--trials", "2000", "--jobs", "2", "-o", "band.png"], out)
     started = _wait_for(proc, "lifetimes of", "in this process")  # a replicate, whole in a worker
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted")
+
+
+def _numpy_loaded(pid: int) -> bool:
+    try:
+        return "_multiarray_umath" in Path(f"/proc/{pid}/maps").read_text()
+    except OSError:
+        return False
+
+
+@pytest.mark.parametrize("sig,code,message", [(signal.SIGINT, 130, "regimemap: interrupted"),
+                                              (signal.SIGTERM, 143, "regimemap: terminated")])
+def test_a_signal_while_the_process_starts(goda: Path, tmp_path: Path, sig: int, code: int,
+                                           message: str) -> None:
+    """During the imports (numpy loading, before the command runs): the same one line and code."""
+    out = tmp_path / "out"
+    out.mkdir()
+    proc = _start(_lifetime(goda, "--jobs", "2"), out)
+    deadline = time.monotonic() + START_WITHIN
+    while not _numpy_loaded(proc.pid) and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.002)
+    _interrupt(proc, sig, b"", out, code, message, delay=0.0, again=2)
+
+
+def test_ctrl_c_while_a_local_cluster_starts(tmp_path: Path) -> None:
+    """``study --scheduler local``: its workers, still starting, print nothing and are gone."""
+    pytest.importorskip("distributed")
+    from regimemap.io.study_example import example_study_text
+
+    study = tmp_path / "bw.toml"
+    study.write_text(example_study_text(), encoding="utf-8")
+    out = tmp_path / "out"
+    out.mkdir()
+    proc = _start(["study", str(study), "--scheduler", "local", "--jobs", "2", "-q",
+                   "--store", str(tmp_path / "bw.store")], out)
+    deadline = time.monotonic() + START_WITHIN
+    while len(_group_members(proc.pid)) < 3 and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.02)  # the resource tracker and a worker at least: the cluster is starting
+    _interrupt(proc, signal.SIGINT, b"", out, 130, "regimemap: interrupted", delay=0.0, again=2)

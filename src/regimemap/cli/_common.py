@@ -9,7 +9,6 @@ import contextlib
 import functools
 import gc
 import os
-import signal
 import sys
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
@@ -28,7 +27,8 @@ from ..mechanics.validation import (
     check_positive,
     check_resolution,
 )
-from ._signals import Terminated, stop_signals
+from ..process import INTERRUPTED, TERMINATED, exit_now, flush_on_exit
+from ._signals import EXIT_DEADLINE, Terminated, stop_signals
 
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
@@ -434,6 +434,17 @@ def _guess_path(group: click.Command, argv: list[str] | None) -> str:
     return "regimemap"
 
 
+def _stopped(how: tuple[str, int], exiting: bool) -> int:
+    """The end of an interrupted command: its one line and exit code.  ``exiting`` (the
+    ``regimemap`` process): the process ends here, without the interpreter's teardown
+    (:func:`regimemap.process.exit_now`; every cleanup of the command has run)."""
+    line, code = how
+    if exiting:
+        exit_now(code, _one_line(line))
+    _say(line)
+    return code
+
+
 def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bool = False) -> int:
     """Run ``group`` and return an exit code; no traceback ever reaches the user.
 
@@ -449,18 +460,19 @@ def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bo
       SIGTERM 143 with ``regimemap: terminated`` (128 + the signal's number, as
       a shell reports a process the signal ended); worker processes are
       stopped and no file is left half-written (:func:`._signals.stop_signals`; with
-      ``exiting``, the process is about to end, and a second signal is ignored).
+      ``exiting``, the process ends here, at the latest 1.5 s after the signal, and a
+      second signal is ignored).
     """
+    if exiting:
+        flush_on_exit(sys.stdout, sys.stderr)
     try:
-        with stop_signals(exiting=exiting):
+        with stop_signals(exiting=exiting, deadline=EXIT_DEADLINE if exiting else None):
             # without standalone mode click returns the code of a click.exceptions.Exit (--check's 1)
             code = group.main(args=argv, prog_name="regimemap", standalone_mode=False)
     except Terminated:
-        _say("regimemap: terminated")
-        return 128 + int(signal.SIGTERM)
+        return _stopped(TERMINATED, exiting)
     except click.exceptions.Abort:
-        _say("regimemap: interrupted")
-        return 130
+        return _stopped(INTERRUPTED, exiting)
     except click.UsageError as exc:
         path = exc.ctx.command_path if exc.ctx is not None else _guess_path(group, argv)
         _say(f"{path}: error: {exc.format_message()} (see '{path} --help')")
@@ -471,8 +483,7 @@ def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bo
     except click.exceptions.Exit as exc:
         return exc.exit_code
     except KeyboardInterrupt:
-        _say("regimemap: interrupted")
-        return 130
+        return _stopped(INTERRUPTED, exiting)
     except BrokenPipeError:
         return 1
     except (ValueError, OSError) as exc:

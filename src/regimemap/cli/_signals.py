@@ -3,17 +3,24 @@
 :func:`stop_signals` turns SIGINT into KeyboardInterrupt and SIGTERM into
 :class:`Terminated` for the duration of a command (:func:`regimemap.cli._common.run_main`),
 so the cleanups of an interrupted run -- a process pool stopped, a temporary file removed --
-run for both, and a second signal cannot break them half-way.
+run for both, and a second signal cannot break them half-way.  Before the command runs (the
+imports of the process's start) and after it, :mod:`regimemap.process` ends the ``regimemap``
+process at once on either signal; the worker processes ignore both
+(:mod:`regimemap.lifetime.workers`): the parent stops them.
 """
 
 from __future__ import annotations
 
 import contextlib
 import signal
+import sys
 import threading
 from collections.abc import Iterator
+from typing import Any
 
-__all__ = ["Terminated", "stop_signals"]
+from ..process import INTERRUPTED, TERMINATED, exit_now
+
+__all__ = ["EXIT_DEADLINE", "Terminated", "stop_signals"]
 
 
 class Terminated(BaseException):
@@ -27,18 +34,36 @@ class Terminated(BaseException):
 
 _STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
 
+#: Seconds the ``regimemap`` process may take to end after the first signal: then it ends anyway
+#: (:func:`regimemap.process.exit_now`), whatever it was doing.
+EXIT_DEADLINE = 1.5
+
+
+def _arm_deadline(signum: int, seconds: float) -> None:
+    """End the process ``seconds`` from now, with the signal's line and code."""
+    line, code = TERMINATED if signum == signal.SIGTERM else INTERRUPTED
+    timer = threading.Timer(seconds, exit_now, args=(code, line))
+    timer.daemon = True
+    timer.name = "regimemap-exit-deadline"
+    timer.start()
+
 
 @contextlib.contextmanager
-def stop_signals(*, exiting: bool = False) -> Iterator[None]:
+def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Iterator[None]:
     """While the block runs, SIGINT raises KeyboardInterrupt and SIGTERM :class:`Terminated`.
 
     Only the first of them raises: a second Ctrl-C (or the same signal sent to
     a whole process group twice) cannot interrupt the cleanup of the first
-    half-way with a traceback.  Afterwards the handlers are restored, unless
-    ``exiting`` (the ``regimemap`` process itself, which ends now) and a
-    signal came: both are then ignored until the process has exited.  A
-    signal the process was started with ignored (``nohup``, a background job
-    of a script) stays ignored.  Outside the main thread nothing is changed.
+    half-way with a traceback.  An interrupt that lands in a finalizer
+    (``__del__``, a weakref callback), where Python would print ``Exception
+    ignored`` and carry on, is taken back and raised again in the code that
+    runs next.  Afterwards the handlers are restored, unless ``exiting`` (the
+    ``regimemap`` process itself, which ends now) and a signal came: both are
+    then ignored until the process has exited.  With a ``deadline`` (the
+    ``regimemap`` process: :data:`EXIT_DEADLINE`), the process ends that many
+    seconds after the first signal at the latest, whatever it is doing.  A signal the process was
+    started with ignored (``nohup``, a background job of a script) stays
+    ignored.  Outside the main thread nothing is changed.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -50,16 +75,29 @@ def stop_signals(*, exiting: bool = False) -> Iterator[None]:
         if caught:  # the first one is being handled
             return
         caught.append(signum)
+        if deadline is not None:
+            _arm_deadline(signum, deadline)
         if signum == signal.SIGTERM:
             raise Terminated(signum)
         raise KeyboardInterrupt
 
+    hook = sys.unraisablehook
+
+    def unraisable(info: Any) -> None:
+        if caught and isinstance(info.exc_value, (KeyboardInterrupt, Terminated)):
+            signum = caught.pop()  # lost in a finalizer: raised again, at the next bytecode
+            signal.raise_signal(signum)
+            return
+        hook(info)
+
     for sig in _STOP_SIGNALS:
         if saved[sig] is not signal.SIG_IGN:
             signal.signal(sig, stop)
+    sys.unraisablehook = unraisable
     try:
         yield
     finally:
+        sys.unraisablehook = hook
         for sig, handler in saved.items():
             # SIG_IGN, not a Python handler: the interpreter keeps it while it shuts down
             signal.signal(sig, signal.SIG_IGN if exiting and caught else handler)

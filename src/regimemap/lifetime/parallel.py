@@ -3,7 +3,9 @@
 Chunks are runs of consecutive blocks (:mod:`regimemap.lifetime.engine`); each
 block has its own stream spawned from the root seed, so the concatenated
 result does not depend on the chunk size, on ``jobs`` or on the cluster.
-Dask (``distributed``) is imported only when a scheduler address is given.
+Dask (``distributed``) is imported only when a scheduler address is given.  The local
+processes are those of :func:`regimemap.lifetime.workers.worker_pool`, the one place where
+regimemap starts processes (Ctrl-C, SIGTERM and a dead parent end them at once).
 """
 
 from __future__ import annotations
@@ -12,10 +14,9 @@ import contextlib
 import logging
 import math
 import os
-import signal
 import time
-from collections.abc import Callable, Generator, Iterable, Iterator, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
+from collections.abc import Callable, Generator, Iterable, Sequence
+from concurrent.futures import Future
 from dataclasses import dataclass
 from typing import Any, TypeVar
 
@@ -24,6 +25,7 @@ import numpy as np
 from .engine import BLOCK, BlockResult, YearStats, simulate_blocks
 from .finite import quiet_arithmetic
 from .model import Caisson, LifetimeModel
+from .workers import WorkerPool, worker_pool
 
 __all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
            "root_seed", "submit_all", "worker_pool"]
@@ -109,93 +111,10 @@ def _serial(caissons: tuple[Caisson, ...], model: LifetimeModel,
         yield run_chunk(caissons, model, c, guides)
 
 
-#: Signals the workers of a process pool leave to the parent (:func:`_worker_start`).
-_STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM)
-
-#: Seconds a terminated worker is given to end before it is killed.
-STOP_GRACE = 2.0
-
-
-def _block_stop_signals() -> object:
-    """Block SIGINT and SIGTERM in this thread; the previous mask, for :func:`_restore_signals`."""
-    if not hasattr(signal, "pthread_sigmask"):  # pragma: no cover - not POSIX
-        return None
-    return signal.pthread_sigmask(signal.SIG_BLOCK, _STOP_SIGNALS)
-
-
-def _restore_signals(mask: object) -> None:
-    if mask is not None:
-        signal.pthread_sigmask(signal.SIG_SETMASK, mask)  # type: ignore[arg-type]
-
-
-def _worker_start() -> None:
-    """A worker's initializer: Ctrl-C is the parent's, SIGTERM ends the worker at once.
-
-    Ctrl-C sends SIGINT to the whole process group; the workers ignore it and
-    the parent stops them (:func:`_stop_pool`), so none is left running a
-    chunk nobody waits for, and none prints a traceback.  SIGTERM gets its
-    default action (the parent's handler may raise an exception, which a
-    worker would report as a chunk's result and carry on).  The workers are
-    forked with both signals blocked (:func:`_processes`); they are unblocked
-    here, once the handlers are set.
-    """
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    if hasattr(signal, "pthread_sigmask"):
-        signal.pthread_sigmask(signal.SIG_UNBLOCK, _STOP_SIGNALS)
-
-
-def _stop_pool(pool: ProcessPoolExecutor) -> None:
-    """Stop ``pool`` now: cancel the queued chunks, terminate the workers, wait for them to end.
-
-    ``shutdown(wait=True)`` would wait for every queued chunk to run; the
-    workers are therefore terminated (SIGTERM, SIGKILL after
-    :data:`STOP_GRACE` seconds).  Interrupts are held off while this runs.
-    """
-    mask = _block_stop_signals()
-    try:
-        # the executor offers no public handle on its processes
-        processes = list((getattr(pool, "_processes", None) or {}).values())
-        pool.shutdown(wait=False, cancel_futures=True)
-        for proc in processes:
-            if proc.is_alive():
-                proc.terminate()
-        deadline = time.monotonic() + STOP_GRACE
-        for proc in processes:
-            proc.join(max(0.0, deadline - time.monotonic()))
-            if proc.is_alive():  # pragma: no cover - a worker stuck in C code past SIGTERM
-                proc.kill()
-                proc.join(STOP_GRACE)
-    finally:
-        _restore_signals(mask)
-
-
-@contextlib.contextmanager
-def worker_pool(jobs: int) -> Iterator[ProcessPoolExecutor]:
-    """A process pool of ``jobs`` workers; stopped at once (:func:`_stop_pool`) if the block raises,
-    is interrupted, or is left early (a generator closed before its end).
-
-    Submit to it with :func:`submit_all`, which starts the workers with Ctrl-C and
-    SIGTERM held off, as :func:`_worker_start` expects.
-    """
-    pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_start)
-    try:
-        yield pool
-    except BaseException:
-        _stop_pool(pool)
-        raise
-    pool.shutdown(wait=True)
-
-
-def submit_all(pool: ProcessPoolExecutor, fn: Callable[..., _T],
+def submit_all(pool: WorkerPool, fn: Callable[..., _T],
                arguments: Iterable[tuple[Any, ...]]) -> list[Future[_T]]:
-    """``pool.submit(fn, *args)`` for each ``args``, with Ctrl-C and SIGTERM held off meanwhile
-    (the workers start, by fork, with the first submit: they inherit the blocked signals)."""
-    mask = _block_stop_signals()
-    try:
-        return [pool.submit(fn, *args) for args in arguments]
-    finally:
-        _restore_signals(mask)
+    """``pool.submit(fn, *args)`` for each ``args``: their futures, in order."""
+    return [pool.submit(fn, *args) for args in arguments]
 
 
 def _processes(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequence[Chunk],

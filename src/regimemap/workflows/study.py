@@ -110,14 +110,15 @@ def _dask(todo: Iterator[tuple[str, StudyTask]], scheduler: str,
     from regimemap.lifetime.parallel import ClusterUnavailable
 
     try:
-        from distributed import Client, LocalCluster, as_completed
+        from distributed import Client, as_completed
     except ImportError:
         raise ClusterUnavailable(
             "--scheduler needs Dask's distributed package: pip install 'regimemap[cluster]'") from None
+    from regimemap.lifetime.workers import local_cluster
+
     with contextlib.ExitStack() as stack:
-        if scheduler == "local":
-            cluster = stack.enter_context(LocalCluster(n_workers=jobs, threads_per_worker=1, processes=True,
-                                                       dashboard_address=None))
+        if scheduler == "local":  # its processes leave Ctrl-C to this one, and die with it
+            cluster = stack.enter_context(local_cluster(jobs))
             client = stack.enter_context(Client(cluster))
         else:
             try:

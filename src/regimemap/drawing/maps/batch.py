@@ -3,7 +3,9 @@
 :func:`write_figures` shares the figures out among worker processes; each
 figure is drawn and written by one process alone, atomically
 (:func:`regimemap.drawing.save.save_figure`), so the files are byte-identical
-to a one-process run on the same machine.  :func:`render_figure` draws one of
+to a one-process run on the same machine.  The workers are those of
+:func:`regimemap.lifetime.workers.worker_pool`, the one place where regimemap
+starts processes.  :func:`render_figure` draws one of
 them by its id from its maps; the maps are computed by the function the caller
 hands over (``compute``: the command line's, which calls the workflows
 :func:`regimemap.workflows.map.run_map` and :func:`regimemap.workflows.atlas.run_atlas`),
@@ -32,17 +34,6 @@ FigureMaps = Callable[[str], "MapRecord | AtlasRecord | None"]
 
 #: The figure a worker process keeps between its tasks (see :func:`_render_chunk`).
 _KEPT: dict[str, Figure] = {}
-
-
-def _leave_ctrl_c() -> None:
-    """A worker's initializer: Ctrl-C (SIGINT to the process group) is the parent's.
-
-    The parent then cancels the figures not started; a worker finishes the
-    figure it is drawing (written whole, atomically) and ends.
-    """
-    import signal
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def render_figure(fid: str, maps: MapRecord | AtlasRecord | None, *, dpi: float,
@@ -159,24 +150,20 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
     folder_s = os.fspath(folder)
     if jobs <= 1:
         return [Path(p) for p in _render_chunk(ids, folder_s, formats, dpi, compute, progress)]
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor, as_completed
+    from concurrent.futures import as_completed
 
-    methods = multiprocessing.get_all_start_methods()
-    ctx = multiprocessing.get_context("fork" if "fork" in methods else None)
+    from ...lifetime.workers import worker_pool
+
     # one figure a task, the longest first: a worker that is free takes the next one, so the
     # workers finish together (a fixed deal left one ~0.3 s behind the other); each worker
-    # keeps its figure between tasks
+    # keeps its figure between tasks.  Ctrl-C or a failure stops the pool at once: the figures
+    # not started are not drawn, the one being written is removed whole (io.atomic)
     done: dict[str, list[str]] = {}
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=ctx, initializer=_leave_ctrl_c) as pool:
+    with worker_pool(jobs) as pool:
         futures = {pool.submit(_render_chunk, [fid], folder_s, tuple(formats), dpi, compute, None, True):
                    fid for fid in _longest_first(ids)}
-        try:
-            for fut in as_completed(futures):
-                done[futures[fut]] = fut.result()
-                if progress is not None:
-                    progress(1)
-        except BaseException:  # Ctrl-C or a failure: the figures not started are not drawn
-            pool.shutdown(wait=True, cancel_futures=True)
-            raise
+        for fut in as_completed(futures):
+            done[futures[fut]] = fut.result()
+            if progress is not None:
+                progress(1)
     return [Path(p) for fid in ids for p in done[fid]]
