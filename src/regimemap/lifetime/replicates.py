@@ -138,7 +138,8 @@ def _stats(result: LifetimeResult, thresholds: Sequence[float]) -> NDArray[np.fl
     """A replicate's numbers from its lifetimes: ``[ESD, P(S > x) at thresholds, P(S > x) at
     CURVE_X]``."""
     s = np.sort(result.sliding)
-    over = (s.size - np.searchsorted(s, np.asarray(list(thresholds) + CURVE_X.tolist()), side="right")) / s.size
+    at = np.asarray(list(thresholds) + CURVE_X.tolist())
+    over = (s.size - np.searchsorted(s, at, side="right")) / s.size  # exactly mean(sliding > x)
     return np.concatenate([[result.expected_sliding], over])
 
 
