@@ -139,3 +139,22 @@ def test_the_chart_is_judged_at_the_band_s_upper_level_and_its_csv_has_the_band(
     obj = rec.report_json()
     assert list(obj)[-2:] == ["checks", "verdict"] and "climate_band" in obj
     assert json.loads(json.dumps(obj))["climate_band"]["replicates"] == 3
+
+
+@pytest.mark.subprocess
+def test_caisson_names_the_record_and_judges_the_band_as_lifetime_does(run_cli, tmp_path):
+    p = record_design(tmp_path)  # the lifetime tests' run: trials 60, seed 9, 4 replicates
+    p.write_text(p.read_text().replace("trials = 5000", "trials = 60").replace("seed = 2026", "seed = 9"))
+    text = run_cli(["caisson", str(p), "--check"])
+    assert text.code == 1, text.output
+    lines = text.stdout.rstrip().splitlines()
+    assert "buoy.txt.gz (peaks over the 98 % quantile" in text.stdout and "fitted: GPD" in text.stdout
+    assert "90 % climate band:" in text.stdout
+    assert lines[-2].startswith("FAIL  ESD including the climate's uncertainty")
+    assert lines[-1].startswith("verdict: FAIL (1 of 3")
+    obj = json.loads(run_cli(["caisson", str(p), "--check", "--json"]).stdout)
+    assert list(obj)[-3:] == ["design_check", "checks", "verdict"]
+    assert obj["lifetime"]["record"]["path"] == str(tmp_path / "buoy.txt.gz")
+    band = obj["lifetime"]["climate_band"]
+    assert band["replicates"] == 4 and obj["checks"][-1]["value"] == band["expected_sliding"]
+    assert obj["lifetime"]["expected_sliding"] <= 0.1 < band["expected_sliding"]

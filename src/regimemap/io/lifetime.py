@@ -32,9 +32,11 @@ from .checks import checks_json, checks_lines
 
 if TYPE_CHECKING:
     from ..lifetime.replicates import ChartBand, ClimateBand
+    from .design_record import RecordSpec
 
 __all__ = ["SAMPLE_FORMATS", "band_json", "chart_band_dict", "chart_json", "format_chart", "format_lifetime",
-           "impulsive_text", "lifetime_json", "threshold_key", "verdict_word", "write_chart", "write_samples"]
+           "impulsive_text", "lifetime_brief_json", "lifetime_brief_lines", "lifetime_json", "record_words",
+           "threshold_key", "verdict_word", "write_chart", "write_samples"]
 
 #: Formats of :func:`write_samples` (from the file's suffix).
 SAMPLE_FORMATS: tuple[str, ...] = ("csv", "npz")
@@ -342,6 +344,68 @@ def _band_lines(band: ClimateBand) -> list[str]:
              f"  {100 * band.level:g} % climate band: {_g(band.lower)} m to {_g(band.upper)} m "
              "(the ESD's percentiles over the climates)"]
     return lines
+
+
+def record_words(record: RecordSpec) -> str:
+    """A wave record as the design file names it, with its options: ``the record buoy.txt (peaks over
+    the 99.5 % quantile, storms 48 h apart; T1/3 = 1.2 x its period)``."""
+    kind, value = record.threshold
+    if record.method == "pot":
+        over = f"{100 * value:g} % quantile" if kind == "quantile" else f"{value:g} m"
+        how = f"peaks over the {over}, storms {record.gap_hours:g} h apart"
+    else:
+        how = f"annual maxima, years at least {100 * record.coverage:g} % observed"
+    if record.period_ratio is not None:
+        how += f"; T1/3 = {record.period_ratio:g} x its period"
+    return f"the record {record.path} ({how})"
+
+
+def lifetime_brief_lines(result: LifetimeResult, model: LifetimeModel, band: ClimateBand | None = None,
+                         record: RecordSpec | None = None) -> list[str]:
+    """The sliding over the design life in a few lines (the caisson's report): the lifetimes, the
+    climate -- the wave record named with its fit -- the ESD, and with a record's band the ESD
+    including the climate's uncertainty and its band."""
+    n = result.trials
+    lines = [f"sliding over the design life ([lifetime]; `regimemap lifetime` gives the whole report): "
+             f"{n} lifetime{'' if n == 1 else 's'} of {result.years} years, seed {result.seed}"]
+    if record is not None:
+        lines.append(f"  climate: {record_words(record)}, fitted: {model.climate.describe()}")
+    else:
+        lines.append(f"  climate: {model.climate.describe()}")
+    fitted = " under the fitted climate" if record is not None else ""
+    lines.append(f"  ESD {_value_pm(result.expected_sliding, result.std_error)} (standard error){fitted}")
+    if band is not None:
+        lines += [f"  {line}" for line in _band_lines(band)]
+    elif record is not None:
+        lines.append("  (climate_replicates = 0: the climate's uncertainty not counted)")
+    if result.failure is not None:
+        f = result.failure
+        which = " including the climate's uncertainty" if band is not None else ""
+        lines.append(f"  probability of failure (S > {_g(f.sliding_limit)} m){which}: "
+                     f"{_percent(f.probability)} ± {_percent(f.std_error)}")
+    return lines
+
+
+def lifetime_brief_json(result: LifetimeResult, model: LifetimeModel, band: ClimateBand | None = None,
+                        record: RecordSpec | None = None) -> dict[str, Any]:
+    """The sliding over the design life for the caisson's JSON: ``{trials, years, seed,
+    expected_sliding, std_error, climate, record, failure, climate_band}`` (``record``: ``{path,
+    method, threshold, gap_hours, period_ratio}`` or null; ``climate_band`` as :func:`band_json`
+    or null)."""
+    rec = None if record is None else {
+        "path": record.path, "method": record.method,
+        "threshold": {"kind": record.threshold[0], "value": json_number(record.threshold[1])},
+        "gap_hours": json_number(record.gap_hours),
+        "period_ratio": None if record.period_ratio is None else json_number(record.period_ratio)}
+    f = result.failure
+    return {"trials": result.trials, "years": result.years, "seed": result.seed,
+            "expected_sliding": json_number(result.expected_sliding),
+            "std_error": json_number(result.std_error),
+            "climate": model.climate.describe(), "record": rec,
+            "failure": None if f is None else {"sliding_limit": json_number(f.sliding_limit),
+                                               "probability": json_number(f.probability),
+                                               "std_error": json_number(f.std_error)},
+            "climate_band": None if band is None else band_json(band)}
 
 
 def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None,

@@ -31,6 +31,7 @@ from ._record import Field, Notice, Record
 
 if TYPE_CHECKING:
     from ..io.design import Design
+    from ..io.design_record import RecordSpec
     from ..lifetime import Caisson, DesignChart, LifetimeModel, LifetimeResult, Requirements
     from ..lifetime.replicates import ChartBand, ClimateBand
 
@@ -88,6 +89,7 @@ class _LifetimeRun(Record):
     processes: int
     scheduler: str | None
     band_seconds: float | None
+    wave_record: RecordSpec | None
 
 
 @dataclass(frozen=True)
@@ -126,6 +128,8 @@ class LifetimeRecord(_LifetimeRun):
         The Dask cluster's address.
     band_seconds : float or None
         The climate band's wall time [s]; None without a band.
+    wave_record : RecordSpec or None
+        The ``[lifetime.record]`` whose fit is the climate (None: a typed-in climate).
     result : LifetimeResult
         Every lifetime, its statistics, the checks and the failure.
     band : ClimateBand or None
@@ -171,7 +175,8 @@ class ChartRecord(_LifetimeRun):
     Attributes
     ----------
     source, caisson, model, trials, seed, requirements, climate_as_written, width, buoyant_weight, \
-friction, H0_10, H0_50, design_H0, notices, used_seed, seconds, processes, scheduler, band_seconds
+friction, H0_10, H0_50, design_H0, notices, used_seed, seconds, processes, scheduler, band_seconds, \
+wave_record
         As :class:`LifetimeRecord`; ``width`` is the design's own, judged against the chart;
         ``notices`` also holds ``target-not-bracketed`` when the chart's widths do not bracket
         the target, or the band's upper curve does not (then the chart is not judged).
@@ -264,7 +269,7 @@ def _common(inputs: LifetimeDesign, n: int, seed: int | None, req: Requirements,
                 H0_10=float(m.climate.return_value(10)), H0_50=float(m.climate.return_value(50)),
                 design_H0=d.wave.H0, notices=inputs.notices + notices, used_seed=int(used),
                 seconds=seconds, processes=min(run["jobs"], len(make_chunks(n, 0, run["chunk"]))),
-                scheduler=run["scheduler"], band_seconds=band_seconds)
+                scheduler=run["scheduler"], band_seconds=band_seconds, wave_record=inputs.spec.record)
 
 
 def _uncounted(inputs: LifetimeDesign) -> tuple[Notice, ...]:
