@@ -158,3 +158,27 @@ def test_caisson_names_the_record_and_judges_the_band_as_lifetime_does(run_cli, 
     band = obj["lifetime"]["climate_band"]
     assert band["replicates"] == 4 and obj["checks"][-1]["value"] == band["expected_sliding"]
     assert obj["lifetime"]["expected_sliding"] <= 0.1 < band["expected_sliding"]
+
+
+@pytest.mark.render
+def test_the_exceedance_figure_draws_the_climate_band():
+    from regimemap.drawing.lifetime.exceedance import lifetime_figure
+    from regimemap.lifetime.replicates import CURVE_X
+
+    rng = np.random.default_rng(3)
+    result = _result(list(np.where(rng.random(400) < 0.3, rng.lognormal(-2.0, 1.5, 400), 0.0)))
+    curves = np.array([[float(np.mean(result.sliding * f > x)) for x in CURVE_X] for f in (0.5, 1.0, 3.0)])
+    band = ClimateBand(esd=result.expected_sliding * np.array([0.5, 1.0, 3.0]), level=0.9, seed=1, trials=400,
+                       thresholds=(), exceed=np.zeros((3, 0)), curve=curves)
+    req = Requirements(target=0.1)
+    fig = lifetime_figure(judge_lifetime(result, req, band), band=band)
+    (ax,) = [a for a in fig.axes if a.get_label() == "exceedance"]
+    gids = {a.get_gid() for a in [*ax.collections, *ax.lines]}
+    assert {"climate-band", "climate-mean", "climate-esd"} <= gids
+    esd = next(a for a in ax.lines if a.get_gid() == "climate-esd")
+    assert esd.get_xdata()[0] == pytest.approx(band.expected_sliding)
+    names = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert any("band over 3 climates of the record" in n for n in names)
+    plain = lifetime_figure(judge_lifetime(result, req))
+    (ax,) = [a for a in plain.axes if a.get_label() == "exceedance"]
+    assert not {a.get_gid() for a in [*ax.collections, *ax.lines]} & {"climate-band", "climate-esd"}

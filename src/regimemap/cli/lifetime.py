@@ -200,8 +200,10 @@ def _figure(record: LifetimeRecord | ChartRecord, design: str) -> Figure:
     title = Path(design).stem
     if isinstance(record.result, LifetimeResult):
         from ..drawing.lifetime.exceedance import lifetime_figure, lifetime_title
+        from ..lifetime.replicates import ClimateBand
 
-        return lifetime_figure(record.result, lifetime_title(title, record.result))
+        life_band = record.band if isinstance(record.band, ClimateBand) else None
+        return lifetime_figure(record.result, lifetime_title(title, record.result), band=life_band)
     from ..drawing.lifetime.chart import chart_figure, chart_title
     from ..lifetime.replicates import ChartBand
 
