@@ -182,3 +182,28 @@ def test_the_exceedance_figure_draws_the_climate_band():
     plain = lifetime_figure(judge_lifetime(result, req))
     (ax,) = [a for a in plain.axes if a.get_label() == "exceedance"]
     assert not {a.get_gid() for a in [*ax.collections, *ax.lines]} & {"climate-band", "climate-esd"}
+
+
+def test_esd_at_the_width_found_carries_each_climate_s_ratio_to_the_design_chart():
+    from regimemap.workflows.study import _esd_at
+
+    widths = np.array([16.0, 22.0, 28.0])
+    design = np.array([1.0, 0.1, 0.0])
+    # twice the design climate's ESD at 16 m, three times at 22 m: 2.5 times half-way, of the ESD found
+    assert _esd_at(widths, design, np.array([2.0, 0.3, 0.05]), 19.0, 0.4) == pytest.approx(1.0)
+    assert _esd_at(widths, design, np.array([2.0, 0.3, 0.05]), 25.0, 0.01) == pytest.approx(0.03)
+    assert _esd_at(widths, np.zeros(3), np.array([2.0, 0.3, 0.05]), 19.0, 0.4) == 0.4
+
+
+@pytest.mark.slow
+def test_a_study_target_section_with_a_record_has_its_band_and_width_at_the_upper_level(tmp_path):
+    from regimemap.workflows.study import run_study
+
+    record_design(tmp_path, "climate_replicates = 3", width=20.0)
+    (tmp_path / "study.toml").write_text(
+        'seed = 3\ntrials = 40\nbase = "site.toml"\n\n[[section]]\nname = "target"\nchainage = 10\n'
+        'target = 0.1\nwidths = [16.0, 22.0, 34.0]\ntolerance = 2.0\n\n[[scenario]]\nname = "today"\n')
+    (row,) = run_study(tmp_path / "study.toml").rows
+    assert row.required_width == row.width and row.band is not None
+    assert 0.0 <= row.band[0] <= row.band[1] and np.isfinite(row.band[1])
+    assert row.required_width_upper is not None and 16.0 <= row.required_width_upper <= 34.0
