@@ -51,7 +51,8 @@ def study_figure(record: StudyRecord, kind: str = "chainage", section: str | Non
         ``"chainage"``: each section's ESD at its chainage (log axis), a line per scenario
         through each section's first width, the section's other widths as open markers, error
         bars of two standard errors, the climate band as a hatched box at each section that has
-        one (a lone one too; artist gid ``climate-band``), the tolerable limits (0.1 m, 0.3 m) as horizontal lines.  ``"years"``: the
+        one (a lone one too; artist gid ``climate-band``), the tolerable limits (0.1 m, 0.3 m)
+        as horizontal lines.  ``"years"``: the
         expected cumulative sliding at the end of each service year of ``section`` (its first
         width), a line per scenario, the limits, and the first year over each limit marked on
         the curves (the years in the key).  ``"width"``: the width for the target ESD of each
@@ -226,8 +227,8 @@ def _chainage(record: StudyRecord, dpi: float) -> Figure:
             for xr, r in zip(x, first):
                 if r.band is None:
                     continue
-                ax.fill_between([xr - half, xr + half], max(r.band[0], y0 * 0.5), r.band[1], facecolor=s.color,
-                                alpha=0.18, hatch=s.hatch, edgecolor=s.color, lw=0.0, zorder=1,
+                ax.fill_between([xr - half, xr + half], max(r.band[0], y0 * 0.5), r.band[1],
+                                facecolor=s.color, alpha=0.18, hatch=s.hatch, edgecolor=s.color, lw=0.0, zorder=1,
                                 gid="climate-band")
         ax.plot(x, np.where(esd > 0.0, esd, np.nan), **s.line(zorder=4))
         lines.append((x, np.where(esd > 0.0, esd, np.nan)))
