@@ -228,8 +228,8 @@ def _chainage(record: StudyRecord, dpi: float) -> Figure:
                 if r.band is None:
                     continue
                 ax.fill_between([xr - half, xr + half], max(r.band[0], y0 * 0.5), r.band[1],
-                                facecolor=s.color, alpha=0.18, hatch=s.hatch, edgecolor=s.color, lw=0.0, zorder=1,
-                                gid="climate-band")
+                                facecolor=s.color, alpha=0.18, hatch=s.hatch, edgecolor=s.color, lw=0.0,
+                                zorder=1, gid="climate-band")
         ax.plot(x, np.where(esd > 0.0, esd, np.nan), **s.line(zorder=4))
         lines.append((x, np.where(esd > 0.0, esd, np.nan)))
         for r in record.rows_for(scenario=sc):
