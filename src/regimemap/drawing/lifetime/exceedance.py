@@ -30,7 +30,6 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ...lifetime.requirements import WITH_CLIMATE
 from ...lifetime.results import LifetimeResult
 from ...mechanics.checks import Check
 from ..save import DEFAULT_DPI
@@ -140,7 +139,7 @@ def _esd_check(result: LifetimeResult) -> Check | None:
 
 def _band_check(result: LifetimeResult) -> Check | None:
     """The requirement on the ESD including the climate's uncertainty, if judged on it."""
-    return next((c for c in result.checks if c.name == f"ESD {WITH_CLIMATE}"), None)
+    return next((c for c in result.checks if c.name == "ESD including the climate's uncertainty"), None)
 
 
 def _band_esd_text(band: ClimateBand) -> str:
