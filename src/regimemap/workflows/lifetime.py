@@ -139,7 +139,12 @@ class LifetimeRecord(_LifetimeRun):
     CAPTION: ClassVar[str] = "Lifetime sliding"
     FIELDS: ClassVar[tuple[Field, ...]] = _section_fields() + tuple(
         Field(f"result.{s.key}", s.label, s.unit, s.description)
-        for s in STATISTICS if not s.per_threshold and s.key not in ("failure", "trials", "seed", "width"))
+        for s in STATISTICS
+        if not s.per_threshold and s.key not in ("failure", "trials", "seed", "width")) + (
+        Field("band.expected_sliding", "ESD including the climate's uncertainty", "m",
+              "the mean over the record's replicate climates (None: no record)"),
+        Field("band.lower", "its 90 % climate band, lower", "m", "the replicates' 5 % percentile"),
+        Field("band.upper", "its 90 % climate band, upper", "m", "the replicates' 95 % percentile"))
 
     result: LifetimeResult
     band: ClimateBand | None
