@@ -217,3 +217,17 @@ def test_the_sheet_header_echoes_the_file():
     fig = draw_sheet(caisson_report(d.analysis_inputs()), written=d.written)
     (head,) = [t.get_text() for t in fig.texts if "T\u2081/\u2083" in t.get_text()]
     assert head.startswith("H\u2080\u2032 = 6.30 m, T\u2081/\u2083 = 11.4 s,") and "\u03bc = 0.60," in head
+
+
+@pytest.mark.render
+def test_the_requirements_do_not_depend_on_the_sheet(run_cli, tmp_path):
+    path = _write(tmp_path, EXAMPLE.replace("trials = 5000", "trials = 100"))
+    plain = run_cli(["caisson", path, "--check", "--json"])
+    sheet = run_cli(["caisson", path, "--check", "--json", "-o", str(tmp_path / "sheet.png")])
+    assert plain.code == sheet.code == 1, plain.stderr + sheet.stderr
+    checks = json.loads(plain.stdout)["checks"]
+    assert [c["name"] for c in checks] == ["sliding safety factor", "overturning safety factor",
+                                           "expected sliding distance"]
+    assert json.loads(sheet.stdout)["checks"] == checks
+    text = run_cli(["caisson", path, "--check"]).stdout.splitlines()
+    assert "FAIL  expected sliding distance" in text[-3] and text[-1].startswith("verdict: FAIL (2 of 3")

@@ -83,13 +83,13 @@ def test_chainage_draws_a_line_per_scenario_through_the_sections() -> None:
         np.testing.assert_allclose(ln.get_ydata(), [r.expected_sliding for r in first])
         # the markers stand beside the sections' chainages (dodged by under 1 % of the span)
         np.testing.assert_allclose(ln.get_xdata(), [c for _, c in rec.sections], atol=5.0)
-    # an error bar of +-2 SE for every row, the band a fill per scenario
+    # an error bar of +-2 SE for every row, the band a hatched box per section and scenario
     bars = [ln for ln in ax.get_lines() if len(ln.get_xdata()) == 2 and ln.get_xdata()[0] == ln.get_xdata()[1]]
     assert len(bars) == len(rec.rows)
     r0 = rec.rows[0]
     assert any(np.allclose(b.get_ydata(), [r0.expected_sliding - 2 * r0.std_error,
                                            r0.expected_sliding + 2 * r0.std_error]) for b in bars)
-    assert len(ax.collections) == len(rec.scenarios)
+    assert len(ax.collections) == len(rec.scenarios) * len(rec.sections)
     # the other width of trunk 8 m: an open marker per scenario
     assert len([ln for ln in ax.get_lines() if ln.get_linestyle() == "None"
                 and ln.get_markerfacecolor() == "white"]) == len(rec.scenarios)
@@ -204,3 +204,27 @@ def test_the_same_svg_bytes_twice(kind: str) -> None:
         print_figure(study_figure(hand_record(band=True), kind), buf, "svg")
         out.append(buf.getvalue())
     assert out[0] == out[1] and len(out[0]) > 10_000
+
+
+def _band_boxes(ax) -> list:
+    return [c for c in ax.collections if c.get_gid() == "climate-band"]
+
+
+def test_chainage_draws_the_band_at_every_banded_section_a_lone_one_too() -> None:
+    from dataclasses import replace
+
+    rec = hand_record(band=True)
+    ax = _axes(study_figure(rec, "chainage"))
+    boxes = _band_boxes(ax)
+    assert len(boxes) == len(rec.sections) * len(rec.scenarios)  # each section's first width, each scenario
+    lone = replace(rec, rows=tuple(r if r.section == "trunk 12 m" else replace(r, band=None) for r in rec.rows))
+    ax = _axes(study_figure(lone, "chainage"))
+    boxes = _band_boxes(ax)
+    assert len(boxes) == len(rec.scenarios)
+    row = next(r for r in lone.rows if r.section == "trunk 12 m" and r.scenario == "today")
+    assert row.band is not None
+    ys = boxes[0].get_paths()[0].vertices[:, 1]
+    xs = boxes[0].get_paths()[0].vertices[:, 0]
+    assert min(ys) == pytest.approx(row.band[0]) and max(ys) == pytest.approx(row.band[1])
+    assert min(xs) < 250.0 < max(xs)
+    assert not _band_boxes(_axes(study_figure(hand_record(band=False), "chainage")))

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -11,6 +12,9 @@ from ._common import import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE, read_design_file
 from ._plausible import STRICT_HELP, caisson_record
 from ._writing import writing
+
+if TYPE_CHECKING:
+    from ..workflows.caisson import CaissonRecord
 
 __all__ = ["caisson_cmd"]
 
@@ -44,19 +48,25 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     Takahashi's impulsive coefficient alpha_I unless the file says
     `impulsive = false` in [caisson] (the header names the setting).
 
-    The design check lists each requirement, PASS or FAIL: the sliding and
-    overturning safety factors at least [caisson] required_sliding and
-    required_overturning (1.2 by default), and, when the sheet draws the
-    sliding over the design life, the expected sliding distance at most
-    0.1 m (--json: "checks" and "verdict").  With --check the exit status is
-    1 when any requirement fails (after the report and the sheet are
-    written); usage errors exit 2.
+    When the file has a [lifetime] table it also simulates the sliding over
+    the design life (as `regimemap lifetime` does) and reports its ESD; with a
+    [lifetime.record] it names the record and its fit, and gives the ESD
+    including the climate's uncertainty and its 90 % band.
+
+    The report ends with the design check, each requirement PASS or FAIL:
+    the sliding and overturning safety factors at least [caisson]
+    required_sliding and required_overturning (1.2 by default), and, with
+    [lifetime], its requirements (ESD at most target, the allowed
+    exceedances; with a record judged including the climate's uncertainty)
+    -- the same requirements with or without -o (--json: "checks" and
+    "verdict").  With --check the exit status is 1 when any requirement
+    fails (after the report and the sheet are written); usage errors exit 2.
 
     With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
     the cross-section, the pressure diagram, the loaded map with the design
     point and its path as the wave grows, and the numbers -- and, when the file
-    has a [lifetime] table, the sliding over the design life (as `regimemap
-    lifetime` computes it); its path follows the report on standard output
+    has a [lifetime] table, the sliding over the design life (with a record,
+    its climate band); its path follows the report on standard output
     (with --json, as the key "sheet").
 
     \b
@@ -84,16 +94,37 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     from ..io.caisson import caisson_json, format_caisson
 
     if as_json:
-        obj = caisson_json(record.report, source=source, required=record.required, checks=record.checks)
+        obj = caisson_json(record.report, source=source, required=record.required, checks=record.checks,
+                           lifetime=_lifetime_json(record))
         if output is not None:  # the written file's path, inside the one JSON object
-            obj["sheet"] = output
+            obj = {"sheet": output, **obj}
         click.echo(json.dumps(obj, indent=2, allow_nan=False))
     else:
         click.echo(format_caisson(record.report, source=source, required=record.required,
-                                  checks=record.checks, written=d.written))
+                                  checks=record.checks, written=d.written, lifetime=_lifetime_lines(record)))
         if output is not None:
             report_written(output)
     exit_on_failure(record.checks, check)
+
+
+def _lifetime_lines(record: CaissonRecord) -> list[str]:
+    """The sliding over the design life in the report's words (none without ``[lifetime]``)."""
+    from ..io.lifetime import lifetime_brief_lines
+
+    run = record.lifetime_run
+    if run is None:
+        return []
+    return lifetime_brief_lines(run.result, run.model, run.band, run.wave_record)
+
+
+def _lifetime_json(record: CaissonRecord) -> dict[str, Any] | None:
+    """The sliding over the design life for the JSON (None without ``[lifetime]``)."""
+    from ..io.lifetime import lifetime_brief_json
+
+    run = record.lifetime_run
+    if run is None:
+        return None
+    return lifetime_brief_json(run.result, run.model, run.band, run.wave_record)
 
 
 def _print_example(design: str | None, as_json: bool, output: str | None) -> None:

@@ -64,13 +64,23 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     to a relative 1e-12 on another CPU.  Then one line per requirement of
     [lifetime] (ESD <= target; each allowed exceedance probability), PASS or
     FAIL, and the probability of sliding off the mound when [lifetime]
-    failure_sliding is given; --check exits 1 when one fails.
+    failure_sliding is given; --check exits 1 when one fails.  The report
+    ends with the requirements and the verdict.
+
+    With a [lifetime.record] climate the lifetimes also run under
+    climate_replicates replicate climates of the record's fit (default 50;
+    0: the fitted climate alone, warned), and the requirements are judged
+    including the climate's uncertainty: the ESD and each P(S > x) are the
+    means over the replicates, printed with the ESD's 90 % climate band.
 
     With --width A:B:N it draws up a design chart instead: the ESD at N widths
     (the weight in proportion to the width), the narrowest width whose ESD is at
     most --target, bisected to --width-tolerance, with its 95 % Monte Carlo
     interval (a bootstrap of the lifetimes), and the width with Goda's sliding
-    safety factor 1.2; the requirement is the design's width against it.
+    safety factor 1.2; the requirement is the design's width against it --
+    with a record, against the width at the climate band's upper level (the
+    95 % quantile of the replicates' ESDs), and -o chart.csv adds the band's
+    columns.
 
     \b
     Examples:
@@ -186,7 +196,7 @@ def _note_run(record: LifetimeRecord | ChartRecord, widths: list[float] | None) 
         click.echo(f"regimemap: no seed given: this run's seed is {used} (--seed {used} repeats it)",
                    err=True)
     if record.band is not None:
-        click.echo(f"regimemap: climate band: {record.band.replicates} bootstrap climates x {n} lifetimes "
+        click.echo(f"regimemap: climate band: {record.band.replicates} replicate climates x {n} lifetimes "
                    f"in {record.band_seconds or 0.0:.1f} s", err=True)
 
 
@@ -200,8 +210,10 @@ def _figure(record: LifetimeRecord | ChartRecord, design: str) -> Figure:
     title = Path(design).stem
     if isinstance(record.result, LifetimeResult):
         from ..drawing.lifetime.exceedance import lifetime_figure, lifetime_title
+        from ..lifetime.replicates import ClimateBand
 
-        return lifetime_figure(record.result, lifetime_title(title, record.result))
+        life_band = record.band if isinstance(record.band, ClimateBand) else None
+        return lifetime_figure(record.result, lifetime_title(title, record.result), band=life_band)
     from ..drawing.lifetime.chart import chart_figure, chart_title
     from ..lifetime.replicates import ChartBand
 

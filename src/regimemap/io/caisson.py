@@ -99,25 +99,27 @@ def design_check(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) 
 
 def design_check_lines(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF,
                        checks: Sequence[Check] | None = None) -> list[str]:
-    """The design check: a heading, one line per requirement (PASS or FAIL first) and the verdict.
+    """The design check: a heading, one line per requirement (PASS or FAIL first) and, last, the verdict.
 
     ``checks`` defaults to :func:`~regimemap.maps.caisson.caisson_checks` (the safety
     factors against ``required``); a failed safety factor that is still at least 1 gets a
     note (the caisson rests under the design wave, without the margin asked for).
     """
     checks = caisson_checks(r, required) if checks is None else checks
-    lines = ["design check (--check: exit status 1 when a requirement fails)", *checks_lines(checks)]
+    *each, verdict = checks_lines(checks)
+    lines = ["design check (--check: exit status 1 when a requirement fails)", *each]
     short = [c.name for c in checks if not c.passed and c.name.endswith("safety factor")
              and c.value >= 1.0]
     if short:
         lines.append(f"  ({' and '.join(short)} >= 1: the caisson stays at rest under the design wave, "
                      "but without the margin the design asks for)")
-    return lines
+    return [*lines, verdict]
 
 
 def caisson_json(r: CaissonReport, source: str | None = None,
                  required: tuple[float, float] = REQUIRED_SF,
-                 checks: Sequence[Check] | None = None) -> dict[str, Any]:
+                 checks: Sequence[Check] | None = None,
+                 lifetime: Mapping[str, Any] | None = None) -> dict[str, Any]:
     """One JSON-ready object: heights, pressures, loads, safety factors, block, mode, margins, path.
 
     ``checks`` lists the requirements, ``[{"name", "value", "required",
@@ -127,6 +129,10 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     default) and ``verdict`` says ``"PASS"`` or ``"FAIL"``; ``design_check``
     keeps the older form of the safety factors' check.  ``impulsive`` says
     whether Goda's pressures include Takahashi's impulsive coefficient.
+    ``lifetime`` (given a ``[lifetime]`` table,
+    :func:`regimemap.io.lifetime.lifetime_brief_json`) is the sliding over the
+    design life -- its wave record and climate band when it has one.  The object
+    ends with ``design_check``, ``checks`` and ``verdict``.
 
     Numbers are rounded to 12 significant digits (``null`` if not finite);
     ``units`` names the unit of each dimensional key.
@@ -141,9 +147,6 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     out["at_rest_by_goda"] = r.safe_by_goda
     out["impulsive"] = bool(r.inputs.get("impulsive", True))
     checks = caisson_checks(r, required) if checks is None else checks
-    out["checks"] = checks_json(checks)
-    out["verdict"] = "PASS" if all(c.passed for c in checks) else "FAIL"
-    out["design_check"] = design_check(r, required)
     out["consistent"] = r.consistent
     p = r.path
     hmax = _f(r.analysis.heights.Hmax)
@@ -163,6 +166,11 @@ def caisson_json(r: CaissonReport, source: str | None = None,
         } for i in tenths],
     }
     out["units"] = dict(UNITS)
+    if lifetime is not None:
+        out["lifetime"] = dict(lifetime)
+    out["design_check"] = design_check(r, required)
+    out["checks"] = checks_json(checks)
+    out["verdict"] = "PASS" if all(c.passed for c in checks) else "FAIL"
     return out
 
 
@@ -194,13 +202,16 @@ def _inputs_lines(written: Mapping[str, str]) -> list[str]:
 
 def format_caisson(r: CaissonReport, source: str | None = None,
                    required: tuple[float, float] = REQUIRED_SF, checks: Sequence[Check] | None = None,
-                   written: Mapping[str, str] | None = None) -> str:
-    """The report for people: heights, pressures, loads, safety factors, block, mode and margins.
+                   written: Mapping[str, str] | None = None, lifetime: Sequence[str] = ()) -> str:
+    """The report for people: heights, pressures, loads, safety factors, block, mode and margins,
+    then the sliding over the design life and, last, the design check and its verdict.
 
     ``checks``: the requirements of the design check (default
     :func:`~regimemap.maps.caisson.caisson_checks` of ``required``); ``written``:
     the design file's values as it writes them (``{"site.depth": "10.1"}``,
-    :attr:`regimemap.io.design.Design.written`), echoed under the file's name.
+    :attr:`regimemap.io.design.Design.written`), echoed under the file's name;
+    ``lifetime``: the lines of the sliding over the design life
+    (:func:`regimemap.io.lifetime.lifetime_brief_lines`), before the design check.
     """
     n = caisson_numbers(r)
     lines: list[str] = []
@@ -236,7 +247,6 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     row("sliding", n["SF_sliding"], "", "mu (W' - U) / P")
     row("overturning", n["SF_overturning"], "", "(W' t - Mu) / Mp, t = B")
     row("heel pressure", n["heel_pressure"], "kPa", "bearing pressure at the heel")
-    lines.extend(design_check_lines(r, required, checks))
     lines.append("equivalent loaded block (docs/waves.md, Sect. 7)")
     row("B", n["B"], "m", "half the width of the upright section")
     row("H_C", n["H_C"], "m", "height of the centre of mass above the base")
@@ -280,4 +290,6 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     lines.append("    SF_overturning = ((1 - buoyancy) - nu k (1 + e_u)) / (k (1 + k') gamma)")
     lines.append(f"  (nu = uplift ratio, e_u = uplift arm); here {verdict} and the mode is "
                  f"{mode_label(r.mode)}: {agree}")
+    lines.extend(lifetime)
+    lines.extend(design_check_lines(r, required, checks))
     return "\n".join(lines)

@@ -273,13 +273,24 @@ class _LifetimeReader:
             target=0.1 if got["target"] is None else got["target"],
             allowed={} if got["allowed"] is None else got["allowed"],
             failure_sliding=got["failure_sliding"],
-            record=record, climate_replicates=got["climate_replicates"] or 0,
+            record=record, climate_replicates=_replicates(got["climate_replicates"], record),
             written={key: _written(data[key]) for key in ("H0_10", "H0_50", "annual_maxima") if key in data})
         try:  # anything the checks above missed, said the library's way
             lifetime_model(spec)
         except ValueError as exc:
             raise self.fail(t, None, f"[lifetime]: {exc}") from None
         return spec
+
+
+def _replicates(given: int | None, record: RecordSpec | None) -> int:
+    """``climate_replicates`` as given; with a record and none given,
+    :data:`regimemap.lifetime.replicates.DEFAULT_REPLICATES` (a record's climate is judged with its
+    uncertainty); 0 without a record."""
+    from ..lifetime.replicates import DEFAULT_REPLICATES
+
+    if given is not None:
+        return int(given)
+    return DEFAULT_REPLICATES if record is not None else 0
 
 
 def _record_table(text: str, source: str, got: Mapping[str, Any], data: Mapping[str, Any]

@@ -129,9 +129,11 @@ LIFETIME_KEYS: dict[str, LifetimeKey] = {
                     "transformation, force, friction)", "table"),
     "record": LifetimeKey("the table [lifetime.record] of a measured wave record (path and the options of "
                     "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table"),
-    "climate_replicates": LifetimeKey("a number of bootstrap climates of [lifetime.record], 2 to 10000, each "
-                                "run for the ESD's climate band (default: none)", "int",
-                                lambda x: 2 <= x <= 10_000),
+    "climate_replicates": LifetimeKey("a number of replicate climates of [lifetime.record]'s fit, 2 to "
+                                "10000, each run for the ESD's climate band, on which the requirements are "
+                                "judged (default 50), or 0: the fitted climate alone, its uncertainty "
+                                "not counted", "int",
+                                lambda x: x == 0 or 2 <= x <= 10_000),
 }
 
 _PAIR = "a pair [ratio, cov] with ratio > 0 and cov >= 0, the factor ratio (1 + cov z) "

@@ -10,22 +10,36 @@ which the caisson is off its mound (``failure_sliding``).  From a
 figures and the exit status of ``--check`` -- and the probability of failure
 with its standard error.  The verdict compares the Monte Carlo estimate with
 the limit; the estimate's standard error is reported beside it.
+
+With a wave record's climate the requirements are judged on the results *with the climate's
+uncertainty* -- a :class:`~regimemap.lifetime.replicates.ClimateBand`: the ESD and each
+``P(S > x)`` are the means over the replicate climates (the expectation over the fit's
+uncertainty as well as over the lifetimes), and each check's name says so.  The design
+chart's width is judged at the band's upper level
+(:attr:`~regimemap.lifetime.replicates.ChartBand.width_for_target`): the narrowest width
+whose ESD at the upper end of the band meets the target.
 """
 
 from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING
 
 from ..mechanics.checks import Check
 from .chart import DesignChart
 from .results import Failure, LifetimeResult
 
-__all__ = ["DEFAULT_TARGET", "Requirements", "chart_checks", "judge_chart", "judge_lifetime",
-           "lifetime_checks"]
+if TYPE_CHECKING:
+    from .replicates import ChartBand, ClimateBand
+
+__all__ = ["DEFAULT_TARGET", "WITH_CLIMATE", "Requirements", "band_thresholds", "chart_checks",
+           "judge_chart", "judge_lifetime", "lifetime_checks"]
 
 #: The tolerable expected sliding distance of Goda & Takagi (2000) [m].
 DEFAULT_TARGET = 0.1
+#: How a check judged with the climate's uncertainty says so.
+WITH_CLIMATE = "including the climate's uncertainty"
 
 
 @dataclass(frozen=True)
@@ -52,31 +66,66 @@ def exceedance_name(x: float) -> str:
     return f"P(S > {x:g} m)"
 
 
-def lifetime_checks(result: LifetimeResult, req: Requirements) -> tuple[Check, ...]:
-    """The requirements of ``req`` against ``result``: ESD <= target, then each ``P(S > x) <= p``."""
-    checks = [Check.at_most("expected sliding distance", result.expected_sliding, req.target, "m")]
-    checks += [Check.at_most(exceedance_name(x), result.exceedance(x), p)
+def band_thresholds(req: Requirements) -> tuple[float, ...]:
+    """The slides [m] whose ``P(S > x)`` a climate band must keep to judge ``req``: the allowed
+    exceedances' and the failure's sliding."""
+    xs = set(float(x) for x in req.allowed)
+    if req.failure_sliding is not None:
+        xs.add(float(req.failure_sliding))
+    return tuple(sorted(xs))
+
+
+def lifetime_checks(result: LifetimeResult, req: Requirements,
+                    band: ClimateBand | None = None) -> tuple[Check, ...]:
+    """The requirements of ``req``: ESD <= target, then each ``P(S > x) <= p``.
+
+    Judged on ``result`` (``expected sliding distance``, ``P(S > x m)``), or, given the climate
+    band of a record, on the results with the climate's uncertainty (``ESD including the climate's
+    uncertainty``, ``P(S > x m) including ...``: the means over the replicate climates).
+    """
+    if band is None:
+        checks = [Check.at_most("expected sliding distance", result.expected_sliding, req.target, "m")]
+        checks += [Check.at_most(exceedance_name(x), result.exceedance(x), p)
+                   for x, p in sorted(req.allowed.items())]
+        return tuple(checks)
+    checks = [Check.at_most(f"ESD {WITH_CLIMATE}", band.expected_sliding, req.target, "m")]
+    checks += [Check.at_most(f"{exceedance_name(x)} {WITH_CLIMATE}", band.exceedance(x), p)
                for x, p in sorted(req.allowed.items())]
     return tuple(checks)
 
 
-def judge_lifetime(result: LifetimeResult, req: Requirements) -> LifetimeResult:
-    """``result`` with its checks and, given a sliding limit, its probability of failure."""
-    failure = None if req.failure_sliding is None else Failure.of(result.sliding, req.failure_sliding)
-    return replace(result, checks=lifetime_checks(result, req), failure=failure)
+def judge_lifetime(result: LifetimeResult, req: Requirements,
+                   band: ClimateBand | None = None) -> LifetimeResult:
+    """``result`` with its checks (:func:`lifetime_checks`) and, given a sliding limit, its
+    probability of failure -- of ``result``'s lifetimes, or with ``band`` the climate's
+    uncertainty included (the replicates' mean)."""
+    failure = None
+    if req.failure_sliding is not None:
+        failure = (Failure.of(result.sliding, req.failure_sliding) if band is None
+                   else band.failure(req.failure_sliding))
+    return replace(result, checks=lifetime_checks(result, req, band), failure=failure)
 
 
-def chart_checks(chart: DesignChart, design_width: float) -> tuple[Check, ...]:
+def chart_checks(chart: DesignChart, design_width: float, band: ChartBand | None = None) -> tuple[Check, ...]:
     """The design's width against the chart's width for the target: ``design_width >= width_for_target``.
 
-    None when the chart found no width (it has no check then).
+    With the chart's climate band the width is the band's at its upper level
+    (:attr:`ChartBand.width_for_target`).  None when the chart (or band) found no width (it has no
+    check then).
     """
+    if band is not None:
+        if band.width_for_target is None:
+            return ()
+        top = f"{100 * (0.5 + 0.5 * band.level):g} %"
+        return (Check.at_least(f"width for ESD <= {band.target:g} m at the upper end of the climate band "
+                               f"({top} quantile of {band.replicates} climates)", design_width,
+                               band.width_for_target, "m"),)
     if chart.width_for_target is None:
         return ()
     return (Check.at_least(f"width for ESD <= {chart.target:g} m", design_width, chart.width_for_target,
                            "m"),)
 
 
-def judge_chart(chart: DesignChart, design_width: float) -> DesignChart:
+def judge_chart(chart: DesignChart, design_width: float, band: ChartBand | None = None) -> DesignChart:
     """``chart`` with the check of the design's width (:func:`chart_checks`)."""
-    return replace(chart, checks=chart_checks(chart, design_width), design_width=float(design_width))
+    return replace(chart, checks=chart_checks(chart, design_width, band), design_width=float(design_width))

@@ -3,10 +3,14 @@
 :func:`run_caisson` is the call ``regimemap caisson`` makes: it reads a design
 (:mod:`regimemap.io.design`), runs Goda's procedure and places the caisson on
 the loaded map (:func:`regimemap.maps.caisson.caisson_report`), checks the
-safety factors against the required ones, and returns a :class:`CaissonRecord`
-holding the design, the numbers a designer checks, the implausible values as
-:class:`~regimemap.mechanics.notices.Notice` data, the checks and, for the
-design sheet, the map of panel (d) and the lifetime of panel (g).
+safety factors against the required ones and, when the design has a ``[lifetime]``
+table, simulates its sliding over the design life and judges those requirements too
+(:func:`regimemap.workflows.lifetime.run_lifetime`: with a wave record, on the results
+including the climate's uncertainty).  The requirements never depend on the outputs asked
+for: the design sheet adds only its map.  It returns a :class:`CaissonRecord` holding the
+design, the numbers a designer checks, the implausible values as
+:class:`~regimemap.mechanics.notices.Notice` data, the checks, the lifetime and, for the
+design sheet, the map of panel (d).
 """
 
 from __future__ import annotations
@@ -26,10 +30,12 @@ from ..mechanics.checks import Check, all_pass
 from ._record import Field, Notice, Record
 
 if TYPE_CHECKING:  # pragma: no cover
+    from ..lifetime.replicates import ClimateBand
     from ..lifetime.results import LifetimeResult
     from ..maps.mapdata import MapData
     from ..mechanics.block import Parameters
     from ..waves import CaissonAnalysis
+    from .lifetime import LifetimeRecord
 
 __all__ = ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError", "run_caisson"]
 
@@ -124,17 +130,19 @@ class CaissonRecord(Record):
         The safety factors the design must reach, sliding and overturning
         (``[caisson] required_*``).
     checks : tuple of Check
-        The design check: the safety factors against ``required``, then the
-        lifetime's requirements when :attr:`lifetime` is computed.
+        The design check: the safety factors against ``required``, then, when the
+        design has ``[lifetime]``, the lifetime's requirements (with a wave record, judged
+        including the climate's uncertainty) -- whatever outputs are asked for.
     notices : tuple of Notice
-        The design's implausible values (code ``"implausible-value"``).
+        The design's implausible values (code ``"implausible-value"``), and the lifetime's
+        warnings.
     view : MapView or None
         Panel (d)'s view of the loaded map (computed with ``sheet=True``).
     map_data : MapData or None
         The design wave's loaded map in :attr:`view` (computed with ``sheet=True``).
-    lifetime : LifetimeResult or None
-        The caisson's sliding over its design life, judged against ``[lifetime]``'s
-        requirements (computed with ``sheet=True`` when the file has ``[lifetime]``).
+    lifetime_run : LifetimeRecord or None
+        The caisson's sliding over its design life (:func:`~regimemap.workflows.lifetime.run_lifetime`),
+        judged against ``[lifetime]``'s requirements; None without ``[lifetime]``.
     """
 
     design: Design
@@ -145,7 +153,7 @@ class CaissonRecord(Record):
     notices: tuple[Notice, ...] = ()
     view: MapView | None = None
     map_data: MapData | None = None
-    lifetime: LifetimeResult | None = None
+    lifetime_run: LifetimeRecord | None = None
 
     CAPTION: ClassVar[str] = "Caisson under its design wave (Goda 2000) on the loaded regime map"
     FIELDS: ClassVar[tuple[Field, ...]] = (
@@ -198,6 +206,24 @@ class CaissonRecord(Record):
         return DesignPoint(self.report.k, self.report.mu)
 
     @property
+    def lifetime(self) -> LifetimeResult | None:
+        """The sliding over the design life, its requirements judged (None without ``[lifetime]``)."""
+        return None if self.lifetime_run is None else self.lifetime_run.result
+
+    @property
+    def band(self) -> ClimateBand | None:
+        """The lifetimes under the wave record's replicate climates (None without a record)."""
+        return None if self.lifetime_run is None else self.lifetime_run.band
+
+    @property
+    def record_path(self) -> str | None:
+        """The wave record of ``[lifetime.record]`` (None without one)."""
+        if self.design.lifetime is None:
+            return None
+        record = self.design.lifetime_spec().record
+        return None if record is None else record.path
+
+    @property
     def lifetime_impulsive(self) -> bool | None:
         """Whether :attr:`lifetime` included Takahashi's impulsive coefficient (None: no lifetime)."""
         if self.lifetime is None or self.design.lifetime is None:
@@ -217,10 +243,11 @@ def run_caisson(design: Design | str | Path, *, strict: bool = False, sheet: boo
         Refuse implausible values (likely unit slips) instead of returning them as notices.
     sheet : bool
         Also compute what the design sheet draws besides the report: the loaded map of
-        panel (d) (:func:`regimemap.maps.caisson.sheet_map`) and, when the design has a
-        ``[lifetime]`` table, the sliding over the design life of panel (g)
-        (:func:`regimemap.lifetime.lifetime_sliding`, its requirements judged), whose
-        checks join the safety factors'.
+        panel (d) (:func:`regimemap.maps.caisson.sheet_map`).  The requirements do not
+        depend on it: with a ``[lifetime]`` table the sliding over the design life
+        (:func:`regimemap.workflows.lifetime.run_lifetime`, its requirements judged, with
+        a wave record including the climate's uncertainty) is always run and its checks
+        join the safety factors'.
     jobs : int, optional
         Processes of the lifetime simulation (default: every available core).
 
@@ -261,12 +288,13 @@ def run_caisson(design: Design | str | Path, *, strict: bool = False, sheet: boo
     view = data = life = None
     if sheet:
         view, data = sheet_map(report)
-        if d.lifetime is not None:
-            life = _lifetime(d, jobs, notices)
-            checks += tuple(life.checks)
+    if d.lifetime is not None:
+        life = _lifetime(d, jobs, notices)
+        checks += tuple(life.result.checks)
+        notices += tuple(n for n in life.notices if n.code != "implausible-value")
     return CaissonRecord(design=d, report=report, numbers=CaissonNumbers.of(caisson_numbers(report)),
                          required=required, checks=checks, notices=notices, view=view, map_data=data,
-                         lifetime=life)
+                         lifetime_run=life)
 
 
 def _refusal(d: Design, notices: tuple[Notice, ...]) -> str:
@@ -274,15 +302,13 @@ def _refusal(d: Design, notices: tuple[Notice, ...]) -> str:
     return f"{d.source}: {notices[0].message}{more}; strict refuses implausible values"
 
 
-def _lifetime(d: Design, jobs: int | None, notices: tuple[Notice, ...]) -> LifetimeResult:
-    """The sliding over the design life of ``[lifetime]``, judged against its requirements."""
-    from ..lifetime import Requirements, available_cores, judge_lifetime, lifetime_sliding
+def _lifetime(d: Design, jobs: int | None, notices: tuple[Notice, ...]) -> LifetimeRecord:
+    """The sliding over the design life of ``[lifetime]`` (with a record, under its replicate
+    climates too), judged against its requirements."""
+    from ..lifetime import available_cores
+    from .lifetime import run_lifetime
 
-    spec = d.lifetime_spec()
     try:
-        life = lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), spec.trials, spec.seed,
-                                jobs=available_cores() if jobs is None else jobs)
+        return run_lifetime(d, jobs=available_cores() if jobs is None else jobs)
     except ValueError as exc:
         raise CaissonError(str(exc), notices) from None
-    return judge_lifetime(life, Requirements(target=spec.target, allowed=spec.allowed,
-                                             failure_sliding=spec.failure_sliding))

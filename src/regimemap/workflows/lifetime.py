@@ -3,9 +3,12 @@
 :func:`run_lifetime` runs the lifetimes of a design file's caisson under its ``[lifetime]``
 climate (Shimosako & Takahashi 1999) and judges its requirements; :func:`run_chart` runs the
 same section at several widths and finds the width for a target ESD (with its Monte Carlo
-interval) and Goda's deterministic width.  With ``[lifetime.record]`` and
-``climate_replicates`` both add the climate's band: the runs under the bootstrap climates of
-the record.  Each returns one record (:class:`LifetimeRecord`, :class:`ChartRecord`) with the
+interval) and Goda's deterministic width.  With ``[lifetime.record]`` both add the climate's
+band -- the runs under ``climate_replicates`` replicate climates of the record's fit
+(:data:`regimemap.lifetime.replicates.DEFAULT_REPLICATES` when the file gives none) -- and judge
+the requirements on it: the ESD and exceedance probabilities including the climate's
+uncertainty (the means over the replicates), the chart's width at the band's upper level.
+Each returns one record (:class:`LifetimeRecord`, :class:`ChartRecord`) with the
 inputs, the section and climate a designer checks, the warnings as notices and the results;
 ``regimemap lifetime`` is this call followed by writing the record.
 """
@@ -29,6 +32,7 @@ from ._record import Field, Notice, Record
 
 if TYPE_CHECKING:
     from ..io.design import Design
+    from ..io.design_record import RecordSpec
     from ..lifetime import Caisson, DesignChart, LifetimeModel, LifetimeResult, Requirements
     from ..lifetime.replicates import ChartBand, ClimateBand
 
@@ -86,6 +90,7 @@ class _LifetimeRun(Record):
     processes: int
     scheduler: str | None
     band_seconds: float | None
+    wave_record: RecordSpec | None
 
 
 @dataclass(frozen=True)
@@ -124,6 +129,8 @@ class LifetimeRecord(_LifetimeRun):
         The Dask cluster's address.
     band_seconds : float or None
         The climate band's wall time [s]; None without a band.
+    wave_record : RecordSpec or None
+        The ``[lifetime.record]`` whose fit is the climate (None: a typed-in climate).
     result : LifetimeResult
         Every lifetime, its statistics, the checks and the failure.
     band : ClimateBand or None
@@ -133,31 +140,32 @@ class LifetimeRecord(_LifetimeRun):
     CAPTION: ClassVar[str] = "Lifetime sliding"
     FIELDS: ClassVar[tuple[Field, ...]] = _section_fields() + tuple(
         Field(f"result.{s.key}", s.label, s.unit, s.description)
-        for s in STATISTICS if not s.per_threshold and s.key not in ("failure", "trials", "seed", "width"))
+        for s in STATISTICS
+        if not s.per_threshold and s.key not in ("failure", "trials", "seed", "width")) + (
+        Field("band.expected_sliding", "ESD including the climate's uncertainty", "m",
+              "the mean over the record's replicate climates (None: no record)"),
+        Field("band.lower", "its 90 % climate band, lower", "m", "the replicates' 5 % percentile"),
+        Field("band.upper", "its 90 % climate band, upper", "m", "the replicates' 95 % percentile"))
 
     result: LifetimeResult
     band: ClimateBand | None
 
     def report_text(self) -> str:
-        """The report for people (:func:`regimemap.io.lifetime.format_lifetime`), then the band's lines."""
-        from ..io.climate import climate_band_lines
+        """The report for people (:func:`regimemap.io.lifetime.format_lifetime`, the band's lines
+        before the requirements and the verdict, which end it)."""
         from ..io.lifetime import format_lifetime
 
-        text = format_lifetime(self.result, self.model, source=self.source, written=self.climate_as_written)
-        return text if self.band is None else "\n".join([text, *climate_band_lines(self.band)])
+        return format_lifetime(self.result, self.model, source=self.source, written=self.climate_as_written,
+                               band=self.band)
 
     def report_json(self, files: Sequence[str] = ()) -> dict[str, Any]:
-        """The JSON-ready report (:func:`regimemap.io.lifetime.lifetime_json`), with the ``files``
-        written and ``climate_band``."""
-        from ..io.climate import climate_band_json
+        """The JSON-ready report (:func:`regimemap.io.lifetime.lifetime_json`, with ``climate_band``),
+        with the ``files`` written before the ``checks`` and ``verdict`` that end it."""
         from ..io.lifetime import lifetime_json
 
-        out = lifetime_json(self.result, self.model, source=self.source, written=self.climate_as_written)
-        if files:
-            out["files"] = list(files)
-        if self.band is not None:
-            out["climate_band"] = climate_band_json(self.band)
-        return out
+        out = lifetime_json(self.result, self.model, source=self.source, written=self.climate_as_written,
+                            band=self.band)
+        return _files_first(out, files)
 
     def write_data(self, path: str | Path) -> None:
         """Write every lifetime to ``path`` (.csv or .npz, atomically)."""
@@ -173,10 +181,11 @@ class ChartRecord(_LifetimeRun):
     Attributes
     ----------
     source, caisson, model, trials, seed, requirements, climate_as_written, width, buoyant_weight, \
-friction, H0_10, H0_50, design_H0, notices, used_seed, seconds, processes, scheduler, band_seconds
+friction, H0_10, H0_50, design_H0, notices, used_seed, seconds, processes, scheduler, band_seconds, \
+wave_record
         As :class:`LifetimeRecord`; ``width`` is the design's own, judged against the chart;
         ``notices`` also holds ``target-not-bracketed`` when the chart's widths do not bracket
-        the target (then the chart is not judged).
+        the target, or the band's upper curve does not (then the chart is not judged).
     widths : tuple of float
         The chart's widths [m].
     target, tolerance : float
@@ -203,31 +212,37 @@ friction, H0_10, H0_50, design_H0, notices, used_seed, seconds, processes, sched
     band: ChartBand | None
 
     def report_text(self) -> str:
-        """The report for people (:func:`regimemap.io.lifetime.format_chart`), then the band's lines."""
-        from ..io.climate import chart_band_lines
+        """The report for people (:func:`regimemap.io.lifetime.format_chart`, the band's lines before
+        the requirement and the verdict, which end it)."""
         from ..io.lifetime import format_chart
 
-        text = format_chart(self.result, self.model, source=self.source, written=self.climate_as_written)
-        return text if self.band is None else "\n".join([text, *chart_band_lines(self.band)])
+        return format_chart(self.result, self.model, source=self.source, written=self.climate_as_written,
+                            band=self.band)
 
     def report_json(self, files: Sequence[str] = ()) -> dict[str, Any]:
-        """The JSON-ready report (:func:`regimemap.io.lifetime.chart_json`), with the ``files``
-        written and ``climate_band``."""
-        from ..io.climate import chart_band_json
+        """The JSON-ready report (:func:`regimemap.io.lifetime.chart_json`, with ``climate_band``),
+        with the ``files`` written before the ``checks`` and ``verdict`` that end it."""
         from ..io.lifetime import chart_json
 
-        out = chart_json(self.result, self.model, source=self.source, written=self.climate_as_written)
-        if files:
-            out["files"] = list(files)
-        if self.band is not None:
-            out["climate_band"] = chart_band_json(self.band)
-        return out
+        out = chart_json(self.result, self.model, source=self.source, written=self.climate_as_written,
+                         band=self.band)
+        return _files_first(out, files)
 
     def write_data(self, path: str | Path) -> None:
-        """Write the chart's table to ``path`` (.csv, atomically)."""
+        """Write the chart's table to ``path`` (.csv, atomically; with the band's columns)."""
         from ..io.lifetime import write_chart
 
-        write_chart(self.result, path)
+        write_chart(self.result, path, band=self.band)
+
+
+def _files_first(out: dict[str, Any], files: Sequence[str]) -> dict[str, Any]:
+    """``out`` with ``files`` (when any) before its closing ``checks`` and ``verdict``."""
+    if not files:
+        return out
+    tail = {k: out.pop(k) for k in ("checks", "verdict")}
+    out["files"] = list(files)
+    out.update(tail)
+    return out
 
 
 def _prepare(design: LifetimeDesign | Design | str | Path, years: int | None, trials: int | None,
@@ -260,14 +275,28 @@ def _common(inputs: LifetimeDesign, n: int, seed: int | None, req: Requirements,
                 H0_10=float(m.climate.return_value(10)), H0_50=float(m.climate.return_value(50)),
                 design_H0=d.wave.H0, notices=inputs.notices + notices, used_seed=int(used),
                 seconds=seconds, processes=min(run["jobs"], len(make_chunks(n, 0, run["chunk"]))),
-                scheduler=run["scheduler"], band_seconds=band_seconds)
+                scheduler=run["scheduler"], band_seconds=band_seconds, wave_record=inputs.spec.record)
+
+
+def _uncounted(inputs: LifetimeDesign) -> tuple[Notice, ...]:
+    """The notice ``climate-uncertainty-not-counted`` of a record's climate run without replicates
+    (``climate_replicates = 0``)."""
+    spec = inputs.spec
+    if spec.record is None or spec.climate_replicates >= 2:
+        return ()
+    return (Notice("climate-uncertainty-not-counted",
+                   f"{inputs.source or inputs.design.source}: [lifetime] climate_replicates = 0: the "
+                   "requirements are judged on the record's fitted climate alone, its uncertainty not "
+                   "counted", quantity="climate_replicates", value=0),)
 
 
 def _band(inputs: LifetimeDesign, n: int, used: int, run: dict[str, Any], progress: Progress,
-          chart: DesignChart | None = None) -> tuple[ClimateBand | ChartBand | None, float | None]:
-    """The climate band (of the ESD, or of the chart's widths) and its wall time; None when the design
-    file asks for none.  The bootstrap and the lifetimes draw from the children of the run's root seed
-    (``SeedSequence(seed).spawn(2)``), so the band is the same with any jobs, chunk or scheduler."""
+          chart: DesignChart | None = None, thresholds: Sequence[float] = ()
+          ) -> tuple[ClimateBand | ChartBand | None, float | None]:
+    """The climate band (of the ESD, or of the chart's widths) and its wall time; None without a
+    record (or with ``climate_replicates = 0``).  The replicate climates and the lifetimes draw from
+    the children of the run's root seed (``SeedSequence(seed).spawn(2)``), so the band is the same
+    with any jobs, chunk or scheduler; each replicate keeps ``P(S > x)`` at ``thresholds``."""
     spec = inputs.spec
     if spec.record is None or spec.climate_replicates < 2:
         return None, None
@@ -281,8 +310,8 @@ def _band(inputs: LifetimeDesign, n: int, used: int, run: dict[str, Any], progre
     band: ClimateBand | ChartBand
     with progress(n * len(climates), "climate band") as step:
         if chart is None:
-            band = climate_band(inputs.caisson, inputs.model, climates, n, life, BAND_LEVEL, progress=step,
-                                **run)
+            band = climate_band(inputs.caisson, inputs.model, climates, n, life, BAND_LEVEL,
+                                thresholds=thresholds, progress=step, **run)
         else:
             band = climate_band_chart(inputs.caisson, inputs.model, climates, chart.widths, n, life,
                                       chart.target, BAND_LEVEL, progress=step, **run)
@@ -326,7 +355,7 @@ def run_lifetime(design: LifetimeDesign | Design | str | Path, *, trials: int | 
     """
     from ..lifetime import lifetime_sliding
     from ..lifetime.replicates import ClimateBand
-    from ..lifetime.requirements import judge_lifetime
+    from ..lifetime.requirements import band_thresholds, judge_lifetime
 
     inputs, n, run, req = _prepare(design, years, trials, seed, jobs, chunk, scheduler)
     bars: Progress = _no_bar if progress is None else progress
@@ -336,11 +365,15 @@ def run_lifetime(design: LifetimeDesign | Design | str | Path, *, trials: int | 
         result = lifetime_sliding(inputs.caisson, inputs.model, n, root, progress=step, **run)
     require_finite("the lifetime sliding", result.sliding)
     require_finite("the expected sliding by year", result.by_year)
-    result = judge_lifetime(result, req)
     seconds = time.perf_counter() - t0
-    band, band_seconds = _band(inputs, n, result.seed, run, bars)
+    band, band_seconds = _band(inputs, n, result.seed, run, bars,
+                               thresholds=tuple(result.thresholds) + band_thresholds(req))
     assert band is None or isinstance(band, ClimateBand)
-    return LifetimeRecord(**_common(inputs, n, root, req, run, result.seed, seconds, band_seconds, ()),
+    if band is not None:
+        require_finite("the ESD under the replicate climates", band.esd)
+    result = judge_lifetime(result, req, band)
+    return LifetimeRecord(**_common(inputs, n, root, req, run, result.seed, seconds, band_seconds,
+                                    _uncounted(inputs)),
                           result=result, band=band)
 
 
@@ -372,7 +405,8 @@ def run_chart(design: LifetimeDesign | Design | str | Path, widths: Any, *, targ
     -------
     ChartRecord
         With the notice ``target-not-bracketed`` (and the chart not judged) when the ESD at
-        both ends of ``widths`` is on the same side of the target.
+        both ends of ``widths`` is on the same side of the target -- or, with a climate band, the
+        band's upper curve is (:func:`regimemap.lifetime.replicates.band_bracket_problem`).
 
     Raises
     ------
@@ -380,7 +414,7 @@ def run_chart(design: LifetimeDesign | Design | str | Path, widths: Any, *, targ
     """
     from ..lifetime import design_chart
     from ..lifetime.chart import DEFAULT_TOLERANCE, bisection_steps
-    from ..lifetime.replicates import ChartBand
+    from ..lifetime.replicates import ChartBand, band_bracket_problem
     from ..lifetime.requirements import judge_chart
 
     inputs, n, run, req = _prepare(design, years, trials, seed, jobs, chunk, scheduler)
@@ -398,12 +432,14 @@ def run_chart(design: LifetimeDesign | Design | str | Path, widths: Any, *, targ
     require_finite("the design chart's ESD", chart.expected_sliding)
     seconds = time.perf_counter() - t0
     problem = chart.bracket_problem()
-    notices: tuple[Notice, ...] = ()
-    if problem is None:
-        chart = judge_chart(chart, inputs.caisson.width)
-    else:
-        notices = (Notice("target-not-bracketed", problem, quantity="widths", value=goal),)
     band, band_seconds = (None, None) if problem else _band(inputs, n, chart.seed, run, bars, chart)
     assert band is None or isinstance(band, ChartBand)
+    if problem is None and band is not None:
+        problem = band_bracket_problem(band)
+    notices: tuple[Notice, ...] = _uncounted(inputs)
+    if problem is None:
+        chart = judge_chart(chart, inputs.caisson.width, band)
+    else:
+        notices += (Notice("target-not-bracketed", problem, quantity="widths", value=goal),)
     return ChartRecord(**_common(inputs, n, root, req, run, chart.seed, seconds, band_seconds, notices),
                        widths=tuple(ws), target=goal, tolerance=tol, result=chart, band=band)

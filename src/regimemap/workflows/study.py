@@ -278,14 +278,29 @@ def _assemble(s: Study, climates: list[Any] | None, kept: StudyStore | None,
                        rows=tuple(rows), notices=tuple(notices))
 
 
+def _esd_at(widths: np.ndarray, design: np.ndarray, esd: np.ndarray, width: float, found: float) -> float:
+    """A replicate climate's ESD at the width found for the target, from the charts: the ESD found
+    (``found``, the design climate's at ``width``) times the replicate's ratio to the design
+    climate's chart (``esd / design`` at the chart's widths, interpolated linearly in width between
+    the widths where the design climate's ESD is positive; nearest beyond them).  So the band is
+    the charts' spread carried to the width found, not an interpolation of a steep ESD curve."""
+    ok = design > 0.0
+    if not np.any(ok):
+        return found
+    ratio = np.asarray(esd[ok] / design[ok], dtype=np.float64)
+    return float(found * np.interp(width, widths[ok], ratio))
+
+
 def _rows(s: Study, section: SectionSpec, scenario: str, main: dict[str, Any],
           reps: list[dict[str, Any]]) -> list[StudyRow]:
-    """The rows of a section under a scenario: its design climate's task ``main`` and the bootstrap
-    climates' ``reps`` (the band of each width's ESD; of a target, the width at the band's upper level)."""
+    """The rows of a section under a scenario: its design climate's task ``main`` and the replicate
+    climates' ``reps`` -- the band of each width's ESD; of a target, the width at the band's upper
+    level and the band of the ESD at the width found (:func:`_esd_at`)."""
     from regimemap.lifetime.replicates import ChartBand
 
     upper = None
-    if section.target is not None and reps:
+    chart = None
+    if section.target is not None and len(reps) >= 2:
         chart = ChartBand(widths=np.asarray(section.widths), esd=np.array([r["chart_esd"] for r in reps]),
                           level=BAND_LEVEL, target=section.target, seed=s.seed, trials=s.trials)
         upper = chart.width_for_target
@@ -293,9 +308,11 @@ def _rows(s: Study, section: SectionSpec, scenario: str, main: dict[str, Any],
     rows = []
     for k, width in enumerate(main["widths"]):
         band = None
-        if section.target is None and len(reps) >= 2:
-            q = np.quantile(np.array([r["esd"][k] for r in reps]),
-                            [0.5 * (1.0 - BAND_LEVEL), 0.5 * (1.0 + BAND_LEVEL)])
+        if len(reps) >= 2:
+            at = (np.array([r["esd"][k] for r in reps]) if chart is None else
+                  np.array([_esd_at(chart.widths, np.asarray(main["chart_esd"]), e, float(width),
+                                    float(main["esd"][k])) for e in chart.esd]))
+            q = np.quantile(at, [0.5 * (1.0 - BAND_LEVEL), 0.5 * (1.0 + BAND_LEVEL)])
             band = (float(q[0]), float(q[1]))
         rows.append(StudyRow(
             section=section.name, chainage=section.chainage, scenario=scenario, width=float(width),

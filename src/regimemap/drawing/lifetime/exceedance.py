@@ -2,7 +2,10 @@
 
 * :func:`lifetime_figure` -- one :class:`~regimemap.lifetime.LifetimeResult`: (a) the
   exceedance curve ``P(S > x)`` of the lifetime sliding, with Kim & Suh's single-storm curve,
-  the expected sliding distance (ESD) with its standard error and the tolerable limits, and
+  the expected sliding distance (ESD) with its standard error and the tolerable limits -- and,
+  with a wave record's climate band (:class:`~regimemap.lifetime.replicates.ClimateBand`), the
+  band of ``P(S > x)`` over the replicate climates (hatched green), its mean and the ESD
+  including the climate's uncertainty (green) -- and
   (b) the histogram of the lifetimes that slid (log-spaced bins; those that did not are counted
   in words);
 * :func:`draw_exceedance` -- the exceedance panel on any axes (the design sheet uses it).
@@ -36,6 +39,10 @@ from ..verdict import draw_verdict_badge, verdict_colour
 from .style import (
     BAND,
     BAR_EDGE,
+    CLIMATE_DASHES,
+    CLIMATE_FILL,
+    CLIMATE_HATCH,
+    CLIMATE_LINE,
     FILL,
     FS,
     LIFE,
@@ -53,6 +60,7 @@ from .style import (
     format_log_axis,
     impulsive_words,
     limit_text,
+    metres,
     percent,
     title_height,
     value_pm,
@@ -61,6 +69,8 @@ from .style import (
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
+
+    from ...lifetime.replicates import ClimateBand
 
 __all__ = ["LIFETIME_FIGSIZE", "TOLERABLE", "draw_exceedance", "lifetime_figure",
            "lifetime_title", "sliding_range"]
@@ -123,8 +133,34 @@ def _esd_text(result: LifetimeResult) -> str:
 
 
 def _esd_check(result: LifetimeResult) -> Check | None:
-    """The requirement on the ESD, if the result was judged."""
+    """The requirement on the ESD, if the result was judged on it (not on a climate band)."""
     return next((c for c in result.checks if c.name == "expected sliding distance"), None)
+
+
+def _band_check(result: LifetimeResult) -> Check | None:
+    """The requirement on the ESD including the climate's uncertainty, if judged on it."""
+    return next((c for c in result.checks if c.name == "ESD including the climate's uncertainty"), None)
+
+
+def _band_esd_text(band: ClimateBand) -> str:
+    return f"with the climate: ESD = {value_pm(band.expected_sliding, band.std_error)} m"
+
+
+def _draw_climate_band(ax: Axes, band: ClimateBand, y0: float) -> None:
+    """The band of ``P(S > x)`` over the replicate climates (its lower end clipped to the axis's
+    bottom ``y0``), hatched, under the curves; their mean, dashed, over them; the ESD including
+    the climate's uncertainty, a vertical line."""
+    x, lo, mean, hi = band.curve_band()
+    x0, x1 = ax.get_xlim()
+    keep = (x >= x0 / 1.2) & (x <= x1 * 1.2) & (hi > 0.0)
+    if np.any(keep):
+        ax.fill_between(x[keep], np.maximum(lo[keep], y0), hi[keep], facecolor=CLIMATE_FILL,
+                        edgecolor=CLIMATE_LINE, hatch=CLIMATE_HATCH, lw=0.0, zorder=0.8, gid="climate-band")
+        m = np.where(mean[keep] > 0.0, mean[keep], np.nan)
+        ax.plot(x[keep], m, color=CLIMATE_LINE, lw=1.1, dashes=CLIMATE_DASHES, zorder=4.8,
+                gid="climate-mean")
+    if band.expected_sliding > 0.0:
+        ax.axvline(band.expected_sliding, color=CLIMATE_LINE, lw=1.1, zorder=2.6, gid="climate-esd")
 
 
 def lifetime_title(section: str, result: LifetimeResult) -> str:
@@ -155,23 +191,32 @@ def _reference_lines(ax: Axes, result: LifetimeResult, zorder: float = 2.0) -> N
 
 
 def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
-                    fontsize: float = FS, labels: bool = True) -> Placed:
+                    fontsize: float = FS, labels: bool = True, band: ClimateBand | None = None) -> Placed:
     """Draw the exceedance curve of a lifetime result on ``ax``; return its labels to place.
 
     The step curve ``P(S > x)`` of the lifetime sliding (log-log), and with ``storm`` that of
     the largest single-storm slide of each lifetime (Kim & Suh 2013); the ESD as a vertical line
     over a band of one standard error, and the tolerable limits of :data:`TOLERABLE` as vertical
-    lines; with ``labels``, the lines' labels (``0.1 m``, ``ESD = 1.14 ± 0.14 m``), returned
-    with their candidate places for :meth:`LabelPlacer.place` (the caller places them once the
-    figure is laid out).  When no lifetime slid, the panel says so.
+    lines; with a wave record's climate ``band``, the band of ``P(S > x)`` over its replicate
+    climates (green, hatched, under the curves; artist gid ``climate-band``), their mean
+    (``climate-mean``, green dashes) and the ESD including the climate's uncertainty
+    (``climate-esd``, a green vertical line); with ``labels``, the lines' labels (``0.1 m``,
+    ``ESD = 1.14 ± 0.14 m``), returned with their candidate places for :meth:`LabelPlacer.place`
+    (the caller places them once the figure is laid out).  When no lifetime slid, the panel
+    says so.
     """
     n = result.trials
     x0, x1 = sliding_range(result)
+    if band is not None and band.expected_sliding > x1:  # the ESD with the climate in view
+        x1 = 10.0 ** math.ceil(math.log10(band.expected_sliding))
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlim(x0, x1)
-    ax.set_ylim(10.0 ** math.floor(math.log10(0.5 / max(n, 1))), 1.0)
+    y0 = 10.0 ** math.floor(math.log10(0.5 / max(n, 1)))
+    ax.set_ylim(y0, 1.0)
     placed: Placed = []
+    if band is not None:
+        _draw_climate_band(ax, band, y0)
     life = _steps(result.sliding, x0)
     if life is not None:
         ax.plot(*life, drawstyle="steps-post", color=LIFE, lw=LIFE_LW, zorder=4, label="lifetime")
@@ -183,13 +228,21 @@ def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
     _reference_lines(ax, result)
     if labels:  # the ESD's first: it has the most to say
         if result.expected_sliding > 0.0:
-            text = _esd_text(result)
+            text = ("fitted climate: " if band is not None else "") + _esd_text(result)
             check = _esd_check(result)
             t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
                            fontsize=fontsize - 0.5,
                            color="black" if check is None else verdict_colour(check))
             placed.append((t, vline_candidates(result.expected_sliding, side_first=1),
                            [text.replace(" \u00b1", "\n\u00b1", 1)] if "\u00b1" in text else []))
+        if band is not None and band.expected_sliding > 0.0:
+            text = _band_esd_text(band)
+            check = _band_check(result)
+            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
+                           fontsize=fontsize - 0.5,
+                           color=CLIMATE_LINE if check is None or check.passed else verdict_colour(check))
+            placed.append((t, vline_candidates(band.expected_sliding, side_first=1),
+                           [text.replace(": ", ":\n", 1)]))
         for lim, _ in TOLERABLE:
             t = make_label(ax, limit_text(lim), xycoords=ax.get_xaxis_transform(), rotation=90.0,
                        fontsize=fontsize - 0.5, color="0.15")
@@ -271,7 +324,7 @@ def _never_texts(result: LifetimeResult, below: int, x0: float) -> list[str]:
 # -- the figures -----------------------------------------------------------------------------
 
 
-def _legend_handles(result: LifetimeResult, storm: bool = True) -> list[Any]:
+def _legend_handles(result: LifetimeResult, storm: bool = True, band: ClimateBand | None = None) -> list[Any]:
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
@@ -285,10 +338,19 @@ def _legend_handles(result: LifetimeResult, storm: bool = True) -> list[Any]:
     if result.expected_sliding > 0.0:
         esd = Line2D([], [], color="black", lw=1.1)
         if math.isfinite(result.std_error) and result.std_error > 0.0:
-            band = Patch(facecolor=BAND, edgecolor="none")
-            h.append(((band, esd), "expected sliding distance (ESD) \u00b1 1 standard error"))
+            se_patch = Patch(facecolor=BAND, edgecolor="none")
+            h.append(((se_patch, esd), "expected sliding distance (ESD) \u00b1 1 standard error"))
         else:
             h.append((esd, "expected sliding distance (ESD)"))
+    if band is not None:
+        h.append((Patch(facecolor=CLIMATE_FILL, edgecolor=CLIMATE_LINE, hatch=CLIMATE_HATCH, lw=0.0),
+                  f"{100 * band.level:g} % band over {band.replicates} climates of the record"))
+        h.append(Line2D([], [], color=CLIMATE_LINE, lw=1.1, dashes=CLIMATE_DASHES,
+                        label="including the climate's uncertainty (their mean)"))
+        if band.expected_sliding > 0.0:
+            h.append(Line2D([], [], color=CLIMATE_LINE, lw=1.1,
+                            label=f"its ESD ({100 * band.level:g} % band {metres(band.lower)}\u2013"
+                                  f"{metres(band.upper)} m)"))
     for (lim, source), dashes in zip(TOLERABLE, LIMIT_DASHES):
         h.append(Line2D([], [], color=LIMIT, lw=0.8, dashes=dashes,
                         label=f"tolerable ESD {limit_text(lim, source)}"))
@@ -317,8 +379,8 @@ def _add_legend(fig: Figure, handles: list[Any], y: float, fontsize: float) -> A
                       borderaxespad=0.0)
 
 
-def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: float = DEFAULT_DPI
-                    ) -> Figure:
+def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: float = DEFAULT_DPI,
+                    band: ClimateBand | None = None) -> Figure:
     """The sliding of one caisson over its design life: exceedance curve and histogram.
 
     (a) The exceedance probability ``P(S > x)`` of the lifetime sliding ``S`` (log-log) and of
@@ -336,6 +398,10 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         larger, the others (:func:`lifetime_title`: the run's facts) below it.
     dpi : float
         Resolution of PNG output.
+    band : ClimateBand, optional
+        The lifetimes under a wave record's replicate climates: (a) draws the band of
+        ``P(S > x)`` over them, its mean and the ESD including the climate's uncertainty
+        (:func:`draw_exceedance`), and the key gives the ESD's band.
 
     Returns
     -------
@@ -352,7 +418,7 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    handles = _legend_handles(result)
+    handles = _legend_handles(result, band=band)
     rows = (len(handles) + 1) // 2
     w = LIFETIME_FIGSIZE[0]
     key = 0.08 + 0.17 * rows
@@ -365,7 +431,7 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         aw = (w - left - gap - right) / 2.0
         ax_a = fig.add_axes((left / w, bottom / h, aw / w, ah / h), label="exceedance")
         ax_b = fig.add_axes(((left + aw + gap) / w, bottom / h, aw / w, ah / h), label="histogram")
-        placed = draw_exceedance(ax_a, result)
+        placed = draw_exceedance(ax_a, result, band=band)
         ax_a.set_title("(a) probability of exceedance", fontsize=FS + 0.5, loc="left")
         bars, below = _draw_histogram(ax_b, result, ax_a.get_xlim())
         ax_b.set_title("(b) the lifetimes that slid", fontsize=FS + 0.5, loc="left")

@@ -19,10 +19,11 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
 __all__ = [
-    "BAND", "BAR_EDGE", "ESD_LINE", "FILL", "FS", "LIFE", "LIFE_LW", "LIMIT", "LIMIT_DASHES",
-    "OFF_MOUND", "OFF_MOUND_HATCH", "SF_DASHES", "STORM", "STORM_DASHES", "STORM_LW", "TARGET",
-    "TARGET_TEXT", "TOLERABLE", "decade_range", "draw_title_block", "format_log_axis",
-    "impulsive_words", "limit_text", "metres", "percent", "significant", "title_height", "value_pm",
+    "BAND", "BAR_EDGE", "CLIMATE_DASHES", "CLIMATE_FILL", "CLIMATE_HATCH", "CLIMATE_LINE", "ESD_LINE",
+    "FILL", "FS", "LIFE", "LIFE_LW", "LIMIT", "LIMIT_DASHES", "OFF_MOUND", "OFF_MOUND_HATCH", "SF_DASHES",
+    "STORM", "STORM_DASHES", "STORM_LW", "TARGET", "TARGET_TEXT", "TOLERABLE", "decade_range",
+    "draw_title_block", "format_log_axis", "impulsive_words", "limit_text", "metres", "percent",
+    "significant", "title_height", "value_pm",
 ]
 
 #: The tolerable expected sliding distances [m] drawn on every figure, with their source.
@@ -52,6 +53,14 @@ SF_DASHES = (6.0, 1.8, 1.2, 1.8, 1.2, 1.8)
 #: Line styles of the tolerable limits (0.1 m, 0.3 m): dashed and dash-dotted.
 LIMIT_DASHES: tuple[tuple[float, ...], ...] = ((5.0, 2.5), (6.0, 2.0, 1.2, 2.0))
 FS = 8.0  # axis labels; tick labels and the lines' labels half a point smaller
+#: The climate's uncertainty (a wave record's replicate climates): Paul Tol's green for its lines
+#: (long dashes for a curve over the climates), his pale green with a sparse green hatch for a band
+#: (told apart from the blue fills and the grey standard error in any colour vision, and by the
+#: hatch in greyscale).
+CLIMATE_LINE = "#228833"
+CLIMATE_DASHES = (6.0, 2.0)
+CLIMATE_FILL = "#CCDDAA"
+CLIMATE_HATCH = "\\\\"
 #: The zone beyond the sliding limit, off the mound: Tol's pale yellow with a hatch of his olive
 #: (told apart from the blue fills in any colour vision, and by the hatch in greyscale).
 OFF_MOUND = "#EEEEBB"

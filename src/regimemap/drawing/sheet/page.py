@@ -12,7 +12,9 @@ design point and the path it follows as the wave grows (0.5 to 1.5 times the
 design heights); (e) the safety factors along that path with the mode of
 each point on its own map; (f) the numbers; and, when a lifetime simulation is
 given, (g) the exceedance curve of the caisson's sliding over its design life
-(:func:`regimemap.drawing.lifetime.exceedance.draw_exceedance`), under (e).
+(:func:`regimemap.drawing.lifetime.exceedance.draw_exceedance`), under (e) -- with a wave
+record's climate, the band over its replicate climates and the ESD including the climate's
+uncertainty, and the note under it names the record, its fit and the band.
 
 This module places the panels on the page and writes the notes; the panels are
 drawn by :mod:`regimemap.drawing.sheet.panels` ((a), (b), (c), (e), (f)) and
@@ -42,6 +44,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
+    from ...lifetime.replicates import ClimateBand
     from ...lifetime.results import LifetimeResult
     from ...workflows.caisson import CaissonRecord
     from ..text.labelplacer import Placed
@@ -65,16 +68,32 @@ _BLOCK_NOTE = (
 
 # -- (g) the lifetime ------------------------------------------------------------------------
 
-def _path_note(r: CaissonReport, short: bool) -> str:
-    """The note under (e) (``short``: under (g), in fewer words)."""
+def _record_note(record: str, fit: str, band: ClimateBand | None) -> str:
+    """The note of (g) on a wave record's climate: the record, its fit, the band (instead of the
+    tolerable limits' sources, which the lifetime figure's key gives)."""
+    name = Path(record).name
+    if band is None:
+        return (f"(g): ESD \u00b1 1 standard error (grey) under the {fit} fit of the record {name}, its "
+                "uncertainty not counted (climate_replicates = 0).")
+    return (f"(g): ESD \u00b1 1 s.e. (grey) under the {fit} fit of the record {name}; green: over "
+            f"{band.replicates} climates of the fit, the {100 * band.level:g} % band of P(S > x) and the ESD "
+            f"including the climate's uncertainty, {band.expected_sliding:.3g} m ({band.lower:.3g}\u2013"
+            f"{band.upper:.3g} m).")
+
+
+def _path_note(r: CaissonReport, short: bool,
+               record: tuple[str, str, ClimateBand | None] | None = None) -> str:
+    """The note under (e) (``short``: under (g), in fewer words; with a wave ``record`` -- its path,
+    its fit in words and its band -- (g)'s sentence names them)."""
     p = r.path
     kp = f"{fmt(float(p.kprime[0]), 3)} \u2026 {fmt(float(p.kprime[-1]), 3)}"
     up = f"{fmt(float(p.uplift_ratio[0]), 3)} \u2026 {fmt(float(p.uplift_ratio[-1]), 3)}"
     if short:
         return (f"(d): the regions of the design wave; along the path k\u2032 ({kp}) and U/P ({up}) "
                 "change: each marker and (e)'s band has the colour of the mode on its own map.  "
-                "SF \u2265 1 (both) \u21d4 rest.  (g): ESD \u00b1 1 standard error (grey); "
-                "tolerable ESD 0.1 m (Goda & Takagi 2000), 0.3 m (Shimosako & Takahashi 1999).")
+                "SF \u2265 1 (both) \u21d4 rest.  " + (
+                    "(g): ESD \u00b1 1 standard error (grey); tolerable ESD 0.1 m (Goda & Takagi 2000), "
+                    "0.3 m (Shimosako & Takahashi 1999)." if record is None else _record_note(*record)))
     return (f"The regions are those of the design wave.  Along the path k\u2032 ({kp}) and U/P "
             f"({up}) change with the wave, so each marker (and the band along the bottom of (e)) "
             "has the colour of the mode on its own map.  SF \u2265 1 (both) \u21d4 rest on the map.")
@@ -87,19 +106,24 @@ def _impulsive_words(on: bool | None) -> str:
 def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
                      rect: Callable[[float, float, float, float], tuple[float, float, float, float]],
                      required: tuple[float, float], esd: Check | None,
-                     impulsive: bool | None) -> tuple[Axes, Placed]:
+                     impulsive: bool | None, band: ClimateBand | None = None,
+                     record: tuple[str, str] | None = None) -> tuple[Axes, Placed]:
     """(e) shorter, (g) the exceedance curve of the lifetime under it, and the note, shorter.
 
     (g)'s title names the lifetime's impulsive setting (``impulsive``, the file's ``[lifetime]
-    impulsive``); its ESD label is in the fail colour when ``esd`` fails.  Returns (g)'s axes and
-    its labels, to place once the rest of the sheet is drawn.
+    impulsive``); its ESD label is in the fail colour when ``esd`` fails.  With a wave record
+    (``record``: its path and its fit in words) (g) draws the climate ``band`` and the note names
+    the record, its fit and the band.  Returns (g)'s axes and its labels, to place once the rest
+    of the sheet is drawn.
     """
     from ..lifetime.exceedance import draw_exceedance
 
     ax_path = fig.add_axes(rect(5.55, 5.1, 2.35, 1.35), label="path")
     draw_path(ax_path, r, required)
-    ax_l = fig.add_axes(rect(5.55, 3.33, 2.35, 1.05), label=LIFETIME_PANEL)
-    placed = draw_exceedance(ax_l, lifetime, storm=False, fontsize=FS)
+    # with a record (g) is a little shorter and higher: its note names the record and the band
+    ax_l = fig.add_axes(rect(5.55, 3.33, 2.35, 1.05) if record is None else rect(5.55, 3.55, 2.35, 0.93),
+                        label=LIFETIME_PANEL)
+    placed = draw_exceedance(ax_l, lifetime, storm=False, fontsize=FS, band=band)
     ax_l.set_ylabel("$P(S > x)$", fontsize=FS)
     ax_l.set_xlabel(f"$x$ (m); $S$ = sliding in {lifetime.years} years", fontsize=FS)
     ax_l.tick_params(labelsize=FS - 0.5)
@@ -109,9 +133,10 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
         for t, _, _ in placed:
             if t.get_text().startswith("ESD"):
                 t.set_color(verdict_colour(esd))
-    fig.text(5.4 / SHEET_SIZE[0], 2.86 / SHEET_SIZE[1],
-             "\n".join(textwrap.wrap(_path_note(r, True), 54)), fontsize=FS - 1.0, va="top",
-             ha="left", color="0.15", linespacing=1.3)
+    note = _path_note(r, True, None if record is None else (*record, band))
+    fig.text(5.4 / SHEET_SIZE[0], (2.86 if record is None else 3.08) / SHEET_SIZE[1],
+             "\n".join(textwrap.wrap(note, 54)), fontsize=FS - 1.0, va="top",
+             ha="left", color="0.15", linespacing=1.3, gid="lifetime-note")
     return ax_l, placed
 
 
@@ -150,17 +175,25 @@ def caisson_sheet(record: CaissonRecord, *, title: str | None = None, dpi: float
     """
     if record.view is None or record.map_data is None:
         raise ValueError("the record holds no map for the sheet: run_caisson(..., sheet=True)")
+    run = record.lifetime_run
+    wave_record = None
+    if run is not None and run.wave_record is not None:
+        c = run.model.climate
+        shape = f" (\u03be = {c.shape:.3g})" if c.distribution in ("gpd", "gev") else ""
+        wave_record = (run.wave_record.path, f"{c.distribution.upper()}{shape}")
     return sheet_figure(record.report, view=record.view, data=record.map_data, checks=record.checks,
                         title=Path(record.design.source).name if title is None else title, dpi=dpi,
                         lifetime=record.lifetime, required=record.required,
-                        lifetime_impulsive=record.lifetime_impulsive, written=record.design.written)
+                        lifetime_impulsive=record.lifetime_impulsive, written=record.design.written,
+                        band=record.band, wave_record=wave_record)
 
 
 def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks: Sequence[Check],
                  title: str | None = None, dpi: float = DEFAULT_DPI,
                  lifetime: LifetimeResult | None = None, required: tuple[float, float] = (1.2, 1.2),
                  lifetime_impulsive: bool | None = None,
-                 written: Mapping[str, str] | None = None) -> Figure:
+                 written: Mapping[str, str] | None = None, band: ClimateBand | None = None,
+                 wave_record: tuple[str, str] | None = None) -> Figure:
     """The one-page design sheet of a caisson (A4 portrait, no pyplot).
 
     Parameters
@@ -197,6 +230,11 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
         The design file's values as it writes them (``{"wave.H0": "6.3"}``,
         :attr:`regimemap.io.design.Design.written`): the header echoes H0', T1/3, tan theta
         and mu so.
+    band : ClimateBand, optional
+        The lifetimes under a wave record's replicate climates, drawn in (g).
+    wave_record : (str, str), optional
+        The wave record whose fit is the lifetime's climate: its path and its fit in words,
+        named in (g)'s note (with the band).
 
     Returns
     -------
@@ -263,7 +301,7 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
         else:
             lifetime_labels = _lifetime_panels(fig, report, lifetime, rect, required,
                                                by_name.get("expected sliding distance"),
-                                               lifetime_impulsive)
+                                               lifetime_impulsive, band, wave_record)
 
         ax_t = fig.add_axes(rect(0.6, 0.3, 7.2, 1.95), label="table")
         draw_table(ax_t, report, {"sliding": by_name.get("sliding safety factor"),

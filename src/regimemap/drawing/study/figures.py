@@ -50,8 +50,9 @@ def study_figure(record: StudyRecord, kind: str = "chainage", section: str | Non
     kind : {"chainage", "years", "width"}
         ``"chainage"``: each section's ESD at its chainage (log axis), a line per scenario
         through each section's first width, the section's other widths as open markers, error
-        bars of two standard errors, the climate band as a hatched range when the study has
-        one, the tolerable limits (0.1 m, 0.3 m) as horizontal lines.  ``"years"``: the
+        bars of two standard errors, the climate band as a hatched box at each section that has
+        one (a lone one too; artist gid ``climate-band``), the tolerable limits (0.1 m, 0.3 m)
+        as horizontal lines.  ``"years"``: the
         expected cumulative sliding at the end of each service year of ``section`` (its first
         width), a line per scenario, the limits, and the first year over each limit marked on
         the curves (the years in the key).  ``"width"``: the width for the target ESD of each
@@ -220,12 +221,15 @@ def _chainage(record: StudyRecord, dpi: float) -> Figure:
         on_line = {id(r) for r in first}
         x = np.array([r.chainage for r in first]) + dx
         esd = np.array([r.expected_sliding for r in first])
-        if has_band:
-            lo = np.array([r.band[0] if r.band else np.nan for r in first])
-            hi = np.array([r.band[1] if r.band else np.nan for r in first])
-            xb = x if x.size > 1 else np.array([x[0] - 5.0, x[0] + 5.0])
-            ax.fill_between(xb, np.resize(np.maximum(lo, y0 * 0.5), xb.size), np.resize(hi, xb.size),
-                            facecolor=s.color, alpha=0.18, hatch=s.hatch, edgecolor=s.color, lw=0.0, zorder=1)
+        if has_band:  # a hatched box at every banded section (a lone one too), not a fill between them
+            x_lo, x_hi = ax.get_xlim()
+            half = 0.012 * (x_hi - x_lo)
+            for xr, r in zip(x, first):
+                if r.band is None:
+                    continue
+                ax.fill_between([xr - half, xr + half], max(r.band[0], y0 * 0.5), r.band[1],
+                                facecolor=s.color, alpha=0.18, hatch=s.hatch, edgecolor=s.color, lw=0.0,
+                                zorder=1, gid="climate-band")
         ax.plot(x, np.where(esd > 0.0, esd, np.nan), **s.line(zorder=4))
         lines.append((x, np.where(esd > 0.0, esd, np.nan)))
         for r in record.rows_for(scenario=sc):
