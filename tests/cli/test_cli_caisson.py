@@ -31,13 +31,6 @@ def sig3(x: float) -> str:
     return f"{x:.3g}"
 
 
-@pytest.fixture()
-def goda(tmp_path: Path) -> Path:
-    path = tmp_path / "goda.toml"
-    path.write_text(EXAMPLE, encoding="utf-8")
-    return path
-
-
 def test_example_prints_the_file_and_round_trips(tmp_path: Path) -> None:
     r = invoke_cli(["caisson", "--example"])
     assert r.code == 0 and r.stdout == EXAMPLE
