@@ -176,7 +176,7 @@ def drawn_sheets():
         if text not in sheets:
             report = caisson_report(parse_design(text).analysis_inputs())
             fig = draw_sheet(report, title="breakwater.toml")
-            fig.canvas.draw()
+            fig.draw_without_rendering()  # laid out as drawn, without the pixels
             sheets[text] = (report, fig)
         return sheets[text]
     return sheet

@@ -275,7 +275,7 @@ def test_main_entry_point_exit_codes(tmp_path):
     code = (
         "import contextlib, io, sys\n"
         "from regimemap.cli import main\n"
-        "def plot(name): return ['plot', '--gamma', '3', '--kprime', '0.4', '-o', %r + '/' + name]\n"
+        f"def plot(name): return ['plot', '--gamma', '3', '--kprime', '0.4', '-o', {str(tmp_path)!r} + '/' + name]\n"
         "for name in ('m.svg', 'm.pdf', 'm.png'):\n"
         "    err = io.StringIO()\n"
         "    try:\n"
@@ -284,7 +284,7 @@ def test_main_entry_point_exit_codes(tmp_path):
         "    except SystemExit as e:\n"
         "        print(name, e.code, repr(err.getvalue()))\n"
         "main(plot('m.gif'))\n"
-    ) % str(tmp_path)
+    )
     run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
     # each run prints the path it wrote, returns 0 and writes nothing on stderr
     assert run.stdout.splitlines() == [line for name in ("m.svg", "m.pdf", "m.png")
