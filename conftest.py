@@ -37,6 +37,26 @@ def pytest_collection_modifyitems(config: pytest.Config, items: list[pytest.Item
     items.sort(key=_cost)
 
 
+#: The environment every test runs in, whatever the developer's shell exports (the processes the
+#: tests start inherit it): REGIMEMAP_DEBUG would print tracebacks where a test expects one line,
+#: REGIMEMAP_DASK_TIMEOUT would change how long a scheduler is tried, and MPLBACKEND a GUI
+#: backend would try to open windows in the ``python -c`` and ``regimemap`` processes.
+PINNED_ENVIRONMENT: dict[str, str | None] = {"REGIMEMAP_DEBUG": None, "REGIMEMAP_DASK_TIMEOUT": None,
+                                             "MPLBACKEND": "Agg"}
+
+
+@pytest.fixture(autouse=True, scope="session")
+def _pinned_environment():
+    """:data:`PINNED_ENVIRONMENT` for the whole session (a test may still set them for itself)."""
+    with pytest.MonkeyPatch.context() as mp:
+        for name, value in PINNED_ENVIRONMENT.items():
+            if value is None:
+                mp.delenv(name, raising=False)
+            else:
+                mp.setenv(name, value)
+        yield
+
+
 @pytest.fixture(autouse=True)
 def _check_the_tier(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch):
     """With ``REGIMEMAP_CHECK_TIERS=1``, a test that draws a figure without the ``render`` mark, or

@@ -50,6 +50,7 @@ else:
 # -- running the command line in-process ---------------------------------------------------------------
 
 import dataclasses  # noqa: E402
+from pathlib import Path  # noqa: E402
 
 import pytest  # noqa: E402
 
@@ -100,6 +101,21 @@ def invoke_cli(args: list[str], env: dict[str, str | None] | None = None) -> Cli
 def run_cli():
     """A function ``run_cli(args) -> CliRun`` (session-scoped, so hypothesis tests may use it)."""
     return invoke_cli
+
+
+# -- the design files ----------------------------------------------------------------------------------
+
+@pytest.fixture
+def goda(tmp_path: Path) -> Path:
+    """Goda's caisson: the example design file (``regimemap caisson --example``) as ``tmp_path/goda.toml``.
+
+    A test that needs the design as data rather than as a file defines a fixture of another name.
+    """
+    from regimemap.io.design import example_design_text
+
+    path = tmp_path / "goda.toml"
+    path.write_text(example_design_text(), encoding="utf-8")
+    return path
 
 
 # -- the report's figures, computed once ----------------------------------------------------------------

@@ -11,9 +11,8 @@ the function does: a cycle through them is still a cycle).
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
-
-import pytest
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
 
@@ -43,8 +42,13 @@ MODULES = _modules()
 
 def _imports(name: str, path: Path) -> list[tuple[str, list[str], int, bool]]:
     """(module imported, names, line, at module level) for every import in a file."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
-    is_pkg = path.name == "__init__.py"
+    return _imports_of_text(name, path.name == "__init__.py", path.read_text(encoding="utf-8"))
+
+
+@functools.cache
+def _imports_of_text(name: str, is_pkg: bool, text: str) -> list[tuple[str, list[str], int, bool]]:
+    """:func:`_imports` of a module's text, parsed once per session for all the rules."""
+    tree = ast.parse(text)
     package = name if is_pkg else name.rpartition(".")[0]
     top_level = {id(n) for n in tree.body}
     # imports under ``if TYPE_CHECKING:`` are for the type checker only: never executed
@@ -80,55 +84,86 @@ def _layer(module: str) -> float:
     return TOP
 
 
-@pytest.mark.parametrize("module", sorted(MODULES))
-def test_imports_point_down_the_layers(module):
+def _breaches(module: str, path: Path) -> list[str]:
+    """Every breach of the import rules by one module, one line each (``module:line what``).
+
+    The rules: an import of regimemap points down the layers (or sideways); matplotlib only under
+    ``drawing/``, click only under ``cli/``, scipy not in the engine (mechanics, waves, maps,
+    dynamics); mechanics imports nothing of regimemap but itself and the lazy loader; no private
+    (underscore) name crosses modules, and a package's private module serves that package only.
+    """
     here = _layer(module)
-    for imported, _names, line, _top in _imports(module, MODULES[module]):
-        if not imported.startswith("regimemap"):
-            continue
-        there = _layer(imported)
-        if imported in ("regimemap", "regimemap._version") and here > 0:
-            continue  # the version string
-        assert there <= here, f"{module}:{line} imports {imported} (a higher layer)"
-
-
-@pytest.mark.parametrize("module", sorted(MODULES))
-def test_third_party_imports_stay_in_their_layer(module):
-    for imported, _names, line, _top in _imports(module, MODULES[module]):
+    engine = module.startswith(("regimemap.mechanics", "regimemap.maps", "regimemap.waves",
+                                "regimemap.dynamics"))
+    out = []
+    for imported, names, line, _top in _imports(module, path):
+        at = f"{module}:{line}"
         root = imported.split(".")[0]
-        if root == "matplotlib":
-            assert ".drawing" in module, f"{module}:{line} imports matplotlib"
-        if root == "click":
-            assert ".cli" in module, f"{module}:{line} imports click"
-        if module.startswith(("regimemap.mechanics", "regimemap.maps", "regimemap.waves",
-                              "regimemap.dynamics")):
-            assert root not in ("matplotlib", "click", "scipy"), f"{module}:{line} imports {root}"
-        if module.startswith(("regimemap.lifetime", "regimemap.climate")):
-            # the statistics (fits, the normal quantile) are scipy's, a runtime dependency
-            assert root not in ("matplotlib", "click"), f"{module}:{line} imports {root}"
-
-
-def test_mechanics_imports_nothing_else_of_regimemap():
-    """Nothing but mechanics itself, and the lazy loader of its ``__init__`` (standard library only)."""
-    for module in MODULES:
-        if not module.startswith("regimemap.mechanics"):
+        if root == "matplotlib" and ".drawing" not in module:
+            out.append(f"{at} imports matplotlib (drawing/ only)")
+        if root == "click" and ".cli" not in module:
+            out.append(f"{at} imports click (cli/ only)")
+        # (the statistics, lifetime and climate, fit with scipy: a runtime dependency)
+        if engine and root == "scipy":
+            out.append(f"{at} imports scipy (the engine is numpy only)")
+        if root != "regimemap":
             continue
-        for imported, _names, line, _top in _imports(module, MODULES[module]):
-            if imported.startswith("regimemap") and imported != LAZY:
-                assert imported.startswith("regimemap.mechanics"), f"{module}:{line} imports {imported}"
-
-
-@pytest.mark.parametrize("module", sorted(MODULES))
-def test_no_private_names_across_modules(module):
-    for imported, names, line, _top in _imports(module, MODULES[module]):
-        if not imported.startswith("regimemap") or imported == module:
+        versioned = imported in ("regimemap", "regimemap._version") and here > 0  # the version string
+        if not versioned and _layer(imported) > here:
+            out.append(f"{at} imports {imported} (a higher layer)")
+        if (module.startswith("regimemap.mechanics") and imported != LAZY
+                and not imported.startswith("regimemap.mechanics")):
+            out.append(f"{at} imports {imported} (mechanics imports only mechanics)")
+        if imported == module:
             continue
         private = [n for n in names if n.startswith("_") and n != "__version__"]
-        assert not private, f"{module}:{line} imports private {private} from {imported}"
+        if private:
+            out.append(f"{at} imports private {private} from {imported}")
         # a package's private module serves that package only
         own_package = imported.rpartition(".")[0] in (module, module.rpartition(".")[0])
-        assert (own_package or not imported.rpartition(".")[2].startswith("_")
-                or imported.endswith("_version")), f"{module}:{line} imports the private module {imported}"
+        if not (own_package or not imported.rpartition(".")[2].startswith("_")
+                or imported.endswith("_version")):
+            out.append(f"{at} imports the private module {imported}")
+    return out
+
+
+def test_the_import_contract():
+    """Every module of the package keeps the import rules (:func:`_breaches`); one message lists
+    every breach of every module."""
+    assert len(MODULES) > 150  # the reader found the package
+    breaches = [b for module, path in MODULES.items() for b in _breaches(module, path)]
+    assert not breaches, f"{len(breaches)} import rule(s) broken:\n" + "\n".join(breaches)
+
+
+def test_the_contract_catches_each_rule(tmp_path):
+    """A planted breach of each rule is caught, with its module and line; the allowed imports pass."""
+    def breaches(module: str, text: str, name: str = "x.py") -> list[str]:
+        f = tmp_path / name
+        f.write_text(text)
+        return _breaches(module, f)
+
+    assert breaches("regimemap.maps.x", "from ..drawing.style import MODE_STYLE\n") == [
+        "regimemap.maps.x:1 imports regimemap.drawing.style (a higher layer)"]
+    assert breaches("regimemap.io.x", "import numpy\ndef g():\n    import matplotlib.pyplot\n") == [
+        "regimemap.io.x:3 imports matplotlib (drawing/ only)"]
+    assert breaches("regimemap.drawing.x", "import click\n") == ["regimemap.drawing.x:1 imports click (cli/ only)"]
+    assert breaches("regimemap.dynamics.x", "from scipy import optimize\n") == [
+        "regimemap.dynamics.x:1 imports scipy (the engine is numpy only)"]
+    assert breaches("regimemap.mechanics.x", "from ..waves.goda import x\n") == [
+        "regimemap.mechanics.x:1 imports regimemap.waves.goda (a higher layer)",
+        "regimemap.mechanics.x:1 imports regimemap.waves.goda (mechanics imports only mechanics)"]
+    assert breaches("regimemap.cli.x", "from ..maps.query import _grid\n") == [
+        "regimemap.cli.x:1 imports private ['_grid'] from regimemap.maps.query"]
+    assert breaches("regimemap.cli.x", "from ..maps._helpers import grid\n") == [
+        "regimemap.cli.x:1 imports the private module regimemap.maps._helpers"]
+    # allowed: scipy in the statistics, the lazy loader in mechanics, the version anywhere above
+    # mechanics, a package's own private module, an import for the type checker only
+    assert breaches("regimemap.climate.x", "from scipy import stats\n") == []
+    assert breaches("regimemap.mechanics", "from .._lazy import attach\n", "__init__.py") == []
+    assert breaches("regimemap.io.x", "from .. import __version__\nfrom ._helpers import g\n"
+                    "if TYPE_CHECKING:\n    from ..drawing.style import S\n") == []
+    # every breach of a module is reported, not only the first
+    assert len(breaches("regimemap.waves.x", "import click\nimport matplotlib\nfrom ..cli import c\n")) == 3
 
 
 def _import_graph(modules: dict[str, Path]) -> tuple[dict[str, set[str]], int]:

@@ -31,13 +31,6 @@ def sig3(x: float) -> str:
     return f"{x:.3g}"
 
 
-@pytest.fixture()
-def goda(tmp_path: Path) -> Path:
-    path = tmp_path / "goda.toml"
-    path.write_text(EXAMPLE, encoding="utf-8")
-    return path
-
-
 def test_example_prints_the_file_and_round_trips(tmp_path: Path) -> None:
     r = invoke_cli(["caisson", "--example"])
     assert r.code == 0 and r.stdout == EXAMPLE
@@ -170,14 +163,30 @@ def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
     assert head.startswith(b"%PDF" if suffix == "pdf" else b"\x89PNG")
 
 
-@pytest.mark.render
-def test_sheet_has_its_panels() -> None:
-    from regimemap.drawing.sheet.page import PANELS, SHEET_SIZE
+@pytest.fixture(scope="module")
+def drawn_sheets():
+    """``drawn_sheets(text)``: the sheet of a design file's text, drawn once for this module's tests
+    (read-only: the tests measure its texts)."""
     from regimemap.maps.caisson import caisson_report
     from tests.conftest import draw_sheet
 
-    report = caisson_report(parse_design(EXAMPLE).analysis_inputs())
-    fig = draw_sheet(report, title="goda.toml")
+    sheets: dict[str, object] = {}
+
+    def sheet(text: str):
+        if text not in sheets:
+            report = caisson_report(parse_design(text).analysis_inputs())
+            fig = draw_sheet(report, title="breakwater.toml")
+            fig.draw_without_rendering()  # laid out as drawn, without the pixels
+            sheets[text] = (report, fig)
+        return sheets[text]
+    return sheet
+
+
+@pytest.mark.render
+def test_sheet_has_its_panels(drawn_sheets) -> None:
+    from regimemap.drawing.sheet.page import PANELS, SHEET_SIZE
+
+    report, fig = drawn_sheets(EXAMPLE)
     assert tuple(fig.get_size_inches()) == pytest.approx(SHEET_SIZE)
     axes = {ax.get_label(): ax for ax in fig.axes}
     assert tuple(axes) == PANELS
@@ -200,8 +209,7 @@ def test_sheet_has_its_panels() -> None:
     path_lines = [ln for ln in ax.lines if len(ln.get_xdata()) == report.path.factors.size]
     assert path_lines and set(path_lines[0].get_ydata()) == {report.mu}
     assert ax.get_legend() is not None
-    # every text of the sheet lies on the page (tick labels: those of ticks in view)
-    fig.canvas.draw()
+    # every text of the sheet lies on the page (tick labels: those of ticks in view; drawn by the fixture)
     renderer = fig.canvas.get_renderer()
     w, h = fig.bbox.width, fig.bbox.height
     texts_drawn = list(fig.texts)
@@ -246,13 +254,9 @@ LIGHT = EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 1300")
 
 @pytest.mark.render
 @pytest.mark.parametrize("text", [EXAMPLE, DEEP, LIGHT], ids=["goda", "deep-filled", "light"])
-def test_sheet_texts_do_not_collide(text: str) -> None:
+def test_sheet_texts_do_not_collide(drawn_sheets, text: str) -> None:
     """No two labels, titles or notes of the sheet overlap (tick labels aside), all on the page."""
-    from regimemap.maps.caisson import caisson_report
-    from tests.conftest import draw_sheet
-
-    fig = draw_sheet(caisson_report(parse_design(text).analysis_inputs()), title="breakwater.toml")
-    fig.canvas.draw()
+    _, fig = drawn_sheets(text)
     renderer = fig.canvas.get_renderer()
     texts = [t for t in fig.texts]
     for ax in fig.axes:

@@ -270,15 +270,28 @@ def test_help_does_not_import_matplotlib():
 @pytest.mark.subprocess
 @pytest.mark.slow
 def test_main_entry_point_exit_codes(tmp_path):
-    exe = [sys.executable, "-c", "from regimemap.cli import main; main()"]
-    for name in ("m.svg", "m.pdf", "m.png"):
-        ok = subprocess.run(exe + ["plot", "--gamma", "3", "--kprime", "0.4", "-o",
-                                   str(tmp_path / name)], capture_output=True, text=True)
-        assert ok.returncode == 0 and ok.stderr == "", (name, ok.stderr)
-    bad = subprocess.run(exe + ["plot", "--gamma", "3", "--kprime", "0.4", "-o",
-                                str(tmp_path / "m.gif")], capture_output=True, text=True)
-    assert bad.returncode == 2 and "Traceback" not in bad.stderr
-    assert "png, svg, pdf" in bad.stderr
+    """main() in one process: exit 0 and nothing on stderr for each format, then the process
+    itself ends with main()'s exit 2 and one line for a suffix it cannot write."""
+    code = (
+        "import contextlib, io, sys\n"
+        "from regimemap.cli import main\n"
+        f"def plot(name): return ['plot', '--gamma', '3', '--kprime', '0.4', '-o', {str(tmp_path)!r} + '/' + name]\n"
+        "for name in ('m.svg', 'm.pdf', 'm.png'):\n"
+        "    err = io.StringIO()\n"
+        "    try:\n"
+        "        with contextlib.redirect_stderr(err):\n"
+        "            main(plot(name))\n"
+        "    except SystemExit as e:\n"
+        "        print(name, e.code, repr(err.getvalue()))\n"
+        "main(plot('m.gif'))\n"
+    )
+    run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    # each run prints the path it wrote, returns 0 and writes nothing on stderr
+    assert run.stdout.splitlines() == [line for name in ("m.svg", "m.pdf", "m.png")
+                                       for line in (str(tmp_path / name), f"{name} 0 ''")], run
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.pdf", "m.png", "m.svg"]
+    assert run.returncode == 2 and "Traceback" not in run.stderr
+    assert run.stderr.count("\n") == 1 and "png, svg, pdf" in run.stderr, run.stderr
 
 
 # -- start-up: the cyclic GC is paused while matplotlib is imported --------------------------

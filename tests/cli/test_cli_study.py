@@ -126,11 +126,9 @@ def test_the_example_runs(tmp_path):
     example = subprocess.run(_command("study", "--example"), capture_output=True, text=True, check=True)
     path = tmp_path / "breakwater.toml"
     path.write_text(example.stdout)
-    t0 = time.perf_counter()
     run = subprocess.run(_command("study", str(path), "--jobs", "2", "-o", str(tmp_path / "t.csv")),
                          capture_output=True, text=True)
     assert run.returncode == 0, run.stderr
-    assert time.perf_counter() - t0 < 60
     rows = list(csv.DictReader((tmp_path / "t.csv").open()))
     assert len({r["section"] for r in rows}) == 3 and len({r["scenario"] for r in rows}) == 2
     head = [r for r in rows if r["section"] == "head 18 m"]

@@ -32,13 +32,6 @@ def _records(stderr: str) -> list[tuple[str, str, str]]:
     return out
 
 
-@pytest.fixture
-def design(tmp_path):
-    path = tmp_path / "goda.toml"
-    path.write_text(example_design_text(), encoding="utf-8")
-    return path
-
-
 def _lifetime_args(design: Path) -> list[str]:
     return ["lifetime", str(design), "--trials", "600", "--seed", "1", "--jobs", "1", "--quiet"]
 
@@ -56,8 +49,8 @@ def test_verbose_shows_the_main_steps(tmp_path):
     assert r.stdout == f"{out}\n"  # standard output is the command's, with or without -v
 
 
-def test_double_verbose_shows_the_details(design):
-    r = invoke_cli(["-vv", *_lifetime_args(design)])
+def test_double_verbose_shows_the_details(goda):
+    r = invoke_cli(["-vv", *_lifetime_args(goda)])
     assert r.code == 0, r.output
     recs = _records(r.stderr)
     names = {name for _, name, _ in recs}
@@ -76,7 +69,7 @@ def test_verbose_is_an_option_of_the_group(flag, tmp_path):
     assert "-v, --verbose" in invoke_cli(["--help"]).stdout
 
 
-def test_without_verbose_nothing_is_logged(tmp_path, design):
+def test_without_verbose_nothing_is_logged(tmp_path, goda):
     out = tmp_path / "map.npz"
     quiet = invoke_cli(["export", "--gamma", "3", "--kprime", "0.4", "-o", str(out)])
     loud = invoke_cli(["-v", "export", "--gamma", "3", "--kprime", "0.4", "-o", str(out)])
@@ -86,7 +79,7 @@ def test_without_verbose_nothing_is_logged(tmp_path, design):
     notes = [ln for ln in loud.stderr.splitlines() if not RECORD.match(ln)]
     assert notes == quiet.stderr.splitlines() and notes  # the "regimemap: npz, ... grid" note
     assert quiet.stdout == loud.stdout
-    life = invoke_cli(_lifetime_args(design))
+    life = invoke_cli(_lifetime_args(goda))
     assert life.code == 0 and not _records(life.stderr), life.stderr
 
 

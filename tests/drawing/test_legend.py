@@ -75,7 +75,7 @@ def test_every_symbol_sits_between_its_swatch_and_the_descriptions():
             ax = fig.add_subplot()
             leg = key_legend(ax, key_handles(MAP_MODES, dotted_label=r"dotted $\mu = k|k'|$"),
                              ncols=2, fontsize=fontsize, loc="upper center")
-            fig.canvas.draw()
+            fig.draw_without_rendering()
             r = fig.canvas.get_renderer()
             starts: dict[float, set[float]] = {}
             rows = _key_parts(leg)
@@ -104,7 +104,7 @@ def test_line_samples_are_as_long_as_the_swatches():
     from regimemap.drawing.maps.key import ModeSwatch
 
     fig, ax, art = map_figure(run_map(Parameters(3.0, -0.3)))
-    fig.canvas.draw()
+    fig.draw_without_rendering()
     r = fig.canvas.get_renderer()
     widths = {}
     for children, _label in _key_parts(art.legend):

@@ -102,7 +102,7 @@ def _overlaps(fig) -> list[tuple[str, str]]:
     """Pairs of texts of the sheet that overlap: every text, the keys' and tick labels too."""
     from regimemap.drawing.text.labelplacer import figure_texts
 
-    fig.canvas.draw()
+    fig.draw_without_rendering()  # laid out as drawn, without the pixels
     renderer = fig.canvas.get_renderer()
     boxes = [(t.get_text(), t.get_window_extent(renderer)) for t in figure_texts(fig)]
     assert len(boxes) > 150

@@ -12,7 +12,6 @@ import doctest
 import json
 import math
 import re
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -44,13 +43,6 @@ def edited(old: str, new: str, text: str = EXAMPLE) -> str:
 def with_friction(mu: float) -> str:
     """Goda's worked caisson with another friction coefficient."""
     return edited("friction = 0.6 ", f"friction = {mu} ")
-
-
-@pytest.fixture()
-def goda(tmp_path: Path) -> Path:
-    path = tmp_path / "goda.toml"
-    path.write_text(EXAMPLE, encoding="utf-8")
-    return path
 
 
 def one_error(r, pattern: str) -> str:

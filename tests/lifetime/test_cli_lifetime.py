@@ -24,13 +24,6 @@ JSON_KEYS = {"expected_sliding", "std_error", "median", "quantile_90", "quantile
              "storm_exceedance", "never_slides", "trials", "seed", "years", "width", "climate"}
 
 
-@pytest.fixture()
-def goda(tmp_path: Path) -> Path:
-    path = tmp_path / "goda.toml"
-    path.write_text(EXAMPLE, encoding="utf-8")
-    return path
-
-
 def ok(r):
     assert "Traceback" not in r.output, r.output
     assert r.code == 0, r.output

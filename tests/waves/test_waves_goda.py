@@ -37,12 +37,12 @@ def sig3(x: float) -> float:
 
 
 @pytest.fixture(scope="module")
-def goda() -> CaissonAnalysis:
+def worked() -> CaissonAnalysis:
     return analyse_caisson(**GODA)
 
 
-def test_worked_example_published_values(goda: CaissonAnalysis) -> None:
-    a = goda
+def test_worked_example_published_values(worked: CaissonAnalysis) -> None:
+    a = worked
     assert sig3(a.heights.H13) == 5.80
     assert sig3(a.heights.Hmax) == 8.05
     assert sig3(a.pressures.p1 / 1e3) == 97.6
@@ -52,8 +52,8 @@ def test_worked_example_published_values(goda: CaissonAnalysis) -> None:
     assert sig3(a.stability.overturning) == 2.56
 
 
-def test_worked_example_intermediate_values(goda: CaissonAnalysis) -> None:
-    a = goda
+def test_worked_example_intermediate_values(worked: CaissonAnalysis) -> None:
+    a = worked
     h, H13, Hmax = 10.1, float(a.heights.H13), float(a.heights.Hmax)
     pr, ld = a.pressures, a.loads
     # surf zone: h/L0 = 0.0498; H1/3 is capped by betamax H0', Hmax by beta0* H0' + beta1* h_b

@@ -15,13 +15,6 @@ from regimemap.lifetime.results import STATISTICS
 from regimemap.workflows import ChartRecord, LifetimeRecord, read_lifetime_design, run_chart, run_lifetime
 
 
-@pytest.fixture
-def goda(tmp_path: Path) -> Path:
-    p = tmp_path / "goda.toml"
-    p.write_text(example_design_text())
-    return p
-
-
 def test_the_record_holds_the_library_call_and_the_section(goda: Path) -> None:
     rec = run_lifetime(goda, trials=150, seed=3)
     assert isinstance(rec, LifetimeRecord)
