@@ -12,7 +12,8 @@ EXCERPT = str(DATA / "ndbc44007_1996_hs_tz.txt.gz")
 OREGON = str(DATA / "oregon_hindcast_1990_hs.csv.gz")
 
 JSON_KEYS = {"record", "method", "threshold", "gap_hours", "storms", "rate_per_year", "distribution",
-             "parameters", "return_values", "confidence", "bootstrap", "seed", "warnings"}
+             "parameters", "return_values", "confidence", "interval", "replicates", "replicates_fitted", "seed",
+             "warnings"}
 RECORD_KEYS = {"start", "end", "years", "coverage", "missing", "flagged"}
 
 
@@ -34,26 +35,29 @@ def failed(r, *parts: str) -> str:
 
 
 def test_json_keys_and_bands(run_cli):
-    r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--bootstrap", "40", "--seed", "3", "--json"]))
+    r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "bootstrap", "--bootstrap", "40",
+                    "--seed", "3", "--json"]))
     obj = json.loads(r.stdout)
     assert JSON_KEYS <= set(obj) and RECORD_KEYS <= set(obj["record"])
     assert obj["method"] == "pot" and obj["distribution"] == "gpd" and obj["gap_hours"] == 48
     assert [v["period"] for v in obj["return_values"]] == [10, 50, 100]
     for v in obj["return_values"]:
         assert v["lower"] <= v["upper"]
-    assert obj["bootstrap"] == 40 and obj["seed"] == 3
-    if obj["bootstrap_fitted"] < 38:
+    assert obj["interval"] == "bootstrap" and obj["replicates"] == 40 and obj["seed"] == 3
+    if obj["replicates_fitted"] < 38:
         assert any("bootstrap replicates had too few values" in w for w in obj["warnings"])
     assert obj["rate_per_year"] == pytest.approx(obj["storms"] / obj["record"]["years"], rel=1e-9)
-    again = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--bootstrap", "40", "--seed", "3", "--json"]))
-    assert again.stdout == r.stdout
+    again = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "bootstrap", "--replicates", "40",
+                        "--seed", "3", "--json"]))
+    assert again.stdout == r.stdout  # --bootstrap is the old spelling of --replicates
 
 
 def test_text_report_annual_maxima_needs_years(run_cli):
     failed(run_cli(["climate", OREGON, "--method", "annual-maxima"]), "annual maxima", "at least 5 years")
     r = ok(run_cli(["climate", OREGON, "--threshold", "4.5", "--gap", "24", "--bootstrap", "20"]))
     assert "peaks over threshold: u = 4.500 m (given), gap 24 h" in r.stdout
-    assert "90 % band" in r.stdout and "50 years" in r.stdout
+    assert "90 % interval" in r.stdout and "50 years" in r.stdout
+    assert "posterior interval (grid posterior" in r.stdout
 
 
 @pytest.mark.render

@@ -93,11 +93,19 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--return-periods", type=_Periods(), default="10,50,100", show_default=True, metavar="R,R",
               help="Return periods in years (> 1), comma-separated.")
 @click.option("--confidence", type=click.FloatRange(min=0.5, max=0.999), default=0.9, show_default=True,
-              metavar="LEVEL", help="Level of the bootstrap bands, 0.5 to 0.999.")
-@click.option("--bootstrap", type=click.IntRange(min=0, max=100000), default=200, show_default=True,
-              metavar="N", help="Bootstrap replicates for the bands (0: none).")
+              metavar="LEVEL", help="Level of the intervals, 0.5 to 0.999.")
+@click.option("--interval", "interval", type=click.Choice(["posterior", "profile", "bootstrap"]),
+              default="posterior", show_default=True,
+              help="How the return values' intervals are made: posterior (a Bayesian grid posterior, "
+                   "prior flat in ln sigma and in xi on [-1, 1.5], the storm rate's Jeffreys posterior), "
+                   "profile (the profile likelihood of the storm count and the peaks) or bootstrap "
+                   "(non-parametric percentile; it covers less than it claims on short records).")
+@click.option("--replicates", "--bootstrap", "replicates", type=click.IntRange(min=0, max=100000),
+              default=200, show_default=True, metavar="N",
+              help="Replicate fits: posterior or likelihood draws, or bootstrap refits (0: no "
+                   "interval). --bootstrap N is the old spelling.")
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="S",
-              help="Root seed of the bootstrap (the same seed, the same bands).")
+              help="Root seed of the draws (the same seed, the same intervals).")
 @click.option("--time", "time_col", default=None, metavar="NAME", help="The time column (CSV, NetCDF).")
 @click.option("--hs", "hs_col", default=None, metavar="NAME", help="The significant-wave-height column.")
 @click.option("--period", "period_col", default=None, metavar="NAME",
@@ -112,9 +120,9 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--strict", is_flag=True, help="Quality-control and fit warnings are errors (exit 2).")
 def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hours: float,
                 distribution: str | None, shape: float, coverage: float, return_periods: tuple[float, ...],
-                confidence: float, bootstrap: int, seed: int, time_col: str | None, hs_col: str | None,
-                period_col: str | None, drop_spikes: bool, as_json: bool, outputs: tuple[str, ...],
-                diagnostics: str | None, strict: bool) -> None:
+                confidence: float, interval: str, replicates: int, seed: int, time_col: str | None,
+                hs_col: str | None, period_col: str | None, drop_spikes: bool, as_json: bool,
+                outputs: tuple[str, ...], diagnostics: str | None, strict: bool) -> None:
     """Return values of the significant wave height, with bootstrap bands, from a wave RECORD.
 
     RECORD is CSV (an ISO time column and an Hs column found by their usual names), the
@@ -135,8 +143,8 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     _check_figures(outputs, diagnostics)
     options = ClimateOptions(method=method, threshold=threshold, gap_hours=gap_hours,
                              distribution=distribution, shape=shape, coverage=coverage,
-                             return_periods=return_periods, confidence=confidence, bootstrap=bootstrap,
-                             seed=seed)
+                             return_periods=return_periods, confidence=confidence, interval=interval,
+                             replicates=replicates, seed=seed)
     try:
         options.check()
     except ValueError as exc:

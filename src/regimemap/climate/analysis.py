@@ -5,11 +5,12 @@ numpy and scipy: threshold, storms (or annual maxima), fit, bootstrap, return va
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import InitVar, dataclass, field
 
 import numpy as np
 
-from .fits import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Band, Fit, bootstrap, fit, return_values
+from .fits import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Band, Fit, fit, return_values
+from .intervals import DEFAULT_INTERVAL, INTERVALS, interval_band
 from .peaks import (
     DEFAULT_COVERAGE,
     DEFAULT_GAP,
@@ -54,11 +55,18 @@ class ClimateOptions:
     return_periods : tuple of float
         Return periods [years].
     confidence : float
-        Level of the bands, in (0, 1).
-    bootstrap : int
-        Bootstrap replicates (0: no band).
+        Level of the intervals, in (0, 1).
+    replicates : int
+        Replicate fits (0: no interval): the posterior draws, likelihood draws or bootstrap refits
+        the lifetime's climate replicates are drawn from (``bootstrap``: the draws of the interval
+        too; the others draw at least :data:`~regimemap.climate.intervals.POSTERIOR_DRAWS` for it).
     seed : int
-        Root seed of the bootstrap.
+        Root seed of the draws.
+    interval : str
+        ``posterior`` (default), ``profile`` or ``bootstrap``
+        (:mod:`regimemap.climate.intervals`).
+    bootstrap : int, optional
+        The old name of ``replicates`` (init only: ``ClimateOptions(bootstrap=200)`` still works).
     """
 
     method: str = "pot"
@@ -69,8 +77,14 @@ class ClimateOptions:
     coverage: float = DEFAULT_COVERAGE
     return_periods: tuple[float, ...] = (10.0, 50.0, 100.0)
     confidence: float = 0.9
-    bootstrap: int = 200
+    replicates: int = 200
     seed: int = 0
+    interval: str = DEFAULT_INTERVAL
+    bootstrap: InitVar[int | None] = None
+
+    def __post_init__(self, bootstrap: int | None) -> None:
+        if bootstrap is not None:
+            object.__setattr__(self, "replicates", int(bootstrap))
 
     @property
     def fitted(self) -> str:
@@ -93,6 +107,10 @@ class ClimateOptions:
             raise ValueError(f"confidence must be in (0, 1), got {self.confidence!r}")
         if not 0.0 < self.coverage <= 1.0:
             raise ValueError(f"coverage must be in (0, 1], got {self.coverage!r}")
+        if self.interval not in INTERVALS:
+            raise ValueError(f"interval must be one of {', '.join(INTERVALS)}, got {self.interval!r}")
+        if not self.replicates >= 0:
+            raise ValueError(f"replicates must be a number >= 0, got {self.replicates!r}")
 
 
 @dataclass(frozen=True)
@@ -167,8 +185,9 @@ def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
     if estimate.distribution == "gev" and estimate.parameters["xi"] <= GEV_XI[0] + 1e-6:
         notes.append(f"the GEV shape reached its bound xi = {GEV_XI[0]:g} (too few or too even annual "
                      "maxima for three parameters): prefer gumbel or peaks over a threshold")
-    band = (bootstrap(sample, estimate, options.bootstrap, options.seed, years, options.shape)
-            if options.bootstrap > 0 else None)
+    band = (interval_band(sample, estimate, options.interval, options.replicates, options.seed, years,
+                          options.shape)
+            if options.replicates > 0 else None)
     if band is not None and band.failed > 0.05 * band.requested:
         notes.append(f"{band.failed} of {band.requested} bootstrap replicates had too few values to fit "
                      "and were left out: the band is too narrow (lower the threshold)")

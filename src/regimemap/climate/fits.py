@@ -275,29 +275,48 @@ def fit(values: ArrayLike, distribution: str, threshold: float | None = None, ra
 
 @dataclass(frozen=True)
 class Band:
-    """Bootstrap replicates of a fit.
+    """The uncertainty of a fit: its interval method, the draws behind it and the replicate fits.
 
     Attributes
     ----------
     fits : list of Fit
-        The replicates that could be fitted (each with its own rate).
+        The replicate fits (each with its own rate) the lifetime's climate replicates are drawn
+        from: posterior draws (``posterior``), draws from the normalised likelihood (``profile``),
+        the refits that could be fitted (``bootstrap``).
     requested : int
-        Replicates drawn.
+        Replicates asked for.
     seed : int
         The root seed.
+    method : str
+        ``posterior``, ``profile`` or ``bootstrap`` (:data:`INTERVALS`).
+    draws : dict of ndarray
+        The parameter draws behind a ``posterior`` or ``bootstrap`` interval (and the ``rate``).
+    grid : regimemap.climate.intervals.Grid or None
+        The likelihood grid (``posterior``, ``profile``).
+    distribution, threshold : str or None, float or None
+        The fit's distribution and threshold (the draws' return values).
     """
 
     fits: list[Fit] = field(repr=False)
     requested: int
     seed: int
+    method: str = "bootstrap"
+    draws: dict[str, FloatArray] = field(default_factory=dict, repr=False)
+    grid: Any = field(default=None, repr=False)
+    distribution: str | None = None
+    threshold: float | None = None
 
     @property
     def failed(self) -> int:
-        """Replicates that had too few values to fit."""
+        """Replicates that had too few values to fit (bootstrap)."""
         return self.requested - len(self.fits)
 
     def return_values(self, years: float) -> FloatArray:
-        """Each replicate's ``R``-year value (NaN where ``lambda R <= 1``)."""
+        """Each draw's ``R``-year value (NaN where ``lambda R <= 1``)."""
+        if self.draws:
+            params = {k: v for k, v in self.draws.items() if k != "rate"}
+            assert self.distribution is not None
+            return return_levels(self.distribution, params, self.threshold, self.draws["rate"], years)
         if not self.fits:
             return np.zeros(0)
         first = self.fits[0]
@@ -306,7 +325,13 @@ class Band:
         return return_levels(first.distribution, params, first.threshold, rates, years)
 
     def interval(self, years: float, confidence: float) -> tuple[float, float]:
-        """The percentile interval of the ``R``-year value at ``confidence``."""
+        """The ``confidence`` interval of the ``R``-year value: equal-tailed quantiles of the draws
+        (``posterior``, ``bootstrap``) or the profile-likelihood interval (``profile``)."""
+        if self.method == "profile":
+            from .intervals import profile_interval
+
+            assert self.grid is not None
+            return profile_interval(self.grid, years, confidence)
         v = self.return_values(years)
         v = v[np.isfinite(v)]
         if v.size == 0:
@@ -314,6 +339,13 @@ class Band:
         a = 0.5 * (1.0 - confidence)
         lo, hi = np.quantile(v, [a, 1.0 - a])
         return float(lo), float(hi)
+
+    def label(self, confidence: float) -> str:
+        """``90 % posterior interval`` (the figures' and the report's name of the band)."""
+        name = {"posterior": "posterior interval", "profile": "profile-likelihood interval",
+                "bootstrap": "bootstrap interval"}[self.method]
+        return f"{100 * confidence:g} % {name}"
+
 
 
 def bootstrap(values: ArrayLike, estimate: Fit, n: int, seed: int, years: float | None = None,

@@ -16,6 +16,14 @@ _NAMES = {"gpd": "generalised Pareto", "weibull": "Weibull (shape fixed)", "gumb
           "gev": "generalised extreme value"}
 
 
+_METHOD_TEXT = {
+    "posterior": "{level} equal-tailed posterior interval (grid posterior, prior flat in ln sigma and xi, "
+                 "the rate's Jeffreys posterior; {n} replicate draws)",
+    "profile": "{level} profile-likelihood interval (storm count and peaks; {n} replicate likelihood draws)",
+    "bootstrap": "{level} percentile interval of {n} non-parametric bootstrap replicates",
+}
+
+
 def _num(v: float | None) -> float | None:
     return None if v is None else json_number(v)
 
@@ -28,8 +36,10 @@ def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, 
     spikes: ``[{time, hs}]``), ``spikes_dropped``, ``period``}, ``method``, ``threshold`` (m;
     null for annual maxima), ``gap_hours``, ``storms`` (count; for annual maxima the years used),
     ``rate_per_year``, ``distribution``, ``parameters``, ``return_values`` [{``period``,
-    ``value``, ``lower``, ``upper``}], ``confidence``, ``bootstrap`` (replicates drawn),
-    ``bootstrap_fitted`` (those with enough values to fit), ``seed``, ``warnings``.
+    ``value``, ``lower``, ``upper``}], ``confidence``, ``interval`` (the method: ``posterior``,
+    ``profile`` or ``bootstrap``; null without replicates), ``replicates`` (replicate fits asked
+    for), ``replicates_fitted`` (those made: a bootstrap replicate with too few values is not),
+    ``seed``, ``warnings``.
     """
     r, o, q = result.record, result.options, result.record.quality
     pot = result.storms is not None
@@ -53,8 +63,9 @@ def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, 
         "parameters": {k: json_number(v) for k, v in result.fit.parameters.items()},
         "return_values": [{k: _num(v) for k, v in rv.items()} for rv in result.return_values],
         "confidence": json_number(o.confidence),
-        "bootstrap": 0 if result.band is None else result.band.requested,
-        "bootstrap_fitted": 0 if result.band is None else len(result.band.fits),
+        "interval": None if result.band is None else result.band.method,
+        "replicates": 0 if result.band is None else result.band.requested,
+        "replicates_fitted": 0 if result.band is None else len(result.band.fits),
         "seed": o.seed,
         "warnings": result.warnings(),
     }
@@ -92,10 +103,10 @@ def format_climate(result: ClimateResult, source: str | None = None) -> str:
     if result.band is not None:
         b = result.band
         fitted = f", {len(b.fits)} fitted" if b.failed else ""
-        lines.append(f"  band: {100 * o.confidence:g} % percentile interval of {b.requested} non-parametric "
-                     f"bootstrap replicates{fitted} (seed {b.seed})")
+        method = _METHOD_TEXT[b.method].format(level=f"{100 * o.confidence:g} %", n=b.requested)
+        lines.append(f"  interval: {method}{fitted} (seed {b.seed})")
     lines.append("")
-    lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % band" if result.band else ""))
+    lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % interval" if result.band else ""))
     for rv in result.return_values:
         value = rv["value"]
         assert value is not None

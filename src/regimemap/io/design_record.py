@@ -137,7 +137,7 @@ def record_analysis(spec: RecordSpec, replicates: int = 0, seed: int = 0) -> Cli
 
     options = ClimateOptions(method=spec.method, threshold=spec.threshold, gap_hours=spec.gap_hours,
                              distribution=spec.distribution, shape=spec.shape, coverage=spec.coverage,
-                             return_periods=(10.0, 50.0), bootstrap=replicates, seed=seed)
+                             return_periods=(10.0, 50.0), replicates=replicates, seed=seed)
     return analyse(read_record(spec.path), options)
 
 

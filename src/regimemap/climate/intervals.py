@@ -1,0 +1,346 @@
+"""Return-value intervals: a grid posterior, the profile likelihood, the non-parametric bootstrap.
+
+numpy and scipy.  Three ways to say how uncertain a record's ``R``-year value is; every one
+includes the uncertainty of the storm rate (how many storms ten years hold is itself uncertain).
+
+``posterior`` (the default: its coverage is the nearest to nominal, measured on records of
+known truth -- docs/guide/wave-record.md)
+    A Bayesian posterior computed on a grid, exact to the grid's resolution (no Markov chain).
+    The prior is flat in the location, the logarithm of the scale and the shape:
+    :math:`\\pi(\\sigma, \\xi) \\propto 1/\\sigma` with :math:`\\xi` uniform on
+    :data:`XI_PRIOR` (the "flat" prior of revdbayes, ``gp_flat``; a lower bound on :math:`\\xi`
+    is what makes the posterior proper, Northrop & Attalides 2016, Statistica Sinica 26,
+    721-743).  Peaks over a threshold are a Poisson process: the rate has Jeffreys' prior
+    :math:`\\pi(\\lambda) \\propto \\lambda^{-1/2}`, so that with :math:`N` storms in :math:`T`
+    years :math:`\\lambda \\mid N \\sim \\mathrm{Gamma}(N + 1/2, \\text{rate} = T)`, independent of
+    the peaks' parameters.  The interval is the equal-tailed quantiles of :math:`H_R` over the
+    posterior draws, and the replicate fits (:attr:`Band.fits`) are the first of those draws.
+``profile``
+    The profile-likelihood interval (Coles 2001, Sect. 2.6.5 and 4.3.3): the values of
+    :math:`H_R` inside the joint likelihood region
+    :math:`\\{\\ell(\\lambda, \\theta) \\ge \\hat\\ell - \\chi^2_{1}(c)/2\\}` of the Poisson count
+    and the peaks -- the image of that region under :math:`H_R`, which is the set where
+    :math:`H_R`'s profile likelihood is above the cut.  The rate is profiled with the peaks'
+    parameters: at each parameter point the rate spans the interval its own Poisson likelihood
+    leaves inside the cut.  Its replicate fits are draws from the likelihood normalised over the
+    same grid (the posterior's, as the prior is flat in the grid's coordinates).
+``bootstrap``
+    The non-parametric percentile bootstrap (:func:`regimemap.climate.fits.bootstrap`): honest
+    about what it is, and known to cover less than it claims on short records (it cannot resample
+    a storm larger than the record's largest).
+
+The grid: the coordinates are the location, the logarithm of the scale and the shape (GPD:
+``ln sigma``, ``xi``; Weibull with ``k`` fixed: ``ln A``; Gumbel: ``B``, ``ln A``; GEV: ``mu``,
+``ln sigma``, ``xi``), in which the prior is flat.  A coarse grid around the maximum-likelihood
+fit is widened until the log-likelihood has fallen :data:`DROP` below its maximum at every open
+edge, then a fine grid covers the box where it has not.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+from scipy import stats
+
+from .fits import AM_DISTRIBUTIONS, GEV_XI, Band, Fit, return_levels
+
+__all__ = ["DEFAULT_INTERVAL", "INTERVALS", "POSTERIOR_DRAWS", "XI_PRIOR", "Grid", "interval_band",
+           "likelihood_grid", "profile_interval"]
+
+FloatArray = NDArray[np.float64]
+
+#: The interval methods (``ClimateOptions.interval``, ``climate --interval``).
+INTERVALS = ("posterior", "profile", "bootstrap")
+#: The default, chosen by measured coverage.
+DEFAULT_INTERVAL = "posterior"
+#: The GPD shape's prior range (uniform; the likelihood is unbounded below -1).
+XI_PRIOR = (-1.0, 1.5)
+#: Posterior draws behind an interval (at least; the replicate fits are the first of them).
+POSTERIOR_DRAWS = 4000
+#: Log-likelihood drop [nepers] below its maximum that bounds the grid (e^-16: nothing left).
+DROP = 16.0
+#: Points per axis of the coarse and of the fine grid, by number of parameters.
+_COARSE = {1: 81, 2: 41, 3: 17}
+_FINE = {1: 801, 2: 161, 3: 41}
+
+
+@dataclass(frozen=True)
+class Grid:
+    """The likelihood of a fit's parameters on a grid (flat-prior coordinates).
+
+    Attributes
+    ----------
+    distribution : str
+    threshold : float or None
+    parameters : dict of ndarray
+        The parameters at each grid point (``sigma``, ``xi``, ... as in :class:`Fit`).
+    loglik : ndarray
+        The log-likelihood there, relative to its maximum (<= 0; -inf outside the support).
+    cell : ndarray
+        The grid step of each coordinate.
+    coordinates : ndarray
+        The grid points in the flat-prior coordinates, one row per point.
+    names : tuple of str
+        The coordinates' names (``ln_sigma``, ``xi``, ...).
+    low, high : ndarray
+        The coordinates' hard bounds (``-inf``/``inf`` where open).
+    count : int
+        ``N``, storms (peaks over a threshold) or annual maxima.
+    years : float or None
+        ``T``, the record's years (peaks over a threshold; None for annual maxima: rate 1).
+    """
+
+    distribution: str
+    threshold: float | None
+    parameters: dict[str, FloatArray] = field(repr=False)
+    loglik: FloatArray = field(repr=False)
+    cell: FloatArray
+    coordinates: FloatArray = field(repr=False)
+    names: tuple[str, ...]
+    low: FloatArray
+    high: FloatArray
+    count: int
+    years: float | None
+
+
+def _parameters(distribution: str, c: FloatArray, shape: float) -> dict[str, FloatArray]:
+    """The parameters of :class:`Fit` from the coordinates ``c`` (one row per point)."""
+    if distribution == "gpd":
+        return {"sigma": np.exp(c[:, 0]), "xi": c[:, 1]}
+    if distribution == "weibull":
+        return {"A": np.exp(c[:, 0]), "k": np.full(c.shape[0], float(shape))}
+    if distribution == "gumbel":
+        return {"A": np.exp(c[:, 1]), "B": c[:, 0]}
+    return {"mu": c[:, 0], "sigma": np.exp(c[:, 1]), "xi": c[:, 2]}
+
+
+def _coordinates(estimate: Fit) -> tuple[tuple[str, ...], FloatArray, FloatArray, FloatArray]:
+    """Names, the fit's point, and the hard lower and upper bounds of the coordinates."""
+    p, inf = estimate.parameters, math.inf
+    if estimate.distribution == "gpd":
+        return (("ln_sigma", "xi"), np.array([math.log(p["sigma"]), p["xi"]]),
+                np.array([-inf, XI_PRIOR[0]]), np.array([inf, XI_PRIOR[1]]))
+    if estimate.distribution == "weibull":
+        return ("ln_A",), np.array([math.log(p["A"])]), np.array([-inf]), np.array([inf])
+    if estimate.distribution == "gumbel":
+        return (("B", "ln_A"), np.array([p["B"], math.log(p["A"])]), np.array([-inf, -inf]),
+                np.array([inf, inf]))
+    return (("mu", "ln_sigma", "xi"), np.array([p["mu"], math.log(p["sigma"]), p["xi"]]),
+            np.array([-inf, -inf, GEV_XI[0]]), np.array([inf, inf, GEV_XI[1]]))
+
+
+def _loglik(distribution: str, x: FloatArray, threshold: float | None, c: FloatArray,
+            shape: float) -> FloatArray:
+    """Log-likelihood of the values ``x`` at each row of coordinates ``c`` (-inf outside the support),
+    in chunks of points."""
+    out = np.empty(c.shape[0])
+    step = max(1, 2_000_000 // max(x.size, 1))
+    for a in range(0, c.shape[0], step):
+        out[a:a + step] = _loglik_chunk(distribution, x, threshold, c[a:a + step], shape)
+    return out
+
+
+def _loglik_chunk(distribution: str, x: FloatArray, threshold: float | None, c: FloatArray,
+                  shape: float) -> FloatArray:
+    n = x.size
+    with np.errstate(invalid="ignore", divide="ignore", over="ignore"):
+        if distribution in ("gpd", "weibull"):
+            assert threshold is not None
+            y = x - threshold
+            if distribution == "weibull":
+                k, ln_a = float(shape), c[:, 0]
+                z = y[None, :] / np.exp(ln_a)[:, None]
+                return np.asarray(n * math.log(k) - n * k * ln_a + (k - 1.0) * float(np.sum(np.log(y)))
+                                  - np.sum(z ** k, axis=1), dtype=np.float64)
+            ln_s, xi = c[:, 0], c[:, 1]
+            sigma = np.exp(ln_s)
+            t = 1.0 + (xi / sigma)[:, None] * y[None, :]
+            ok = np.all(t > 0.0, axis=1)
+            small = np.abs(xi) < 1e-9
+            lt = np.log(np.where(t > 0.0, t, 1.0))
+            safe = np.where(small, 1.0, xi)
+            ll = np.where(small, -n * ln_s - float(y.sum()) / sigma,
+                          -n * ln_s - (1.0 + 1.0 / safe) * np.sum(lt, axis=1))
+            return np.where(ok, ll, -np.inf)
+        if distribution == "gumbel":
+            b, ln_a = c[:, 0], c[:, 1]
+            z = (x[None, :] - b[:, None]) / np.exp(ln_a)[:, None]
+            return np.asarray(-n * ln_a - np.sum(z, axis=1) - np.sum(np.exp(-z), axis=1), dtype=np.float64)
+        mu, ln_s, xi = c[:, 0], c[:, 1], c[:, 2]
+        z = (x[None, :] - mu[:, None]) / np.exp(ln_s)[:, None]
+        t = 1.0 + xi[:, None] * z
+        ok = np.all(t > 0.0, axis=1)
+        small = np.abs(xi) < 1e-9
+        safe = np.where(small, 1.0, xi)
+        lt = np.log(np.where(t > 0.0, t, 1.0))
+        gen = (-n * ln_s - (1.0 + 1.0 / safe) * np.sum(lt, axis=1)
+               - np.sum(np.exp(-lt / safe[:, None]), axis=1))
+        gum = -n * ln_s - np.sum(z, axis=1) - np.sum(np.exp(-z), axis=1)
+        return np.where(ok, np.where(small, gum, gen), -np.inf)
+
+
+def _mesh(lo: FloatArray, hi: FloatArray, points: int) -> tuple[FloatArray, FloatArray]:
+    axes = [np.linspace(a, b, points) for a, b in zip(lo, hi)]
+    mesh = np.meshgrid(*axes, indexing="ij")
+    cell = np.array([(b - a) / (points - 1) for a, b in zip(lo, hi)])
+    return np.stack([m.ravel() for m in mesh], axis=1), cell
+
+
+def likelihood_grid(values: ArrayLike, estimate: Fit, years: float | None = None,
+                    shape: float = 2.0) -> Grid:
+    """The fit's log-likelihood on a grid covering all but ``e^-DROP`` of it (the module says how).
+
+    Parameters
+    ----------
+    values : array_like
+        The values fitted.
+    estimate : Fit
+        Their maximum-likelihood fit (the grid's first centre).
+    years : float, optional
+        The record's years (peaks over a threshold: the rate's Poisson likelihood).
+    shape : float, optional
+        Weibull ``k``.
+
+    Returns
+    -------
+    Grid
+    """
+    x = np.asarray(values, dtype=np.float64).ravel()
+    d = estimate.distribution
+    names, centre, low, high = _coordinates(estimate)
+    dim = centre.size
+    # first half-widths: a few standard errors (scale ~ 1/sqrt(n) in ln, shape ~ 1/sqrt(n),
+    # location ~ scale/sqrt(n))
+    n = max(x.size, 1)
+    scale = float(np.exp(centre[names.index("ln_sigma")] if "ln_sigma" in names else
+                         centre[names.index("ln_A")]))
+    half = np.array([5.0 * scale / math.sqrt(n) if nm in ("mu", "B") else
+                     (6.0 / math.sqrt(n) if nm.startswith("ln_") else 6.0 / math.sqrt(n)) for nm in names])
+    lo = np.maximum(centre - half, low)
+    hi = np.minimum(centre + half, high)
+    for _ in range(12):
+        pts, _cell = _mesh(lo, hi, _COARSE[dim])
+        ll = _loglik(d, x, estimate.threshold, pts, shape)
+        top = float(np.max(ll))
+        keep = ll > top - DROP
+        grown = False
+        for j in range(dim):
+            inside = pts[keep, j]
+            width = hi[j] - lo[j]
+            if inside.min() <= lo[j] + 1e-12 * max(1.0, abs(lo[j])) and lo[j] > low[j]:
+                lo[j] = max(lo[j] - width, low[j])
+                grown = True
+            if inside.max() >= hi[j] - 1e-12 * max(1.0, abs(hi[j])) and hi[j] < high[j]:
+                hi[j] = min(hi[j] + width, high[j])
+                grown = True
+        if not grown:
+            break
+    # the fine grid: the box of what is kept, one coarse cell wider (inside the hard bounds)
+    pts, cell = _mesh(lo, hi, _COARSE[dim])
+    inside = pts[keep]
+    flo = np.maximum(inside.min(axis=0) - cell, low)
+    fhi = np.minimum(inside.max(axis=0) + cell, high)
+    fhi = np.where(fhi > flo, fhi, flo + cell)
+    pts, cell = _mesh(flo, fhi, _FINE[dim])
+    ll = _loglik(d, x, estimate.threshold, pts, shape)
+    best = _loglik(d, x, estimate.threshold, centre[None, :], shape)[0]
+    top = max(float(np.max(ll)), float(best))
+    return Grid(distribution=d, threshold=estimate.threshold, parameters=_parameters(d, pts, shape),
+                loglik=ll - top, cell=cell, coordinates=pts, names=names, low=low, high=high,
+                count=int(x.size), years=None if d in AM_DISTRIBUTIONS else years)
+
+
+def _rate_bounds(count: int, slack: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """``lambda/lambda_hat`` where the Poisson log-likelihood of ``count`` storms has fallen by
+    ``slack``: ``N (r - 1 - ln r) = slack``, below and above 1 (NaN where ``slack < 0``)."""
+    n = float(count)
+    r_lo = np.concatenate([np.geomspace(1e-6, 0.5, 400), np.linspace(0.5, 1.0, 400)[1:]])
+    r_hi = np.concatenate([np.linspace(1.0, 2.0, 400), np.geomspace(2.0, 1e3, 400)[1:]])
+    g_lo = n * (r_lo - 1.0 - np.log(r_lo))
+    g_hi = n * (r_hi - 1.0 - np.log(r_hi))
+    s = np.where(slack >= 0.0, slack, np.nan)
+    lo = np.interp(s, g_lo[::-1], r_lo[::-1])
+    hi = np.interp(s, g_hi, r_hi)
+    return np.where(np.isfinite(s), lo, np.nan), np.where(np.isfinite(s), hi, np.nan)
+
+
+def profile_interval(grid: Grid, years: float, confidence: float) -> tuple[float, float]:
+    """The profile-likelihood interval of ``H_R`` (the module says how the rate is profiled)."""
+    cut = 0.5 * float(stats.chi2.ppf(confidence, 1))
+    slack = cut + grid.loglik
+    ok = slack >= 0.0
+    params = {k: v[ok] for k, v in grid.parameters.items()}
+    if grid.years is None:
+        h = return_levels(grid.distribution, params, grid.threshold, np.ones(int(ok.sum())), years)
+        h = h[np.isfinite(h)]
+        return (float(h.min()), float(h.max())) if h.size else (math.nan, math.nan)
+    rate = grid.count / grid.years
+    r_lo, r_hi = _rate_bounds(grid.count, slack[ok])
+    low = return_levels(grid.distribution, params, grid.threshold, rate * r_lo, years)
+    high = return_levels(grid.distribution, params, grid.threshold, rate * r_hi, years)
+    low, high = low[np.isfinite(low)], high[np.isfinite(high)]
+    if low.size == 0 or high.size == 0:
+        return math.nan, math.nan
+    return float(low.min()), float(high.max())
+
+
+def _draw(grid: Grid, n: int, rng: np.random.Generator) -> tuple[dict[str, FloatArray], FloatArray]:
+    """``n`` draws from the grid's normalised likelihood (a cell by its weight, then uniform in it;
+    flat prior in the coordinates) and the rates from their Gamma posterior."""
+    w = np.exp(grid.loglik)
+    w = np.where(np.isfinite(w), w, 0.0)
+    w /= w.sum()
+    cells = rng.choice(w.size, size=n, p=w)
+    jitter = (rng.random((n, grid.coordinates.shape[1])) - 0.5) * grid.cell
+    c = np.clip(grid.coordinates[cells] + jitter, grid.low, grid.high)
+    k = float(grid.parameters["k"][0]) if "k" in grid.parameters else 2.0
+    params = _parameters(grid.distribution, c, k)
+    if grid.years is None:
+        rate = np.ones(n)
+    else:
+        rate = rng.gamma(grid.count + 0.5, 1.0 / grid.years, size=n)
+    return params, rate
+
+
+def interval_band(values: ArrayLike, estimate: Fit, method: str, n: int, seed: int,
+                  years: float | None = None, shape: float = 2.0) -> Band:
+    """The band of a fit by ``method`` (:data:`INTERVALS`) with ``n`` replicate fits.
+
+    Parameters
+    ----------
+    values : array_like
+        The values fitted.
+    estimate : Fit
+        Their fit.
+    method : str
+        ``posterior``, ``profile`` or ``bootstrap``.
+    n : int
+        Replicate fits (>= 1).
+    seed : int
+        Root seed: the draws come from ``SeedSequence(seed).spawn(1)[0]`` (``bootstrap``: replicate
+        ``i`` from ``spawn(n)[i]``), the same for the same seed.
+    years : float, optional
+        The record's years (peaks over a threshold).
+    shape : float, optional
+        Weibull ``k``.
+
+    Returns
+    -------
+    Band
+    """
+    from .fits import bootstrap
+
+    if method not in INTERVALS:
+        raise ValueError(f"interval must be one of {', '.join(INTERVALS)}, got {method!r}")
+    if method == "bootstrap":
+        return bootstrap(values, estimate, n, seed, years, shape)
+    grid = likelihood_grid(values, estimate, years, shape)
+    rng = np.random.Generator(np.random.PCG64(np.random.SeedSequence(seed).spawn(1)[0]))
+    params, rate = _draw(grid, max(n, POSTERIOR_DRAWS), rng)
+    fits = [Fit(estimate.distribution, {k: float(v[i]) for k, v in params.items()}, estimate.threshold,
+                float(rate[i]), estimate.n) for i in range(n)]
+    return Band(fits=fits, requested=n, seed=seed, method=method, draws={**params, "rate": rate}, grid=grid,
+                distribution=estimate.distribution, threshold=estimate.threshold)
