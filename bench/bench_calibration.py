@@ -39,6 +39,7 @@ through bench/bench.py.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import dataclasses
 import json
 import math
@@ -129,10 +130,8 @@ def through_file(record: Record, folder: str, name: str) -> Record:
 
 
 def intervals(result: ClimateResult, period: float, levels: Sequence[float]) -> list[tuple[float, float]]:
-    """The ``period``-year interval at each level, from one analysis."""
-    interval = getattr(result, "interval", None)
-    if callable(interval):  # issue 33: the result gives its interval at any level
-        return [tuple(map(float, interval(period, lv))) for lv in levels]  # type: ignore[misc]
+    """The ``period``-year interval at each level, from one analysis (its band's interval, whatever
+    the method)."""
     assert result.band is not None, "the analysis gave no interval"
     return [result.band.interval(period, lv) for lv in levels]
 
@@ -205,11 +204,14 @@ def coverage(method: str | None, records: int, jobs: int) -> dict[str, Any]:
     tasks = [(c, i, child, method) for c, root in enumerate(roots)
              for i, child in enumerate(root.spawn(records))]
     wall, cpu = time.perf_counter(), _cpu()
-    if jobs > 1:
-        with ProcessPoolExecutor(jobs) as pool:
-            rows = list(pool.map(run_record, tasks, chunksize=8))
-    else:
-        rows = [run_record(t) for t in tasks]
+    rows: list[dict[str, Any]] = []
+    with contextlib.ExitStack() as stack:
+        pool = stack.enter_context(ProcessPoolExecutor(jobs)) if jobs > 1 else None
+        for row in (pool.map(run_record, tasks, chunksize=4) if pool is not None else map(run_record, tasks)):
+            rows.append(row)
+            if len(rows) % records == 0:  # a case done (the results come in task order)
+                print(f"  {all_cases[row['case']].name}: {records} records, "
+                      f"{time.perf_counter() - wall:.0f} s", file=sys.stderr, flush=True)
     wall, cpu = time.perf_counter() - wall, _cpu() - cpu
     summary = [_summarise(case, [r for r in rows if r["case"] == c]) for c, case in enumerate(all_cases)]
     return {"method": method or default_method(), "records_per_case": records, "root_seed": ROOT_SEED,
