@@ -371,6 +371,38 @@ def draw_figure(path: Path = RESULTS) -> list[Path]:
     return [save_figure(fig, path.with_suffix(suffix)) for suffix in (".png", ".svg")]
 
 
+def markdown(path: Path = RESULTS) -> str:
+    """The docs' tables from the results file: per method, a row per case, the coverage of the
+    90 % and 95 % intervals of H10, H50 and H100 with its standard error (bold: outside the goal),
+    and the median width of the 90 % interval of H50 over the truth."""
+    data = json.loads(path.read_text(encoding="utf-8"))
+    out = []
+    for method, res in data.get("coverage", {}).items():
+        out.append(f"**{method}** ({res['records_per_case']} records a case; "
+                   f"{res['wall_seconds']:.0f} s wall, {res['cpu_seconds']:.0f} s CPU on {res['jobs']} "
+                   "processes)\n")
+        out.append("| ξ | years | storms | H10 90 % | H10 95 % | H50 90 % | H50 95 % | H100 90 % | H100 95 % "
+                   "| H50 90 % width / truth |")
+        out.append("|---|---|---|---|---|---|---|---|---|---|")
+        for cs in res["cases"]:
+            cells = []
+            for R in ("10", "50", "100"):
+                for lv in ("90", "95"):
+                    x = cs["periods"][R][lv]
+                    text = f"{100 * x['coverage']:.1f} ± {100 * x['se']:.1f}"
+                    cells.append(f"**{text}**" if x["miss"] else text)
+            w = cs["periods"]["50"]["90"]["median_width_over_truth"]
+            out.append(f"| {cs['xi']:+.1f} | {cs['years']:.0f} | {cs['median_storms']:.0f} | "
+                       + " | ".join(cells) + f" | {w:.2f} |")
+        out.append("")
+    for method, e in data.get("esd", {}).items():
+        out.append(f"ESD band, **{method}**: {100 * e['coverage']:.1f} % ± {100 * e['se']:.1f} % of "
+                   f"{e['records']} records (true ESD {e['true_esd']:.3f} ± {e['true_esd_se']:.3f} m; "
+                   f"{e['replicates']} climates x {e['trials']} lifetimes a band; truth above the band "
+                   f"{100 * e['truth_above']:.0f} %, below {100 * e['truth_below']:.0f} %)")
+    return "\n".join(out)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--interval", default=None, help="the interval method (default: ClimateOptions' default)")
@@ -386,7 +418,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--results", type=Path, default=RESULTS, help="the results file")
     ap.add_argument("--figure", action="store_true",
                     help="only draw the figure from the results file (beside it, .png and .svg)")
+    ap.add_argument("--markdown", action="store_true",
+                    help="only print the docs' tables from the results file")
     a = ap.parse_args(argv)
+    if a.markdown:
+        print(markdown(a.results))
+        return 0
     if a.figure:
         for p in draw_figure(a.results):
             print(p)
