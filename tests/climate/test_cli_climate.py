@@ -57,7 +57,7 @@ def test_text_report_annual_maxima_needs_years(run_cli):
     r = ok(run_cli(["climate", OREGON, "--threshold", "4.5", "--gap", "24", "--bootstrap", "20"]))
     assert "peaks over threshold: u = 4.500 m (given), gap 24 h" in r.stdout
     assert "90 % interval" in r.stdout and "50 years" in r.stdout
-    assert "posterior interval (grid posterior" in r.stdout
+    assert "posterior draws (a grid posterior" in r.stdout
 
 
 @pytest.mark.render
@@ -118,3 +118,24 @@ def test_strict_refuses_warnings(run_cli, tmp_path):
            "isolated spike", "--strict refuses")
     r = ok(run_cli(["climate", str(rec), "--bootstrap", "0", "--threshold", "97%", "--drop-spikes", "--json"]))
     assert json.loads(r.stdout)["record"]["spikes_dropped"] is True
+
+
+def test_interval_methods_endpoint_sensitivity_and_strict(run_cli):
+    """The 1996 excerpt above its 97 % quantile: the GPD fit at its search bound (xi = -1.5) is warned
+    on standard output with its value in the JSON's notices, --strict refuses it, and each method
+    names itself."""
+    args = ["climate", EXCERPT, "--threshold", "97%", "--replicates", "20", "--json"]
+    obj = json.loads(ok(run_cli(args)).stdout)
+    assert obj["interval"] == "posterior" and obj["replicates"] == 20
+    assert obj["endpoint"] == pytest.approx(7.0083, abs=1e-3)  # the record's largest height
+    bound = [n for n in obj["notices"] if "search bound" in n["message"]]
+    assert len(bound) == 1 and bound[0]["quantity"] == "xi" and bound[0]["value"] < -1.0
+    s = obj["threshold_sensitivity"]
+    assert s["period"] == 50 and [r["quantile"] for r in s["rows"]] == [0.98, 0.985, 0.99, 0.993, 0.995, 0.997]
+    assert all(r["lower"] is None or r["lower"] <= r["upper"] for r in s["rows"])
+    line = failed(run_cli([*args[:-1], "--strict"]), "search bound")
+    assert "--strict" in line
+    text = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "profile", "--replicates", "20"]))
+    assert "90 % profile-likelihood interval of the storm count and the peaks" in text.stdout
+    assert "50-year value across thresholds (90 % profile interval)" in text.stdout
+    failed(run_cli(["climate", EXCERPT, "--interval", "bayes"]), "--interval")

@@ -22,7 +22,7 @@ if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..climate import ClimateOptions
-    from ..climate.analysis import ClimateResult, Curves, Diagnostics
+    from ..climate.analysis import ClimateResult, Curves, Diagnostics, Sensitivity
     from ..workflows.climate import ClimateRecord
 
 __all__ = ["climate_cmd"]
@@ -123,14 +123,24 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
                 confidence: float, interval: str, replicates: int, seed: int, time_col: str | None,
                 hs_col: str | None, period_col: str | None, drop_spikes: bool, as_json: bool,
                 outputs: tuple[str, ...], diagnostics: str | None, strict: bool) -> None:
-    """Return values of the significant wave height, with bootstrap bands, from a wave RECORD.
+    """Return values of the significant wave height, with their intervals, from a wave RECORD.
 
     RECORD is CSV (an ISO time column and an Hs column found by their usual names), the
     semicolon text 'YYYY-MM-DD-HH; Hs; Tz', an NDBC standard meteorological file, or NetCDF
     (the 'metocean' extra); gzip-compressed text too.  The quality control (missing values,
     repeated or unsorted times, gaps, spikes, coverage per year) is reported.  Storms are the
-    peaks over --threshold, declustered with --gap; the fit is by maximum likelihood; the bands
-    are percentile intervals of a non-parametric bootstrap (storm counts Poisson).
+    peaks over --threshold, declustered with --gap; the fit is by maximum likelihood.
+
+    The intervals (--interval) are by default equal-tailed intervals of a Bayesian posterior
+    computed on a grid: prior flat in ln sigma and in the shape xi on [-1, 1.5] (revdbayes'
+    "flat" prior), times the storm rate's Jeffreys posterior Gamma(N + 1/2, years).  On records
+    of known truth (10 to 40 years, xi from -0.3 to 0.4) its 90 % interval held the true 50-year
+    value 86 to 93 % of the time; the non-parametric bootstrap, 57 to 80 %.  A ten-year record
+    cannot pin a 50-year wave: the interval says how little it knows, and a bounded tail
+    (xi < 0) fitted to a few storms is warned.  The fit's breakdowns (xi < -0.5, a search
+    bound, an end point close to the largest storm, values above 30 m) are warnings;
+    --strict makes them errors.  The JSON and the text give the fitted end point and the
+    50-year value across thresholds (98 to 99.7 % quantiles).
 
     \b
     Examples:
@@ -156,8 +166,9 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     title = Path(record).name
     written = write_files(outputs, lambda: _climate_figure(result.result, result.curves, title))
     if diagnostics is not None and result.diagnostics is not None:
-        found, threshold_used = result.diagnostics, result.result.fit.threshold
-        written += write_files([diagnostics], lambda: _diagnostics_figure(found, threshold_used, title))
+        found, threshold_used, moved = result.diagnostics, result.result.fit.threshold, result.sensitivity
+        written += write_files([diagnostics],
+                               lambda: _diagnostics_figure(found, threshold_used, title, moved))
     if as_json:
         click.echo(json.dumps(result.report_json(written), indent=2, allow_nan=False))
         return
@@ -188,8 +199,10 @@ def _climate_figure(result: ClimateResult, curves: Curves, title: str) -> Figure
     return draw(result, curves, title)
 
 
-def _diagnostics_figure(found: Diagnostics, threshold: float | None, title: str) -> Figure:
-    """Mean residual life and parameter stability, the threshold used marked."""
+def _diagnostics_figure(found: Diagnostics, threshold: float | None, title: str,
+                        moved: Sensitivity | None) -> Figure:
+    """Mean residual life, parameter stability and the return value across thresholds, the
+    threshold used marked."""
     from ..drawing.climate.figures import diagnostics_figure as draw
 
-    return draw(found, threshold, title)
+    return draw(found, threshold, title, sensitivity=moved)

@@ -1,5 +1,5 @@
 """Wave records to extreme sea states: readers' records, storms, annual maxima, extreme-value fits
-with bootstrap bands (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`).  Names are
+with their intervals (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`).  Names are
 imported on first use (:func:`regimemap._lazy.attach`): reading a record does not import scipy.
 
 * :class:`Record`, :func:`make_record` -- a record and its quality control (the files are read by
@@ -7,7 +7,9 @@ imported on first use (:func:`regimemap._lazy.attach`): reading a record does no
 * :func:`storms`, :func:`annual_maxima` -- peaks over a threshold (runs declustering) and the
   maxima of well-observed years;
 * :func:`fit`, :func:`bootstrap` -- GPD, Weibull, Gumbel and GEV by maximum likelihood, and the
-  non-parametric bootstrap of their return values;
+  non-parametric bootstrap of their return values; :mod:`regimemap.climate.intervals` -- the grid
+  posterior (the default) and the profile likelihood; :mod:`regimemap.climate.guards` -- the
+  warnings of a fit that breaks;
 * :func:`analyse` -- all of it, with :class:`ClimateOptions`, to a :class:`ClimateResult`.
 """
 

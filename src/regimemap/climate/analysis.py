@@ -1,16 +1,20 @@
-"""From a record to return values with their confidence band: the steps of ``regimemap climate``.
+"""From a record to return values with their intervals: the steps of ``regimemap climate``.
 
-numpy and scipy: threshold, storms (or annual maxima), fit, bootstrap, return values.
+numpy and scipy: threshold, storms (or annual maxima), fit, interval
+(:mod:`regimemap.climate.intervals`), the fit's guards (:mod:`regimemap.climate.guards`), return
+values; the curves the figures draw, the threshold diagnostics and the threshold sensitivity.
 """
 
 from __future__ import annotations
 
-from dataclasses import InitVar, dataclass, field
+from dataclasses import InitVar, dataclass, field, replace
 
 import numpy as np
 
-from .fits import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Band, Fit, fit, return_values
-from .intervals import DEFAULT_INTERVAL, INTERVALS, interval_band
+from ..mechanics.notices import Notice
+from .fits import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Band, Fit, fit, return_values
+from .guards import endpoint, fit_notices, limit_notices
+from .intervals import DEFAULT_INTERVAL, INTERVALS, grid_quantiles, interval_band, likelihood_grid
 from .peaks import (
     DEFAULT_COVERAGE,
     DEFAULT_GAP,
@@ -21,10 +25,10 @@ from .peaks import (
     resolve_threshold,
     storms,
 )
-from .record import Record
+from .record import HS_MAX, Record
 
-__all__ = ["METHODS", "MIN_YEARS", "ClimateOptions", "ClimateResult", "Curves", "Diagnostics", "analyse",
-           "curves", "diagnostics"]
+__all__ = ["METHODS", "MIN_YEARS", "SENSITIVITY_QUANTILES", "ClimateOptions", "ClimateResult", "Curves",
+           "Diagnostics", "Sensitivity", "analyse", "curves", "diagnostics", "sensitivity"]
 
 #: The ways to take extremes from a record.
 METHODS = ("pot", "annual-maxima")
@@ -32,6 +36,8 @@ METHODS = ("pot", "annual-maxima")
 MIN_YEARS = 1.0
 #: Fewest storms above a threshold of the diagnostics.
 DIAGNOSTIC_STORMS = 20
+#: The thresholds of the threshold sensitivity: these quantiles of the heights.
+SENSITIVITY_QUANTILES = (0.98, 0.985, 0.99, 0.993, 0.995, 0.997)
 
 
 @dataclass(frozen=True)
@@ -65,6 +71,11 @@ class ClimateOptions:
     interval : str
         ``posterior`` (default), ``profile`` or ``bootstrap``
         (:mod:`regimemap.climate.intervals`).
+    hs_limit : float or None
+        A physical limit [m]: a return value or interval bound above it is flagged (None: the
+        :data:`~regimemap.climate.record.HS_MAX` the record reader refuses in a record).
+    hs_limit_name : str
+        What the limit is, for the notice.
     bootstrap : int, optional
         The old name of ``replicates`` (init only: ``ClimateOptions(bootstrap=200)`` still works).
     """
@@ -80,6 +91,8 @@ class ClimateOptions:
     replicates: int = 200
     seed: int = 0
     interval: str = DEFAULT_INTERVAL
+    hs_limit: float | None = None
+    hs_limit_name: str = "the largest height the record reader accepts"
     bootstrap: InitVar[int | None] = None
 
     def __post_init__(self, bootstrap: int | None) -> None:
@@ -109,6 +122,8 @@ class ClimateOptions:
             raise ValueError(f"coverage must be in (0, 1], got {self.coverage!r}")
         if self.interval not in INTERVALS:
             raise ValueError(f"interval must be one of {', '.join(INTERVALS)}, got {self.interval!r}")
+        if self.hs_limit is not None and not (self.hs_limit > 0.0 and np.isfinite(self.hs_limit)):
+            raise ValueError(f"hs_limit must be a height in metres > 0, got {self.hs_limit!r}")
         if not self.replicates >= 0:
             raise ValueError(f"replicates must be a number >= 0, got {self.replicates!r}")
 
@@ -127,11 +142,14 @@ class ClimateResult:
         The annual maxima (annual-maxima).
     fit : Fit
     band : Band or None
-        The bootstrap (None without replicates).
+        The interval's draws and replicate fits (None without replicates).
     return_values : list of dict
         ``{period, value, lower, upper}``.
     notes : list of str
-        Warnings about the fit (``--strict`` makes them errors).
+        Warnings about the fit (``--strict`` makes them errors): the messages of ``notices``.
+    notices : list of Notice
+        The same warnings as data (code ``fit``, the quantity and its value:
+        :mod:`regimemap.climate.guards`).
     """
 
     record: Record
@@ -142,6 +160,12 @@ class ClimateResult:
     band: Band | None
     return_values: list[dict[str, float | None]]
     notes: list[str] = field(default_factory=list)
+    notices: list[Notice] = field(default_factory=list)
+
+    @property
+    def endpoint(self) -> float | None:
+        """The fitted upper end point [m] of a bounded tail (``xi < 0``), else None."""
+        return endpoint(self.fit)
 
     def warnings(self) -> list[str]:
         """The quality control's warnings and the fit's notes (``--strict`` makes them errors)."""
@@ -158,7 +182,7 @@ class ClimateResult:
 
 
 def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
-    """Threshold, storms or annual maxima, fit, bootstrap and return values.
+    """Threshold, storms or annual maxima, fit, interval, guards and return values.
 
     Raises
     ------
@@ -170,7 +194,7 @@ def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
     if record.years < MIN_YEARS:
         raise ValueError(f"{record.source}: {record.years:.2f} years observed; an extreme-value "
                          f"analysis needs at least {MIN_YEARS:g} year")
-    notes: list[str] = []
+    notices: list[Notice] = []
     st: Storms | None = None
     am: AnnualMaxima | None = None
     if options.method == "pot":
@@ -182,22 +206,23 @@ def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
         am = annual_maxima(record, options.coverage)
         estimate = fit(am.maxima, options.fitted)
         sample, years = am.maxima, None
-    if estimate.distribution == "gev" and estimate.parameters["xi"] <= GEV_XI[0] + 1e-6:
-        notes.append(f"the GEV shape reached its bound xi = {GEV_XI[0]:g} (too few or too even annual "
-                     "maxima for three parameters): prefer gumbel or peaks over a threshold")
+    notices += fit_notices(estimate, sample, record.years, max(options.return_periods))
     band = (interval_band(sample, estimate, options.interval, options.replicates, options.seed, years,
                           options.shape)
             if options.replicates > 0 else None)
     if band is not None and band.failed > 0.05 * band.requested:
-        notes.append(f"{band.failed} of {band.requested} bootstrap replicates had too few values to fit "
-                     "and were left out: the band is too narrow (lower the threshold)")
+        notices.append(Notice("fit", f"{band.failed} of {band.requested} bootstrap replicates had too few "
+                                     "values to fit and were left out: the band is too narrow (lower the "
+                                     "threshold)", "replicates", float(band.failed)))
     for R in options.return_periods:
         if estimate.rate * R <= 1.0:
             raise ValueError(f"return period {R:g} years is shorter than the mean time between "
                              f"storms ({1.0 / estimate.rate:.3g} years)")
     values = return_values(estimate, band, list(options.return_periods), options.confidence)
+    limit = HS_MAX if options.hs_limit is None else options.hs_limit
+    notices += limit_notices(values, limit, options.hs_limit_name)
     return ClimateResult(record=record, options=options, storms=st, maxima=am, fit=estimate, band=band,
-                         return_values=values, notes=notes)
+                         return_values=values, notes=[n.message for n in notices], notices=notices)
 
 
 @dataclass(frozen=True)
@@ -267,6 +292,11 @@ class Diagnostics:
         threshold.
     sigma_star : ndarray
         The modified scale ``sigma - xi u``, constant likewise.
+    xi_interval, sigma_star_interval : ndarray
+        Their equal-tailed posterior intervals at ``confidence``, shape ``(points, 2)`` (the grid
+        posterior of :mod:`regimemap.climate.intervals`; NaN where too few storms).
+    confidence : float
+        The intervals' level.
     """
 
     thresholds: np.ndarray
@@ -275,17 +305,24 @@ class Diagnostics:
     mean_excess_ci: np.ndarray
     xi: np.ndarray
     sigma_star: np.ndarray
+    xi_interval: np.ndarray
+    sigma_star_interval: np.ndarray
+    confidence: float = 0.9
 
 
-def diagnostics(record: Record, gap_hours: float = DEFAULT_GAP, points: int = 30) -> Diagnostics:
+def diagnostics(record: Record, gap_hours: float = DEFAULT_GAP, points: int = 30,
+                confidence: float = 0.9) -> Diagnostics:
     """Mean residual life and parameter stability at ``points`` thresholds evenly from the 90 %
     quantile of the heights to the height that leaves :data:`DIAGNOSTIC_STORMS` storms; the GPD
-    is fitted only where at least that many storms remain."""
+    is fitted only where at least that many storms remain, and the shape and modified scale get
+    their ``confidence`` posterior intervals (flat prior, :mod:`regimemap.climate.intervals`)."""
     hs = record.hs[np.isfinite(record.hs)]
     top = storms(record, float(np.quantile(hs, 0.90)), gap_hours).peak
     last = float(np.sort(top)[-DIAGNOSTIC_STORMS]) if top.size > DIAGNOSTIC_STORMS else float(top.max())
     us = np.linspace(float(np.quantile(hs, 0.90)), max(last - 1e-9, float(np.quantile(hs, 0.90))), points)
-    n, me, ci, xi, ss = [], [], [], [], []
+    n, me, ci, xi, ss, xi_iv, ss_iv = [], [], [], [], [], [], []
+    a = 0.5 * (1.0 - confidence)
+    nan2 = [np.nan, np.nan]
     for u in us:
         s = storms(record, float(u), gap_hours)
         e = s.peak - u
@@ -298,8 +335,79 @@ def diagnostics(record: Record, gap_hours: float = DEFAULT_GAP, points: int = 30
             g = fit(s.peak, "gpd", float(u), s.rate)
             xi.append(g.parameters["xi"])
             ss.append(g.parameters["sigma"] - g.parameters["xi"] * float(u))
+            grid = likelihood_grid(s.peak, g, s.years)
+            gx, gs = grid.parameters["xi"], grid.parameters["sigma"]
+            xi_iv.append(list(grid_quantiles(grid, gx, [a, 1.0 - a])))
+            ss_iv.append(list(grid_quantiles(grid, gs - gx * float(u), [a, 1.0 - a])))
         except ValueError:
             xi.append(np.nan)
             ss.append(np.nan)
+            xi_iv.append(nan2)
+            ss_iv.append(nan2)
     return Diagnostics(thresholds=us, storms=np.array(n), mean_excess=np.array(me),
-                       mean_excess_ci=np.array(ci), xi=np.array(xi), sigma_star=np.array(ss))
+                       mean_excess_ci=np.array(ci), xi=np.array(xi), sigma_star=np.array(ss),
+                       xi_interval=np.array(xi_iv, dtype=np.float64).reshape(-1, 2),
+                       sigma_star_interval=np.array(ss_iv, dtype=np.float64).reshape(-1, 2),
+                       confidence=float(confidence))
+
+
+@dataclass(frozen=True)
+class Sensitivity:
+    """How a return value and its interval move with the threshold (peaks over a threshold).
+
+    Attributes
+    ----------
+    period : float
+        The return period [years] (50 when asked for, else the longest asked for).
+    quantiles : ndarray
+        The thresholds as quantiles of the heights (:data:`SENSITIVITY_QUANTILES`).
+    thresholds : ndarray
+        ``u`` [m].
+    storms : ndarray of int
+        Storms above each.
+    value, lower, upper : ndarray
+        The return value and its interval [m] (the analysis' method and level; NaN where too
+        few storms to fit).
+    confidence : float
+    interval : str
+        The interval method.
+    """
+
+    period: float
+    quantiles: np.ndarray
+    thresholds: np.ndarray
+    storms: np.ndarray
+    value: np.ndarray
+    lower: np.ndarray
+    upper: np.ndarray
+    confidence: float
+    interval: str
+
+
+def sensitivity(record: Record, options: ClimateOptions,
+                quantiles: tuple[float, ...] = SENSITIVITY_QUANTILES) -> Sensitivity | None:
+    """The ``R``-year value and its interval refitted above each of ``quantiles`` of the heights
+    (the same gap, distribution, method and seed; a posterior or profile with one replicate fit, the
+    interval from its own draws); None for annual maxima or without an interval."""
+    if options.method != "pot" or options.replicates <= 0:
+        return None
+    period = 50.0 if 50.0 in options.return_periods else max(options.return_periods)
+    keep = options.replicates if options.interval == "bootstrap" else 1
+    rows: list[tuple[float, int, float | None, float | None, float | None]] = []
+    hs = record.hs[np.isfinite(record.hs)]
+    for q in quantiles:
+        u = float(np.quantile(hs, q))
+        try:
+            r = analyse(record, replace(options, threshold=("quantile", float(q)), replicates=keep,
+                                        return_periods=(period,)))
+        except ValueError:
+            count = storms(record, u, options.gap_hours).count if u < float(hs.max()) else 0
+            rows.append((u, count, np.nan, np.nan, np.nan))
+            continue
+        rv = r.return_values[0]
+        assert r.storms is not None
+        rows.append((u, r.storms.count, rv["value"], rv["lower"], rv["upper"]))
+    a = np.array([[np.nan if v is None else float(v) for v in row] for row in rows], dtype=np.float64)
+    return Sensitivity(period=period, quantiles=np.array(quantiles, dtype=np.float64), thresholds=a[:, 0],
+                       storms=a[:, 1].astype(np.int64), value=a[:, 2], lower=a[:, 3], upper=a[:, 4],
+                       confidence=options.confidence, interval=options.interval)

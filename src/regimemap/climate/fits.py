@@ -1,4 +1,4 @@
-"""Extreme-value fits of storm peaks and annual maxima, and their bootstrap.
+"""Extreme-value fits of storm peaks and annual maxima, their band of replicates, and the bootstrap.
 
 numpy and scipy.stats, by maximum likelihood:
 
@@ -17,15 +17,18 @@ numpy and scipy.stats, by maximum likelihood:
 
 In every case :math:`F(H_R) = 1 - 1/(\\lambda R)` (:math:`\\lambda = 1` for annual maxima).
 
-The confidence intervals are a non-parametric bootstrap with percentile intervals (Efron &
-Tibshirani 1993, Ch. 13): each replicate resamples the observed peaks with replacement -- their
-number drawn from a Poisson distribution with the observed count as its mean for peaks over a
-threshold (the storms of a record are a Poisson process: how many storms ten years hold is
-itself uncertain, and ``lambda = N/years`` varies with it), the number of years fixed for annual
-maxima -- and refits.  Non-parametric rather than parametric because it does not assume the
-fitted distribution is the true one: a short record's peaks carry the shape's uncertainty
-whatever family is fitted.  Each replicate draws from its own child of one
-:class:`numpy.random.SeedSequence` (``spawn``), so the band is the same in any order or chunking.
+:class:`Band` holds an interval's draws and replicate fits, whichever the method
+(:mod:`regimemap.climate.intervals`: the grid posterior, the default, and the profile likelihood).
+:func:`bootstrap` is the third method, a non-parametric bootstrap with percentile intervals (Efron &
+Tibshirani 1993, Ch. 13), which covers less than it claims on short records: each replicate
+resamples the observed peaks with replacement -- their number drawn from a Poisson distribution
+with the observed count as its mean for peaks over a threshold (the storms of a record are a
+Poisson process: how many storms ten years hold is itself uncertain, and ``lambda = N/years``
+varies with it), the number of years fixed for annual maxima -- and refits.  It does not assume
+the fitted distribution is the true one, but it cannot resample a storm larger than the record's
+largest, and its replicates reach shapes where the likelihood is unbounded.  Each replicate draws
+from its own child of one :class:`numpy.random.SeedSequence` (``spawn``), so the band is the same
+in any order or chunking.
 """
 
 from __future__ import annotations
@@ -308,8 +311,8 @@ class Band:
 
     @property
     def failed(self) -> int:
-        """Replicates that had too few values to fit (bootstrap)."""
-        return self.requested - len(self.fits)
+        """Replicates that had too few values to fit (bootstrap; 0 for the other methods)."""
+        return self.requested - len(self.fits) if self.method == "bootstrap" else 0
 
     def return_values(self, years: float) -> FloatArray:
         """Each draw's ``R``-year value (NaN where ``lambda R <= 1``)."""

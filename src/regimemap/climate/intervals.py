@@ -47,8 +47,8 @@ from scipy import stats
 
 from .fits import AM_DISTRIBUTIONS, GEV_XI, Band, Fit, return_levels
 
-__all__ = ["DEFAULT_INTERVAL", "INTERVALS", "POSTERIOR_DRAWS", "XI_PRIOR", "Grid", "interval_band",
-           "likelihood_grid", "profile_interval"]
+__all__ = ["DEFAULT_INTERVAL", "INTERVALS", "POSTERIOR_DRAWS", "XI_PRIOR", "Grid", "grid_quantiles",
+           "interval_band", "likelihood_grid", "profile_interval"]
 
 FloatArray = NDArray[np.float64]
 
@@ -59,7 +59,7 @@ DEFAULT_INTERVAL = "posterior"
 #: The GPD shape's prior range (uniform; the likelihood is unbounded below -1).
 XI_PRIOR = (-1.0, 1.5)
 #: Posterior draws behind an interval (at least; the replicate fits are the first of them).
-POSTERIOR_DRAWS = 4000
+POSTERIOR_DRAWS = 20_000
 #: Log-likelihood drop [nepers] below its maximum that bounds the grid (e^-16: nothing left).
 DROP = 16.0
 #: Points per axis of the coarse and of the fine grid, by number of parameters.
@@ -287,11 +287,21 @@ def profile_interval(grid: Grid, years: float, confidence: float) -> tuple[float
     return float(low.min()), float(high.max())
 
 
+def grid_quantiles(grid: Grid, values: FloatArray, probabilities: ArrayLike) -> FloatArray:
+    """Posterior quantiles of ``values`` (one per grid point, e.g. ``xi`` or ``sigma - xi u``) with
+    the grid's normalised likelihood as weights (the cells' jitter ignored: to a cell's width)."""
+    w = np.exp(grid.loglik - np.max(grid.loglik))
+    order = np.argsort(values, kind="stable")
+    cum = np.cumsum(w[order])
+    cum /= cum[-1]
+    at = np.searchsorted(cum, np.asarray(probabilities, dtype=np.float64), side="left")
+    return np.asarray(values[order][np.minimum(at, values.size - 1)], dtype=np.float64)
+
+
 def _draw(grid: Grid, n: int, rng: np.random.Generator) -> tuple[dict[str, FloatArray], FloatArray]:
     """``n`` draws from the grid's normalised likelihood (a cell by its weight, then uniform in it;
     flat prior in the coordinates) and the rates from their Gamma posterior."""
-    w = np.exp(grid.loglik)
-    w = np.where(np.isfinite(w), w, 0.0)
+    w = np.exp(grid.loglik - np.max(grid.loglik))
     w /= w.sum()
     cells = rng.choice(w.size, size=n, p=w)
     jitter = (rng.random((n, grid.coordinates.shape[1])) - 0.5) * grid.cell

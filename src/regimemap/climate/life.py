@@ -1,4 +1,4 @@
-"""A record's fit as the lifetime's climate, and the bootstrap's fits as replicate climates.
+"""A record's fit as the lifetime's climate, and the interval's replicate fits as replicate climates.
 
 numpy; builds :class:`regimemap.lifetime.Climate` objects (this package may import
 :mod:`regimemap.lifetime`, never the reverse).
@@ -49,7 +49,9 @@ def climate_of(fit: Fit) -> Climate:
 
 
 def replicate_climates(result: ClimateResult) -> list[Climate]:
-    """The climates of the bootstrap's fits, in replicate order (each with its own storm rate)."""
+    """The climates of the band's replicate fits, in replicate order (each with its own storm rate):
+    posterior draws under the default interval (:mod:`regimemap.climate.intervals`), so that the
+    ESD's climate band carries the same uncertainty as the return values' interval."""
     if result.band is None:
         return []
     return [climate_of(f) for f in result.band.fits]

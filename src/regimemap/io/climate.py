@@ -4,22 +4,27 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from ..climate.analysis import ClimateResult
+import numpy as np
+
+from ..climate.analysis import ClimateResult, Sensitivity
 from ._numbers import json_number
 
 if TYPE_CHECKING:
     from ..lifetime.replicates import ChartBand, ClimateBand
 
-__all__ = ["climate_band_json", "climate_band_lines", "climate_json", "format_climate", "parameter_text"]
+__all__ = ["climate_band_json", "climate_band_lines", "climate_json", "format_climate", "parameter_text",
+           "sensitivity_json"]
 
 _NAMES = {"gpd": "generalised Pareto", "weibull": "Weibull (shape fixed)", "gumbel": "Gumbel",
           "gev": "generalised extreme value"}
 
 
 _METHOD_TEXT = {
-    "posterior": "{level} equal-tailed posterior interval (grid posterior, prior flat in ln sigma and xi, "
-                 "the rate's Jeffreys posterior; {n} replicate draws)",
-    "profile": "{level} profile-likelihood interval (storm count and peaks; {n} replicate likelihood draws)",
+    "posterior": "{level} equal-tailed interval of {draws} posterior draws (a grid posterior: prior flat "
+                 "in ln sigma and in xi on [-1, 1.5], the storm rate's Jeffreys posterior; {n} kept as "
+                 "replicate fits)",
+    "profile": "{level} profile-likelihood interval of the storm count and the peaks ({n} replicate fits "
+               "drawn from the normalised likelihood)",
     "bootstrap": "{level} percentile interval of {n} non-parametric bootstrap replicates",
 }
 
@@ -28,7 +33,20 @@ def _num(v: float | None) -> float | None:
     return None if v is None else json_number(v)
 
 
-def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, Any]:
+def sensitivity_json(s: Sensitivity | None) -> dict[str, Any] | None:
+    """``{period, confidence, interval, rows: [{quantile, threshold, storms, value, lower, upper}]}``
+    (null where too few storms to fit)."""
+    if s is None:
+        return None
+    rows = [{"quantile": json_number(float(q)), "threshold": json_number(float(u)), "storms": int(n),
+             "value": json_number(float(v)), "lower": json_number(float(lo)), "upper": json_number(float(hi))}
+            for q, u, n, v, lo, hi in zip(s.quantiles, s.thresholds, s.storms, s.value, s.lower, s.upper)]
+    return {"period": json_number(s.period), "confidence": json_number(s.confidence), "interval": s.interval,
+            "rows": rows}
+
+
+def climate_json(result: ClimateResult, source: str | None = None,
+                 sensitivity: Sensitivity | None = None) -> dict[str, Any]:
     """The analysis as one JSON object.
 
     Keys: ``record`` {``source``, ``start``, ``end``, ``years``, ``step_hours``, ``coverage``,
@@ -39,7 +57,9 @@ def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, 
     ``value``, ``lower``, ``upper``}], ``confidence``, ``interval`` (the method: ``posterior``,
     ``profile`` or ``bootstrap``; null without replicates), ``replicates`` (replicate fits asked
     for), ``replicates_fitted`` (those made: a bootstrap replicate with too few values is not),
-    ``seed``, ``warnings``.
+    ``seed``, ``endpoint`` (the fitted upper end point ``u - sigma/xi`` of a bounded tail, m;
+    null for ``xi >= 0``), ``threshold_sensitivity`` (:func:`sensitivity_json`; null unless
+    given), ``warnings`` (the messages) and ``notices`` (``[{code, message, quantity, value}]``).
     """
     r, o, q = result.record, result.options, result.record.quality
     pot = result.storms is not None
@@ -67,7 +87,10 @@ def climate_json(result: ClimateResult, source: str | None = None) -> dict[str, 
         "replicates": 0 if result.band is None else result.band.requested,
         "replicates_fitted": 0 if result.band is None else len(result.band.fits),
         "seed": o.seed,
+        "endpoint": _num(result.endpoint),
+        "threshold_sensitivity": sensitivity_json(sensitivity),
         "warnings": result.warnings(),
+        "notices": [{**n.as_dict(), "value": _num(n.value)} for n in result.notices],
     }
 
 
@@ -77,7 +100,8 @@ def parameter_text(result: ClimateResult) -> str:
                      for k, v in result.fit.parameters.items())
 
 
-def format_climate(result: ClimateResult, source: str | None = None) -> str:
+def format_climate(result: ClimateResult, source: str | None = None,
+                   sensitivity: Sensitivity | None = None) -> str:
     """The analysis for people: the record and its quality, the extremes, the fit, the return values
     with their bands, and the warnings."""
     r, o, q, f = result.record, result.options, result.record.quality, result.fit
@@ -100,10 +124,13 @@ def format_climate(result: ClimateResult, source: str | None = None) -> str:
         lines.append(f"  annual maxima: {m.years.size} years with >= {100 * m.coverage:g} % coverage"
                      f"{skipped}; largest {m.maxima.max():.2f} m")
     lines.append(f"  fit: {_NAMES[f.distribution]}, maximum likelihood: {parameter_text(result)}")
+    if result.endpoint is not None:
+        lines.append(f"  fitted upper end point (xi < 0): {result.endpoint:.2f} m")
     if result.band is not None:
         b = result.band
         fitted = f", {len(b.fits)} fitted" if b.failed else ""
-        method = _METHOD_TEXT[b.method].format(level=f"{100 * o.confidence:g} %", n=b.requested)
+        draws = len(b.draws["rate"]) if "rate" in b.draws else b.requested
+        method = _METHOD_TEXT[b.method].format(level=f"{100 * o.confidence:g} %", n=b.requested, draws=draws)
         lines.append(f"  interval: {method}{fitted} (seed {b.seed})")
     lines.append("")
     lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % interval" if result.band else ""))
@@ -113,6 +140,16 @@ def format_climate(result: ClimateResult, source: str | None = None) -> str:
         band = ("" if rv["lower"] is None or rv["upper"] is None
                 else f"{rv['lower']:.2f} to {rv['upper']:.2f} m")
         lines.append(f"  {rv['period']:>5g} years  {value:6.2f} m  {band}")
+    if sensitivity is not None:
+        lines.append("")
+        level = f"{100 * sensitivity.confidence:g} %"
+        lines.append(f"{sensitivity.period:g}-year value across thresholds ({level} {sensitivity.interval} "
+                     "interval):")
+        for q, u, n, v, lo, hi in zip(sensitivity.quantiles, sensitivity.thresholds, sensitivity.storms,
+                                      sensitivity.value, sensitivity.lower, sensitivity.upper):
+            got = (f"{v:6.2f} m  {lo:.2f} to {hi:.2f} m" if np.isfinite(v) and np.isfinite(lo)
+                   else "too few storms to fit")
+            lines.append(f"  u = {u:6.3f} m {f'({100 * q:g} %)':10s}{n:5d} storms  {got}")
     warnings = result.warnings()
     if warnings:
         lines.append("")

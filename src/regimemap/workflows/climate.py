@@ -1,10 +1,10 @@
-"""The climate workflow: return values of the significant wave height, with their bands, from a record.
+"""The climate workflow: return values of the significant wave height, with their intervals, from a record.
 
 :func:`run_climate` reads a wave record (:func:`regimemap.io.records.read_record`; or takes a
 :class:`regimemap.climate.record.Record` made from arrays with
 :func:`regimemap.climate.make_record`), runs the extreme-value analysis
 (:func:`regimemap.climate.analyse`: quality control, storms or annual maxima, the maximum
-likelihood fit, the bootstrap bands) and computes what its figures draw (the return-level
+likelihood fit, the intervals, the fit's warnings) and computes what its figures draw (the return-level
 curve, the observations at their plotting positions and, when asked, the threshold
 diagnostics).  It returns one :class:`ClimateRecord`; ``regimemap climate`` is this call
 followed by writing the record.
@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 from ._record import Field, Notice, Record
 
 if TYPE_CHECKING:
-    from ..climate.analysis import ClimateOptions, ClimateResult, Curves, Diagnostics
+    from ..climate.analysis import ClimateOptions, ClimateResult, Curves, Diagnostics, Sensitivity
     from ..climate.record import Record as WaveRecord
 
 __all__ = ["ClimateRecord", "run_climate"]
@@ -44,6 +44,9 @@ class ClimateRecord(Record):
         The return-level curve with its band and the observations (the figure's data).
     diagnostics : Diagnostics or None
         Mean residual life and parameter stability over thresholds; None unless asked for.
+    sensitivity : Sensitivity or None
+        The 50-year value and its interval refitted above the 98 to 99.7 % quantiles (peaks over
+        a threshold with an interval; else None).
     """
 
     CAPTION: ClassVar[str] = "Wave climate"
@@ -63,6 +66,7 @@ class ClimateRecord(Record):
     result: ClimateResult
     curves: Curves
     diagnostics: Diagnostics | None
+    sensitivity: Sensitivity | None = None
 
     @property
     def return_value_text(self) -> str:
@@ -78,13 +82,13 @@ class ClimateRecord(Record):
         """The report for people (:func:`regimemap.io.climate.format_climate`)."""
         from ..io.climate import format_climate
 
-        return format_climate(self.result, source=self.source)
+        return format_climate(self.result, source=self.source, sensitivity=self.sensitivity)
 
     def report_json(self, files: list[str] | tuple[str, ...] = ()) -> dict[str, Any]:
         """The JSON-ready report (:func:`regimemap.io.climate.climate_json`), with the ``files`` written."""
         from ..io.climate import climate_json
 
-        out = climate_json(self.result, source=self.source)
+        out = climate_json(self.result, source=self.source, sensitivity=self.sensitivity)
         if files:
             out["files"] = list(files)
         return out
@@ -93,7 +97,7 @@ class ClimateRecord(Record):
 def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None = None, *,
                 time: str | None = None, hs: str | None = None, period: str | None = None,
                 drop_spikes: bool = False, diagnostics: bool = False) -> ClimateRecord:
-    """Return values of the significant wave height, with bootstrap bands, from a wave record.
+    """Return values of the significant wave height, with their intervals, from a wave record.
 
     Parameters
     ----------
@@ -102,7 +106,7 @@ def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None 
         :class:`regimemap.climate.record.Record` made from arrays.
     options : ClimateOptions, optional
         How to analyse it (default :class:`~regimemap.climate.ClimateOptions`: peaks over the
-        99.5 % quantile, a 48-hour gap, a GPD, 200 bootstrap replicates).
+        99.5 % quantile, a 48-hour gap, a GPD, the posterior interval with 200 replicate fits).
     time, hs, period : str, optional
         The columns of a file (CSV, NetCDF; NDBC: the period column).
     drop_spikes : bool, optional
@@ -121,7 +125,7 @@ def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None 
         message names the file).
     """
     from ..climate import ClimateOptions, analyse
-    from ..climate.analysis import curves
+    from ..climate.analysis import curves, sensitivity
     from ..climate.analysis import diagnostics as threshold_diagnostics
 
     opts = ClimateOptions() if options is None else options
@@ -137,7 +141,7 @@ def run_climate(record: WaveRecord | str | Path, options: ClimateOptions | None 
     am = opts.method == "annual-maxima"
     notices = tuple(Notice("record-quality", f"{source}: {w}")
                     for w in wave.quality.warnings(opts.coverage if am else None))
-    notices += tuple(Notice("fit", f"{source}: {n}") for n in result.notes)
-    found = threshold_diagnostics(wave, opts.gap_hours) if diagnostics else None
+    notices += tuple(Notice(n.code, f"{source}: {n.message}", n.quantity, n.value) for n in result.notices)
+    found = threshold_diagnostics(wave, opts.gap_hours, confidence=opts.confidence) if diagnostics else None
     return ClimateRecord(source=source, options=opts, notices=notices, result=result, curves=curves(result),
-                         diagnostics=found)
+                         diagnostics=found, sensitivity=sensitivity(wave, opts))

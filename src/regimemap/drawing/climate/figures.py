@@ -1,5 +1,6 @@
 """The figures of ``regimemap climate``: the record, the return levels with their band, the QQ plot;
-and the threshold diagnostics (mean residual life, parameter stability).
+and the threshold diagnostics (mean residual life, parameter stability with their intervals, the
+50-year value across thresholds).
 
 Draws what :func:`regimemap.climate.analysis.curves` and
 :func:`regimemap.climate.analysis.diagnostics` computed.  Paul Tol's colour-blind-safe colours;
@@ -12,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ...climate.analysis import ClimateResult, Curves, Diagnostics
+from ...climate.analysis import ClimateResult, Curves, Diagnostics, Sensitivity
 from ..save import DEFAULT_DPI
 from ..style import style_context
 
@@ -63,9 +64,9 @@ def _draw_record(ax: Axes, result: ClimateResult) -> None:
 
 def _draw_return_levels(ax: Axes, result: ClimateResult, c: Curves) -> None:
     level = result.options.confidence
-    if c.lower is not None and c.upper is not None:
+    if c.lower is not None and c.upper is not None and result.band is not None:
         ax.fill_between(c.periods, c.lower, c.upper, facecolor=BAND_FILL, edgecolor=BAND_EDGE, hatch="////",
-                        lw=0.0, label=f"{100 * level:g} % bootstrap band")
+                        lw=0.0, label=result.band.label(level))
     ax.plot(c.periods, c.level, color=FIT, lw=1.5, label=f"{result.fit.distribution.upper()} fit")
     what = "storm peaks" if result.storms is not None else "annual maxima"
     ax.plot(c.observed_periods, c.observed, "o", ms=3.0, mfc="none", mec=PEAK, mew=0.9, ls="none",
@@ -151,9 +152,14 @@ def _draw_mrl(ax: Axes, d: Diagnostics, used: float | None) -> None:
 
 
 def _draw_stability(ax: Axes, d: Diagnostics, used: float | None, which: str) -> None:
-    values, label, title = ((d.xi, r"GPD shape $\xi$", "(b) shape") if which == "xi" else
-                            (d.sigma_star, r"$\sigma^* = \sigma - \xi u$ [m]", "(c) modified scale"))
-    ax.plot(d.thresholds, values, "o-", color=FIT, ms=3, lw=1.0)
+    values, iv, label, title = (
+        (d.xi, d.xi_interval, r"GPD shape $\xi$", "(b) shape") if which == "xi" else
+        (d.sigma_star, d.sigma_star_interval, r"$\sigma^* = \sigma - \xi u$ [m]", "(c) modified scale"))
+    ax.fill_between(d.thresholds, iv[:, 0], iv[:, 1], facecolor=BAND_FILL, edgecolor=BAND_EDGE, hatch="////",
+                    lw=0.0, label=f"{100 * d.confidence:g} % posterior interval")
+    ax.plot(d.thresholds, values, "o-", color=FIT, ms=3, lw=1.0, label="maximum likelihood")
+    if which == "xi":
+        ax.legend(fontsize=FS - 1.5, frameon=False, loc="best")
     if which == "xi":
         ax.axhline(0.0, color="0.5", lw=0.6)
     if used is not None:
@@ -163,31 +169,66 @@ def _draw_stability(ax: Axes, d: Diagnostics, used: float | None, which: str) ->
     ax.set_title(title, fontsize=FS + 0.5, loc="left")
 
 
+def _draw_sensitivity(ax: Axes, s: Sensitivity, used: float | None) -> None:
+    ok = np.isfinite(s.value)
+    name = {"posterior": "posterior", "profile": "profile-likelihood", "bootstrap": "bootstrap"}[s.interval]
+    # the interval as a bar of its own (a degenerate fit's value may lie outside it)
+    ax.vlines(s.thresholds[ok], s.lower[ok], s.upper[ok], color=BAND_EDGE, lw=3.0,
+              label=f"{100 * s.confidence:g} % {name} interval")
+    ax.plot(s.thresholds[ok], s.value[ok], "s", color=FIT, ms=3.5, ls="none",
+            label=f"$H_{{{s.period:g}}}$, maximum likelihood")
+    for u, q, n in zip(s.thresholds, s.quantiles, s.storms):
+        ax.annotate(f"{100 * q:g} %\n{n}", (u, 0.0), xycoords=("data", "axes fraction"), xytext=(0, 3),
+                    textcoords="offset points", ha="center", va="bottom", fontsize=FS - 2.5, color="0.35")
+    if used is not None:
+        ax.axvline(used, color=THRESHOLD, lw=1.0, dashes=(5.0, 2.5), label="threshold used")
+    if ok.any():
+        lo, hi = float(np.min(s.lower[ok])), float(np.max(s.upper[ok]))
+        pad = 0.1 * (hi - lo)
+        ax.set_ylim(lo - 2.5 * pad, hi + 2.5 * pad)  # room for the quantiles below, the key above
+    ax.set_xlabel("threshold $u$ [m] (quantile of $H_s$; storms)", fontsize=FS)
+    ax.set_ylabel(f"$H_{{{s.period:g}}}$ [m]", fontsize=FS)
+    ax.legend(fontsize=FS - 1.5, frameon=False, loc="upper left")
+    ax.set_title(f"(d) the {s.period:g}-year value across thresholds", fontsize=FS + 0.5, loc="left")
+
+
 def diagnostics_figure(d: Diagnostics, used: float | None = None, title: str | None = None, *,
-                       dpi: float = DEFAULT_DPI) -> Figure:
-    """Mean residual life and parameter stability (the GPD shape and modified scale) over
-    thresholds (Coles 2001, Sect. 4.3.1): straight, and flat, above a valid threshold.
+                       sensitivity: Sensitivity | None = None, dpi: float = DEFAULT_DPI) -> Figure:
+    """Mean residual life and parameter stability (the GPD shape and modified scale, with their
+    posterior intervals) over thresholds (Coles 2001, Sect. 4.3.1): straight, and flat, above a
+    valid threshold; with ``sensitivity``, the return value and its interval refitted above the
+    98 to 99.7 % quantiles.
 
     Returns
     -------
     Figure
-        Axes labelled ``mean residual life``, ``shape`` and ``modified scale``.
+        Axes labelled ``mean residual life``, ``shape``, ``modified scale`` (and ``sensitivity``).
     """
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
     with style_context():
-        fig = Figure(figsize=(7.0, 2.6), dpi=dpi)
+        two = sensitivity is not None
+        fig = Figure(figsize=(7.0, 5.2 if two else 2.6), dpi=dpi)
         FigureCanvasAgg(fig)
-        top = 0.08 if title else 0.0
-        ax_a = fig.add_axes((0.075, 0.17, 0.25, 0.72 - top), label="mean residual life")
-        ax_b = fig.add_axes((0.41, 0.17, 0.25, 0.72 - top), label="shape")
-        ax_c = fig.add_axes((0.74, 0.17, 0.25, 0.72 - top), label="modified scale")
+        top = (0.04 if two else 0.08) if title else 0.0
+        if two:
+            y0, h = 0.585, 0.36 - top
+        else:
+            y0, h = 0.17, 0.72 - top
+        ax_a = fig.add_axes((0.075, y0, 0.25, h), label="mean residual life")
+        ax_b = fig.add_axes((0.41, y0, 0.25, h), label="shape")
+        ax_c = fig.add_axes((0.74, y0, 0.25, h), label="modified scale")
         _draw_mrl(ax_a, d, used)
         _draw_stability(ax_b, d, used, "xi")
         _draw_stability(ax_c, d, used, "sigma")
-        for ax in (ax_a, ax_b, ax_c):
+        axes = [ax_a, ax_b, ax_c]
+        if sensitivity is not None:
+            ax_d = fig.add_axes((0.075, 0.085, 0.915, 0.36), label="sensitivity")
+            _draw_sensitivity(ax_d, sensitivity, used)
+            axes.append(ax_d)
+        for ax in axes:
             ax.tick_params(labelsize=FS - 0.5)
         if title:
-            fig.suptitle(title, fontsize=FS + 1.5, y=0.98)
+            fig.suptitle(title, fontsize=FS + 1.5, y=0.985)
     return fig
