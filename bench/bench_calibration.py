@@ -88,9 +88,10 @@ class Case:
         return f"xi={self.climate.xi:+.1f} {self.years:.0f} y"
 
 
-def cases() -> list[Case]:
-    """The 12 cases, xi major."""
-    return [Case(SyntheticClimate(sigma=s, xi=x, rate=RATE, base=BASE), y) for x, s in SHAPES for y in YEARS]
+def cases(years: Sequence[float] = YEARS) -> list[Case]:
+    """The cases, xi major: the 12 of the table, or those of the record lengths ``years``."""
+    return [Case(SyntheticClimate(sigma=s, xi=x, rate=RATE, base=BASE), y) for x, s in SHAPES for y in YEARS
+            if y in years]
 
 
 def options(method: str | None, **more: Any) -> ClimateOptions:
@@ -197,11 +198,12 @@ def _summarise(case: Case, rows: list[dict[str, Any]]) -> dict[str, Any]:
     return out
 
 
-def coverage(method: str | None, records: int, jobs: int) -> dict[str, Any]:
-    """Every case's records through the analysis, in a pool of ``jobs`` processes."""
+def coverage(method: str | None, records: int, jobs: int, years: Sequence[float] = YEARS) -> dict[str, Any]:
+    """Every case's records (those of the record lengths ``years``) through the analysis, in a pool
+    of ``jobs`` processes; a case's records are the same whichever cases run."""
     all_cases = cases()
     roots = np.random.SeedSequence(ROOT_SEED).spawn(len(all_cases))
-    tasks = [(c, i, child, method) for c, root in enumerate(roots)
+    tasks = [(c, i, child, method) for c, root in enumerate(roots) if all_cases[c].years in years
              for i, child in enumerate(root.spawn(records))]
     wall, cpu = time.perf_counter(), _cpu()
     rows: list[dict[str, Any]] = []
@@ -213,7 +215,8 @@ def coverage(method: str | None, records: int, jobs: int) -> dict[str, Any]:
                 print(f"  {all_cases[row['case']].name}: {records} records, "
                       f"{time.perf_counter() - wall:.0f} s", file=sys.stderr, flush=True)
     wall, cpu = time.perf_counter() - wall, _cpu() - cpu
-    summary = [_summarise(case, [r for r in rows if r["case"] == c]) for c, case in enumerate(all_cases)]
+    summary = [_summarise(case, [r for r in rows if r["case"] == c]) for c, case in enumerate(all_cases)
+               if case.years in years]
     return {"method": method or default_method(), "records_per_case": records, "root_seed": ROOT_SEED,
             "cases": summary, "wall_seconds": wall, "cpu_seconds": cpu, "jobs": jobs}
 
@@ -409,9 +412,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--records", type=int, default=300, help="records a case (300)")
     ap.add_argument("--esd-records", type=int, default=100, help="records of the ESD's band (100; 0: none)")
     ap.add_argument("--esd-replicates", type=int, default=50, help="climates a band (50)")
-    ap.add_argument("--esd-trials", type=int, default=100, help="lifetimes a climate (100)")
+    ap.add_argument("--esd-trials", type=int, default=80, help="lifetimes a climate (80)")
     ap.add_argument("--truth-trials", type=int, default=40000, help="lifetimes of the true ESD (40000)")
     ap.add_argument("--jobs", type=int, default=2, help="processes (2)")
+    ap.add_argument("--years", type=float, nargs="+", default=list(YEARS),
+                    help="only the cases of these record lengths (10 20 40)")
     ap.add_argument("--quick", action="store_true", help="40 records a case, 20 ESD records")
     ap.add_argument("--no-write", action="store_true", help="leave bench/results/calibration.json")
     ap.add_argument("--skip-coverage", action="store_true", help="the ESD's band only")
@@ -432,7 +437,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         a.records, a.esd_records, a.truth_trials = 40, 20, 10000
     method = a.interval or default_method()
     if not a.skip_coverage:
-        res = coverage(a.interval, a.records, a.jobs)
+        res = coverage(a.interval, a.records, a.jobs, a.years)
         print_coverage(res)
         if not a.no_write and not a.quick:
             write_results("coverage", method, res, a.results)
