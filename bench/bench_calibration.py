@@ -198,12 +198,17 @@ def _summarise(case: Case, rows: list[dict[str, Any]]) -> dict[str, Any]:
     return out
 
 
-def coverage(method: str | None, records: int, jobs: int, years: Sequence[float] = YEARS) -> dict[str, Any]:
-    """Every case's records (those of the record lengths ``years``) through the analysis, in a pool
-    of ``jobs`` processes; a case's records are the same whichever cases run."""
+def coverage(method: str | None, records: int, jobs: int, years: Sequence[float] = YEARS,
+             shapes: Sequence[float] | None = None) -> dict[str, Any]:
+    """Every case's records (those of the record lengths ``years`` and the shapes ``shapes``) through
+    the analysis, in a pool of ``jobs`` processes; a case's records are the same whichever cases run."""
+
+    def chosen(case: Case) -> bool:
+        return case.years in years and (shapes is None or case.climate.xi in shapes)
+
     all_cases = cases()
     roots = np.random.SeedSequence(ROOT_SEED).spawn(len(all_cases))
-    tasks = [(c, i, child, method) for c, root in enumerate(roots) if all_cases[c].years in years
+    tasks = [(c, i, child, method) for c, root in enumerate(roots) if chosen(all_cases[c])
              for i, child in enumerate(root.spawn(records))]
     wall, cpu = time.perf_counter(), _cpu()
     rows: list[dict[str, Any]] = []
@@ -216,7 +221,7 @@ def coverage(method: str | None, records: int, jobs: int, years: Sequence[float]
                       f"{time.perf_counter() - wall:.0f} s", file=sys.stderr, flush=True)
     wall, cpu = time.perf_counter() - wall, _cpu() - cpu
     summary = [_summarise(case, [r for r in rows if r["case"] == c]) for c, case in enumerate(all_cases)
-               if case.years in years]
+               if chosen(case)]
     return {"method": method or default_method(), "records_per_case": records, "root_seed": ROOT_SEED,
             "cases": summary, "wall_seconds": wall, "cpu_seconds": cpu, "jobs": jobs}
 
@@ -417,6 +422,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--jobs", type=int, default=2, help="processes (2)")
     ap.add_argument("--years", type=float, nargs="+", default=list(YEARS),
                     help="only the cases of these record lengths (10 20 40)")
+    ap.add_argument("--xi", type=float, nargs="+", default=None,
+                    help="only the cases of these shapes (-0.3 0 0.2 0.4)")
     ap.add_argument("--quick", action="store_true", help="40 records a case, 20 ESD records")
     ap.add_argument("--no-write", action="store_true", help="leave bench/results/calibration.json")
     ap.add_argument("--skip-coverage", action="store_true", help="the ESD's band only")
@@ -437,7 +444,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         a.records, a.esd_records, a.truth_trials = 40, 20, 10000
     method = a.interval or default_method()
     if not a.skip_coverage:
-        res = coverage(a.interval, a.records, a.jobs, a.years)
+        res = coverage(a.interval, a.records, a.jobs, a.years, a.xi)
         print_coverage(res)
         if not a.no_write and not a.quick:
             write_results("coverage", method, res, a.results)
