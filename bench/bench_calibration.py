@@ -411,6 +411,28 @@ def markdown(path: Path = RESULTS) -> str:
     return "\n".join(out)
 
 
+def combine(parts: Sequence[Path], path: Path = RESULTS) -> None:
+    """Merge the coverage of runs of some cases each (``--xi``, ``--years``, ``--results``) that ran
+    side by side into ``path``: the cases in the table's order, the CPU time and the processes
+    summed, the wall time the longest."""
+    merged: dict[str, dict[str, Any]] = {}
+    for part in parts:
+        for method, res in json.loads(part.read_text(encoding="utf-8")).get("coverage", {}).items():
+            m = merged.setdefault(method, {**res, "cases": [], "wall_seconds": 0.0, "cpu_seconds": 0.0,
+                                           "jobs": 0})
+            if m["records_per_case"] != res["records_per_case"]:
+                raise SystemExit(f"bench_calibration: {part}: {res['records_per_case']} records a case, "
+                                 f"the others {m['records_per_case']}")
+            m["cases"] += res["cases"]
+            m["wall_seconds"] = max(m["wall_seconds"], res["wall_seconds"])
+            m["cpu_seconds"] += res["cpu_seconds"]
+            m["jobs"] += res["jobs"]
+    order = {(x, y): k for k, (x, y) in enumerate((c.climate.xi, c.years) for c in cases())}
+    for method, m in merged.items():
+        m["cases"].sort(key=lambda c: order[(c["xi"], c["years"])])
+        write_results("coverage", method, m, path)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--interval", default=None, help="the interval method (default: ClimateOptions' default)")
@@ -432,7 +454,12 @@ def main(argv: Sequence[str] | None = None) -> int:
                     help="only draw the figure from the results file (beside it, .png and .svg)")
     ap.add_argument("--markdown", action="store_true",
                     help="only print the docs' tables from the results file")
+    ap.add_argument("--combine", type=Path, nargs="+", default=None, metavar="FILE",
+                    help="only merge the coverage of these results files (runs of some cases) into --results")
     a = ap.parse_args(argv)
+    if a.combine:
+        combine(a.combine, a.results)
+        return 0
     if a.markdown:
         print(markdown(a.results))
         return 0
