@@ -296,8 +296,11 @@ def run_esd_record(task: tuple[int, np.random.SeedSequence, str | None, int, int
 
 
 def esd_coverage(method: str | None, records: int, replicates: int, trials: int, truth_trials: int,
-                 jobs: int) -> dict[str, Any]:
-    """How often the 90 % climate band of the example caisson's ESD holds the true climate's ESD."""
+                 jobs: int, seconds: float | None = None) -> dict[str, Any]:
+    """How often the 90 % climate band of the example caisson's ESD holds the true climate's ESD.
+
+    With ``seconds``, no record is started after that many seconds: the records are the first
+    ones that finished (the same records for the same count)."""
     from regimemap.lifetime import lifetime_sliding
 
     caisson, model = _example()
@@ -306,12 +309,23 @@ def esd_coverage(method: str | None, records: int, replicates: int, trials: int,
     wall, cpu = time.perf_counter(), _cpu()
     true = lifetime_sliding(caisson, model.with_(climate=_true_climate()), truth_trials,
                             int(truth_seed.generate_state(1, np.uint32)[0]), jobs=jobs)
+    print(f"  true ESD {true.expected_sliding:.4f} m ± {true.std_error:.4f} m, "
+          f"{time.perf_counter() - wall:.0f} s", file=sys.stderr, flush=True)
     tasks = [(i, child, method, replicates, trials) for i, child in enumerate(records_root.spawn(records))]
-    if jobs > 1:
-        with ProcessPoolExecutor(jobs) as pool:
-            rows = list(pool.map(run_esd_record, tasks, chunksize=2))
-    else:
-        rows = [run_esd_record(t) for t in tasks]
+    rows: list[dict[str, Any]] = []
+    with contextlib.ExitStack() as stack:
+        pool = stack.enter_context(ProcessPoolExecutor(jobs)) if jobs > 1 else None
+        pending: list[Any] = []
+        for t in tasks + [None] * (2 * jobs):  # a window of 2 x jobs records in flight
+            if t is not None and (seconds is None or time.perf_counter() - wall < seconds):
+                pending.append(pool.submit(run_esd_record, t) if pool is not None else run_esd_record(t))
+            if len(pending) >= 2 * jobs or (t is None and pending):
+                first = pending.pop(0)
+                row = first.result() if pool is not None else first
+                rows.append(row)
+                print(f"  ESD record {row['index']}: band {row['lower']:.4g} to {row['upper']:.4g} m, "
+                      f"{time.perf_counter() - wall:.0f} s", file=sys.stderr, flush=True)
+    records = len(rows)
     wall, cpu = time.perf_counter() - wall, _cpu() - cpu
     lo = np.array([r["lower"] for r in rows])
     hi = np.array([r["upper"] for r in rows])
@@ -440,6 +454,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     ap.add_argument("--esd-records", type=int, default=100, help="records of the ESD's band (100; 0: none)")
     ap.add_argument("--esd-replicates", type=int, default=50, help="climates a band (50)")
     ap.add_argument("--esd-trials", type=int, default=80, help="lifetimes a climate (80)")
+    ap.add_argument("--esd-seconds", type=float, default=None,
+                    help="start no ESD record after this many seconds (default: no limit)")
     ap.add_argument("--truth-trials", type=int, default=40000, help="lifetimes of the true ESD (40000)")
     ap.add_argument("--jobs", type=int, default=2, help="processes (2)")
     ap.add_argument("--years", type=float, nargs="+", default=list(YEARS),
@@ -477,7 +493,8 @@ def main(argv: Sequence[str] | None = None) -> int:
             write_results("coverage", method, res, a.results)
     if a.esd_records > 0:
         print()
-        esd = esd_coverage(a.interval, a.esd_records, a.esd_replicates, a.esd_trials, a.truth_trials, a.jobs)
+        esd = esd_coverage(a.interval, a.esd_records, a.esd_replicates, a.esd_trials, a.truth_trials, a.jobs,
+                           a.esd_seconds)
         print_esd(esd)
         if not a.no_write and not a.quick:
             write_results("esd", method, esd, a.results)
