@@ -400,9 +400,10 @@ def markdown(path: Path = RESULTS) -> str:
     data = json.loads(path.read_text(encoding="utf-8"))
     out = []
     for method, res in data.get("coverage", {}).items():
-        out.append(f"**{method}** ({res['records_per_case']} records a case; "
-                   f"{res['wall_seconds']:.0f} s wall, {res['cpu_seconds']:.0f} s CPU on {res['jobs']} "
-                   "processes)\n")
+        wall = ("" if res.get("wall_seconds") is None else
+                f"{res['wall_seconds']:.0f} s wall on {res['jobs']} processes, ")
+        out.append(f"**{method}** ({res['records_per_case']} records a case; {wall}"
+                   f"{res['cpu_seconds']:.0f} s CPU in all)\n")
         out.append("| ξ | years | storms | H10 90 % | H10 95 % | H50 90 % | H50 95 % | H100 90 % | H100 95 % "
                    "| H50 90 % width / truth |")
         out.append("|---|---|---|---|---|---|---|---|---|---|")
@@ -427,20 +428,19 @@ def markdown(path: Path = RESULTS) -> str:
 
 def combine(parts: Sequence[Path], path: Path = RESULTS) -> None:
     """Merge the coverage of runs of some cases each (``--xi``, ``--years``, ``--results``) that ran
-    side by side into ``path``: the cases in the table's order, the CPU time and the processes
-    summed, the wall time the longest."""
+    side by side into ``path``: the cases in the table's order, the CPU time summed, no wall time
+    (the runs overlapped) and ``parts``, the runs merged."""
     merged: dict[str, dict[str, Any]] = {}
     for part in parts:
         for method, res in json.loads(part.read_text(encoding="utf-8")).get("coverage", {}).items():
-            m = merged.setdefault(method, {**res, "cases": [], "wall_seconds": 0.0, "cpu_seconds": 0.0,
-                                           "jobs": 0})
+            m = merged.setdefault(method, {**res, "cases": [], "wall_seconds": None, "cpu_seconds": 0.0,
+                                           "parts": 0})
             if m["records_per_case"] != res["records_per_case"]:
                 raise SystemExit(f"bench_calibration: {part}: {res['records_per_case']} records a case, "
                                  f"the others {m['records_per_case']}")
             m["cases"] += res["cases"]
-            m["wall_seconds"] = max(m["wall_seconds"], res["wall_seconds"])
             m["cpu_seconds"] += res["cpu_seconds"]
-            m["jobs"] += res["jobs"]
+            m["parts"] += 1
     order = {(x, y): k for k, (x, y) in enumerate((c.climate.xi, c.years) for c in cases())}
     for method, m in merged.items():
         m["cases"].sort(key=lambda c: order[(c["xi"], c["years"])])
