@@ -7,8 +7,9 @@ drawing the same polygons, and ``regimemap figures --set all``) and the outcome-
 bench/bench_dynamics.py (a 200 x 200 map of regimemap.dynamics) and the lifetime benchmark of
 bench/bench_lifetime.py (5000 lifetimes of Goda's caisson, the 21-width design chart) and the
 explorer's redraw of bench/bench_explore.py, the climate analysis of a 10-year record
-(``climate``) and a whole breakwater's study of bench/bench_study.py (20 sections x 3 scenarios on
-one and two workers, and with climate replicates).  Times are
+(``climate``), a whole breakwater's study of bench/bench_study.py (20 sections x 3 scenarios on
+one and two workers, and with climate replicates) and the coverage of the return-value intervals
+and of the ESD's climate band measured on records of known truth (bench/bench_calibration.py).  Times are
 the best of several runs (wall clock, this machine); the targets of the issues are shown beside them.
 """
 
@@ -167,6 +168,15 @@ def main() -> int:
         spec.loader.exec_module(mod)
         print()
         mod.main()
+    calibration = Path(__file__).with_name("bench_calibration.py")
+    if calibration.exists():  # issue 33: the intervals' coverage of a known truth (<= 10 min)
+        spec = importlib.util.spec_from_file_location("bench_calibration", calibration)
+        mod = importlib.util.module_from_spec(spec)
+        sys.modules[spec.name] = mod  # its worker processes find their task functions by name
+        assert spec.loader is not None
+        spec.loader.exec_module(mod)
+        print()
+        mod.main(["--no-write"])  # bench_calibration.py alone updates bench/results/calibration.json
     explore = Path(__file__).with_name("bench_explore.py")
     if explore.exists():  # regimemap explore: one redraw per slider step (<= 100 ms)
         spec = importlib.util.spec_from_file_location("bench_explore", explore)
