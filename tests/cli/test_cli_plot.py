@@ -74,7 +74,7 @@ def test_plot_format_option(runner, tmp_path):
 
 
 @pytest.mark.parametrize("args,words", [
-    (["-o", "map.jpg"], ["png, svg, pdf", "-o"]),
+    (["-o", "map.jpg"], [".png, .svg or .pdf", "-o"]),
     (["--format", "jpg"], ["png, svg, pdf", "--format"]),
     (["-o", "map.svg", "--format", "png"], ["--format", ".svg"]),
     (["--gamma", "-1"], ["--gamma", "gamma must be"]),
@@ -278,7 +278,7 @@ def test_main_entry_point_exit_codes(tmp_path):
     bad = subprocess.run(exe + ["plot", "--gamma", "3", "--kprime", "0.4", "-o",
                                 str(tmp_path / "m.gif")], capture_output=True, text=True)
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
-    assert "png, svg, pdf" in bad.stderr
+    assert ".png, .svg or .pdf" in bad.stderr
 
 
 # -- start-up: the cyclic GC is paused while matplotlib is imported --------------------------

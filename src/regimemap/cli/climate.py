@@ -16,7 +16,7 @@ import click
 from ._check import refuse_notices
 from ._common import ParamType, output_path, report_written
 from ._inputs import RECORD_FILE
-from ._writing import distinct_files, file_suffix, write_files
+from ._writing import checked_format, distinct_files, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -26,8 +26,6 @@ if TYPE_CHECKING:
     from ..workflows.climate import ClimateRecord
 
 __all__ = ["climate_cmd"]
-
-FIGURE_FORMATS = ("png", "svg", "pdf")
 
 
 class _Threshold(ParamType):
@@ -65,11 +63,7 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
     every = [*outputs, *([diagnostics] if diagnostics else [])]
     distinct_files(every, "'-o' / '--diagnostics'")
     for path in every:
-        kind = file_suffix(path)
-        if kind not in FIGURE_FORMATS:
-            got = f".{kind}" if kind else "no suffix"
-            raise click.BadParameter(f"{path!r} has {got}; the figures are written as .png, .svg or .pdf",
-                                     param_hint="'-o' / '--diagnostics'")
+        checked_format(path, "climate figures", "'-o' / '--diagnostics'")
         output_path(path, "--output")
 
 

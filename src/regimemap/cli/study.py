@@ -17,7 +17,8 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
+from ..io.formats import FIGURE_FORMATS
+from ._common import ParamType, RunError, echo_notices, import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._writing import writing
 
@@ -28,7 +29,6 @@ if TYPE_CHECKING:
 __all__ = ["study_cmd"]
 
 TABLE_FORMATS = ("csv", "nc")
-FIGURE_FORMATS = ("png", "svg", "pdf")
 FIGURE_KINDS = ("chainage", "years", "width")
 
 
@@ -216,8 +216,7 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
         return
     assert study is not None
     record = _run(_read(study, section), jobs, scheduler, resume, store, quiet)
-    for notice in record.notices:
-        click.echo(f"regimemap: warning: {notice.message}", err=True)
+    echo_notices(record.notices)
     _write(record, outputs, figure, section)
     if as_json:
         click.echo(json.dumps(study_json(record), indent=1))
