@@ -115,7 +115,7 @@ def test_usage_errors(tmp_path: Path, goda: Path) -> None:
         (["caisson"], "missing DESIGN.toml"),
         (["caisson", str(tmp_path / "absent.toml")], "cannot read the design file"),
         (["caisson", "--example", str(goda)], "--example prints the example file"),
-        (["caisson", str(goda), "-o", str(tmp_path / "sheet.txt")], r"\.pdf, \.svg or \.png"),
+        (["caisson", str(goda), "-o", str(tmp_path / "sheet.txt")], r"\.png, \.svg or \.pdf for the design sheet"),
         (["caisson", str(goda), "-o", str(tmp_path / "no" / "sheet.pdf")], "does not exist"),
     ):
         r = invoke_cli(args)

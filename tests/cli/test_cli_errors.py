@@ -136,7 +136,7 @@ USAGE_ERRORS = [
     ("classify", ["--gamma", "3", "--kprime", "0.4", "--k", "0.5", "--mu", "nan"], r"'--mu': mu must be"),
     ("classify", ["--gamma", "3", "--kprime", "0.4", "--k", "0.5"], r"missing option\(s\) --mu"),
     ("classify", ["--gamma", "0", "--kprime", "0.4", "--k", "0.5", "--mu", "1"], r"'--gamma'"),
-    ("export", G + ["-o", "map.txt"], r"unknown export format 'txt'"),
+    ("export", G + ["-o", "map.txt"], r"unknown file suffix \.txt in 'map\.txt'; use \.npz, \.csv or \.json"),
     ("export", G + ["-o", "map.npz", "--format", "xyz"], r"'--format'"),
     ("export", G, r"Missing option '-o' / '--output'"),
     ("export", G + ["--k-max", "0", "-o", "m.npz"], r"'--k-max'"),
@@ -145,7 +145,7 @@ USAGE_ERRORS = [
     ("atlas", ["--gamma", "1", "--kprime", "0,2", "-o", "a.png"], r"'--kprime'"),
     ("atlas", ["--gamma", "1:2:7", "--kprime", "-1:1:7", "-o", "a.png"], r"49 panels exceed the limit of 48"),
     ("atlas", ["--gamma", "1", "--kprime", "0", "-o", "a.gif"], r"unknown file suffix \.gif"),
-    ("animate", ["--gamma", "3", "--kprime", "0:1:3", "-o", "a.png"], r"give a file ending in \.gif"),
+    ("animate", ["--gamma", "3", "--kprime", "0:1:3", "-o", "a.png"], r"unknown file suffix \.png.*use \.gif for the animation"),
     ("animate", ["--gamma", "3", "--kprime", "0:1:100000", "-o", "a.gif"], r"'--kprime'"),
     ("animate", ["--gamma", "3", "--kprime", "0:1:3", "--fps", "0", "-o", "a.gif"], r"'--fps'"),
 ]

@@ -192,10 +192,12 @@ def test_resolution_limits_refused_before_allocating(tmp_path, monkeypatch):
 def test_format_of():
     assert format_of("a.NPZ") == "npz" and format_of("a.csv") == "csv"
     assert format_of("a.txt", "json") == "json"
-    with pytest.raises(ValueError, match="unknown export format"):
+    with pytest.raises(ValueError, match=r"unknown file suffix \.png in 'a\.png'; use \.npz, \.csv or \.json"):
         format_of("a.png")
-    with pytest.raises(ValueError, match="no suffix"):
+    with pytest.raises(ValueError, match="no file suffix in 'map'"):
         format_of("map")
+    with pytest.raises(ValueError, match="unknown export format 'xml'"):
+        format_of("a.csv", "xml")
 
 
 def test_atomic_write_leaves_no_partial_file(tmp_path, monkeypatch):

@@ -353,7 +353,7 @@ def test_absurd_climates_are_refused_without_strict(run_cli, goda: Path, value: 
     (["--scheduler", "somewhere"], ["'--scheduler'", "[tcp://]host:port", "got 'somewhere'"]),
     (["--scheduler", "tcp://host:99999"], ["'--scheduler'", "got 'tcp://host:99999'"]),
     (["-o", "{tmp}/life.txt"], ["'--output'", ".txt", ".png, .svg or .pdf", ".csv or .npz"]),
-    (["-o", "{tmp}/life"], ["'--output'", "no suffix"]),
+    (["-o", "{tmp}/life"], ["'--output'", "no file suffix"]),
     (["--width", "10:20:3", "-o", "{tmp}/chart.npz"], ["'--output'", "not with --width"]),
     (["-o", "{tmp}/missing/life.png"], ["'--output'", "does not exist"]),
     (["-o", "{tmp}/a.csv", "-o", "{tmp}/a.csv"], ["the same file is given twice"]),

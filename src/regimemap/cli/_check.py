@@ -2,8 +2,8 @@
 
 ``--check`` makes the verdict of the requirements the exit status (1 when any fails); a
 record's notices (:class:`~regimemap.mechanics.notices.Notice`) are printed on standard error
-as ``regimemap: warning: MESSAGE``, or, those ``--strict`` refuses, are a usage error (exit 2)
-naming the first.
+by :func:`regimemap.cli._common.echo_notices`, or, those ``--strict`` refuses, are a usage
+error (exit 2) naming the first.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import click
 from ..mechanics.checks import Check, all_pass
 from ..mechanics.notices import Notice
 
-__all__ = ["CHECK_HELP", "check_option", "exit_on_failure", "refuse_notices", "warn"]
+__all__ = ["CHECK_HELP", "check_option", "exit_on_failure", "refuse_notices"]
 
 CHECK_HELP = ("Exit with status 1 when any requirement fails (the report and the files are written "
               "first; usage errors still exit 2).")
@@ -31,12 +31,6 @@ def exit_on_failure(checks: Sequence[Check], check: bool) -> None:
     """Exit with status 1 under ``--check`` when a requirement fails; return otherwise."""
     if check and not all_pass(checks):
         raise click.exceptions.Exit(1)
-
-
-def warn(notices: Sequence[Notice]) -> None:
-    """Print each notice on standard error: ``regimemap: warning: MESSAGE``."""
-    for n in notices:
-        click.echo(f"regimemap: warning: {n.message}", err=True)
 
 
 def refuse_notices(notices: Sequence[Notice], codes: str | tuple[str, ...], why: str,

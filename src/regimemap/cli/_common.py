@@ -305,14 +305,18 @@ def report_written(path: str | os.PathLike[str], note: str | None = None) -> Non
         click.echo(f"regimemap: {note}", err=True)
 
 
-def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None) -> None:
-    """A record's notices on standard error, one line each: ``regimemap: warning: MESSAGE``.
+def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None, *,
+                 source: str | None = None) -> None:
+    """Notices on standard error, one line each: ``regimemap: warning: MESSAGE`` -- the one
+    printer of every command's warnings.
 
     ``prefix`` gives another start of the line to the notices of some codes
-    (``{"crammed": "regimemap: note: "}``).
+    (``{"crammed": "regimemap: note: "}``); ``source`` (a design file's name) goes before
+    each message: ``regimemap: warning: SOURCE: MESSAGE``.
     """
+    where = f"{source}: " if source else ""
     for n in notices:
-        click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{n.message}", err=True)
+        click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{where}{n.message}", err=True)
 
 
 def _one_line(text: str) -> str:

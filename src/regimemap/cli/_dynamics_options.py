@@ -5,20 +5,18 @@ and :class:`~regimemap.dynamics.options.OptionError` as click's usage errors."""
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Iterable, Iterator, Sequence
-from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Iterator, Sequence
+from typing import Any
 
 import click
 
 from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
 from ..dynamics.options import OptionError
 from ..dynamics.pulses import SHAPES
-from ._common import ParamType, gamma_option, kprime_option, output_path
+from ..io.formats import FIGURE_FORMATS, record_formats
+from ._common import ParamType, echo_notices, gamma_option, kprime_option, output_path
+from ._writing import checked_format
 from .atlas import Values
-
-if TYPE_CHECKING:  # pragma: no cover
-    from ..mechanics.notices import Notice
 
 __all__ = [
     "FIGURE_FORMATS",
@@ -33,8 +31,9 @@ __all__ = [
     "option_errors",
 ]
 
-FIGURE_FORMATS = ("png", "svg", "pdf")
-DATA_FORMATS = ("npz", "csv")
+#: The formats of a run's time history (:func:`regimemap.io.formats.record_formats`; its figures':
+#: :data:`~regimemap.io.formats.FIGURE_FORMATS`).
+DATA_FORMATS = record_formats("time history")
 
 
 class InputNumber(ParamType):
@@ -146,21 +145,12 @@ def min_rotation_option() -> Callable[[Any], Any]:
 def check_output_file(path: str, formats: Sequence[str], param: str, what: str) -> str:
     """The format of output ``path`` (its suffix, one of ``formats``), its folder writable.
 
-    A usage error naming ``param`` otherwise; ``what`` says what the file holds.
+    A usage error naming ``param`` otherwise (:func:`~regimemap.cli._writing.checked_format`);
+    ``what`` says what the file holds.
     """
-    fmt = Path(path).suffix.lower().lstrip(".")
-    if fmt not in formats:
-        got = f".{fmt}" if fmt else "no suffix"
-        raise click.BadParameter(f"{what} is written as {', '.join('.' + f for f in formats)} (from the "
-                                 f"file suffix); got {got} in {path!r}", param_hint=f"'{param}'")
+    fmt = checked_format(path, ((what, formats),), f"'{param}'")
     output_path(path, param)
     return fmt
-
-
-def echo_notices(notices: Iterable[Notice]) -> None:
-    """Print warnings on standard error, one line each: ``regimemap: warning: MESSAGE``."""
-    for n in notices:
-        click.echo(f"regimemap: warning: {n.message}", err=True)
 
 
 @contextlib.contextmanager

@@ -1,7 +1,8 @@
 """Warnings for valid but implausible design files (likely unit slips), and ``--strict``.
 
 The checks are :func:`regimemap.io.plausibility.implausible_notices`; here they
-become one warning line each on standard error, or, with ``--strict``, a usage
+become one warning line each on standard error, with the file's name
+(:func:`~regimemap.cli._common.echo_notices`), or, with ``--strict``, a usage
 error (exit 2) naming the first.  :func:`caisson_record` is
 :func:`regimemap.workflows.caisson.run_caisson` with its warnings and failures
 turned into the command line's lines and exit statuses.
@@ -14,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._common import RunError
+from ._common import RunError, echo_notices
 
 if TYPE_CHECKING:  # pragma: no cover
     from regimemap.io.design import Design
@@ -22,17 +23,11 @@ if TYPE_CHECKING:  # pragma: no cover
     from regimemap.waves import CaissonAnalysis
     from regimemap.workflows.caisson import CaissonRecord
 
-__all__ = ["STRICT_HELP", "caisson_record", "check_plausible", "echo_notices"]
+__all__ = ["STRICT_HELP", "caisson_record", "check_plausible"]
 
 STRICT_HELP = ("Refuse a design file whose values are valid but implausible for a breakwater "
                "(likely unit slips: a depth over 100 m, a section heavier than 30 kN/m^3 ...); "
                "without it they are warnings on standard error.")
-
-
-def echo_notices(notices: Sequence[Notice], source: str) -> None:
-    """One line each on standard error: ``regimemap: warning: SOURCE: MESSAGE``."""
-    for n in notices:
-        click.echo(f"regimemap: warning: {source}: {n.message}", err=True)
 
 
 def _refusal(notices: Sequence[Notice], source: str, param_hint: str) -> click.BadParameter:
@@ -54,7 +49,7 @@ def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bo
     found = implausible_notices(design, analysis)
     if strict and found:
         raise _refusal(found, source, param_hint)
-    echo_notices(found, source)
+    echo_notices(found, source=source)
 
 
 def caisson_record(design: Design, source: str, *, strict: bool = False, sheet: bool = False,
@@ -72,9 +67,9 @@ def caisson_record(design: Design, source: str, *, strict: bool = False, sheet: 
     except ImplausibleDesignError as exc:
         raise _refusal(exc.notices, source, param_hint) from None
     except CaissonError as exc:
-        echo_notices(exc.notices, source)
+        echo_notices(exc.notices, source=source)
         if usage_error:
             raise click.BadParameter(f"{source}: {exc}", param_hint=param_hint) from None
         raise RunError(f"{source}: {exc}") from None
-    echo_notices(record.notices, source)
+    echo_notices(record.notices, source=source)
     return record

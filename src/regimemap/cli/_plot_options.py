@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..drawing.save import DPI_RANGE
+from ..io.formats import FIGURE_FORMATS, kind_of, suffix_error, suffix_of
 from ._common import ParamType, output_path
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -36,9 +37,8 @@ __all__ = [
     "number_text",
 ]
 
-#: Output formats, as in :data:`regimemap.drawing.save.FORMATS` (repeated so that
-#: this module need not import the renderer).
-FORMATS = ("png", "svg", "pdf")
+#: Output formats: the figure formats of the registry (:data:`regimemap.io.formats.FIGURE_FORMATS`).
+FORMATS = FIGURE_FORMATS
 
 _LO, _HI = DPI_RANGE
 
@@ -197,16 +197,15 @@ def resolve_output(output: str | None, fmt: str | None, default_name: str) -> tu
         fmt = fmt or "png"
         return output_path(f"{default_name}.{fmt}", "--output"), fmt
     path = Path(output)
-    suffix = path.suffix.lower().lstrip(".")
-    if suffix and suffix in FORMATS:
+    suffix = suffix_of(path)
+    if kind_of(suffix) == "figure":
         if fmt is not None and fmt != suffix:
             raise click.BadParameter(
                 f"file suffix .{suffix} does not match --format {fmt}", param_hint="'--format'")
         fmt = suffix
     elif suffix and fmt is None:
-        raise click.BadParameter(
-            f"unknown file suffix .{suffix} in {output!r}; use one of {', '.join(FORMATS)} "
-            "(or give --format)", param_hint="'-o' / '--output'")
+        raise click.BadParameter(f"{suffix_error(output, 'figure')} (or give --format)",
+                                 param_hint="'-o' / '--output'")
     else:
         # no suffix (or an unknown one with --format): add the format's suffix, as matplotlib does
         fmt = fmt or "png"

@@ -1,5 +1,6 @@
 """How the commands write their files: one error for a file that cannot be written, the ``-o``
-files checked to be distinct, and each file written once with the figure drawn once."""
+files checked to be distinct and of a suffix their record is written in (the one registry,
+:mod:`regimemap.io.formats`), and each file written once with the figure drawn once."""
 
 from __future__ import annotations
 
@@ -11,12 +12,13 @@ from typing import TYPE_CHECKING
 
 import click
 
+from ..io.formats import SuffixError, format_for, suffix_of
 from ._common import RunError, import_matplotlib
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["distinct_files", "file_suffix", "write_files", "writing"]
+__all__ = ["checked_format", "distinct_files", "file_suffix", "write_files", "writing"]
 
 
 @contextlib.contextmanager
@@ -45,9 +47,18 @@ def writing(path: str | os.PathLike[str] | None, what: str | None = None) -> Ite
         raise RunError(f"cannot write {path if what is None else what}: {exc.strerror or exc}") from None
 
 
-def file_suffix(path: str) -> str:
-    """The suffix of ``path`` in lower case, without its dot (``"svg"``; ``""`` for none)."""
-    return Path(path).suffix.lower().lstrip(".")
+#: The suffix of a path in lower case, without its dot (:func:`regimemap.io.formats.suffix_of`).
+file_suffix = suffix_of
+
+
+def checked_format(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param_hint: str) -> str:
+    """The format of output ``path`` for ``record`` (:func:`regimemap.io.formats.format_for`);
+    a suffix it is not written in is a usage error (exit 2) naming ``param_hint``
+    (``"'--output'"``), worded by :func:`regimemap.io.formats.suffix_error`."""
+    try:
+        return format_for(path, record)
+    except SuffixError as exc:
+        raise click.BadParameter(str(exc), param_hint=param_hint) from None
 
 
 def distinct_files(paths: Sequence[str], param_hint: str) -> None:

@@ -28,7 +28,7 @@ from ._common import (
     positive_float,
     report_written,
 )
-from ._writing import writing
+from ._writing import checked_format, writing
 
 __all__ = ["atlas_cmd", "animate_cmd"]
 
@@ -245,11 +245,7 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
       regimemap animate --gamma 1.5 --kprime -0.8:0:17 --fps 4 --k-max 5 --mu-max 3 -o below.gif
       regimemap animate --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0:1:21 -o nu.gif
     """
-    from pathlib import Path
-
-    if Path(output).suffix.lower() != ".gif":
-        raise click.BadParameter(f"the animation is a GIF: give a file ending in .gif, got {output!r}",
-                                 param_hint="'-o' / '--output'")
+    checked_format(output, "animation", "'-o' / '--output'")
     output_path(output, "--output")
     kprimes = _up_to_crest(kprimes, loads)
     sweep, values, fixed = _sweep(kprimes, loads, "frames")

@@ -11,14 +11,12 @@ from ._check import check_option, exit_on_failure
 from ._common import import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE, read_design_file
 from ._plausible import STRICT_HELP, caisson_record
-from ._writing import writing
+from ._writing import checked_format, writing
 
 if TYPE_CHECKING:
     from ..workflows.caisson import CaissonRecord
 
 __all__ = ["caisson_cmd"]
-
-_FORMATS = ("png", "svg", "pdf")
 
 
 @click.command(
@@ -143,9 +141,6 @@ def _check_arguments(design: str | None, output: str | None) -> str:
         raise click.UsageError("missing DESIGN.toml (a design file; `regimemap caisson --example` "
                                "prints one)", ctx=click.get_current_context())
     if output is not None:
-        suffix = output.rsplit(".", 1)[-1].lower() if "." in output.rsplit("/", 1)[-1] else ""
-        if suffix not in _FORMATS:
-            raise click.BadParameter(f"the sheet's file must end in .pdf, .svg or .png, got {output!r}",
-                                     param_hint="'--output'")
+        checked_format(output, "design sheet", "'--output'")
         output_path(output, "--output")
     return design

@@ -13,10 +13,10 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
-from ._check import refuse_notices, warn
-from ._common import ParamType, output_path, report_written
+from ._check import refuse_notices
+from ._common import ParamType, echo_notices, output_path, report_written
 from ._inputs import RECORD_FILE
-from ._writing import distinct_files, file_suffix, write_files
+from ._writing import checked_format, distinct_files, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -27,7 +27,6 @@ if TYPE_CHECKING:
 
 __all__ = ["climate_cmd"]
 
-FIGURE_FORMATS = ("png", "svg", "pdf")
 #: The option of each field of ClimateOptions that an analysis's error may blame.
 _OPTIONS = {"threshold": "--threshold", "coverage": "--coverage", "return_periods": "--return-periods"}
 #: The option that names each column of a record.
@@ -78,11 +77,7 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
     every += [(diagnostics, "--diagnostics")] if diagnostics else []
     distinct_files([path for path, _ in every], "'-o' / '--diagnostics'")
     for path, option in every:
-        kind = file_suffix(path)
-        if kind not in FIGURE_FORMATS:
-            got = f".{kind}" if kind else "no suffix"
-            raise click.BadParameter(f"{path!r} has {got}; the figures are written as .png, .svg or .pdf",
-                                     param_hint=f"'{option}'")
+        checked_format(path, "climate figures", f"'{option}'")
         output_path(path, option)
 
 
@@ -177,7 +172,7 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
     if strict:
         refuse_notices(result.notices, ("record-quality", "fit"),
                        "--strict refuses quality-control warnings", "'RECORD'")
-    warn(result.notices)
+    echo_notices(result.notices)
     title = Path(record).name
     written = write_files(outputs, lambda: _climate_figure(result.result, result.curves, title))
     if diagnostics is not None and result.diagnostics is not None:

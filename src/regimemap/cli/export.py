@@ -6,6 +6,7 @@ from typing import Any
 
 import click
 
+from ..io.formats import record_formats
 from ._common import (
     gamma_option,
     kprime_option,
@@ -32,7 +33,7 @@ __all__ = ["export_cmd"]
 @click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
               show_default=True,
               help="Default view: mu up to 1.2 (designer) or every characteristic point (report).")
-@click.option("--format", "fmt", type=click.Choice(["npz", "csv", "json"], case_sensitive=False),
+@click.option("--format", "fmt", type=click.Choice(record_formats("map data"), case_sensitive=False),
               default=None, help="Format (default: from the suffix of -o).")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
               help="Output file: .npz, .csv or .json (written atomically).")

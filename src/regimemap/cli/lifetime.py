@@ -15,12 +15,13 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._check import check_option, exit_on_failure, refuse_notices, warn
-from ._common import RunError, output_path, report_written
+from ..io.formats import record_formats
+from ._check import check_option, exit_on_failure, refuse_notices
+from ._common import RunError, echo_notices, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._lifetime_options import chart_options, lifetime_options, report_options, run_options
 from ._plausible import STRICT_HELP
-from ._writing import distinct_files, file_suffix, write_files
+from ._writing import checked_format, distinct_files, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -28,9 +29,6 @@ if TYPE_CHECKING:
     from ..workflows.lifetime import ChartRecord, LifetimeDesign, LifetimeRecord
 
 __all__ = ["lifetime_cmd"]
-
-FIGURE_FORMATS = ("png", "svg", "pdf")
-SAMPLE_FORMATS = ("csv", "npz")
 
 
 @click.command("lifetime",
@@ -98,8 +96,8 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     refuse_notices(record.notices, "target-not-bracketed", "", "'--width'")
     if not quiet:
         _note_run(record, widths)
-    written = write_files(outputs, lambda: _figure(record, design), data_formats=SAMPLE_FORMATS,
-                          write_data=record.write_data)
+    written = write_files(outputs, lambda: _figure(record, design),
+                          data_formats=record_formats("lifetimes"), write_data=record.write_data)
     if as_json:
         click.echo(json.dumps(record.report_json(written), indent=2, allow_nan=False))
     else:
@@ -151,16 +149,11 @@ def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None
     """The ``-o`` files, checked before any work: distinct, of a known suffix, writable."""
     distinct_files(outputs, "'-o' / '--output'")
     for path in outputs:
-        kind = file_suffix(path)
+        kind = checked_format(path, "lifetime", "'--output'")
         if kind == "npz" and widths is not None:
             raise click.BadParameter(f"{path!r}: the lifetimes (.npz) are written for one width, not "
                                      "with --width (a chart is written as .csv, its table, or as .png, "
                                      ".svg or .pdf)", param_hint="'--output'")
-        if kind not in FIGURE_FORMATS + SAMPLE_FORMATS:
-            got = f".{kind}" if kind else "no suffix"
-            raise click.BadParameter(f"{path!r} has {got}; the figure is written as .png, .svg or .pdf "
-                                     "and the lifetimes as .csv or .npz (from the file suffix)",
-                                     param_hint="'--output'")
         output_path(path, "--output")
 
 
@@ -177,7 +170,7 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
     if strict:
         refuse_notices(inputs.notices, "implausible-value", "--strict refuses implausible values",
                        "'DESIGN.toml'")
-    warn(inputs.notices)
+    echo_notices(inputs.notices)
     return inputs
 
 

@@ -16,9 +16,9 @@ from typing import TYPE_CHECKING
 
 import click
 
+from ..io.formats import record_formats
 from ._common import import_matplotlib
 from ._dynamics_options import (
-    DATA_FORMATS,
     FIGURE_FORMATS,
     block_options,
     check_output_file,
@@ -34,7 +34,7 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["outcome_cmd"]
 
 #: The data formats of an outcome map: those of a run's history, and JSON with the boundaries.
-_DATA_FORMATS = (*DATA_FORMATS, "json")
+_DATA_FORMATS = record_formats("outcome data")
 
 
 @click.command("outcome", short_help="Outcome map (rest, slide, rock, slide-rock, overturned) over two "

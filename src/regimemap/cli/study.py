@@ -17,8 +17,8 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._check import warn
-from ._common import ParamType, RunError, import_matplotlib, output_path, report_written
+from ..io.formats import FIGURE_FORMATS
+from ._common import ParamType, RunError, echo_notices, import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._writing import writing
 
@@ -29,7 +29,6 @@ if TYPE_CHECKING:
 __all__ = ["study_cmd"]
 
 TABLE_FORMATS = ("csv", "nc")
-FIGURE_FORMATS = ("png", "svg", "pdf")
 FIGURE_KINDS = ("chainage", "years", "width")
 
 
@@ -251,9 +250,9 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
         return
     assert study is not None
     parsed = _read(study, section)
-    warn(parsed.notices)  # before the run: the file's warnings
+    echo_notices(parsed.notices)  # before the run: the file's warnings
     record = _run(parsed, jobs, scheduler, resume, overwrite, store, quiet)
-    warn([n for n in record.notices if n not in parsed.notices])
+    echo_notices([n for n in record.notices if n not in parsed.notices])
     checks = study_checks(parsed, record) if check else ()
     written = _write(record, outputs, figure, section)
     if as_json:

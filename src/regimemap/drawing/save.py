@@ -16,6 +16,7 @@ from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
+from ..io.formats import FIGURE_FORMATS, format_for, suffix_of
 from .style import style_context
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -24,8 +25,8 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["DEFAULT_DPI", "DPI_RANGE", "FORMATS", "format_from_path", "metadata", "print_figure",
            "save_figure"]
 
-#: Output formats (file suffixes) that :func:`print_figure` writes.
-FORMATS: tuple[str, ...] = ("png", "svg", "pdf")
+#: Output formats (file suffixes) that :func:`print_figure` writes: the registry's figure formats.
+FORMATS: tuple[str, ...] = FIGURE_FORMATS
 #: Resolution of PNG output (dots per inch): 960 px across a map, sharp on
 #: screens and in the README; use 300 for print (SVG or PDF are better there).
 DEFAULT_DPI = 150
@@ -39,10 +40,11 @@ def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> st
     Raises
     ------
     ValueError
-        For an unknown format or suffix, or a suffix that contradicts ``fmt``;
-        the message lists png, svg, pdf.
+        For an unknown format, a suffix that contradicts ``fmt``, or without ``fmt`` a suffix
+        that is not a figure's (:class:`regimemap.io.formats.SuffixError`); the message lists
+        png, svg, pdf.
     """
-    suffix = Path(path).suffix.lower().lstrip(".")
+    suffix = suffix_of(path)
     if fmt is not None:
         fmt = fmt.lower().lstrip(".")
         if fmt not in FORMATS:
@@ -50,11 +52,7 @@ def format_from_path(path: str | os.PathLike[str], fmt: str | None = None) -> st
         if suffix and suffix in FORMATS and suffix != fmt:
             raise ValueError(f"file suffix .{suffix} does not match format {fmt!r}")
         return fmt
-    if not suffix:
-        raise ValueError(f"no file suffix in {str(path)!r}; use one of {', '.join(FORMATS)}")
-    if suffix not in FORMATS:
-        raise ValueError(f"unknown file suffix .{suffix}; use one of {', '.join(FORMATS)}")
-    return suffix
+    return format_for(path, "figure")
 
 
 def figure_version(version: str | None = None) -> str:

@@ -27,6 +27,7 @@ from ..dynamics.stepper import History, Phase
 from ._numbers import DIGITS as SIGNIFICANT
 from ._numbers import round_sig
 from .atomic import atomic_open
+from .formats import format_for, record_formats
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..dynamics.records import OutcomeRecord
@@ -46,9 +47,9 @@ __all__ = [
     "write_outcome_record",
 ]
 
-#: Formats of a time history and of an outcome map's data, by file suffix.
-HISTORY_FORMATS: tuple[str, ...] = ("csv", "npz")
-OUTCOME_DATA_FORMATS: tuple[str, ...] = ("npz", "csv", "json")
+#: Formats of a time history and of an outcome map's data, by file suffix (:data:`~.formats.RECORDS`).
+HISTORY_FORMATS: tuple[str, ...] = record_formats("time history")
+OUTCOME_DATA_FORMATS: tuple[str, ...] = record_formats("outcome data")
 
 def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
     """Inputs as JSON values: floats (and those in lists) rounded to :data:`SIGNIFICANT` digits."""
@@ -64,15 +65,6 @@ def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
 
 
 # -- files ----------------------------------------------------------------------------------------
-
-
-def _format(path: str | os.PathLike[str], formats: Sequence[str], what: str) -> str:
-    suffix = Path(path).suffix.lower().lstrip(".")
-    if suffix not in formats:
-        got = f".{suffix}" if suffix else "no suffix"
-        raise ValueError(f"{what} is written as {' or '.join('.' + f for f in formats)}, from the file's "
-                         f"suffix; got {got} in {os.fspath(path)!r}")
-    return suffix
 
 
 def history_arrays(history: History, H: float) -> dict[str, NDArray[Any]]:
@@ -94,7 +86,7 @@ def write_history(path: str | os.PathLike[str], history: History, H: float,
     ``.npz``: the same columns as 1-D arrays, and the inputs as 0-d arrays.
     Returns the format.
     """
-    fmt = _format(path, HISTORY_FORMATS, "a time history")
+    fmt = format_for(path, "time history")
     cols = history_arrays(history, H)
     if fmt == "npz":
         arrays: dict[str, NDArray[Any]] = dict(cols)
@@ -137,7 +129,7 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
     object, :func:`outcome_record`, with the refined boundaries.
     Returns the format.
     """
-    fmt = _format(path, OUTCOME_DATA_FORMATS, "an outcome map's data")
+    fmt = format_for(path, "outcome data")
     if first == second:
         raise ValueError("the two swept inputs must differ")
     if fmt == "json":

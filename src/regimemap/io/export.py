@@ -37,7 +37,6 @@ import logging
 import math
 import os
 from collections.abc import Callable
-from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -51,6 +50,7 @@ from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
 from ._numbers import round_sig, text
 from .atomic import atomic_open
+from .formats import format_for, record_formats
 
 __all__ = [
     "FORMATS",
@@ -66,8 +66,8 @@ __all__ = [
     "format_of",
 ]
 
-#: Formats by suffix.
-FORMATS: tuple[str, ...] = ("npz", "csv", "json")
+#: Formats by suffix (:data:`.formats.RECORDS`).
+FORMATS: tuple[str, ...] = record_formats("map data")
 #: Default number of samples along each axis of the grid (npz, csv).
 DEFAULT_RESOLUTION = 401
 #: Samples of k for the curved polylines (mu*, mu**) in the JSON geometry.
@@ -79,15 +79,18 @@ _LABELS = np.array([m.label for m in Mode])  # indexed by code
 
 
 def format_of(path: str | os.PathLike[str], fmt: str | None = None) -> str:
-    """The export format of ``path`` (from ``fmt`` or the suffix); ValueError if unknown."""
+    """The export format of ``path``: ``fmt`` if given, else its suffix (:func:`.formats.format_for`).
+
+    Raises
+    ------
+    ValueError
+        For an unknown ``fmt``, or without it the one :class:`~.formats.SuffixError`.
+    """
     if fmt is None:
-        fmt = Path(path).suffix.lstrip(".").lower()
+        return format_for(path, "map data")
     fmt = fmt.lower().lstrip(".")
     if fmt not in FORMATS:
-        raise ValueError(
-            f"unknown export format {fmt or '(no suffix)'!r} for {os.fspath(path)!r}; "
-            f"use one of {', '.join('.' + f for f in FORMATS)}"
-        )
+        raise ValueError(f"unknown export format {fmt!r}; use one of {', '.join(FORMATS)}")
     return fmt
 
 

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 import os
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -29,6 +28,7 @@ from ..lifetime.results import STATISTICS, threshold_key
 from ._numbers import json_number
 from .atomic import atomic_open
 from .checks import checks_json, checks_lines
+from .formats import format_for, record_formats
 
 if TYPE_CHECKING:
     from ..lifetime.replicates import ChartBand, ClimateBand
@@ -39,7 +39,7 @@ __all__ = ["SAMPLE_FORMATS", "band_json", "chart_band_dict", "chart_json", "form
            "threshold_key", "verdict_word", "write_chart", "write_samples"]
 
 #: Formats of :func:`write_samples` (from the file's suffix).
-SAMPLE_FORMATS: tuple[str, ...] = ("csv", "npz")
+SAMPLE_FORMATS: tuple[str, ...] = record_formats("lifetimes")
 #: Quantiles of the lifetime sliding that are reported.
 _QUANTILES = (0.9, 0.99)
 
@@ -546,9 +546,7 @@ def write_samples(result: LifetimeResult, path: str | os.PathLike[str]) -> str:
     OSError
         If the file cannot be written (nothing is left behind).
     """
-    fmt = Path(path).suffix.lower().lstrip(".")
-    if fmt not in SAMPLE_FORMATS:
-        raise ValueError(f"the samples are written as .csv or .npz (from the file suffix), got {str(path)!r}")
+    fmt = format_for(path, "lifetimes")
     if fmt == "npz":
         arrays: dict[str, np.ndarray[Any, Any]] = {
             "sliding": np.asarray(result.sliding, dtype=np.float64),

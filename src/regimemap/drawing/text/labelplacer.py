@@ -5,8 +5,9 @@ the renderer, at :data:`regimemap.drawing.text.tidy.MEASURE_DPI` (so an SVG or P
 does not depend on the resolution of a PNG), and moves each annotation made by
 :func:`make_label` to the first of its :class:`Candidate` places that is inside
 its axes, clear of every other text and clear of the curves.  Used by the
-lifetime figures and the design sheet; the maps have their own tidy pass
-(:mod:`regimemap.drawing.text.tidy`).
+lifetime figures, the study's and the design sheet; the maps' tidy pass
+(:mod:`regimemap.drawing.text.tidy`) moves each kind of map label with its own movers
+(:mod:`regimemap.drawing.text.relabel`) on the same free space, :class:`Placer`.
 """
 
 from __future__ import annotations
@@ -19,7 +20,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .textboxes import GAP, Box, box_of, box_within, boxes_hit
+from .relabel import Placer
+from .textboxes import GAP, Box, box_of, boxes_hit
 from .tidy import MEASURE_DPI
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -117,26 +119,26 @@ class Candidate:
     va: str
 
 
-class LabelPlacer:
+class LabelPlacer(Placer):
     """Put labels where they meet no other text and no curve, inside their axes.
 
-    Create it once the figure's axes, curves and fixed texts are drawn; the texts already in the
-    figure (:func:`figure_texts`) are taken.  :meth:`avoid` adds curves (lines and the outlines
-    of bars); :meth:`place` moves an annotation (offset in points from a point ``xy``) to the first
-    free one of its candidates.  Measured at :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call
-    :meth:`close` to restore the figure's resolution.
+    The free space is the maps' :class:`~regimemap.drawing.text.relabel.Placer` (the boxes
+    taken and the figure's frame); the candidates are given with each label.  Create it once
+    the figure's axes, curves and fixed texts are drawn; the texts already in the figure
+    (:func:`figure_texts`) are taken.  :meth:`avoid_line` and :meth:`avoid_lines_of` add
+    curves; :meth:`place` moves an annotation (offset in points from a point ``xy``) to the
+    first free one of its candidates.  Measured at
+    :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call :meth:`close` to restore the
+    figure's resolution.
     """
 
     def __init__(self, fig: Figure) -> None:
-        self.fig = fig
         self._dpi = fig.dpi
         fig.set_dpi(MEASURE_DPI)
-        self.renderer: RendererBase = fig.canvas.get_renderer()  # type: ignore[attr-defined]
+        renderer: RendererBase = fig.canvas.get_renderer()  # type: ignore[attr-defined]
         fig.draw_without_rendering()
-        self.taken: list[Box] = [box_of(t, self.renderer, GAP / 2) for t in figure_texts(fig)]
+        super().__init__(fig, renderer, [box_of(t, renderer, GAP / 2) for t in figure_texts(fig)])
         self.points: list[FloatArray] = []
-        fb = fig.bbox
-        self.frame: Box = (fb.x0 + GAP, fb.y0 + GAP, fb.x1 - GAP, fb.y1 - GAP)
 
     def close(self) -> None:
         self.fig.set_dpi(self._dpi)
@@ -208,10 +210,8 @@ class LabelPlacer:
                     t.xyann = c.offset
                     t.set_ha(c.ha)
                     t.set_va(c.va)
-                    b = box_of(t, self.renderer, GAP / 2)
-                    if not (box_within(b, within) and box_within(b, self.frame)):
-                        continue
-                    if any(boxes_hit(b, o) for o in self.taken):
+                    b = self.box(t)
+                    if not self.free(b, within):
                         continue
                     if need_clear and not self._clear_of_lines(b):
                         continue
@@ -228,13 +228,13 @@ class LabelPlacer:
         """Put an axes' legend at the first of ``locs`` clear of texts and curves (else the first)."""
         for loc in locs:
             leg.set_loc(loc)
-            b = box_of(leg, self.renderer, GAP / 2)
+            b = self.box(leg)
             if any(boxes_hit(b, o) for o in self.taken) or not self._clear_of_lines(b):
                 continue
             self.taken.append(b)
             return True
         leg.set_loc(locs[0])
-        self.taken.append(box_of(leg, self.renderer, GAP / 2))
+        self.take(leg)
         return False
 
 
