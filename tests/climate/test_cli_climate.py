@@ -145,7 +145,7 @@ def test_interval_methods_endpoint_sensitivity_and_strict(run_cli):
 
 @pytest.mark.parametrize(("args", "option", "parts"), [
     (["--diagnostics", "nodir/d.png"], "'--diagnostics'", ["folder 'nodir' does not exist"]),
-    (["--diagnostics", "d.txt"], "'--diagnostics'", ["'d.txt' has .txt"]),
+    (["--diagnostics", "d.txt"], "'--diagnostics'", ["unknown file suffix .txt in 'd.txt'"]),
     (["-o", "nodir/r.png"], "'--output'", ["folder 'nodir' does not exist"]),
     (["--threshold", "99.5"], "'--threshold'", ["threshold 99.5 m is above any sea state", "did you mean 99.5%?"]),
     (["--threshold", "30"], "'--threshold'", ["threshold 30 m is at or above every height"]),
