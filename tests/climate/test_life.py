@@ -170,14 +170,14 @@ def test_model_refuses_period_law_with_period():
 
 @pytest.mark.subprocess
 def test_the_chart_gains_the_width_at_the_bands_upper_level(run_cli, tmp_path):
-    p = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "98%"', "climate_replicates = 3")
-    args = ["lifetime", str(p), "--trials", "60", "--seed", "3", "--width", "16:28:3", "--json", "-q"]
+    p = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "95%"', "climate_replicates = 3")
+    args = ["lifetime", str(p), "--trials", "60", "--seed", "3", "--width", "16:64:3", "--json", "-q"]
     one = run_cli([*args, "--jobs", "1"])
     assert one.code in (0, 1), one.output  # 1: the design's width may fail its requirement
     two = run_cli([*args, "--jobs", "2", "--chunk", "50"])
     assert one.stdout == two.stdout
     band = json.loads(one.stdout)["climate_band"]
-    assert band["replicates"] == 3 and band["widths"] == [16, 22, 28]
+    assert band["replicates"] == 3 and band["widths"] == [16, 40, 64]
     assert all(lo <= hi for lo, hi in zip(band["lower"], band["upper"]))
     text = run_cli([*args[:-2], "-q"]).stdout
     assert "at the upper end of the 90 % climate band" in text

@@ -21,7 +21,7 @@ _CLIMATE_KEYS = ("H0_10", "H0_50", "distribution", "shape", "storms_per_year", "
 
 
 def record_design(tmp_path: Path, lifetime_extra: str = "climate_replicates = 4", width: float = 24.0) -> Path:
-    """The example caisson, ``width`` wide (its weight in proportion), under a year of 44007 (98 %
+    """The example caisson, ``width`` wide (its weight in proportion), under a year of 44007 (95 %
     threshold, T1/3 = 1.2 Tz fitted): a cheap record climate whose point ESD at 24 m is far below the
     ESD including the climate's uncertainty (the one-year fit is very uncertain)."""
     shutil.copy(EXCERPT, tmp_path / "buoy.txt.gz")
@@ -31,7 +31,7 @@ def record_design(tmp_path: Path, lifetime_extra: str = "climate_replicates = 4"
         "buoyant_weight = 2312", f"buoyant_weight = {round(2312 * width / 15.0)}")
     kept = [line for line in text[i:j].splitlines() if line.split("=")[0].strip() not in _CLIMATE_KEYS]
     life = ("\n".join(kept) + f"\n{lifetime_extra}\n\n[lifetime.record]\npath = \"buoy.txt.gz\"\n"
-            'threshold = "98%"\nperiod_ratio = 1.2\n\n')
+            'threshold = "95%"\nperiod_ratio = 1.2\n\n')
     p = tmp_path / "site.toml"
     p.write_text(head + life + text[j:])
     return p
@@ -106,7 +106,8 @@ def test_a_record_takes_the_default_replicates_and_zero_is_a_warned_choice(tmp_p
     assert spec.climate_replicates == DEFAULT_REPLICATES == 50
     rec = run_lifetime(record_design(tmp_path, "climate_replicates = 0"), trials=40, seed=9)
     assert rec.band is None and rec.result.checks[0].name == "expected sliding distance"
-    assert [n.code for n in rec.notices] == ["climate-uncertainty-not-counted"]
+    codes = [n.code for n in rec.notices]  # the one-year fit's own warnings come first
+    assert codes.count("climate-uncertainty-not-counted") == 1 and set(codes) <= {"fit", "climate-uncertainty-not-counted"}
 
 
 @pytest.mark.subprocess
@@ -148,7 +149,7 @@ def test_caisson_names_the_record_and_judges_the_band_as_lifetime_does(run_cli, 
     text = run_cli(["caisson", str(p), "--check"])
     assert text.code == 1, text.output
     lines = text.stdout.rstrip().splitlines()
-    assert "buoy.txt.gz (peaks over the 98 % quantile" in text.stdout and "fitted: GPD" in text.stdout
+    assert "buoy.txt.gz (peaks over the 95 % quantile" in text.stdout and "fitted: GPD" in text.stdout
     assert "90 % climate band:" in text.stdout
     assert lines[-2].startswith("FAIL  ESD including the climate's uncertainty")
     assert lines[-1].startswith("verdict: FAIL (1 of 3")
