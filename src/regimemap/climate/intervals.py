@@ -3,8 +3,9 @@
 numpy and scipy.  Three ways to say how uncertain a record's ``R``-year value is; every one
 includes the uncertainty of the storm rate (how many storms ten years hold is itself uncertain).
 
-``posterior`` (the default: its coverage is the nearest to nominal, measured on records of
-known truth -- docs/guide/wave-record.md)
+``posterior``
+    The default: its coverage is the nearest to nominal, measured on records of known truth
+    (docs/guide/calibration.md).
     A Bayesian posterior computed on a grid, exact to the grid's resolution (no Markov chain).
     The prior is flat in the location, the logarithm of the scale and the shape:
     :math:`\\pi(\\sigma, \\xi) \\propto 1/\\sigma` with :math:`\\xi` uniform on
