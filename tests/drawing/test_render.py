@@ -252,7 +252,7 @@ def test_pdf_output_has_truetype_fonts_and_no_raster(tmp_path):
 
 def test_save_figure_rejects_unknown_formats_and_leaves_nothing(tmp_path):
     fig = render_map(run_map(Parameters(3.0, 0.4)), dpi=40)
-    with pytest.raises(ValueError, match="png, svg, pdf"):
+    with pytest.raises(ValueError, match=r"unknown file suffix \.jpg .*use \.png, \.svg or \.pdf"):
         save_figure(fig, tmp_path / "m.jpg")
     with pytest.raises(ValueError, match="png, svg, pdf"):
         save_figure(fig, tmp_path / "m.png", fmt="gif")
