@@ -2,17 +2,14 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from ..climate.analysis import ClimateResult, Sensitivity
 from ._numbers import json_number
 
-if TYPE_CHECKING:
-    from ..lifetime.replicates import ChartBand, ClimateBand
-
-__all__ = ["climate_band_json", "climate_band_lines", "climate_json", "format_climate", "parameter_text",
+__all__ = ["climate_json", "format_climate", "parameter_text",
            "sensitivity_json"]
 
 _NAMES = {"gpd": "generalised Pareto", "weibull": "Weibull (shape fixed)", "gumbel": "Gumbel",
@@ -161,44 +158,3 @@ def format_climate(result: ClimateResult, source: str | None = None,
                    else "too few storms to fit")
             lines.append(f"  u = {u:6.3f} m {f'({100 * q:g} %)':10s}{n:5d} storms  {got}")
     return "\n".join(lines)
-
-
-def climate_band_json(band: ClimateBand) -> dict[str, Any]:
-    """``{level, lower, upper, replicates, expected_sliding, std_error, trials, seed}``: the ESD
-    over the replicate climates (the climate's uncertainty included) and its band [m]."""
-    return {"level": json_number(band.level), "lower": json_number(band.lower),
-            "upper": json_number(band.upper), "replicates": band.replicates,
-            "expected_sliding": json_number(band.expected_sliding), "std_error": json_number(band.std_error),
-            "trials": band.trials, "seed": band.seed}
-
-
-def climate_band_lines(band: ClimateBand) -> list[str]:
-    """The band for people: two lines."""
-    return [f"ESD with the climate's uncertainty {band.expected_sliding:.3g} m ± {band.std_error:.2g} m "
-            f"({band.replicates} replicate climates of the record x {band.trials} lifetimes)",
-            f"  {100 * band.level:g} % climate band: {band.lower:.3g} m to {band.upper:.3g} m"]
-
-
-def chart_band_json(band: ChartBand) -> dict[str, Any]:
-    """``{level, replicates, trials, seed, widths, lower, upper, width_for_target}``: the design
-    chart under the replicate climates -- the band's curves at each width [m] and the narrowest
-    width whose ESD at the band's upper level meets the target (``null``: none does)."""
-    return {"level": json_number(band.level), "replicates": band.replicates, "trials": band.trials,
-            "seed": band.seed, "target": json_number(band.target),
-            "widths": [json_number(float(w)) for w in band.widths],
-            "lower": [json_number(float(x)) for x in band.lower],
-            "upper": [json_number(float(x)) for x in band.upper],
-            "width_for_target": (None if band.width_for_target is None
-                                 else json_number(band.width_for_target))}
-
-
-def chart_band_lines(band: ChartBand) -> list[str]:
-    """The chart's climate band for people: the width for the target at the band's upper level."""
-    top = f"{100 * (0.5 + 0.5 * band.level):g} %"
-    head = (f"at the upper end of the {100 * band.level:g} % climate band ({top} quantile of "
-            f"{band.replicates} replicate climates x {band.trials} lifetimes per width):")
-    w = band.width_for_target
-    if w is None:
-        return [head, f"  no width of the chart has ESD <= {band.target:g} m"]
-    return [head, f"  width for ESD <= {band.target:g} m: {w:.2f} m "
-                  "(interpolated between the chart's widths)"]
