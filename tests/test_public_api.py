@@ -133,6 +133,19 @@ def test_reading_a_record_does_not_import_scipy():
     assert out.stdout.strip() == "False"
 
 
+@pytest.mark.subprocess
+def test_a_lifetime_without_a_record_does_not_import_scipy_stats():
+    """Goda's climate and the lifetime engine need scipy.special only: scipy.stats and
+    scipy.optimize (over a second of imports) wait for a fit to data."""
+    import subprocess
+    import sys
+
+    code = ("import regimemap.workflows.lifetime, regimemap.workflows.study, regimemap.io.design, sys\n"
+            "print(sorted(m for m in ('scipy.stats', 'scipy.optimize') if m in sys.modules))\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
+
+
 @pytest.mark.parametrize("package", sorted(PUBLIC_API))
 def test_dir_lists_every_public_name(package):
     """``dir(package)`` (what IDEs and tab completion show) lists the whole ``__all__``, lazy names too."""

@@ -24,7 +24,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy import optimize, stats
 
 __all__ = ["DISTRIBUTIONS", "FITTED_DISTRIBUTIONS", "Climate"]
 
@@ -251,6 +250,8 @@ def _fitted_cdf(distribution: str, xi: float, y: FloatArray) -> FloatArray:
 
 def _fit_gumbel(x: FloatArray) -> tuple[float, float]:
     """Gumbel maximum likelihood (``scipy.stats.gumbel_r.fit``): ``(A, B)``."""
+    from scipy import stats  # on first use: scipy.stats takes a second to import
+
     B, A = stats.gumbel_r.fit(x)
     return float(A), float(B)
 
@@ -263,6 +264,8 @@ def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
 def _fit_weibull(x: FloatArray, k: float) -> tuple[float, float]:
     """Weibull maximum likelihood with ``k`` given: the profile over ``B`` on a grid, then Brent's
     bounded search (``scipy.optimize.minimize_scalar``) around its best point: ``(A, B)``."""
+    from scipy import optimize  # on first use
+
     spread = float(x[-1] - x[0])
     x0 = float(x[0])
     # B = x0 - exp(t): t from a millionth of the spread to a hundred spreads below the minimum
