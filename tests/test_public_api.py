@@ -134,16 +134,24 @@ def test_reading_a_record_does_not_import_scipy():
 
 
 @pytest.mark.subprocess
-def test_a_lifetime_without_a_record_does_not_import_scipy_stats():
+def test_a_lifetime_without_a_record_does_not_import_scipy_stats(tmp_path):
     """Goda's climate and the lifetime engine need scipy.special only: scipy.stats and
     scipy.optimize (over a second of imports) wait for a fit to data."""
     import subprocess
     import sys
 
-    code = ("import regimemap.workflows.lifetime, regimemap.workflows.study, regimemap.io.design, sys\n"
-            "print(sorted(m for m in ('scipy.stats', 'scipy.optimize') if m in sys.modules))\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
-    assert out.stdout.strip() == "[]"
+    design = tmp_path / "goda.toml"
+    subprocess.run([sys.executable, "-m", "regimemap", "caisson", "--example"], check=True,
+                   stdout=design.open("w"))
+    code = ("import atexit, sys\n"
+            "atexit.register(lambda: print(sorted(m for m in ('scipy.stats', 'scipy.optimize')\n"
+            "                                     if m in sys.modules), file=sys.stderr))\n"
+            "from regimemap.cli import console_main\n"
+            f"sys.argv = ['regimemap', 'lifetime', {str(design)!r}, '--trials', '20', '--jobs', '1']\n"
+            "console_main()\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert out.stderr.strip().splitlines()[-1] == "[]", out.stderr
 
 
 @pytest.mark.parametrize("package", sorted(PUBLIC_API))
