@@ -10,7 +10,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 DOCS_STAMP := $(VENV)/.docs-installed
 
-.PHONY: all venv figures test test-fast test-stress test-portable lint bench docs clean distclean
+.PHONY: all venv figures test test-fast test-deep test-stress test-portable lint bench docs clean distclean
 
 all: figures
 
@@ -43,18 +43,28 @@ figures: $(STAMP)
 # `make test`: every test and doctest, on every core (pytest-xdist; worksteal evens out the long
 # ones).  `make test-fast`: the edit loop -- engine, io, validation, layers -- without the tests
 # marked render, subprocess or slow (pyproject.toml lists the markers).
+# `make test-deep`: the deep tier (the long reference integrations, the solver sweeps over the
+# whole plane, the full figure sets and the README run), which the other two leave out: each is
+# checked in `make test` on fewer points or fewer commands, and CI runs the tier after `make test`.
 # `make test-stress`: the stress tier (Ctrl-C 1-5 times at random moments, 50 runs across the
-# commands; a few minutes), which the other two leave out; CI runs it after `make test`.
-TEST_FAST := not render and not subprocess and not slow and not stress
+# commands; a few minutes), which the other two leave out; CI runs it after `make test-deep`.
+TEST_FAST := not render and not subprocess and not slow and not stress and not deep
+# Python's bytecode cache stays on for the tests whatever the shell says (PYTHONDONTWRITEBYTECODE):
+# without it every xdist worker rewrites the asserts of every test module and every `regimemap`
+# a test starts compiles the package again -- ten seconds a worker before the first test.
+PYTEST := env -u PYTHONDONTWRITEBYTECODE $(BIN)/python -m pytest
 
 test: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "not stress"
+	$(PYTEST) -q -n auto --dist worksteal -m "not stress and not deep"
 
 test-fast: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto --dist worksteal -m "$(TEST_FAST)"
+	$(PYTEST) -q -n auto --dist worksteal -m "$(TEST_FAST)"
+
+test-deep: $(STAMP)
+	$(PYTEST) -q -n auto --dist worksteal -m deep
 
 test-stress: $(STAMP)
-	$(BIN)/python -m pytest -q -n auto --dist worksteal -m stress
+	$(PYTEST) -q -n auto --dist worksteal -m stress
 
 # `make test-portable`: the tests marked portable (pinned numbers, the same bits within a run) once
 # per numpy dispatch level of this CPU above the baseline, the highest dropped first
