@@ -208,3 +208,19 @@ def test_a_study_target_section_with_a_record_has_its_band_and_width_at_the_uppe
     assert row.required_width == row.width and row.band is not None
     assert 0.0 <= row.band[0] <= row.band[1] and np.isfinite(row.band[1])
     assert row.required_width_upper is not None and 16.0 <= row.required_width_upper <= 34.0
+
+
+@pytest.mark.slow
+def test_strict_refuses_the_record_s_warnings_before_the_run(run_cli, tmp_path):
+    """``--strict`` of ``lifetime`` and ``caisson`` refuses what ``climate --strict`` refuses: the
+    warnings of the ``[lifetime.record]`` (here the one-year fit's end point close to its largest
+    storm); without it they are warnings on standard error and the run goes on."""
+    p = record_design(tmp_path)
+    warned = run_cli(["lifetime", str(p), "--trials", "20", "--jobs", "1", "-q"])
+    assert warned.code == 0 and "warning:" in warned.stderr and "upper end point" in warned.stderr
+    for command in (["lifetime", str(p), "--trials", "20", "--jobs", "1", "-q"], ["caisson", str(p)]):
+        out = run_cli([*command, "--strict"])
+        assert out.code == 2 and out.stdout == "", (command, out.output)
+        (line,) = out.error_lines()
+        assert "upper end point" in line and "--strict refuses the record's warnings" in line, line
+        assert "'DESIGN.toml'" in line

@@ -23,17 +23,21 @@ if TYPE_CHECKING:  # pragma: no cover
     from regimemap.waves import CaissonAnalysis
     from regimemap.workflows.caisson import CaissonRecord
 
-__all__ = ["STRICT_HELP", "caisson_record", "check_plausible"]
+__all__ = ["STRICT_HELP", "STRICT_RECORD_HELP", "caisson_record", "check_plausible"]
 
 STRICT_HELP = ("Refuse a design file whose values are valid but implausible for a breakwater "
                "(likely unit slips: a depth over 100 m, a section heavier than 30 kN/m^3 ...); "
                "without it they are warnings on standard error.")
+#: ``--strict`` of the commands that run the lifetime (``lifetime``, ``caisson``).
+STRICT_RECORD_HELP = STRICT_HELP + " With a [lifetime.record], its warnings too (quality control, fit)."
 
 
 def _refusal(notices: Sequence[Notice], source: str, param_hint: str) -> click.BadParameter:
-    """The usage error of ``--strict``: the first implausible value and how many more."""
+    """The usage error of ``--strict``: the first implausible value (or warning of the design's
+    wave record) and how many more."""
     more = f" (and {len(notices) - 1} more)" if len(notices) > 1 else ""
-    return click.BadParameter(f"{source}: {notices[0].message}{more}; --strict refuses implausible values",
+    what = "implausible values" if notices[0].code == "implausible-value" else "the record's warnings"
+    return click.BadParameter(f"{source}: {notices[0].message}{more}; --strict refuses {what}",
                               param_hint=param_hint)
 
 

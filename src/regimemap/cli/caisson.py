@@ -10,7 +10,7 @@ import click
 from ._check import check_option, exit_on_failure
 from ._common import import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE, read_design_file
-from ._plausible import STRICT_HELP, caisson_record
+from ._plausible import STRICT_RECORD_HELP, caisson_record
 from ._writing import checked_format, writing
 
 if TYPE_CHECKING:
@@ -29,7 +29,7 @@ __all__ = ["caisson_cmd"]
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
               help="Also write a one-page design sheet (.pdf, .svg or .png), atomically.")
-@click.option("--strict", is_flag=True, help=STRICT_HELP)
+@click.option("--strict", is_flag=True, help=STRICT_RECORD_HELP)
 @check_option
 def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool,
                 check: bool) -> None:

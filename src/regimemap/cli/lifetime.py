@@ -20,7 +20,7 @@ from ._check import check_option, exit_on_failure, refuse_notices
 from ._common import RunError, echo_notices, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._lifetime_options import chart_options, lifetime_options, report_options, run_options
-from ._plausible import STRICT_HELP
+from ._plausible import STRICT_RECORD_HELP
 from ._writing import checked_format, distinct_files, write_files
 
 if TYPE_CHECKING:
@@ -38,7 +38,7 @@ __all__ = ["lifetime_cmd"]
 @chart_options
 @report_options
 @run_options
-@click.option("--strict", is_flag=True, help=STRICT_HELP)
+@click.option("--strict", is_flag=True, help=STRICT_RECORD_HELP)
 @check_option
 def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int | None,
                  widths: list[float] | None, target: float | None, tolerance: float | None, as_json: bool,
@@ -161,7 +161,7 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
     """The design file read for the workflow: a file it refuses, or (``--strict``) an implausible
     value, is a usage error naming it; the implausible values are warnings otherwise."""
     from ..io.design import DesignFileError
-    from ..workflows.lifetime import read_lifetime_design
+    from ..workflows.lifetime import RECORD_WARNINGS, read_lifetime_design
 
     try:
         inputs = read_lifetime_design(design, years)
@@ -169,6 +169,8 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
         raise click.BadParameter(str(exc), param_hint="'DESIGN.toml'") from None
     if strict:
         refuse_notices(inputs.notices, "implausible-value", "--strict refuses implausible values",
+                       "'DESIGN.toml'")
+        refuse_notices(inputs.notices, RECORD_WARNINGS, "--strict refuses the record's warnings",
                        "'DESIGN.toml'")
     echo_notices(inputs.notices)
     return inputs

@@ -18,7 +18,11 @@ if TYPE_CHECKING:
     from ..io.design import Design, LifetimeSpec
     from ..lifetime import Caisson, LifetimeModel
 
-__all__ = ["LifetimeDesign", "read_lifetime_design"]
+__all__ = ["RECORD_WARNINGS", "LifetimeDesign", "read_lifetime_design"]
+
+#: The codes of the warnings of a ``[lifetime.record]``: its quality control and its fit
+#: (``--strict`` refuses them, as ``regimemap climate --strict`` does).
+RECORD_WARNINGS = ("record-quality", "fit")
 
 
 @dataclass(frozen=True)

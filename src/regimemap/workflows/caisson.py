@@ -240,7 +240,8 @@ def run_caisson(design: Design | str | Path, *, strict: bool = False, sheet: boo
     design : Design, str or Path
         A design, or the path of a design file (:func:`regimemap.io.design.read_design`).
     strict : bool
-        Refuse implausible values (likely unit slips) instead of returning them as notices.
+        Refuse implausible values (likely unit slips), and the warnings of a ``[lifetime.record]``
+        (its quality control and fit), instead of returning them as notices.
     sheet : bool
         Also compute what the design sheet draws besides the report: the loaded map of
         panel (d) (:func:`regimemap.maps.caisson.sheet_map`).  The requirements do not
@@ -289,7 +290,7 @@ def run_caisson(design: Design | str | Path, *, strict: bool = False, sheet: boo
     if sheet:
         view, data = sheet_map(report)
     if d.lifetime is not None:
-        life = _lifetime(d, jobs, notices)
+        life = _lifetime(d, jobs, notices, strict)
         checks += tuple(life.result.checks)
         notices += tuple(n for n in life.notices if n.code != "implausible-value")
     return CaissonRecord(design=d, report=report, numbers=CaissonNumbers.of(caisson_numbers(report)),
@@ -297,18 +298,27 @@ def run_caisson(design: Design | str | Path, *, strict: bool = False, sheet: boo
                          lifetime_run=life)
 
 
-def _refusal(d: Design, notices: tuple[Notice, ...]) -> str:
+def _refusal(d: Design, notices: tuple[Notice, ...], what: str = "implausible values") -> str:
     more = f" (and {len(notices) - 1} more)" if len(notices) > 1 else ""
-    return f"{d.source}: {notices[0].message}{more}; strict refuses implausible values"
+    return f"{d.source}: {notices[0].message}{more}; strict refuses {what}"
 
 
-def _lifetime(d: Design, jobs: int | None, notices: tuple[Notice, ...]) -> LifetimeRecord:
+def _lifetime(d: Design, jobs: int | None, notices: tuple[Notice, ...], strict: bool) -> LifetimeRecord:
     """The sliding over the design life of ``[lifetime]`` (with a record, under its replicate
-    climates too), judged against its requirements."""
+    climates too), judged against its requirements; with ``strict`` the warnings of its
+    ``[lifetime.record]`` (codes ``record-quality`` and ``fit``) are refused before the run."""
     from ..lifetime import available_cores
+    from ._lifetime_design import RECORD_WARNINGS, read_lifetime_design
     from .lifetime import run_lifetime
 
     try:
-        return run_lifetime(d, jobs=available_cores() if jobs is None else jobs)
+        inputs = read_lifetime_design(d)
+    except ValueError as exc:
+        raise CaissonError(str(exc), notices) from None
+    warned = tuple(n for n in inputs.notices if n.code in RECORD_WARNINGS)
+    if strict and warned:
+        raise ImplausibleDesignError(_refusal(d, warned, "the record's warnings"), warned)
+    try:
+        return run_lifetime(inputs, jobs=available_cores() if jobs is None else jobs)
     except ValueError as exc:
         raise CaissonError(str(exc), notices) from None

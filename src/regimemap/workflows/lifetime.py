@@ -27,7 +27,7 @@ import numpy as np
 
 from ..lifetime.finite import quiet_arithmetic, require_finite
 from ..lifetime.results import STATISTICS
-from ._lifetime_design import LifetimeDesign, read_lifetime_design
+from ._lifetime_design import RECORD_WARNINGS, LifetimeDesign, read_lifetime_design
 from ._record import Field, Notice, Record
 
 if TYPE_CHECKING:
@@ -36,7 +36,7 @@ if TYPE_CHECKING:
     from ..lifetime import Caisson, DesignChart, LifetimeModel, LifetimeResult, Requirements
     from ..lifetime.replicates import ChartBand, ClimateBand
 
-__all__ = ["BAND_LEVEL", "ChartRecord", "LifetimeDesign", "LifetimeRecord", "Progress",
+__all__ = ["BAND_LEVEL", "RECORD_WARNINGS", "ChartRecord", "LifetimeDesign", "LifetimeRecord", "Progress",
            "read_lifetime_design", "run_chart", "run_lifetime"]
 
 #: Level of the ESD's climate band.
