@@ -171,6 +171,35 @@ def test_a_key_of_the_base_is_refused_at_its_line_in_the_base(tmp_path):
     assert "[lifetime] shape" in str(info.value)
 
 
+_RECORD = '\n[lifetime.record]\npath = "buoy.txt"\nthreshold = "95%"\ngap_hours = -3\n\n'
+_CLIMATE = ("H0_10 = 5.0 ", "H0_50 = 6.3 ", 'distribution = "weibull"', "shape = 2.0 ")
+
+
+def _with_record(design: str) -> str:
+    """The example design with a ``[lifetime.record]`` table (its gap_hours out of range) in place
+    of its climate."""
+    kept = "\n".join(line for line in design.splitlines() if not line.startswith(_CLIMATE))
+    return kept.replace("\n[lifetime.errors]", _RECORD + "[lifetime.errors]")
+
+
+@pytest.mark.parametrize("where", ["base", "inline"])
+def test_a_key_of_a_record_table_is_refused_at_its_own_line(tmp_path, where):
+    """A key of ``[lifetime.record]`` is named at its own line (in the base file or in the study),
+    not at the line of its table or of ``[lifetime]``."""
+    path = _study(tmp_path)
+    if where == "base":
+        (tmp_path / "goda.toml").write_text(_with_record(example_design_text()))
+        file, text = tmp_path / "goda.toml", (tmp_path / "goda.toml").read_text()
+    else:
+        path.write_text(path.read_text().replace('base = "goda.toml"\n', _with_record(example_design_text())))
+        file, text = path, path.read_text()
+    line = text.splitlines().index("gap_hours = -3") + 1
+    with pytest.raises(StudyFileError) as info:
+        read_study(path)
+    assert str(info.value).startswith(f"{file}, line {line}: "), str(info.value)
+    assert "[lifetime.record] gap_hours = -3" in str(info.value)
+
+
 @pytest.mark.parametrize(("text", "says"), [
     ('seed = 1\nsection = 3\n', "no [lifetime] table"),
     ('seed = 1\nbase = "missing.toml"\n', "cannot read the design file"),

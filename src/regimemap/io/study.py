@@ -277,6 +277,7 @@ def _base_tables(data: Mapping[str, Any], text: str, source: str, where: Where) 
                 if table == "lifetime" and key == "record" and isinstance(value, dict) and "path" in value:
                     value = {**value, "path": str(base_path.parent / str(value["path"]))}
                 merged.set(table, key, value, Origin(str(base_path), key_line(base_text, table, key)))
+                _sub_origins(merged, table, key, value, str(base_path), base_text)
     for table in DESIGN_TABLES:
         if table in data:
             if not isinstance(data[table], dict):
@@ -284,10 +285,20 @@ def _base_tables(data: Mapping[str, Any], text: str, source: str, where: Where) 
             merged.set(table, None, None, Origin(source, key_line(text, table)))
             for key, value in data[table].items():
                 merged.set(table, key, value, Origin(source, key_line(text, table, key)))
+                _sub_origins(merged, table, key, value, source, text)
     if "lifetime" not in merged.tables:
         raise where.fail(None, "no [lifetime] table (the wave climate and the options of the lifetime "
                          "simulation), inline or in the base design file")
     return merged, base_text
+
+
+def _sub_origins(merged: Merged, table: str, key: str, value: object, file: str, text: str) -> None:
+    """The line of each key of a table within a table (``[lifetime.record] threshold``), so that the
+    design reader's message about one of them names its own line, not the table's."""
+    if isinstance(value, dict):
+        inner = f"{table}.{key}"
+        for sub in value:
+            merged.origin[(inner, str(sub))] = Origin(file, key_line(text, inner, str(sub)))
 
 
 def _section(where: Where, i: int, sec: Mapping[str, Any], base: Merged,

@@ -197,7 +197,7 @@ class Merged:
                 for k, x in value.items():
                     lines.append(f"{json.dumps(str(k)) if not re.match(r'^[A-Za-z0-9_-]+$', k) else k} = "
                                  f"{toml_value(x)}")
-                    where[len(lines)] = self.origin[(table, key)]
+                    where[len(lines)] = self.origin.get((f"{table}.{key}", str(k)), self.origin[(table, key)])
         return "\n".join(lines) + "\n", where
 
 
