@@ -24,7 +24,6 @@ __all__ = [
     "block_options",
     "min_rotation_option",
     "check_output_file",
-    "echo_notices",
     "option_errors",
 ]
 

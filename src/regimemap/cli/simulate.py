@@ -15,11 +15,10 @@ import click
 
 from ..io.formats import FIGURE_FORMATS
 from ._check import CHECK_HELP, exit_on_failure
-from ._common import check_kprime_crest, import_matplotlib
+from ._common import check_kprime_crest, echo_notices, import_matplotlib
 from ._dynamics_options import (
     block_options,
     check_output_file,
-    echo_notices,
     min_rotation_option,
     option_errors,
 )
