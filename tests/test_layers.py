@@ -271,6 +271,7 @@ DRAWING_MAY_IMPORT = {
     "mechanics.validation.check_gamma": "input range check, raises ValueError",
     "mechanics.validation.check_resolution": "input range check, raises ValueError",
     "lifetime.workers.worker_pool": "the one process pool, which runs the figures (no physics)",
+    "lifetime.workers.available_cores": "the pool's default number of workers (no physics)",
     "maps.mapdata.MapData": "a computed map, a record",
     "maps.mapdata.CurveData": "a computed boundary curve, a record",
     "maps.caisson.CaissonReport": "a computed caisson analysis, a record",

@@ -79,7 +79,7 @@ def test_the_table_the_csv_and_the_json(run_cli, tmp_path):
 @pytest.mark.parametrize(("args", "says"), [
     (["--example", "x.toml"], "--example prints the example study and takes no STUDY.toml"),
     ([], "missing STUDY.toml"),
-    (["STUDY", "-o", "t.xlsx"], "the table is written as .csv or .nc"),
+    (["STUDY", "-o", "t.xlsx"], "t.xlsx'; use .csv or .nc for the table, .png, .svg or .pdf for the figure"),
     (["STUDY", "--scheduler", "tcp://h:1", "--jobs", "2"], "--jobs and --scheduler ADDRESS exclude"),
     (["STUDY", "--section", "nowhere"], "'nowhere' is not a section of the study; accepted: a, b"),
     (["STUDY", "--figure", "map"], "Invalid value for '--figure'"),

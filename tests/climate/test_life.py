@@ -1,4 +1,5 @@
-"""A record's fit as the lifetime's climate; the ESD's climate band; [lifetime.record] in the design file."""
+"""A record's fit, and observed annual maxima, as the lifetime's climate; the ESD's climate band;
+[lifetime.record] in the design file."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ import pytest
 from scipy import stats
 
 from regimemap.climate.fits import Fit
-from regimemap.climate.life import climate_of
+from regimemap.climate.life import climate_of, climate_of_maxima
 from regimemap.io.design import DesignFileError, example_design_text, read_design
 from regimemap.lifetime import Climate
 from regimemap.lifetime.replicates import climate_band
@@ -19,6 +20,36 @@ from regimemap.lifetime.replicates import climate_band
 DATA = Path(__file__).parent / "data"
 EXCERPT = DATA / "ndbc44007_1996_hs_tz.txt.gz"
 CLIMATE_KEYS = ("H0_10", "H0_50", "distribution", "shape", "storms_per_year", "annual_maxima")
+
+
+def test_gumbel_maximum_likelihood_matches_scipy():
+    x = stats.gumbel_r.rvs(loc=3.0, scale=0.8, size=40, random_state=np.random.default_rng(3))
+    c = climate_of_maxima(x, "gumbel")
+    loc, scale = stats.gumbel_r.fit(x)
+    assert (c.location, c.scale) == pytest.approx((loc, scale), rel=1e-5)
+
+
+@pytest.mark.parametrize("k", [1.5, 2.0, 3.0])
+def test_weibull_maximum_likelihood_matches_scipy(k):
+    x = stats.weibull_min.rvs(k, loc=1.5, scale=2.0, size=60, random_state=np.random.default_rng(7))
+    c = climate_of_maxima(x, "weibull", k)
+    _, loc, scale = stats.weibull_min.fit(x, fc=k)
+
+    def nll(loc_: float, scale_: float) -> float:
+        return float(-stats.weibull_min.logpdf(x, k, loc=loc_, scale=scale_).sum())
+
+    # the same optimum, or a better one than scipy's numerical search
+    assert nll(c.location, c.scale) <= nll(loc, scale) + 1e-6
+    assert (c.location, c.scale) == pytest.approx((loc, scale), rel=1e-3, abs=1e-3)
+
+
+def test_maxima_fit_refusals():
+    with pytest.raises(ValueError, match="at least three"):
+        climate_of_maxima([1.0, 2.0])
+    with pytest.raises(ValueError, match="all equal"):
+        climate_of_maxima([2.0, 2.0, 2.0])
+    with pytest.raises(ValueError, match="k > 1"):
+        climate_of_maxima([1.0, 2.0, 3.0], "weibull", 1.0)
 
 
 @pytest.mark.parametrize("fit", [

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from regimemap.climate.life import climate_of_maxima
 from regimemap.io.design import (
     ERROR_FACTORS,
     LIFETIME_KEYS,
@@ -145,9 +146,9 @@ def test_annual_maxima_and_other_climates() -> None:
     text = edit(EXAMPLE, "H0_10 = 5.0", f"annual_maxima = {maxima}")
     text = edit(text, "H0_50 = 6.3", "")
     c = parse_design(text).lifetime_model().climate
-    assert c == Climate.fit_annual_maxima(maxima, "weibull", 2.0)
+    assert c == climate_of_maxima(maxima, "weibull", 2.0)
     gumbel = edit(text, 'distribution = "weibull"', 'distribution = "gumbel"')
-    assert parse_design(gumbel).lifetime_model().climate == Climate.fit_annual_maxima(maxima, "gumbel")
+    assert parse_design(gumbel).lifetime_model().climate == climate_of_maxima(maxima, "gumbel")
     poisson = edit(EXAMPLE, "H0_10 = 5.0", "H0_10 = 5.0\nstorms_per_year = 4")
     c = parse_design(poisson).lifetime_model().climate
     assert c.storms_per_year == 4.0 and round(c.return_value(50), 12) == 6.3

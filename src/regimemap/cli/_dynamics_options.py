@@ -13,28 +13,19 @@ import click
 from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
 from ..dynamics.options import OptionError
 from ..dynamics.pulses import SHAPES
-from ..io.formats import FIGURE_FORMATS, record_formats
 from ._common import ParamType, echo_notices, gamma_option, kprime_option, output_path
 from ._writing import checked_format
 from .atlas import Values
 
 __all__ = [
-    "FIGURE_FORMATS",
-    "DATA_FORMATS",
     "InputNumber",
     "values_type",
     "input_option",
     "block_options",
     "min_rotation_option",
     "check_output_file",
-    "echo_notices",
     "option_errors",
 ]
-
-#: The formats of a run's time history (:func:`regimemap.io.formats.record_formats`; its figures':
-#: :data:`~regimemap.io.formats.FIGURE_FORMATS`).
-DATA_FORMATS = record_formats("time history")
-
 
 class InputNumber(ParamType):
     """One number in the range of an input of :data:`regimemap.dynamics.limits.INPUT_LIMITS`."""
@@ -142,13 +133,13 @@ def min_rotation_option() -> Callable[[Any], Any]:
              "phase counts, however small.")
 
 
-def check_output_file(path: str, formats: Sequence[str], param: str, what: str) -> str:
-    """The format of output ``path`` (its suffix, one of ``formats``), its folder writable.
+def check_output_file(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param: str) -> str:
+    """The format of output ``path`` for ``record`` (a key of :data:`regimemap.io.formats.RECORDS`,
+    or its parts: what the file holds and its suffixes), its folder writable.
 
-    A usage error naming ``param`` otherwise (:func:`~regimemap.cli._writing.checked_format`);
-    ``what`` says what the file holds.
+    A usage error naming ``param`` otherwise (:func:`~regimemap.cli._writing.checked_format`).
     """
-    fmt = checked_format(path, ((what, formats),), f"'{param}'")
+    fmt = checked_format(path, record, f"'{param}'")
     output_path(path, param)
     return fmt
 

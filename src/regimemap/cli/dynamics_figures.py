@@ -14,8 +14,8 @@ from typing import TYPE_CHECKING
 
 import click
 
+from ..io.formats import FIGURE_FORMATS
 from ._common import import_matplotlib, output_dir, report_written
-from ._dynamics_options import FIGURE_FORMATS
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -107,5 +107,5 @@ def _save(fig: Figure, paths: list[Path]) -> None:
 
     for path in paths:
         with writing(path):
-            save_figure(fig, path, path.suffix[1:])
+            save_figure(fig, path)
         report_written(path)

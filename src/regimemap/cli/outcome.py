@@ -11,24 +11,23 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from contextlib import AbstractContextManager
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import record_formats
-from ._common import import_matplotlib
+from ..io.formats import FIGURE_FORMATS, record_formats
 from ._dynamics_options import (
-    FIGURE_FORMATS,
     block_options,
     check_output_file,
     input_option,
     min_rotation_option,
     option_errors,
 )
-from ._writing import writing
+from ._writing import distinct_files, write_files
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
+
     from ..workflows.outcome import OutcomeRecord
 
 __all__ = ["outcome_cmd"]
@@ -103,7 +102,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
         # the swept inputs, in the order given on the command line (click fills ctx.params in that order)
         opts = map_options(values, list(click.get_current_context().params), pulse,
                            dimensionless=dimensionless)
-    kinds = _check_outputs(outputs)
+    _check_outputs(outputs)
     with option_errors():
         opts.check_steps()
     _note(quiet, f"simulating {opts.n_runs} runs ({len(opts.axis(0))} x {len(opts.axis(1))}) ...")
@@ -113,7 +112,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     from ..io.dynamics import outcome_summary
 
     _note(quiet, "\n".join(outcome_summary(record)))
-    _write(record, outputs, kinds)
+    _write(record, outputs)
     click.echo("\n".join(outputs))
 
 
@@ -133,29 +132,21 @@ def _bars(quiet: bool) -> Callable[[int, str], AbstractContextManager[Callable[[
     return bars
 
 
-def _check_outputs(outputs: tuple[str, ...]) -> list[str]:
-    """The format of each output file, each different and in a writable folder."""
-    if len({str(Path(p).resolve()) for p in outputs}) < len(outputs):
-        raise click.BadParameter("the same file is given twice", param_hint="'-o' / '--output'")
-    return [check_output_file(p, FIGURE_FORMATS + _DATA_FORMATS, "--output", "an outcome map")
-            for p in outputs]
+def _check_outputs(outputs: tuple[str, ...]) -> None:
+    """Each output file of a known format, each different and in a writable folder."""
+    distinct_files(outputs, "'-o' / '--output'")
+    for p in outputs:
+        check_output_file(p, (("an outcome map", FIGURE_FORMATS + _DATA_FORMATS),), "--output")
 
 
-def _write(record: OutcomeRecord, outputs: tuple[str, ...], kinds: list[str]) -> None:
+def _write(record: OutcomeRecord, outputs: tuple[str, ...]) -> None:
     """Write the map's data (.npz, .csv, .json) and draw its figure once (.png, .svg, .pdf)."""
-    fig = None
-    for path, kind in zip(outputs, kinds):
-        with writing(path):
-            if kind in _DATA_FORMATS:
-                from ..io.dynamics import write_outcome_record
+    from ..io.dynamics import write_outcome_record
 
-                write_outcome_record(path, record)
-                continue
-            if fig is None:
-                import_matplotlib()
-                from ..drawing.outcome.record import outcome_record_figure
+    def draw() -> Figure:
+        from ..drawing.outcome.record import outcome_record_figure
 
-                fig = outcome_record_figure(record)
-            from ..drawing.save import save_figure
+        return outcome_record_figure(record)
 
-            save_figure(fig, path, kind)
+    write_files(outputs, draw, data_formats=_DATA_FORMATS,
+                write_data=lambda path: write_outcome_record(path, record))

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ..io.formats import suffix_of
 from ._common import (
     ParamType,
     RunError,
@@ -133,7 +134,7 @@ def _classify_input(gamma: float | None, kprime: float | None, k: float | None, 
     if k is not None or mu is not None:
         raise click.UsageError("--k/--mu and --points exclude each other: give one point or a file")
     points = _points_of_file(points_file, gamma, kprime)
-    to_json = as_json or (output is not None and output.lower().endswith(".json"))
+    to_json = as_json or (output is not None and suffix_of(output) == "json")
     if output is not None:
         output_path(output, "--output")
     return points, to_json

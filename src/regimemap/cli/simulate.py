@@ -13,14 +13,12 @@ from typing import TYPE_CHECKING
 
 import click
 
+from ..io.formats import FIGURE_FORMATS
 from ._check import CHECK_HELP, exit_on_failure
-from ._common import check_kprime_crest, import_matplotlib
+from ._common import check_kprime_crest, echo_notices, import_matplotlib
 from ._dynamics_options import (
-    DATA_FORMATS,
-    FIGURE_FORMATS,
     block_options,
     check_output_file,
-    echo_notices,
     min_rotation_option,
     option_errors,
 )
@@ -175,11 +173,11 @@ def _check_outputs(output: str | None, plot: str | None, animate: str | None) ->
     if len({str(Path(p).resolve()) for p in paths}) < len(paths):
         raise click.UsageError("-o, --plot and --animate must name different files")
     if output is not None:
-        check_output_file(output, DATA_FORMATS, "--output", "the time history")
+        check_output_file(output, "time history", "--output")
     if plot is not None:
-        check_output_file(plot, FIGURE_FORMATS, "--plot", "the plot")
+        check_output_file(plot, (("the plot", FIGURE_FORMATS),), "--plot")
     if animate is not None:
-        check_output_file(animate, ("gif",), "--animate", "the animation")
+        check_output_file(animate, "animation", "--animate")
     return bool(paths)
 
 

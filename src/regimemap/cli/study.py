@@ -17,23 +17,20 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import FIGURE_FORMATS
-from ._common import ParamType, RunError, echo_notices, import_matplotlib, output_path, report_written
+from ..io.formats import record_formats, suffix_of
+from ._common import ParamType, RunError, echo_notices, output_path, report_written
 from ._inputs import DESIGN_FILE
-from ._writing import writing
+from ._writing import checked_format, write_files
 
 if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
     from ..io.study import Study
     from ..workflows.study import StudyRecord
 
 __all__ = ["study_cmd"]
 
-TABLE_FORMATS = ("csv", "nc")
 FIGURE_KINDS = ("chainage", "years", "width")
-
-
-def _suffix(path: str) -> str:
-    return Path(path).suffix.lower().lstrip(".")
 
 
 class _Scheduler(ParamType):
@@ -83,17 +80,15 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
         raise click.UsageError("--resume and --overwrite exclude each other: --resume finishes the "
                                "store's run, --overwrite replaces the store with a new run", ctx=ctx)
     for path in outputs:
-        if _suffix(path) not in TABLE_FORMATS + FIGURE_FORMATS:
-            raise click.BadParameter(f"{path!r}: the table is written as .csv or .nc and the figure as .png, "
-                                     ".svg or .pdf (from the file suffix)", param_hint="'--output'")
+        checked_format(path, "study", "'--output'")
         output_path(path, "--output")
     # the extras, before the store or any file is made and before a long run
     if scheduler is not None and _missing("distributed"):
         raise click.BadParameter(NO_DASK, param_hint="'--scheduler'")
-    if any(_suffix(path) == "nc" for path in outputs) and _missing("xarray"):
+    if any(suffix_of(path) == "nc" for path in outputs) and _missing("xarray"):
         from ..io.study_netcdf import NO_XARRAY
 
-        bad = next(path for path in outputs if _suffix(path) == "nc")
+        bad = next(path for path in outputs if suffix_of(path) == "nc")
         raise click.BadParameter(f"{bad!r}: {NO_XARRAY} (or write the table as .csv)",
                                  param_hint="'--output'")
 
@@ -155,27 +150,19 @@ def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, ov
 def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: str | None) -> list[str]:
     """Each output file: the table (.csv, .nc) or the figure (.png, .svg, .pdf, drawn once); the files
     written, in order."""
-    fig = None
-    for path in outputs:
-        with writing(path):
-            if _suffix(path) == "csv":
-                from ..io.study_table import write_study_csv
+    def table(path: str) -> None:
+        from ..io.study_netcdf import write_study_netcdf
+        from ..io.study_table import write_study_csv
 
-                write_study_csv(path, record)
-            elif _suffix(path) == "nc":
-                from ..io.study_netcdf import write_study_netcdf
+        (write_study_csv if suffix_of(path) == "csv" else write_study_netcdf)(path, record)
 
-                write_study_netcdf(path, record)
-            else:
-                if fig is None:
-                    import_matplotlib()
-                    from ..drawing.study.figures import study_figure
+    def draw() -> Figure:
+        from ..drawing.study.figures import study_figure
 
-                    fig = study_figure(record, kind=figure, section=section)
-                from ..drawing.save import save_figure
+        return study_figure(record, kind=figure, section=section)
 
-                save_figure(fig, path)
-    return list(outputs)
+    return write_files(outputs, draw,
+                       data_formats=record_formats("study table"), write_data=table)
 
 
 @click.command("study", short_help="A breakwater's sections under climate scenarios (resumable, parallel).")

@@ -33,7 +33,7 @@ from numpy.typing import ArrayLike, NDArray
 from scipy import optimize, stats
 
 __all__ = ["AM_DISTRIBUTIONS", "GEV_XI", "MIN_MAXIMA", "MIN_PEAKS", "POT_DISTRIBUTIONS", "Fit", "fit",
-           "return_levels"]
+           "fit_gumbel", "fit_weibull", "return_levels"]
 
 FloatArray = NDArray[np.float64]
 
@@ -126,6 +126,66 @@ def return_levels(distribution: str, parameters: dict[str, FloatArray], threshol
                           dtype=np.float64)
 
 
+def fit_gumbel(x: FloatArray) -> tuple[float, float]:
+    """Gumbel maximum likelihood (``scipy.stats.gumbel_r.fit``).
+
+    Parameters
+    ----------
+    x : ndarray
+        The annual maxima [m].
+
+    Returns
+    -------
+    tuple of float
+        ``(A, B)``: the scale and the location [m].
+    """
+    B, A = stats.gumbel_r.fit(x)
+    return float(A), float(B)
+
+
+def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
+    d = x - B
+    return float(-x.size * math.log(float(np.mean(d**k))) + (k - 1.0) * float(np.log(d).sum()))
+
+
+def fit_weibull(x: FloatArray, k: float, location: float | None = None) -> tuple[float, float]:
+    """Weibull maximum likelihood with the shape ``k`` given.
+
+    For a location ``B`` the likelihood's maximum is in closed form, ``A^k = mean((x - B)^k)``
+    (``scipy.stats.weibull_min.fit(x, fc=k, floc=B)`` finds it numerically).  Without
+    ``location``, ``B`` maximises the profile log-likelihood
+    ``-n ln mean((x - B)^k) + (k - 1) sum ln(x - B)`` over ``B < min(x)`` (``k > 1``, where it
+    has an interior maximum): on a grid, then Brent's bounded search
+    (``scipy.optimize.minimize_scalar``) around its best point.
+
+    Parameters
+    ----------
+    x : ndarray
+        The values [m], not all equal (all above ``location``).
+    k : float
+        The shape.
+    location : float, optional
+        ``B`` [m] (the threshold of storm peaks); None: fitted.
+
+    Returns
+    -------
+    tuple of float
+        ``(A, B)``: the scale and the location [m].
+    """
+    if location is None:
+        x0 = float(x.min())
+        spread = float(x.max()) - x0
+        # B = x0 - exp(t): t from a millionth of the spread to a hundred spreads below the minimum
+        ts = np.linspace(math.log(1e-6 * spread), math.log(100.0 * spread), 400)
+        vals = [_weibull_profile(x, k, x0 - math.exp(t)) for t in ts]
+        i = int(np.argmax(vals))
+        lo, hi = float(ts[max(i - 1, 0)]), float(ts[min(i + 1, ts.size - 1)])
+        best = optimize.minimize_scalar(lambda t: -_weibull_profile(x, k, x0 - math.exp(t)),
+                                        bounds=(lo, hi), method="bounded", options={"xatol": 1e-12})
+        location = x0 - math.exp(float(best.x) if -best.fun >= vals[i] else float(ts[i]))
+    return float(np.mean((x - location) ** k)) ** (1.0 / k), location
+
+
 def _gpd_profile(y: FloatArray) -> tuple[float, float]:
     """GPD maximum likelihood of the excesses ``y > 0``: ``(xi, sigma)`` (Grimshaw 1993).
 
@@ -180,7 +240,7 @@ def _gev(x: FloatArray, start: dict[str, float] | None) -> dict[str, float]:
     value (Smith 1985): the search is kept to ``xi >= -1``; inside, it finds what
     ``scipy.stats.genextreme.fit`` finds, faster.
     """
-    loc, scale = stats.gumbel_r.fit(x)
+    scale, loc = fit_gumbel(x)
     starts = ([np.array([start["mu"], math.log(start["sigma"]), start["xi"]])] if start is not None
               else [np.array([loc, math.log(scale), 0.1]), np.array([loc, math.log(scale), -0.2])])
     bounds = [(None, None), (None, None), GEV_XI]
@@ -204,12 +264,10 @@ def _fit_values(x: FloatArray, distribution: str, threshold: float | None, shape
             return {"sigma": sigma, "xi": xi}
         if distribution == "weibull":
             assert threshold is not None
-            # the likelihood's maximum with k and u fixed, in closed form: A^k = mean((x - u)^k)
-            # (scipy.stats.weibull_min.fit(x, fc=k, floc=u) finds it numerically)
-            return {"A": float(np.mean((x - threshold) ** shape)) ** (1.0 / shape), "k": float(shape)}
+            return {"A": fit_weibull(x, shape, threshold)[0], "k": float(shape)}
         if distribution == "gumbel":
-            loc, scale = stats.gumbel_r.fit(x)
-            return {"A": float(scale), "B": float(loc)}
+            A, B = fit_gumbel(x)
+            return {"A": A, "B": B}
         return _gev(x, start)
 
 

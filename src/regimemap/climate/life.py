@@ -1,4 +1,5 @@
-"""A record's fit as the lifetime's climate, and the interval's replicate fits as replicate climates.
+"""A record's fit as the lifetime's climate, the climate of observed annual maxima, and the interval's
+replicate fits as replicate climates.
 
 numpy; builds :class:`regimemap.lifetime.Climate` objects (this package may import
 :mod:`regimemap.lifetime`, never the reverse).
@@ -7,13 +8,14 @@ numpy; builds :class:`regimemap.lifetime.Climate` objects (this package may impo
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import ArrayLike
 
-from ..lifetime.climate import Climate
+from ..lifetime.climate import DISTRIBUTIONS, Climate
 from .analysis import ClimateResult
-from .fits import Fit
+from .fits import Fit, fit_gumbel, fit_weibull
 from .peaks import Storms
 
-__all__ = ["MIN_PERIODS", "climate_of", "period_law", "replicate_climates"]
+__all__ = ["MIN_PERIODS", "climate_of", "climate_of_maxima", "period_law", "replicate_climates"]
 
 #: Fewest storm peaks with a period for :func:`period_law`.
 MIN_PERIODS = 5
@@ -46,6 +48,48 @@ def climate_of(fit: Fit) -> Climate:
     if fit.distribution == "gumbel":
         return Climate("gumbel", scale=p["A"], location=p["B"])
     return Climate("gev", scale=p["sigma"], location=p["mu"], shape=p["xi"])
+
+
+def climate_of_maxima(maxima: ArrayLike, distribution: str = "weibull", shape: float = 2.0) -> Climate:
+    """The lifetime's :class:`~regimemap.lifetime.Climate` of observed annual maxima (one storm a
+    year), by maximum likelihood (:func:`~regimemap.climate.fits.fit_gumbel`,
+    :func:`~regimemap.climate.fits.fit_weibull` with its location fitted).
+
+    Parameters
+    ----------
+    maxima : array_like
+        At least three annual maxima of ``H0'`` [m], not all equal.
+    distribution : str, optional
+        ``"weibull"``: ``A`` and ``B`` for the given ``shape`` (> 1, where the likelihood has an
+        interior maximum); ``"gumbel"``: ``A`` and ``B``.
+    shape : float, optional
+        Weibull shape ``k`` (default 2).
+
+    Returns
+    -------
+    Climate
+
+    Raises
+    ------
+    ValueError
+        Fewer than three finite values, all equal, an unknown distribution or ``k <= 1``.
+    """
+    x = np.sort(np.asarray(maxima, dtype=np.float64).ravel())
+    if x.size < 3 or not np.all(np.isfinite(x)):
+        raise ValueError("annual maxima: need at least three finite values")
+    if not float(x[-1] - x[0]) > 0.0:
+        raise ValueError("annual maxima: the values are all equal")
+    if distribution == "gumbel":
+        A, B = fit_gumbel(x)
+        return Climate(distribution="gumbel", scale=A, location=B, shape=shape)
+    if distribution != "weibull":
+        raise ValueError(f"distribution must be one of {', '.join(DISTRIBUTIONS)}")
+    if not shape > 1.0:
+        raise ValueError(f"fitting annual maxima needs a Weibull shape k > 1 (got {shape!r}): "
+                         "for k <= 1 the likelihood grows without bound as B nears the "
+                         "smallest value; give H0_10 and H0_50 instead")
+    A, B = fit_weibull(x, shape)
+    return Climate(distribution="weibull", scale=A, location=B, shape=shape)
 
 
 def replicate_climates(result: ClimateResult) -> list[Climate]:

@@ -357,7 +357,9 @@ def lifetime_model(spec: LifetimeSpec, years: int | None = None) -> LifetimeMode
         try:  # an overflow of the fit is named here, not printed by numpy
             with np.errstate(all="raise"):
                 if spec.annual_maxima is not None:
-                    climate = Climate.fit_annual_maxima(spec.annual_maxima, spec.distribution, spec.shape)
+                    from regimemap.climate.life import climate_of_maxima
+
+                    climate = climate_of_maxima(spec.annual_maxima, spec.distribution, spec.shape)
                 else:
                     assert spec.H0_10 is not None and spec.H0_50 is not None
                     climate = Climate.from_return_values(spec.H0_10, spec.H0_50, spec.distribution,

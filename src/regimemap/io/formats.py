@@ -98,6 +98,8 @@ RECORDS: dict[str, tuple[tuple[str, tuple[str, ...]], ...]] = {
     "lifetime": (("the figure", FIGURE_FORMATS), ("the lifetimes", ("csv", "npz"))),
     "design sheet": (("the design sheet", FIGURE_FORMATS),),
     "climate figures": (("the figures", FIGURE_FORMATS),),
+    "study table": (("the table", ("csv", "nc")),),
+    "study": (("the table", ("csv", "nc")), ("the figure", FIGURE_FORMATS)),
 }
 
 

@@ -42,11 +42,12 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
         LifetimeModel,
         YearTrend,
     )
-    from .parallel import ClusterUnavailable, available_cores
+    from .parallel import ClusterUnavailable
     from .requirements import Requirements, judge_chart, judge_lifetime
     from .results import Failure, LifetimeResult
     from .simulate import lifetime_sliding
     from .sliding import ADDED_MASS_COEFFICIENT, added_mass, half_sine_slide, wave_duration
+    from .workers import available_cores
 
 __all__ = [
     "ADDED_MASS_COEFFICIENT", "DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "Caisson",
@@ -62,9 +63,10 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
         "climate": ["DISTRIBUTIONS", "Climate"],
         "model": ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "Caisson", "ErrorFactor", "Errors",
                   "LifetimeModel", "YearTrend"],
-        "parallel": ["ClusterUnavailable", "available_cores"],
+        "parallel": ["ClusterUnavailable"],
         "requirements": ["Requirements", "judge_chart", "judge_lifetime"],
         "results": ["Failure", "LifetimeResult"],
         "simulate": ["lifetime_sliding"],
         "sliding": ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_duration"],
+        "workers": ["available_cores"],
     })

@@ -1,6 +1,7 @@
 """The wave climate of a site: the distribution of storm peaks ``H0'``, fitted or given.
 
-numpy; the fits on scipy.stats and scipy.optimize.  A storm's peak equivalent deep-water
+numpy (the fits are :mod:`regimemap.climate`'s: annual maxima by
+:func:`regimemap.climate.life.climate_of_maxima`).  A storm's peak equivalent deep-water
 significant height follows a Weibull distribution
 
     F(H) = 1 - exp(-((H - B)/A)^k),   H >= B,
@@ -134,51 +135,6 @@ class Climate:
         return cls(distribution=distribution, scale=A, location=H0_10 - A * y10, shape=shape,
                    storms_per_year=storms_per_year)
 
-    @classmethod
-    def fit_annual_maxima(cls, maxima: ArrayLike, distribution: str = "weibull",
-                          shape: float = 2.0) -> Climate:
-        """Maximum-likelihood fit to observed annual maxima (one storm a year).
-
-        Parameters
-        ----------
-        maxima : array_like
-            At least three annual maxima of ``H0'`` [m], not all equal.
-        distribution : str, optional
-            ``"weibull"``: ``A`` and ``B`` for the given ``shape`` (> 1, where
-            the likelihood has an interior maximum); ``"gumbel"``: ``A`` and ``B``.
-        shape : float, optional
-            Weibull shape ``k`` (default 2).
-
-        Returns
-        -------
-        Climate
-
-        Notes
-        -----
-        Gumbel: ``A`` solves ``A = mean(x) - sum(x e^(-x/A)) / sum(e^(-x/A))`` and
-        ``B = -A ln mean(e^(-x/A))`` (``scipy.stats.gumbel_r.fit``).  Weibull with ``k`` given: for a location
-        ``B`` the scale is ``A^k = mean((x - B)^k)``, and ``B`` maximises the
-        profile log-likelihood ``-n ln mean((x - B)^k) + (k - 1) sum ln(x - B)``
-        over ``B < min(x)`` (a grid, then ``scipy.optimize.minimize_scalar``).
-        """
-        x = np.sort(np.asarray(maxima, dtype=np.float64).ravel())
-        if x.size < 3 or not np.all(np.isfinite(x)):
-            raise ValueError("annual maxima: need at least three finite values")
-        spread = float(x[-1] - x[0])
-        if not spread > 0.0:
-            raise ValueError("annual maxima: the values are all equal")
-        if distribution == "gumbel":
-            A, B = _fit_gumbel(x)
-            return cls(distribution="gumbel", scale=A, location=B, shape=shape)
-        if distribution != "weibull":
-            raise ValueError(f"distribution must be one of {', '.join(DISTRIBUTIONS)}")
-        if not shape > 1.0:
-            raise ValueError(f"fitting annual maxima needs a Weibull shape k > 1 (got {shape!r}): "
-                             "for k <= 1 the likelihood grows without bound as B nears the "
-                             "smallest value; give H0_10 and H0_50 instead")
-        A, B = _fit_weibull(x, shape)
-        return cls(distribution="weibull", scale=A, location=B, shape=shape)
-
     # -- the distribution ------------------------------------------------------------------------
     def cdf(self, H: ArrayLike) -> FloatArray:
         """``F(H)``, the non-exceedance probability of a storm peak."""
@@ -246,36 +202,3 @@ def _fitted_cdf(distribution: str, xi: float, y: FloatArray) -> FloatArray:
         if distribution == "gpd":
             return np.asarray(np.where(y < 0.0, 0.0, -np.expm1(-np.maximum(t, 0.0))), dtype=np.float64)
         return np.asarray(np.exp(-np.exp(-t)), dtype=np.float64)
-
-
-def _fit_gumbel(x: FloatArray) -> tuple[float, float]:
-    """Gumbel maximum likelihood (``scipy.stats.gumbel_r.fit``): ``(A, B)``."""
-    from scipy import stats  # on first use: scipy.stats takes a second to import
-
-    B, A = stats.gumbel_r.fit(x)
-    return float(A), float(B)
-
-
-def _weibull_profile(x: FloatArray, k: float, B: float) -> float:
-    d = x - B
-    return float(-x.size * math.log(float(np.mean(d**k))) + (k - 1.0) * float(np.log(d).sum()))
-
-
-def _fit_weibull(x: FloatArray, k: float) -> tuple[float, float]:
-    """Weibull maximum likelihood with ``k`` given: the profile over ``B`` on a grid, then Brent's
-    bounded search (``scipy.optimize.minimize_scalar``) around its best point: ``(A, B)``."""
-    from scipy import optimize  # on first use
-
-    spread = float(x[-1] - x[0])
-    x0 = float(x[0])
-    # B = x0 - exp(t): t from a millionth of the spread to a hundred spreads below the minimum
-    ts = np.linspace(math.log(1e-6 * spread), math.log(100.0 * spread), 400)
-    vals = [_weibull_profile(x, k, x0 - math.exp(t)) for t in ts]
-    i = int(np.argmax(vals))
-    lo, hi = float(ts[max(i - 1, 0)]), float(ts[min(i + 1, ts.size - 1)])
-    best = optimize.minimize_scalar(lambda t: -_weibull_profile(x, k, x0 - math.exp(t)), bounds=(lo, hi),
-                                    method="bounded", options={"xatol": 1e-12})
-    t = float(best.x) if -best.fun >= vals[i] else float(ts[i])
-    B = x0 - math.exp(t)
-    A = float(np.mean((x - B) ** k)) ** (1.0 / k)
-    return A, B

@@ -27,7 +27,7 @@ from .finite import quiet_arithmetic
 from .model import Caisson, LifetimeModel
 from .workers import WorkerPool, worker_pool
 
-__all__ = ["Chunk", "ClusterUnavailable", "available_cores", "make_chunks", "run_chunk", "run_chunks",
+__all__ = ["Chunk", "ClusterUnavailable", "make_chunks", "run_chunk", "run_chunks",
            "root_seed", "submit_all", "worker_pool"]
 
 _T = TypeVar("_T")
@@ -95,14 +95,6 @@ def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk,
     return BlockResult(sliding=sliding, max_storm=max_storm, storms=storms,
                        sliding_waves=sum(p.sliding_waves for p in parts),
                        years=YearStats.join([p.years for p in parts]))
-
-
-def available_cores() -> int:
-    """Cores this process may use."""
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # pragma: no cover - not Linux
-        return os.cpu_count() or 1
 
 
 def _serial(caissons: tuple[Caisson, ...], model: LifetimeModel,

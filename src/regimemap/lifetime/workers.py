@@ -48,7 +48,7 @@ from multiprocessing.reduction import ForkingPickler
 from typing import Any, TypeVar
 
 __all__ = ["PARENT_VARIABLE", "STOP_GRACE", "STOP_SIGNAL", "PoolBroken", "WorkerPool", "WorkerStopped",
-           "die_with_parent", "local_cluster", "worker_pool"]
+           "available_cores", "die_with_parent", "local_cluster", "worker_pool"]
 
 _T = TypeVar("_T")
 
@@ -363,6 +363,14 @@ class WorkerPool:
         for fd in (self._wake_r, self._wake_w):
             with contextlib.suppress(OSError):
                 os.close(fd)
+
+
+def available_cores() -> int:
+    """The number of cores this process may run on (at least 1): the default number of workers."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except (AttributeError, OSError):  # pragma: no cover - not Linux
+        return max(1, os.cpu_count() or 1)
 
 
 @contextlib.contextmanager

@@ -14,9 +14,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Sequence
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from ...io.formats import format_for
 from ...maps.describe import loads_text
 from ...maps.sweeps import sweep_params
 from ...mechanics.block import Parameters
@@ -82,8 +82,7 @@ def check_animation(path: str | os.PathLike[str], gamma: float, kprimes: Sequenc
         Naming the parameter and its range, or a file that is not ``.gif``.
     """
     _check_frames(gamma, kprimes, fps, sweep, fixed)
-    if Path(path).suffix.lower() != ".gif":
-        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+    format_for(path, "animation")
 
 
 def _check_frames(gamma: float, kprimes: Sequence[float], fps: float, sweep: str = "kprime",

@@ -25,7 +25,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ...workflows.atlas import AtlasRecord
     from ...workflows.map import MapRecord
 
-__all__ = ["FigureMaps", "cpu_count", "render_figure", "write_figures"]
+__all__ = ["FigureMaps", "render_figure", "write_figures"]
 
 #: The maps of a figure by its id: a map, an atlas, or None for the model figure (2.1), which
 #: draws no map.  A module-level function, so that worker processes can be handed it.
@@ -101,14 +101,6 @@ def _longest_first(ids: Sequence[str]) -> list[str]:
     return sorted(ids, key=lambda fid: not fid.upper().startswith("W"))
 
 
-def cpu_count() -> int:
-    """The number of cores this process may run on."""
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except (AttributeError, OSError):  # pragma: no cover - not Linux
-        return max(1, os.cpu_count() or 1)
-
-
 def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: Sequence[str],
                   dpi: float, compute: FigureMaps, jobs: int | None = None,
                   progress: Callable[[int], None] | None = None) -> list[Path]:
@@ -144,15 +136,15 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
     OSError
         If a file cannot be written (the files finished before it are complete).
     """
+    from ...lifetime.workers import available_cores, worker_pool
+
     ids = list(ids)
-    jobs = cpu_count() if jobs is None else max(1, int(jobs))
+    jobs = available_cores() if jobs is None else max(1, int(jobs))
     jobs = min(jobs, len(ids))
     folder_s = os.fspath(folder)
     if jobs <= 1:
         return [Path(p) for p in _render_chunk(ids, folder_s, formats, dpi, compute, progress)]
     from concurrent.futures import as_completed
-
-    from ...lifetime.workers import worker_pool
 
     # one figure a task, the longest first: a worker that is free takes the next one, so the
     # workers finish together (a fixed deal left one ~0.3 s behind the other); each worker

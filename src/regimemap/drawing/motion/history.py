@@ -20,6 +20,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...dynamics.stepper import History, Phase
+from ...io.formats import format_for
 from ...mechanics.modes import Mode
 from ..save import DEFAULT_DPI
 from ..style import phase_style, style_context
@@ -304,11 +305,8 @@ def write_block_animation(path: str | os.PathLike[str], history: History, **kwar
     OSError
         If the file cannot be written (nothing is left behind).
     """
-    from pathlib import Path
-
     from ...io.atomic import atomic_path
 
-    if Path(path).suffix.lower() != ".gif":
-        raise ValueError(f"the animation is written as GIF: give a .gif file, got {os.fspath(path)!r}")
+    format_for(path, "animation")
     with atomic_path(path) as tmp:
         return render_block_animation(tmp, history, **kwargs)
