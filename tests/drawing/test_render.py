@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import io
+import os
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -334,6 +335,37 @@ def test_mathtext_parses_are_shared_between_renderers():
     one, other = MathTextParser("path"), MathTextParser("path")
     assert one.parse(r"$\mu^*(k)$", 72) is other.parse(r"$\mu^*(k)$", 72)
     assert type(MathTextParser("agg").parse(r"$\mu^*(k)$", 72)).__name__ == "RasterParse"
+
+
+
+@pytest.mark.subprocess
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="workers are forked on POSIX only")
+def test_a_forked_worker_starts_with_no_parse_of_its_parent():
+    """A parse keeps the fonts it was laid out with, whose files a fork shares with the parent
+    through one offset (two processes reading glyphs at once read each other's bytes: "too many
+    hints"): a forked process starts with the mathtext cache empty; the parent keeps its own."""
+    from matplotlib.mathtext import MathTextParser
+
+    from regimemap.drawing.style import style_context
+
+    with style_context():
+        pass
+    parser = MathTextParser("path")
+    first = parser.parse(r"$\mu^*(k_{B'})$", 72)
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: a parse of its own, not the parent's object
+        try:
+            fresh = MathTextParser("path").parse(r"$\mu^*(k_{B'})$", 72) is not first
+            os.write(write, b"fresh" if fresh else b"inherited")
+        finally:
+            os._exit(0)
+    os.close(write)
+    with os.fdopen(read) as pipe:
+        said = pipe.read()
+    os.waitpid(pid, 0)
+    assert said == "fresh"
+    assert parser.parse(r"$\mu^*(k_{B'})$", 72) is first  # the parent's cache is kept
 
 
 # -- names of the points ------------------------------------------------------------------

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import functools
+import os
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
@@ -188,7 +189,22 @@ def share_mathtext_parses(maxsize: int = 512) -> bool:
 
     _parse_cached.regimemap_shared = True  # type: ignore[attr-defined]
     MathTextParser._parse_cached = _parse_cached  # type: ignore[attr-defined]
+    if hasattr(os, "register_at_fork"):  # not on Windows, where workers are not forked
+        os.register_at_fork(after_in_child=lambda: _forget_the_parents_parses(shared, cached))
     return True
+
+
+def _forget_the_parents_parses(*caches: Any) -> None:
+    """In a process just forked (a worker of ``regimemap figures``): empty the mathtext caches.
+
+    A parse holds the FreeType fonts it was laid out with, and a font reads its file through
+    the file's offset, which a fork shares: a worker and its parent (or two workers) loading
+    glyphs of one inherited font at once read each other's bytes (``FT_Load_Glyph ... failed
+    with error 0x16: too many hints``).  matplotlib empties its own font cache at a fork; the
+    parses are the other place fonts are kept.
+    """
+    for cache in caches:
+        cache.cache_clear()
 
 
 def mode_symbol(mode: Mode) -> tuple[str, str]:
