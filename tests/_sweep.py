@@ -44,14 +44,27 @@ def sample_points(gamma: float, kprime: float, n: int, seed: int = 0) -> tuple[n
     return rng.uniform(0, k_hi, n), rng.uniform(0, mu_hi, n)
 
 
-def tiered(cases: list, every: int = 4) -> list:
-    """``cases`` as pytest parameters for a long sweep: every ``every``-th case (a spread sample,
-    the first and the last included) in the fast tier, the others marked ``slow``.
+def tiered(cases: list, every: int = 4, deep: int = 2) -> list:
+    """``cases`` as pytest parameters for a long sweep, in three nested samples: every ``every``-th
+    case (a spread sample, the first and the last included) in the fast tier; every ``deep``-th
+    case of the others marked ``slow`` (``make test`` runs them with the fast sample); the rest
+    marked ``deep`` (``make test-deep``, which CI runs).  ``deep=1`` keeps the whole sweep in
+    ``make test``.
 
-    ``make test`` runs the whole sweep; ``make test-fast`` (``-m "not slow ..."``) the sample.
+    Examples
+    --------
+    >>> marks = [getattr(c, "marks", ()) for c in tiered([(i,) for i in range(9)], every=4, deep=2)]
+    >>> ["fast" if not m else m[0].name for m in marks]
+    ['fast', 'deep', 'slow', 'deep', 'fast', 'deep', 'slow', 'deep', 'fast']
     """
     import pytest
 
     last = len(cases) - 1
-    return [case if i % every == 0 or i == last else pytest.param(*case, marks=pytest.mark.slow)
-            for i, case in enumerate(cases)]
+    out = []
+    for i, case in enumerate(cases):
+        if i % every == 0 or i == last:
+            out.append(case)
+        else:
+            mark = pytest.mark.slow if i % deep == 0 else pytest.mark.deep
+            out.append(pytest.param(*case, marks=mark))
+    return out

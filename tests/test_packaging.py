@@ -229,6 +229,7 @@ def dists(tmp_path_factory) -> Dists:
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_sdist_holds_the_sources_not_the_products(dists):
     # one commit and no tag: setuptools-scm's version
     assert re.fullmatch(r"0\.1\.dev1\+g[0-9a-f]{7,}", dists.version), dists.version
@@ -249,6 +250,7 @@ def test_sdist_holds_the_sources_not_the_products(dists):
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_wheel_holds_the_package_and_its_licence(dists):
     with zipfile.ZipFile(dists.wheel) as whl:
         names = set(whl.namelist())
@@ -265,6 +267,7 @@ def test_wheel_holds_the_package_and_its_licence(dists):
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_twine_check_passes(dists):
     pytest.importorskip("twine")
     out = subprocess.run([sys.executable, "-m", "twine", "check", "--strict", str(dists.sdist),
@@ -274,6 +277,7 @@ def test_twine_check_passes(dists):
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_installed_wheel_runs_outside_the_tree(dists, tmp_path):
     """The wheel in a fresh virtual environment (its dependencies lent by this one through a .pth
     file, no network): the command, a figure and the library, run from a folder outside the tree,

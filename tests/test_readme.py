@@ -120,6 +120,7 @@ def test_blocks_that_read_files_run_after_the_blocks_that_write_them():
 @pytest.mark.subprocess  # the installed regimemap, python -c
 @pytest.mark.slow  # seconds a block
 @pytest.mark.parametrize("group", GROUPS, ids=_group_id)
+@pytest.mark.deep
 def test_readme_examples_run(group, tmp_path):
     """The blocks of one group run in order in one folder of their own."""
     env = dict(os.environ, PATH=BIN + os.pathsep + os.environ.get("PATH", ""), MPLBACKEND="Agg")

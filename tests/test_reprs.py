@@ -199,6 +199,7 @@ def test_caisson_analysis_of_many_conditions() -> None:
     assert t.row("Hmax")[0] == "8.05"  # the same wave for every width
 
 
+@pytest.mark.slow
 def test_caisson_report() -> None:
     r = caisson_report(GODA)
     text = repr(r)

@@ -63,6 +63,7 @@ def test_check_exit_status(run_cli, tmp_path, text, check, code):
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_check_writes_everything_before_exit_1(run_cli, tmp_path):
     sheet = tmp_path / "sheet.png"
     r = run_cli(["caisson", _write(tmp_path, NO_LIFE), "--check", "-o", str(sheet)])
@@ -75,6 +76,7 @@ def test_usage_errors_still_exit_2_under_check(run_cli, tmp_path):
     assert r.code == 2
 
 
+@pytest.mark.slow
 def test_required_factors_from_the_file_decide_the_verdict(run_cli, tmp_path):
     text = NO_LIFE.replace("# required_sliding = 1.2", "required_sliding = 1.1")
     assert run_cli(["caisson", _write(tmp_path, text), "--check"]).code == 0
@@ -118,6 +120,7 @@ def _texts(fig):
 
 @pytest.mark.render
 @pytest.mark.parametrize("text", [NO_LIFE, WIDE])
+@pytest.mark.deep
 def test_the_sheet_shows_the_verdict(text):
     import matplotlib.colors as mcolors
 
@@ -146,6 +149,7 @@ def test_the_sheet_shows_the_verdict(text):
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_the_sheet_flags_the_lifetime_esd(tmp_path):
     import matplotlib.colors as mcolors
 
@@ -177,6 +181,7 @@ def test_check_dataclass_is_what_the_sheet_reads():
 
 
 @pytest.mark.parametrize(("text", "check", "code"), [(NO_LIFE, True, 1), (NO_LIFE, False, 0), (WIDE, True, 0)])
+@pytest.mark.slow
 def test_simulate_design_check(run_cli, tmp_path, text, check, code):
     path = _write(tmp_path, text)
     args = ["simulate", "--design", path, *(["--check"] if check else [])]
@@ -220,6 +225,7 @@ def test_the_sheet_header_echoes_the_file():
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_the_requirements_do_not_depend_on_the_sheet(run_cli, tmp_path):
     path = _write(tmp_path, EXAMPLE.replace("trials = 5000", "trials = 100"))
     plain = run_cli(["caisson", path, "--check", "--json"])

@@ -35,6 +35,7 @@ def test_limits_match_library():
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_atlas_svg_has_every_panel(tmp_path):
     out = tmp_path / "atlas.svg"
     r = run("atlas", "--gamma", "1,3", "--kprime", "-0.6,0,0.9", "-o", str(out))
@@ -47,6 +48,7 @@ def test_atlas_svg_has_every_panel(tmp_path):
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_atlas_says_when_it_does_not_share(tmp_path):
     r = run("atlas", "--gamma", "1,2,3", "--kprime", "-0.6,-0.2,0,0.4,0.9", "--dpi", "30",
             "-o", str(tmp_path / "a.png"))
@@ -97,6 +99,7 @@ def test_atlas_bad_output(tmp_path):
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_animate(tmp_path):
     out = tmp_path / "sweep.gif"
     r = run("animate", "--gamma", "3", "--kprime", "-1:1:6", "--dpi", "30", "--fps", "4",
@@ -150,6 +153,7 @@ def test_kprime_above_its_crest_is_a_usage_error(tmp_path, cmd, args, text):
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_atlas_and_animate_take_kprime_up_to_the_crest(tmp_path):
     out = tmp_path / "a.png"
     r = run("atlas", "--gamma", "1,3", "--kprime", "0.4,1.2,1.5", "--crest", "1.5", "--dpi", "30",

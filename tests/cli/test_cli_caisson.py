@@ -31,6 +31,7 @@ def sig3(x: float) -> str:
     return f"{x:.3g}"
 
 
+@pytest.mark.slow
 def test_example_prints_the_file_and_round_trips(tmp_path: Path) -> None:
     r = invoke_cli(["caisson", "--example"])
     assert r.code == 0 and r.stdout == EXAMPLE
@@ -42,6 +43,7 @@ def test_example_prints_the_file_and_round_trips(tmp_path: Path) -> None:
     assert sig3(j["P"]) == "941"
 
 
+@pytest.mark.slow
 def test_text_report(goda: Path) -> None:
     r = invoke_cli(["caisson", str(goda)])
     assert r.code == 0, r.output
@@ -61,6 +63,7 @@ def test_text_report(goda: Path) -> None:
     assert r.stderr == ""
 
 
+@pytest.mark.slow
 def test_json_report(goda: Path) -> None:
     r = invoke_cli(["caisson", str(goda), "--json"])
     assert r.code == 0, r.output
@@ -126,6 +129,7 @@ def test_usage_errors(tmp_path: Path, goda: Path) -> None:
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_sheet_is_written_atomically_and_byte_stable(tmp_path: Path, goda: Path,
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
     out = tmp_path / "sheet.svg"
@@ -154,6 +158,7 @@ def test_sheet_is_written_atomically_and_byte_stable(tmp_path: Path, goda: Path,
 @pytest.mark.render
 @pytest.mark.slow
 @pytest.mark.parametrize("suffix", ["pdf", "png"])
+@pytest.mark.deep
 def test_sheet_formats(tmp_path: Path, goda: Path, suffix: str) -> None:
     out = tmp_path / f"sheet.{suffix}"
     r = invoke_cli(["caisson", str(goda), "--json", "-o", str(out)])
@@ -183,6 +188,7 @@ def drawn_sheets():
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_sheet_has_its_panels(drawn_sheets) -> None:
     from regimemap.drawing.sheet.page import PANELS, SHEET_SIZE
 
@@ -271,6 +277,7 @@ def test_sheet_texts_do_not_collide(drawn_sheets, text: str) -> None:
         assert bb.x0 >= 0 and bb.y0 >= 0 and bb.x1 <= w and bb.y1 <= h, text_
 
 
+@pytest.mark.slow
 def test_random_command_lines_exit_cleanly(tmp_path: Path) -> None:
     """Any mix of the options: exit 0, 1 or 2, one error line, no traceback, no leftovers."""
     from hypothesis import given, settings

@@ -186,6 +186,7 @@ def test_help_and_version():
 # -- output paths --------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("key", writer_params())
+@pytest.mark.slow
 def test_writer_goes_through_the_atomic_path_and_leaves_only_its_file(tmp_path, inputs, monkeypatch, key):
     """Each writer's file is renamed into place from a temporary file beside it (what
     tests/io/test_atomic.py proves safe against every failure), and is whole."""
@@ -390,6 +391,7 @@ def test_console_script_in_a_subprocess(tmp_path):
 # -- no partial files -----------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("key", writer_params())
+@pytest.mark.slow
 def test_writer_failing_half_way_keeps_the_old_file(tmp_path, inputs, monkeypatch, key):
     """One real failure per writer: the disk fills up half-way through the file.  The old file is
     byte-identical, nothing else in the folder changed, and the one error line names the file.
@@ -628,6 +630,7 @@ _FUZZ_MARKS = {"figures": [pytest.mark.render, pytest.mark.subprocess, pytest.ma
 
 
 @pytest.mark.parametrize("name", [pytest.param(n, marks=_FUZZ_MARKS.get(n, ())) for n in sorted(COMMAND_MODULES)])
+@pytest.mark.deep
 def test_random_arguments_never_crash(name, tmp_path_factory, monkeypatch):
     needs(name)
     if name == "figures":
@@ -723,6 +726,7 @@ def test_the_harness_catches_a_writer_that_is_not_atomic(tmp_path, inputs, monke
     pytest.param(["classify", "--gamma", "2", "--kprime", "0.6666666666666666", "--k", "1", "--mu", "0.1"],
                  id="classify"),
 ])
+@pytest.mark.slow
 def test_case_threshold_a_zero_runs(tmp_path, args):
     """At k' = (4+g^2)/(3g^2) the constant a of (3.18) is exactly 0: every command still works."""
     needs(args[0])
@@ -764,8 +768,8 @@ def _record_design(folder: Path) -> str:
     climate = ("H0_10", "H0_50", "annual_maxima", "distribution", "shape", "storms_per_year")
     kept = [line for line in text[i:j].splitlines() if line.split("=")[0].strip() not in climate]
     p = folder / "site.toml"
-    p.write_text(text[:i] + "\n".join(kept) + '\n\n[lifetime.record]\npath = "copies.txt"\nthreshold = "97%"\n\n'
-                 + text[j:])
+    p.write_text(text[:i] + "\n".join(kept) + '\nclimate_replicates = 2\n\n[lifetime.record]\npath = "copies.txt"\n'
+                 'threshold = "97%"\n\n' + text[j:])
     return str(p)
 
 
@@ -811,6 +815,7 @@ WARNING_RUNS = {
 
 @pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.render) if n == "plot" else n
                                   for n in sorted(WARNING_RUNS)])
+@pytest.mark.slow
 def test_warnings_go_to_stderr_and_stdout_stays_clean(run_cli, tmp_path, name):
     args, warning = WARNING_RUNS[name]
     r = run_cli(args(tmp_path))

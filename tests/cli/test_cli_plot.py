@@ -179,6 +179,7 @@ def test_show_ambiguity_keeps_the_drawn_artists_current(runner, tmp_path, monkey
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_figure_default_name_and_formats(runner, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     _ok(runner.invoke(cli, ["figure", "3.9a"]))
@@ -199,6 +200,7 @@ def test_figure_unknown_id_suggests(runner):
 @pytest.mark.render
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_figures_all(runner, tmp_path):
     res = _ok(runner.invoke(cli, ["figures", "--out", str(tmp_path), "--format", "svg,png",
                                   "--dpi", "30"]))
@@ -269,6 +271,7 @@ def test_help_does_not_import_matplotlib():
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_main_entry_point_exit_codes(tmp_path):
     """main() in one process: exit 0 and nothing on stderr for each format, then the process
     itself ends with main()'s exit 2 and one line for a suffix it cannot write."""

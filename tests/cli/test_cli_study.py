@@ -122,6 +122,7 @@ def _command(*args: str) -> list[str]:
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_the_example_runs(tmp_path):
     example = subprocess.run(_command("study", "--example"), capture_output=True, text=True, check=True)
     path = tmp_path / "breakwater.toml"

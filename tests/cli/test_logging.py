@@ -100,6 +100,7 @@ def test_a_failing_command_still_says_one_error_line(tmp_path):
 
 # -- the library ----------------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_the_library_logs_its_main_steps(caplog, capsys, tmp_path):
     """Maps computed and their size, lifetime chunks and their timing, dynamics batches, files written:
     as records of ``regimemap.*`` loggers, and not one character printed."""
@@ -162,6 +163,7 @@ LIBRARY = sorted(p for p in SRC.rglob("*.py") if "cli" not in p.relative_to(SRC)
 
 
 @pytest.mark.parametrize("path", LIBRARY, ids=lambda p: str(p.relative_to(SRC)))
+@pytest.mark.slow
 def test_library_code_never_prints(path):
     """Outside ``cli/`` diagnostics are log records: no print, no sys.stdout/stderr, no click.echo
     (the ``>>> print(...)`` of a docstring example is text, not code)."""

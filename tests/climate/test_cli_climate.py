@@ -35,6 +35,7 @@ def failed(r, *parts: str) -> str:
     return lines[0]
 
 
+@pytest.mark.slow
 def test_json_keys_and_bands(run_cli):
     r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "bootstrap", "--bootstrap", "40",
                     "--seed", "3", "--json"]))
@@ -103,6 +104,7 @@ def test_bad_records(run_cli, tmp_path):
     assert not out.exists()
 
 
+@pytest.mark.slow
 def test_strict_refuses_warnings(run_cli, tmp_path):
     import numpy as np
 
@@ -122,6 +124,7 @@ def test_strict_refuses_warnings(run_cli, tmp_path):
     assert json.loads(r.stdout)["record"]["spikes_dropped"] is True
 
 
+@pytest.mark.slow
 def test_interval_methods_endpoint_sensitivity_and_strict(run_cli):
     """The 1996 excerpt above its 97 % quantile: the GPD fit at its search bound (xi = -1.5) is warned
     with its value in the JSON's notices, --strict refuses it, and each method

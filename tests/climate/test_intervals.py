@@ -137,6 +137,7 @@ def test_the_thirteen_month_reproduction_warns():
     assert any(n.quantity == "H50" and "above the largest height" in n.message for n in r.notices)
 
 
+@pytest.mark.slow
 def test_gev_at_its_search_bound_and_above_a_limit():
     x = [3.0, 3.05, 3.1, 3.02, 3.0, 3.08, 12.0, 3.04, 3.1, 3.03, 3.01, 3.06, 14.0]
     g = fit(x, "gev")
@@ -171,6 +172,7 @@ def test_endpoint_reported_only_for_a_bounded_tail():
     assert endpoint(Fit("gpd", {"sigma": 1.2, "xi": -0.3}, 3.0, 4.0, 40)) == pytest.approx(7.0)
 
 
+@pytest.mark.slow
 def test_threshold_sensitivity_refits_each_quantile():
     from regimemap.climate.analysis import SENSITIVITY_QUANTILES, sensitivity
 

@@ -150,6 +150,7 @@ def test_replicates_need_a_record(tmp_path):
 
 
 @pytest.mark.subprocess
+@pytest.mark.deep
 def test_lifetime_command_climate_band_same_bytes_any_jobs(run_cli, tmp_path):
     p = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "98%"', "climate_replicates = 4")
     args = ["lifetime", str(p), "--trials", "200", "--seed", "9", "--json", "-q"]
@@ -200,6 +201,7 @@ def test_model_refuses_period_law_with_period():
 
 
 @pytest.mark.subprocess
+@pytest.mark.deep
 def test_the_chart_gains_the_width_at_the_bands_upper_level(run_cli, tmp_path):
     p = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "95%"', "climate_replicates = 3")
     args = ["lifetime", str(p), "--trials", "60", "--seed", "3", "--width", "16:64:3", "--json", "-q"]

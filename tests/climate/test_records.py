@@ -84,6 +84,7 @@ def test_ndbc_stdmet_sample():
     assert read_record(STDMET, period="APD").period_name == "APD"
 
 
+@pytest.mark.slow
 def test_netcdf_cf_time(tmp_path):
     xr = pytest.importorskip("xarray")
     t = np.datetime64("2001-01-01T00", "s") + np.arange(48) * np.timedelta64(3600, "s")

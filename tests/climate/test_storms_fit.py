@@ -132,6 +132,7 @@ def test_weibull_gumbel_against_scipy():
 
 
 @pytest.mark.parametrize("xi", [-0.3, 0.0, 0.2])
+@pytest.mark.slow
 def test_gev_against_scipy_sign_convention(xi):
     rng = np.random.default_rng(8)
     x = stats.genextreme.rvs(-xi, loc=5, scale=0.8, size=40, random_state=rng)

@@ -65,6 +65,7 @@ def test_atlas_share_row_and_none():
 
 
 @pytest.mark.parametrize("suffix", ["png", "svg"])
+@pytest.mark.deep
 def test_write_atlas_file(tmp_path, suffix):
     path = tmp_path / f"atlas.{suffix}"
     write_atlas(path, run_atlas([1.0, 2.0], [-0.2, 0.4], samples=101), dpi=40)
@@ -91,6 +92,7 @@ def test_atlas_limits():
     assert MAX_PANELS == 48 and MAX_FRAMES == 400
 
 
+@pytest.mark.deep
 def test_animation_frames_and_size(tmp_path):
     path = tmp_path / "sweep.gif"
     kps = parse_values("-0.8:0.8:5", "kprime", check_kprime)
@@ -108,6 +110,7 @@ def test_animation_frames_and_size(tmp_path):
     assert [f.name for f in tmp_path.iterdir()] == ["sweep.gif"]
 
 
+@pytest.mark.deep
 def test_animation_fixed_axes(tmp_path, monkeypatch):
     """Every frame is drawn on the same view."""
     import regimemap.drawing.maps.animation as animation
@@ -170,6 +173,7 @@ def test_shared_extent_and_points_outside():
     assert out == [ps[0]]  # A at k = 6.67; k' = -1 has no A
 
 
+@pytest.mark.deep
 def test_atlas_gives_own_views_where_sharing_would_cram():
     from regimemap.maps.sweeps import resolve_share
 

@@ -93,6 +93,7 @@ def test_initial_map_is_plots(explorer: Explorer) -> None:
 
 
 @pytest.mark.parametrize("final", [True, False], ids=["from code", "while dragging"])
+@pytest.mark.deep
 def test_set_gamma_and_kprime_redraw_plots_map(explorer: Explorer, final: bool) -> None:
     explorer.set_gamma(2.5, final=final)
     assert_same_map(explorer, Parameters(2.5, 0.4))
@@ -104,6 +105,7 @@ def test_set_gamma_and_kprime_redraw_plots_map(explorer: Explorer, final: bool) 
     assert_same_map(explorer, Parameters(2.5, 0.85))
 
 
+@pytest.mark.deep
 def test_values_are_rounded_as_the_sliders_show_them(explorer: Explorer) -> None:
     explorer.set_gamma(2.54321)
     explorer.set_kprime(-0.30049)
@@ -115,6 +117,7 @@ def test_values_are_rounded_as_the_sliders_show_them(explorer: Explorer) -> None
     assert explorer.params.kprime == 0.0 and math.copysign(1.0, explorer.params.kprime) == 1.0
 
 
+@pytest.mark.deep
 def test_set_loads_and_the_toggle(explorer: Explorer) -> None:
     assert not explorer.loads_enabled and not explorer.buoyancy_slider.ax.get_visible()
     explorer.set_loads(buoyancy=0.3, uplift_ratio=0.5)
@@ -149,6 +152,7 @@ def test_ticking_loads_shows_their_sliders_at_once(explorer: Explorer, monkeypat
     assert not explorer.buoyancy_slider.ax.get_visible() and draws == [explorer.fig, explorer.fig]
 
 
+@pytest.mark.deep
 def test_loads_given_at_start(echo: Echo) -> None:
     p = Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524, gyration=0.8)
     ex = open_explorer(p, echo=echo)
@@ -171,6 +175,7 @@ def test_a_refused_value_changes_nothing(explorer: Explorer) -> None:
     assert_same_map(explorer, before)
 
 
+@pytest.mark.deep
 def test_drag_then_release(explorer: Explorer) -> None:
     """While dragging: no tidy pass, the key from its bitmap; the release completes the map."""
     explorer.click(0.45, 0.6)
@@ -217,6 +222,7 @@ def test_key_bitmap_shows_the_key(explorer: Explorer) -> None:
     assert np.abs(real[rows, cols].astype(int) - cached[rows, cols].astype(int)).max() <= 2
 
 
+@pytest.mark.deep
 def test_still_widgets_are_drawn_from_bitmaps_while_dragging(explorer: Explorer) -> None:
     """While one slider is dragged the other widgets are pixels (the same); the release shows them."""
     still: WidgetsImage = explorer._still  # noqa: SLF001
@@ -280,6 +286,7 @@ def test_click_shows_and_prints_classifys_answer(explorer: Explorer, echo: Echo,
     assert_same_map(explorer, Parameters(3.0, 0.4))
 
 
+@pytest.mark.deep
 def test_click_follows_the_sliders_and_the_loads(explorer: Explorer, run_cli) -> None:
     explorer.click(2.3456789, 0.77777)
     pt = explorer.point
@@ -293,6 +300,7 @@ def test_click_follows_the_sliders_and_the_loads(explorer: Explorer, run_cli) ->
     assert_same_map(explorer, Parameters(3.0, -0.6, buoyancy=0.318, uplift_ratio=0.524))
 
 
+@pytest.mark.deep
 def test_panel_text_is_rendered_once_per_text(explorer: Explorer) -> None:
     panel: TextPanel = explorer._info  # noqa: SLF001
     explorer.click(0.45, 0.6)
@@ -326,6 +334,7 @@ def plot_bytes(run_cli, tmp_path: Path, args: list[str], name: str) -> bytes:
     return out.read_bytes()
 
 
+@pytest.mark.deep
 def test_save_writes_plots_bytes_and_name(explorer: Explorer, echo: Echo, run_cli,
                                           tmp_path: Path, monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
@@ -340,6 +349,7 @@ def test_save_writes_plots_bytes_and_name(explorer: Explorer, echo: Echo, run_cl
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_save_with_loads_and_a_point(explorer: Explorer, run_cli, tmp_path: Path,
                                      monkeypatch) -> None:
     monkeypatch.chdir(tmp_path)
@@ -356,6 +366,7 @@ def test_save_with_loads_and_a_point(explorer: Explorer, run_cli, tmp_path: Path
     assert svg.read_bytes() == plot_bytes(run_cli, tmp_path, args, "b.svg")
 
 
+@pytest.mark.deep
 def test_save_at_another_resolution(echo: Echo, run_cli, tmp_path: Path) -> None:
     ex = open_explorer(Parameters(3.0, -0.2), resolution=300, echo=echo)
     try:
@@ -368,6 +379,7 @@ def test_save_at_another_resolution(echo: Echo, run_cli, tmp_path: Path) -> None
         ex.close()
 
 
+@pytest.mark.deep
 def test_standalone_explorer_defaults(tmp_path: Path, monkeypatch, run_cli) -> None:
     """Without the command line's wiring: classify's text, plot's bytes, a plain file name."""
     lines: list[str] = []
@@ -403,6 +415,7 @@ def mouse(ex: Explorer, name: str, ax, x: float, y: float) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_widgets_call_the_methods(explorer: Explorer, echo: Echo, tmp_path: Path,
                                   monkeypatch) -> None:
     ex = explorer
@@ -461,6 +474,7 @@ def test_cli_without_a_display_exits_1(run_cli) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_cli_output_saves_the_first_view(run_cli, tmp_path: Path) -> None:
     out = tmp_path / "start.png"
     args = ["--gamma", "0.7", "--kprime", "-0.018", "--buoyancy", "0.318", "--uplift-ratio", "0.524"]
@@ -508,6 +522,7 @@ def test_drag_title_reads_as_plots() -> None:
         assert line.replace(" = ", "=") == tex[1].replace("$", "").replace(" = ", "=")
 
 
+@pytest.mark.deep
 def test_off_screen_explorer_stays_out_of_pyplot() -> None:
     import matplotlib.pyplot as plt
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -534,6 +549,7 @@ def _goda(tmp_path: Path) -> Path:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_cli_design_starts_at_the_design_wave(run_cli, tmp_path: Path) -> None:
     """The first view is the caisson's loaded map with its design point: plot's bytes with the
     block and the point that `regimemap caisson --json` gives."""

@@ -168,6 +168,7 @@ def test_key_leaves_out_modes_beyond_the_view():
     fig, ax, art = map_figure(run_map(p, samples=201, view="report"), dpi=DPI)
     assert Mode.RO.description in {t.get_text() for t in art.legend.get_texts()}
 
+@pytest.mark.deep
 def test_atlas_panels_never_collide():
     fig = atlas_figure(run_atlas([1.0, 3.0], [-0.6, 0.0, 0.9], samples=151), dpi=DPI)
     arts = fig._regimemap_maps  # the panels' MapArtists

@@ -98,6 +98,7 @@ def test_loads_text():
 @pytest.mark.render
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_worked_figures_ids_and_files(run_cli, tmp_path):
     from regimemap.drawing.maps.presets import FIGURE_IDS
     from regimemap.drawing.maps.worked import WORKED, WORKED_IDS

@@ -110,6 +110,7 @@ def test_most_common_colour_with_hatches_and_labels(fid):
         assert np.abs(np.array(common) - want).max() <= 2, (fid, mode.label, common, want)
 
 
+@pytest.mark.deep
 def test_region_labels_are_in_their_regions():
     from regimemap import classify
 
@@ -209,6 +210,7 @@ def test_two_renders_are_byte_identical(fmt, tmp_path):
     assert a.read_bytes() == b.read_bytes()
 
 
+@pytest.mark.deep
 def test_reused_figure_gives_the_same_bytes(tmp_path):
     fig = None
     for fid in ("3.9a", "4.7a", "3.10"):
@@ -372,6 +374,7 @@ def test_a_forked_worker_starts_with_no_parse_of_its_parent():
 
 
 @pytest.mark.parametrize("gamma", [1.0, 3.0, 4.0, 6.0])
+@pytest.mark.deep
 def test_point_names_never_overlap(gamma):
     """E and F (and D, G) on the k axis can nearly coincide; their names must not."""
     import itertools

@@ -109,6 +109,7 @@ def _overlaps(fig) -> list[tuple[str, str]]:
     return [(a, b) for i, (a, ba) in enumerate(boxes) for b, bb in boxes[i + 1:] if ba.overlaps(bb)]
 
 
+@pytest.mark.deep
 def test_the_lifetime_sheet_draws_the_required_factors_and_no_text_overlaps() -> None:
     """With panel (g), (e) is drawn shorter: it still draws the file's required safety factors;
     no text of the sheet (the key of (d) included) meets another, with or without (g)."""

@@ -33,6 +33,7 @@ def _batch(rows: np.ndarray) -> tuple[Block, Pulse]:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("restitution", [pytest.param(None, marks=pytest.mark.portable), 0.7])
+@pytest.mark.deep
 def test_a_run_alone_and_in_a_batch_agree_bit_for_bit(restitution: float | None) -> None:
     together = simulate(*_batch(RUNS), restitution=restitution, history=4)
     assert len(set(together.end_time.tolist())) == len(RUNS)  # the runs leave one by one

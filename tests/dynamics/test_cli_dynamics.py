@@ -34,6 +34,7 @@ def one_error(r, code: int, pattern: str) -> str:
 
 # -- simulate: output ------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_simulate_text_names_phases_and_outcome():
     r = run("simulate", *MR, *HALF_SINE)
     assert r.code == 0, r.output
@@ -49,6 +50,7 @@ def test_simulate_text_names_phases_and_outcome():
     assert float(m.group(1)) == pytest.approx(t_uplift, abs=2e-3)
 
 
+@pytest.mark.slow
 def test_simulate_json_keys_rounding_and_agreement_with_the_library():
     r = run("simulate", *MR, "--pulse", "half-sine", "--k-peak", "0.6", "--duration", "0.5", "--json")
     assert r.code == 0, r.output
@@ -73,6 +75,7 @@ def test_simulate_json_keys_rounding_and_agreement_with_the_library():
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_simulate_history_csv_and_npz(tmp_path):
     csv_path, npz_path = tmp_path / "h.csv", tmp_path / "h.npz"
     r = run("simulate", *MR, *HALF_SINE, "-o", str(csv_path))
@@ -93,6 +96,7 @@ def test_simulate_history_csv_and_npz(tmp_path):
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_simulate_plot_and_animation(tmp_path):
     png, gif = tmp_path / "run.png", tmp_path / "run.gif"
     r = run("simulate", *MR, "--mu", "0.35", "--pulse", "half-sine", "--k-peak", "0.6", "--duration", "0.5",
@@ -108,6 +112,7 @@ def test_simulate_plot_and_animation(tmp_path):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_simulate_pulse_file(tmp_path):
     f = tmp_path / "record.csv"
     t = np.linspace(0, 0.5, 51)
@@ -208,6 +213,7 @@ def test_read_pulse_csv_library(tmp_path):
 # -- atomic writes ------------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("suffix", ["csv", "npz"])
+@pytest.mark.slow
 def test_history_write_failing_half_way_leaves_the_old_file(tmp_path, monkeypatch, suffix):
     import builtins
 
@@ -255,6 +261,7 @@ OUT = MR[:6] + ["--mu", "0.5", "--pulse", "half-sine"]
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_outcome_npz_and_csv_shapes_and_names(tmp_path):
     npz, csv_path = tmp_path / "m.npz", tmp_path / "m.csv"
     # --no-refine: the grid's arrays are the same bytes (the refined boundaries go to .json and figures
@@ -293,6 +300,7 @@ def test_outcome_axes_follow_the_command_line_order(tmp_path):
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_outcome_dimensionless_and_figure(tmp_path):
     svg, npz = tmp_path / "s.svg", tmp_path / "s.npz"
     r = run("outcome", *MR, "--pulse", "half-sine", "--omega-p", "3:30:5", "--k-peak", "0.3:2.5:4",
@@ -355,6 +363,7 @@ def tiny_figures(monkeypatch):
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_dynamics_figures_cache_gives_the_same_bytes(tmp_path, tiny_figures):
     import dataclasses
 

@@ -143,6 +143,7 @@ def test_docstring_examples():
 # -- physics: a pure slide is the lifetime model's closed form without the added mass -------------------
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_pure_slide_matches_the_closed_form_without_added_mass():
     """With less friction Goda's caisson slides under its design wave and does not rock.
 
@@ -191,6 +192,7 @@ def test_pure_slide_matches_the_closed_form_without_added_mass():
 
 # -- the command ---------------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_simulate_design_runs_and_says_where_the_numbers_came_from(goda):
     r = invoke_cli(["simulate", "--design", str(goda)])
     assert r.code == 0, r.output
@@ -206,6 +208,7 @@ def test_simulate_design_runs_and_says_where_the_numbers_came_from(goda):
         assert piece in out, (piece, out)
 
 
+@pytest.mark.slow
 def test_simulate_design_json_k_peak_is_the_caissons_k(goda):
     r = invoke_cli(["simulate", "--design", str(goda), "--json"])
     assert r.code == 0, r.output
@@ -244,6 +247,7 @@ def test_simulate_design_slide_agrees_with_the_library(tmp_path):
         assert str(z["design"]) == str(path) and float(z["mu"]) == 0.4
 
 
+@pytest.mark.slow
 def test_restitution_may_be_given_with_a_design(goda):
     r = invoke_cli(["simulate", "--design", str(goda), "--restitution", "0.5", "--json"])
     assert r.code == 0, r.output

@@ -11,6 +11,7 @@ G = 9.81
 
 
 @pytest.mark.parametrize("k, mu, td", [(0.5, 0.3, 0.4), (0.35, 0.2, 1.0), (0.9, 0.6, 0.05)])
+@pytest.mark.slow
 def test_pure_sliding_rectangular_pulse(k: float, mu: float, td: float) -> None:
     # squat block (tan(alpha) = 2): slides, never rocks
     blk = Block(B=1.0, gamma=0.5, mu=mu)
@@ -25,6 +26,7 @@ def test_pure_sliding_rectangular_pulse(k: float, mu: float, td: float) -> None:
     assert sim.category[0] == 1 and sim.settled[0]
 
 
+@pytest.mark.slow
 def test_pure_sliding_batch_matches_closed_form() -> None:
     k = np.array([0.4, 0.5, 0.6, 0.7])
     td = np.array([0.2, 0.3, 0.5, 0.8])
@@ -74,6 +76,7 @@ def _impact_ratio_at_dt_zero(blk: Block, theta0: float, t_max: float, restitutio
 
 @pytest.mark.slow
 @pytest.mark.parametrize("gamma", [2.0, 3.0, 5.0])
+@pytest.mark.deep
 def test_plastic_impact_gives_housner_ratio(gamma: float) -> None:
     blk = Block(B=0.3, gamma=gamma, mu=5.0)
     alpha = np.arctan(1 / gamma)
@@ -83,6 +86,7 @@ def test_plastic_impact_gives_housner_ratio(gamma: float) -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_plastic_impact_ratio_of_a_non_uniform_block() -> None:
     blk = Block(B=0.3, gamma=3.0, mu=5.0, i2=2.0)
     B, H, J = 0.3, 0.9, 2.0 * 0.09
@@ -92,6 +96,7 @@ def test_plastic_impact_ratio_of_a_non_uniform_block() -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("r", [0.5, 0.7, 0.95])
+@pytest.mark.deep
 def test_restitution_sets_the_rocking_ratio(r: float) -> None:
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     assert _impact_ratio_at_dt_zero(blk, 0.2, 0.6, restitution=r) == pytest.approx(r, abs=5e-5)
@@ -103,6 +108,7 @@ def _energy(h: object, J: float) -> np.ndarray:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("restitution", [None, 0.9, 1.0])
+@pytest.mark.deep
 def test_energy_never_grows_in_free_rocking(restitution: float | None) -> None:
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     sim = simulate(blk, Pulse.rectangular(0.0, 0.01), theta0=0.25, restitution=restitution, history=0,

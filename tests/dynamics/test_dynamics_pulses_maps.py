@@ -87,6 +87,7 @@ def test_dimensionless_axes_round_trip() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_outcome_map_shapes_and_categories() -> None:
     """The grid of runs: its shapes, categories and cells (refine=False: the refinement adds
     crossings and leaves the grid as it is; tests/dynamics/test_outcome_boundaries.py checks it)."""
@@ -105,6 +106,7 @@ def test_outcome_map_shapes_and_categories() -> None:
     assert m.max_rotation[2, 3] == pytest.approx(one.max_rotation[0])
 
 
+@pytest.mark.slow
 def test_outcome_map_of_friction() -> None:
     blk = Block(B=1.0, gamma=0.5, mu=0.3)
     m = outcome_map(blk, "rectangular", ("mu", [0.2, 0.4, 0.6]), ("k_peak", [0.3, 0.5]), duration=0.3)

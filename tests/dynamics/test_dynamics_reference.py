@@ -50,6 +50,7 @@ def test_reference_quarter_period_matches_linearised_closed_form() -> None:
 
 
 @pytest.mark.parametrize("frac", [0.3, 0.6, 0.9])
+@pytest.mark.slow
 def test_stepper_quarter_period_matches_reference(frac: float) -> None:
     th0 = frac * A_MR
     r = ref.rocking(P_MR, A_MR, lambda t: 0.0, 0.0, eta=1.0, t_end=5.0, theta0=th0)
@@ -70,6 +71,7 @@ def test_reference_amplitudes_after_impacts_match_closed_form() -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("eta", [0.8, 0.9])
+@pytest.mark.deep
 def test_stepper_amplitudes_after_impacts_match_reference(eta: float) -> None:
     th0 = 0.2
     r = ref.rocking(P_MR, A_MR, lambda t: 0.0, 0.0, eta=eta, t_end=10.0, theta0=th0)
@@ -85,6 +87,7 @@ def test_stepper_amplitudes_after_impacts_match_reference(eta: float) -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("lam", [1.5, 2.0, 3.0])
+@pytest.mark.deep
 def test_reference_rectangular_pulse_matches_housner(lam: float) -> None:
     p, alpha = 2.0, 0.05
     k = lam * alpha
@@ -99,6 +102,7 @@ def test_reference_rectangular_pulse_matches_housner(lam: float) -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("lam", [1.5, 3.0])
+@pytest.mark.deep
 def test_stepper_rectangular_pulse_threshold_matches_reference(lam: float) -> None:
     k = lam * np.tan(A_MR)
 
@@ -120,6 +124,7 @@ def _mr_over(kp: float, linear: bool) -> bool:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_reference_linearised_half_sine_threshold_of_makris_roussos() -> None:
     thr = ref.threshold(lambda kp: _mr_over(kp, True), 0.50, 0.60, tol=1e-6)
     # published: between 0.5535 g and 0.5545 g.  With g = 9.81 (p = 3.4108 rad/s) our linearised
@@ -128,6 +133,7 @@ def test_reference_linearised_half_sine_threshold_of_makris_roussos() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_stepper_half_sine_threshold_within_one_percent_of_reference() -> None:
     thr_ref = ref.threshold(lambda kp: _mr_over(kp, False), 0.50, 0.70, tol=REF_TOL)
     thr = _stepper_threshold(MR, lambda kp: Pulse.half_sine(kp, 0.5), 0.5, 0.7)
@@ -137,6 +143,7 @@ def test_stepper_half_sine_threshold_within_one_percent_of_reference() -> None:
 # -- Zhang & Makris (2001): one-sine, non-monotone safe region -------------------------------------------
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_one_sine_non_monotone_pattern_matches_reference() -> None:
     p, alpha, eta = 2.14, 0.25, 0.9
     blk = Block.from_frequency(p, alpha, mu=10.0)

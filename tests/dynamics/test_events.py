@@ -137,6 +137,7 @@ def test_the_issue_peak_starts_slide_rock_for_every_duration(dt: float | None) -
     assert all("SL" in _labels(ph) for ph in sim.phases)
 
 
+@pytest.mark.slow
 def test_without_events_the_issue_flips_with_the_duration() -> None:
     """What the events fix: the mid-points alone see the peak for some durations only."""
     T = np.linspace(2.0, 5.0, 8)
@@ -148,6 +149,7 @@ def test_without_events_the_issue_flips_with_the_duration() -> None:
 
 @pytest.mark.parametrize("shape", ["rectangular", "half-sine", "triangular"])
 @pytest.mark.parametrize("dt", [None, 0.0011, 0.0173])
+@pytest.mark.slow
 def test_initiation_is_decided_by_the_peak_alone(shape: str, dt: float | None) -> None:
     """The Makris-Roussos block starts rocking when k passes k_A = 1/3: a peak 3e-6 above it does
     for every duration and step, one 3e-6 below never does (the exact event on the peak)."""
@@ -202,6 +204,7 @@ _PINNED_SLIDE = [-0.0, 0.06376574494529223, -4.04575600558875e-06, 0.02637448428
 
 @pytest.mark.portable
 @pytest.mark.slow
+@pytest.mark.deep
 def test_without_events_the_stepper_is_unchanged() -> None:
     B, gamma, mu, kprime, beta, nu, k, T = _BATCH.T
     blk = Block(B=B, gamma=gamma, mu=mu, kprime=kprime, beta=beta, nu=nu)
@@ -217,6 +220,7 @@ def test_without_events_the_stepper_is_unchanged() -> None:
 # -- categories from the motion ----------------------------------------------------------------------
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_categories_agree_with_the_phases() -> None:
     B, gamma, mu, kprime, beta, nu, k, T = _BATCH.T
     blk = Block(B=B, gamma=gamma, mu=mu, kprime=kprime, beta=beta, nu=nu)
@@ -232,6 +236,7 @@ def test_categories_agree_with_the_phases() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_min_rotation_moves_a_small_rocking_run_from_slide_rock_to_slide() -> None:
     sim = simulate(Block(mu=0.6, **CAISSON), Pulse.breaking(0.86, [2.0, 2.75]), t_max=[2.2, 2.95])
     assert sim.category.tolist() == [SLIDE_ROCK, SLIDE_ROCK]
@@ -246,6 +251,7 @@ def test_min_rotation_moves_a_small_rocking_run_from_slide_rock_to_slide() -> No
 
 # -- unfinished runs -------------------------------------------------------------------------------------
 
+@pytest.mark.slow
 def test_a_run_still_moving_at_the_time_limit_is_its_own_category() -> None:
     sim = simulate(Block(mu=0.0, **CAISSON), Pulse.breaking(0.86, 2.0), t_max=5.0)
     assert not sim.settled[0] and not sim.overturned[0] and sim.still_moving[0]
@@ -254,6 +260,7 @@ def test_a_run_still_moving_at_the_time_limit_is_its_own_category() -> None:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_simulate_mu_0_says_still_moving() -> None:
     r = invoke_cli(["simulate", *CAISSON_CLI, "--mu", "0", "--duration", "2", "--json"])
     assert r.code == 0, r.output
@@ -266,6 +273,7 @@ def test_simulate_mu_0_says_still_moving() -> None:
     assert "27.8" not in text
 
 
+@pytest.mark.slow
 def test_simulate_json_category_agrees_with_phases_and_min_rotation() -> None:
     r = invoke_cli(["simulate", *CAISSON_CLI, "--mu", "0.6", "--duration", "2.75", "--json"])
     assert r.code == 0, r.output
@@ -281,6 +289,7 @@ def test_simulate_json_category_agrees_with_phases_and_min_rotation() -> None:
 
 
 @pytest.mark.parametrize("T", [0.07, 0.2, 0.45])
+@pytest.mark.slow
 def test_a_push_to_the_right_starts_rocking_about_o_prime_at_the_mirror_boundary(T: float) -> None:
     """k < 0: the crossings of the mirror image's boundaries (k_A = 1/3 about O')."""
     blk = Block(B=0.2, gamma=3.0, mu=5.0)

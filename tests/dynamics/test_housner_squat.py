@@ -23,6 +23,7 @@ def test_the_ratio_is_not_positive_below_one_over_root_two(gamma: float) -> None
 
 @pytest.mark.slow
 @pytest.mark.parametrize("gamma", [0.5, 0.65])
+@pytest.mark.deep
 def test_a_squat_block_lands_flat_at_its_first_impact(gamma: float) -> None:
     """Released tilted on one corner, it rocks back and stops: no rocking about the other corner."""
     blk = Block(B=0.3, gamma=gamma, mu=5.0)
@@ -37,6 +38,7 @@ def test_a_squat_block_lands_flat_at_its_first_impact(gamma: float) -> None:
     assert np.all(h.theta >= -1e-3 * alpha)  # never past flat onto the other corner
 
 
+@pytest.mark.slow
 def test_simulate_says_not_applicable(run_cli) -> None:
     r = run_cli(["simulate", "--gamma", "0.5", *BLOCK])
     assert r.code == 0, r.stderr
@@ -47,6 +49,7 @@ def test_simulate_says_not_applicable(run_cli) -> None:
     assert obj["derived"]["housner_ratio"] == pytest.approx(-0.2, rel=1e-11)
 
 
+@pytest.mark.deep
 def test_a_slender_block_keeps_housner(run_cli) -> None:
     r = run_cli(["simulate", "--gamma", "3", *BLOCK])
     eta = 1.0 - 1.5 * math.sin(math.atan(1.0 / 3.0)) ** 2

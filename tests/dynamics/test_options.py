@@ -221,6 +221,7 @@ def test_the_steps_of_a_map_name_the_pulse_option() -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("swept", [["--half-width", "0.2,0.4"], ["--mu", "0.3,5"], ["--gamma", "2,3"]])
+@pytest.mark.deep
 def test_outcome_sweeps_the_required_block_fields(tmp_path, swept: list[str]) -> None:
     """--gamma, --half-width and --mu can be swept like the others (they used to fail with an
     internal error: the map's block lacked the swept required field)."""

@@ -167,6 +167,7 @@ def test_nothing_to_refine_and_axes_that_cannot_be():
     assert Crossings.from_arrays(arrays).arrays().keys() == arrays.keys()
 
 
+@pytest.mark.slow
 def test_a_map_with_one_value_on_an_axis_is_not_refined():
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     m = outcome_map(blk, "half-sine", ("k_peak", [0.2, 0.5, 0.8]), ("duration", [0.5]))
@@ -196,6 +197,7 @@ def _reference_threshold(T: float) -> float:
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_refined_overturning_boundary_matches_the_reference(mr_map):
     m = mr_map
     assert m.refined and m.crossings is not None and m.crossings.batches <= 3
@@ -213,6 +215,7 @@ def test_refined_overturning_boundary_matches_the_reference(mr_map):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_refined_boundaries_have_no_staircase(mr_map):
     pitch = (K[1] - K[0], float(np.min(np.diff(DURATIONS))))
     for a, b, p in mr_map.boundaries():
@@ -224,6 +227,7 @@ def test_refined_boundaries_have_no_staircase(mr_map):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_probes_of_the_refinement_are_runs_of_the_map(mr_map):
     """A probe at a node gives the node's category (the batch does not change a run)."""
     m = mr_map

@@ -44,6 +44,7 @@ def mr_json(tmp_path_factory):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_json_schema(mr_json):
     r, out, d = mr_json
     assert r.stdout.splitlines() == [str(out)]
@@ -76,6 +77,7 @@ def test_json_schema(mr_json):
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_no_refine_and_quiet(tmp_path):
     out, png = tmp_path / "map.json", tmp_path / "map.png"
     r = invoke_cli(["outcome", *MR, *SWEEP, "--no-refine", "--quiet", "-o", str(out), "-o", str(png)])
@@ -87,6 +89,7 @@ def test_no_refine_and_quiet(tmp_path):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_outcome_progress_bars_on_a_terminal(tmp_path, terminal, mr_json):
     r = mr_json[0]  # the run of SWEEP on a terminal (the bars do not depend on the output format)
     assert "\rsimulating:" in r.stderr and "/27 [" in r.stderr and "\rrefining boundaries:" in r.stderr
@@ -97,6 +100,7 @@ def test_outcome_progress_bars_on_a_terminal(tmp_path, terminal, mr_json):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_library_progress_counts_every_run():
     blk = Block(B=0.2, gamma=3.0, mu=5.0)
     done: list[int] = []
@@ -126,6 +130,7 @@ def test_library_progress_counts_every_run():
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_dynamics_figures_progress_and_quiet(tmp_path, terminal, monkeypatch):
     import dataclasses
 
@@ -143,6 +148,7 @@ def test_dynamics_figures_progress_and_quiet(tmp_path, terminal, monkeypatch):
 
 @pytest.mark.render
 @pytest.mark.slow
+@pytest.mark.deep
 def test_figures_progress(tmp_path, terminal):
     r = invoke_cli(["figures", "--out", str(tmp_path), "--set", "worked", "--jobs", "1", "--dpi", "40"])
     assert r.code == 0, r.output

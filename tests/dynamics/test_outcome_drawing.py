@@ -114,6 +114,7 @@ def test_svg_is_byte_stable():
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_motion_figure_shades_the_phases():
     from regimemap.drawing.motion.history import motion_figure, phase_runs
     from regimemap.dynamics import Block, Pulse, simulate
@@ -131,6 +132,7 @@ def test_motion_figure_shades_the_phases():
     assert "RE  rest" in legend and "SRO-  slide-rock about O, O slipping left" in legend
 
 
+@pytest.mark.slow
 def test_the_figure_of_an_outcome_record_labels_its_axes_and_titles_its_inputs() -> None:
     """outcome_record_figure reads the record: dimensionless axes where it has them, the fixed inputs."""
     from types import SimpleNamespace

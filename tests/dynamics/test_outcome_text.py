@@ -69,6 +69,7 @@ def cache_dir(pytestconfig, tmp_path_factory):
 @pytest.mark.render
 @pytest.mark.slow
 @pytest.mark.parametrize("fid", DYNAMICS_FIGURE_IDS)
+@pytest.mark.deep
 def test_committed_outcome_figures_never_collide(fid, cache_dir, tmp_path):
     f = DYNAMICS_FIGURES[fid]
     m, x, y, _ = cached_outcome(cache_dir, fid, repr(f), f.compute)

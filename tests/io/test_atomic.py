@@ -209,6 +209,7 @@ from ..conftest import invoke_cli  # noqa: E402
 
 @pytest.mark.parametrize("failure", sorted(FAILURES))
 @pytest.mark.parametrize("key", writer_params(["export-npz", "plot-png"]))
+@pytest.mark.slow
 def test_every_failure_kind_through_a_command(tmp_path, monkeypatch, key, failure):
     exc, after, old_present, code = FAILURES[failure]
     out_dir = tmp_path / "out"

@@ -92,6 +92,7 @@ def test_heel_pressure_over_5_mpa_is_named():
 
 
 @pytest.mark.parametrize("command", [["caisson"], ["lifetime", "--trials", "20"], ["simulate", "--design"]])
+@pytest.mark.slow
 def test_warning_then_strict_error(run_cli, tmp_path, command):
     path = _write(tmp_path, EXAMPLE.replace("buoyant_weight = 2312", "buoyant_weight = 2312000"))
     r = run_cli([*command, path])
@@ -104,6 +105,7 @@ def test_warning_then_strict_error(run_cli, tmp_path, command):
     assert clean.code == 0 and "warning:" not in clean.stderr
 
 
+@pytest.mark.slow
 def test_simulate_design_names_the_option_and_the_slip(run_cli, tmp_path):
     """The depth in centimetres: beyond the hard limit, an error on --design naming the key and the slip;
     a caisson far wider than any: a warning, and with --strict an error."""

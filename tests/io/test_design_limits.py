@@ -118,6 +118,7 @@ def test_no_runtime_warning_reaches_the_user(tmp_path, old, new):
 @pytest.mark.subprocess
 @pytest.mark.parametrize("old,new", [("buoyant_weight = 2312", "buoyant_weight = 1e7"),
                                      ("width = 15.0", "width = 500")])
+@pytest.mark.deep
 def test_the_sheet_draws_at_the_limits(tmp_path, old, new):
     """The heaviest and the widest section accepted still draw their sheet, warnings and all."""
     path = _write(tmp_path, _replace(old, new).split("[lifetime]")[0])

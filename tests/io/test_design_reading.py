@@ -43,6 +43,7 @@ def test_a_bom_keeps_the_lines_of_the_errors(tmp_path):
     assert str(marked.value) == str(plain.value).replace("plain.toml", "bom.toml")
 
 
+@pytest.mark.slow
 def test_the_commands_accept_a_design_file_with_a_bom(run_cli, tmp_path):
     plain = run_cli(["caisson", str(_write(tmp_path / "goda.toml", EXAMPLE))])
     marked = run_cli(["caisson", str(_write(tmp_path / "bom.toml", BOM + EXAMPLE))])

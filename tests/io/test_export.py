@@ -77,6 +77,7 @@ def _on_spec(spec: dict, k: float, mu: float) -> float:
 
 
 @pytest.mark.parametrize("gamma,kprime", CASES)
+@pytest.mark.slow
 def test_json_polylines_satisfy_their_equations(tmp_path, gamma, kprime):
     p = Parameters(gamma, kprime)
     path = tmp_path / "map.json"

@@ -241,6 +241,7 @@ _TAIL = {"caisson": ["--json"], "lifetime": ["--trials", "200", "--json", "--see
 
 
 @pytest.mark.parametrize("command", sorted(COMMANDS))
+@pytest.mark.deep
 def test_commands_accept_a_link_to_a_regular_file(command, tmp_path):
     if command in ("plot", "explore-design"):
         pytest.importorskip("matplotlib")

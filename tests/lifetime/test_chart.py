@@ -63,6 +63,7 @@ def test_sf_width_has_the_required_safety_factor():
 
 @pytest.mark.slow
 @pytest.mark.parametrize("depth, wider", [(8.0, False), (20.0, True)], ids=["shallow-narrower", "deep-wider"])
+@pytest.mark.deep
 def test_goda_takagi_trend_shallow_narrower_deep_wider(depth: float, wider: bool):
     """At 8 m the width for the target is below the conventional width, at 20 m above it (the two
     depths are separate tests: each is a long Monte Carlo chart, and pytest-xdist runs them side by
@@ -83,6 +84,7 @@ def test_goda_takagi_trend_shallow_narrower_deep_wider(depth: float, wider: bool
     assert (ratio > 1.0) if wider else (ratio < 1.0), (depth, ratio)
 
 
+@pytest.mark.slow
 def test_lifetime_and_chart_agree_within_their_errors():
     r = lifetime_sliding(GODA.with_width(12.0), MODEL, trials=1500, seed=2)
     c = design_chart(GODA, MODEL, [12.0, 14.0], trials=1500, seed=8)
@@ -101,6 +103,7 @@ def _exponential_decay(n: int, seed: int) -> tuple[np.ndarray, np.ndarray, np.nd
 
 
 @pytest.mark.parametrize("n", [400, 1600, 6400])
+@pytest.mark.slow
 def test_the_interval_is_the_delta_method_s_for_a_closed_form_curve(n: int) -> None:
     from regimemap.lifetime.chart import width_interval
 
@@ -114,6 +117,7 @@ def test_the_interval_is_the_delta_method_s_for_a_closed_form_curve(n: int) -> N
     assert iv.level == 0.95
 
 
+@pytest.mark.slow
 def test_the_interval_shrinks_as_one_over_sqrt_trials_and_is_seeded() -> None:
     from regimemap.lifetime.chart import width_interval
 
@@ -126,6 +130,7 @@ def test_the_interval_shrinks_as_one_over_sqrt_trials_and_is_seeded() -> None:
     assert spans[0] / spans[1] == pytest.approx(4.0, rel=0.2)  # sqrt(8000 / 500)
 
 
+@pytest.mark.slow
 def test_the_width_is_bisected_to_the_tolerance_and_lies_in_its_interval() -> None:
     widths = [12.0, 16.0, 20.0]
     c = design_chart(GODA, MODEL, widths, trials=300, seed=9, target=0.1, tolerance=0.05)
@@ -154,6 +159,7 @@ def test_a_chart_that_does_not_bracket_the_target_says_both_ends() -> None:
 # -- the chart under a record's replicate climates -------------------------------------------------
 
 
+@pytest.mark.deep
 def test_the_chart_band_is_the_quantile_of_the_climates_charts_and_its_width_crosses_it() -> None:
     from regimemap.lifetime import Climate
     from regimemap.lifetime.chart import crossing_width

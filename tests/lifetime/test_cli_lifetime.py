@@ -154,6 +154,7 @@ def test_the_same_seed_gives_the_same_bytes_with_any_jobs_and_chunk(run_cli, god
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_a_dask_cluster_gives_the_same_bytes(run_cli, goda: Path, tmp_path: Path) -> None:
     pytest.importorskip("distributed")
     from distributed import LocalCluster
@@ -239,6 +240,7 @@ def test_widths_beyond_those_of_caissons_are_refused(run_cli, goda: Path) -> Non
            "'--width'", "outside the 1-100 m of caisson widths", "1 <= A < B <= 100")
 
 
+@pytest.mark.slow
 def test_the_width_tolerance_sets_the_bisection(run_cli, goda: Path) -> None:
     base = ["lifetime", str(goda), "--trials", "200", "--width", "12:24:4", "--json"]
     fine = json.loads(ok(run_cli([*base, "--width-tolerance", "0.01"])).stdout)
@@ -250,6 +252,7 @@ def test_the_width_tolerance_sets_the_bisection(run_cli, goda: Path) -> None:
     failed(run_cli(["lifetime", str(goda), "--width-tolerance", "0.1"]), 2, "--width-tolerance", "--width")
 
 
+@pytest.mark.slow
 def test_the_chart_s_table_as_csv(run_cli, goda: Path, tmp_path: Path) -> None:
     text = EXAMPLE.replace("# failure_sliding = 5.0", "failure_sliding = 5.0")
     goda.write_text(text, encoding="utf-8")

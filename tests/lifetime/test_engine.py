@@ -89,6 +89,7 @@ def _brute_force(caisson: Caisson, model: LifetimeModel, trials: int, seed: int)
     return out.reshape(trials, model.years).sum(axis=1)
 
 
+@pytest.mark.slow
 def test_sliding_waves_only_is_exact_in_distribution():
     model = LifetimeModel(CLIMATE, years=2, errors=NO_ERRORS)
     fast = _run(NARROW, model, trials=3000, seed=21).sliding

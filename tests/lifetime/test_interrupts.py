@@ -164,6 +164,7 @@ def test_ctrl_c_twice_is_still_one_line(goda: Path, tmp_path: Path) -> None:
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted", again=3)
 
 
+@pytest.mark.deep
 def test_ctrl_c_during_the_width_bisection(goda: Path, tmp_path: Path) -> None:
     out = tmp_path / "out"
     out.mkdir()
@@ -173,6 +174,7 @@ def test_ctrl_c_during_the_width_bisection(goda: Path, tmp_path: Path) -> None:
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted", delay=0.2)
 
 
+@pytest.mark.deep
 def test_ctrl_c_on_a_dask_cluster(goda: Path, tmp_path: Path) -> None:
     pytest.importorskip("distributed")
     from distributed import LocalCluster
@@ -190,6 +192,7 @@ def test_ctrl_c_on_a_dask_cluster(goda: Path, tmp_path: Path) -> None:
         assert not cluster.scheduler.tasks, "the run's tasks were left on the cluster"
 
 
+@pytest.mark.deep
 def test_ctrl_c_ends_the_figures_pool(tmp_path: Path) -> None:
     """``figures --jobs 2``: the figures not started are not drawn; those drawn are whole."""
     out = tmp_path / "out"
@@ -205,6 +208,7 @@ def test_ctrl_c_ends_the_figures_pool(tmp_path: Path) -> None:
     assert len(os.listdir(out)) < 60, "every figure was drawn after Ctrl-C"
 
 
+@pytest.mark.deep
 def test_ctrl_c_during_a_climate_band(tmp_path: Path) -> None:
     """The replicate climates of ``[lifetime.record]`` run on the same stoppable pool."""
     import shutil

@@ -271,6 +271,7 @@ def _bytes(fig, fmt: str, dpi: float | None = None) -> bytes:
     return buf.getvalue()
 
 
+@pytest.mark.deep
 def test_svg_is_byte_stable(goda: LifetimeResult, chart: DesignChart) -> None:
     for make in (lambda dpi: lifetime_figure(goda, dpi=dpi), lambda dpi: chart_figure(chart, dpi=dpi)):
         a = _bytes(make(150), "svg")
@@ -280,6 +281,7 @@ def test_svg_is_byte_stable(goda: LifetimeResult, chart: DesignChart) -> None:
         assert b"<dc:date>" not in a
 
 
+@pytest.mark.deep
 def test_pdf_embeds_truetype_fonts(goda: LifetimeResult, chart: DesignChart) -> None:
     for fig in (lifetime_figure(goda), chart_figure(chart), lifetime_figure(_zero())):
         data = _bytes(fig, "pdf")
@@ -309,6 +311,7 @@ def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
     assert [lab for lab in labels if lab in PANELS] == list(PANELS)
 
 
+@pytest.mark.deep
 def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResult) -> None:
     from regimemap.drawing.sheet.page import LIFETIME_PANEL, PANELS
     from tests.conftest import draw_sheet

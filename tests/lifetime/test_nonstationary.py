@@ -68,6 +68,7 @@ def test_no_trend_and_a_stationary_trend_give_the_numbers_of_before(name):
 
 
 @pytest.mark.portable
+@pytest.mark.slow
 def test_the_chart_of_today_s_climate_is_the_chart_of_before():
     esd, found = BEFORE_CHART
     for trend in (None, YearTrend.stationary(MODEL.years)):
@@ -95,6 +96,7 @@ def test_the_sea_level_adds_to_the_depth_terms_like_the_tide():
     np.testing.assert_array_equal(seas.H0, today.H0)  # the rise moves no random number
 
 
+@pytest.mark.slow
 def test_sea_level_rise_in_depth_limited_water_raises_the_esd():
     # Goda's site is in the surf zone: the highest waves at the wall under the 50-year storm break,
     # and their height grows with the depth (Hmax 7.98 m at h = 10.1 m, 8.63 m at 11.1 m)
@@ -112,6 +114,7 @@ def test_sea_level_rise_in_depth_limited_water_raises_the_esd():
     assert esd[2] - esd[0] > 3.0 * math.hypot(base.std_error, r.std_error)
 
 
+@pytest.mark.slow
 def test_a_rise_year_by_year_slides_more_in_the_late_years():
     years = MODEL.years
     rising = YearTrend(tuple(1.0 * y / (years - 1) for y in range(years)), (1.0,) * years, (1.0,) * years)
@@ -132,6 +135,7 @@ def test_a_wave_height_factor_above_one_raises_the_esd():
     assert down.expected_sliding < base.expected_sliding < up.expected_sliding
 
 
+@pytest.mark.deep
 def test_a_storm_rate_factor_of_two_doubles_the_mean_number_of_storms():
     model = LifetimeModel(Climate.from_return_values(5.0, 6.3, storms_per_year=3.0), years=20)
     n = 4000
@@ -192,6 +196,7 @@ def test_year_passing_is_the_first_year_over_the_limit():
         bare.year_passing(0.1)
 
 
+@pytest.mark.slow
 def test_by_year_is_the_same_bits_for_any_chunks_and_jobs_with_a_trend():
     years = 30
     trend = YearTrend(tuple(0.02 * y for y in range(years)), tuple(1.0 + 0.004 * y for y in range(years)),

@@ -73,6 +73,7 @@ def test_study_workers_die_with_their_parent(tmp_path: Path) -> None:
     _kill_parent_and_check(proc, 2)
 
 
+@pytest.mark.deep
 def test_local_cluster_dies_with_its_parent(tmp_path: Path) -> None:
     """``--scheduler local``: the scheduler and nannies live in the parent, the workers follow it
     once a task has been stored (a worker still starting ends when it first watches its parent)."""

@@ -86,6 +86,7 @@ def test_wave_duration():
 
 @pytest.mark.slow
 @pytest.mark.parametrize("k_peak,duration", [(0.45, 2.0), (0.8, 1.0)])
+@pytest.mark.deep
 def test_closed_form_matches_simulate_for_a_block_that_only_slides(k_peak, duration):
     """The loaded block of `simulate` with the lifetime model's loads, no added mass.
 

@@ -114,6 +114,7 @@ def _stop_reference(ratio: float, s1: float, c1: float) -> float:
     return float(s[0])
 
 
+@pytest.mark.slow
 def test_every_wave_runs_its_own_newton_steps():
     from regimemap.lifetime.sliding import _stop_within
 

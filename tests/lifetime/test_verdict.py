@@ -85,6 +85,7 @@ def test_each_replicate_keeps_its_exceedance_from_its_own_lifetimes():
     assert np.all(lo <= mean + 1e-15) and np.all(mean <= hi + 1e-15) and np.all(np.diff(mean) <= 1e-15)
 
 
+@pytest.mark.slow
 def test_a_record_climate_is_judged_with_its_uncertainty_and_the_report_ends_with_the_verdict(tmp_path):
     rec = run_lifetime(record_design(tmp_path), trials=60, seed=9)
     assert rec.band is not None and rec.band.replicates == 4
@@ -119,6 +120,7 @@ def test_check_exits_1_when_only_the_climate_s_uncertainty_fails(run_cli, tmp_pa
     assert "under the fitted climate" in out.stdout
 
 
+@pytest.mark.deep
 def test_the_chart_is_judged_at_the_band_s_upper_level_and_its_csv_has_the_band(tmp_path):
     rec = run_chart(record_design(tmp_path, "climate_replicates = 3", width=20.0), [16.0, 22.0, 34.0],
                     trials=40, seed=3, tolerance=1.0)
@@ -143,6 +145,7 @@ def test_the_chart_is_judged_at_the_band_s_upper_level_and_its_csv_has_the_band(
 
 
 @pytest.mark.subprocess
+@pytest.mark.deep
 def test_caisson_names_the_record_and_judges_the_band_as_lifetime_does(run_cli, tmp_path):
     p = record_design(tmp_path)  # the lifetime tests' run: trials 60, seed 9, 4 replicates
     p.write_text(p.read_text().replace("trials = 5000", "trials = 60").replace("seed = 2026", "seed = 9"))
@@ -197,6 +200,7 @@ def test_esd_at_the_width_found_carries_each_climate_s_ratio_to_the_design_chart
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_a_study_target_section_with_a_record_has_its_band_and_width_at_the_upper_level(tmp_path):
     from regimemap.workflows.study import run_study
 

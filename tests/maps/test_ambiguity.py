@@ -62,7 +62,7 @@ def _view(p: Parameters) -> tuple[float, float]:
     return min(3.0 * max(marks), 60.0), 2.5 * p.mu_Bprime
 
 
-@pytest.mark.parametrize("gamma,kprime", tiered([pair for pair in sweep(9) if pair[1] < 0], every=8))
+@pytest.mark.parametrize("gamma,kprime", tiered([pair for pair in sweep(9) if pair[1] < 0], every=8, deep=8))
 def test_polygons_equal_solver_non_uniqueness(gamma, kprime):
     p = Parameters(gamma, kprime)
     k_max, mu_max = _view(p)
@@ -129,6 +129,7 @@ def _near_edge(poly, k, mu, tol):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_admissible_set_equals_solver_off_boundaries():
     rng = np.random.default_rng(5)
     n_checked = 0

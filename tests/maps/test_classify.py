@@ -23,7 +23,7 @@ def _near_boundary(k, mu, gamma, kprime):
     return near
 
 
-@pytest.mark.parametrize("gamma,kprime", tiered(sweep(17)))
+@pytest.mark.parametrize("gamma,kprime", tiered(sweep(17), deep=4))
 def test_classify_equals_solver_choice(gamma, kprime):
     k, mu = sample_points(gamma, kprime, 5000, seed=7)
     keep = ~_near_boundary(k, mu, gamma, kprime)
@@ -34,7 +34,7 @@ def test_classify_equals_solver_choice(gamma, kprime):
     assert not bad.any(), (k[bad][:3], mu[bad][:3], lab[bad][:3], chosen[bad][:3])
 
 
-@pytest.mark.parametrize("gamma,kprime", tiered(sweep(11)))
+@pytest.mark.parametrize("gamma,kprime", tiered(sweep(11), deep=4))
 def test_boundary_labels_are_admissible(gamma, kprime):
     """On every boundary curve the documented label is one the solver admits."""
     p = Parameters(gamma, kprime)
@@ -84,6 +84,7 @@ def test_kprime_zero_limit_from_both_sides():
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_painleve_non_uniqueness_matches_section_4_7():
     """The solver admits several modes at once only below C with mu > (4+g^2)/(3g);
     there the raw regions overlap, and classify picks Section 4.7's mode."""

@@ -17,6 +17,7 @@ from regimemap.maps.sweeps import sweep_extent, sweep_frames, sweep_params
 
 @pytest.mark.parametrize("params", [Parameters(3.0, 0.4), Parameters(0.7, -0.018, buoyancy=0.318,
                                                                     uplift_ratio=0.524)])
+@pytest.mark.slow
 def test_classify_point_is_query_point_of_the_block(params: Parameters) -> None:
     for k, mu in [(0.45, 0.6), (0.05, 1.0), (2.0, 0.1)]:
         got = classify_point(DesignPoint(k, mu), params)

@@ -167,6 +167,7 @@ def _one_edge_at_a_time(p: Parameters, k_max: float, mu_max: float, samples: int
     Parameters(3.0, -0.6, buoyancy=0.5, gyration=2.0),
     Parameters(1.5, 0.0, uplift=0.4, uplift_ratio=0.5, uplift_arm=0.0),  # 2 raw pieces of a mode
 ], ids=repr)
+@pytest.mark.deep
 def test_loaded_polygons_are_the_pieces_followed_one_edge_at_a_time(p):
     """The vectorised tracks and edges give exactly the polygons of the plain lists and bisect_edge."""
     from regimemap.mechanics.modes import LOADED_MAP_MODES

@@ -121,6 +121,7 @@ def test_curves_points_and_view_of_loaded_maps(p):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("p", CASES, ids=repr)
+@pytest.mark.deep
 def test_query_point_and_margins_with_loads_agree_with_classify(p):
     rng = np.random.default_rng(3)
     k_max, mu_max = auto_extent(p)
@@ -144,6 +145,7 @@ def test_query_point_and_margins_with_loads_agree_with_classify(p):
                 assert classify(*at, p.gamma, p.kprime, **p.loads) != mode
 
 
+@pytest.mark.slow
 def test_query_point_reports_least_constraint_choices():
     p = CASES[0]
     regions = ambiguous_regions(p, 4.0, 3.0)

@@ -47,11 +47,13 @@ def results():
     return query_points(_random_points())
 
 
+@pytest.mark.slow
 def test_mode_equals_classify(results):
     for r in results:
         assert r.mode == Mode(int(classify(r.k, r.mu, r.gamma, r.kprime)))
 
 
+@pytest.mark.deep
 def test_physics_equals_solver_of_chosen_hypothesis(results):
     for r in results:
         assert r.hypothesis in HYPOTHESES_OF_MODE[r.mode]
@@ -68,6 +70,7 @@ def test_physics_equals_solver_of_chosen_hypothesis(results):
             assert r.lift == pytest.approx(float(s.lift), abs=1e-12)
 
 
+@pytest.mark.slow
 def test_chosen_hypothesis_is_admissible(results):
     for r in results:
         assert r.hypothesis_admissible
@@ -159,6 +162,7 @@ def test_known_margin_above_c():
     assert mm.up.at == pytest.approx(1.0 / 3.0 - 0.12, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_margin_at_zero():
     r = query_point(0.0, 0.0, 3.0, 0.4)
     assert r.mode is Mode.RE
@@ -255,6 +259,7 @@ def test_result_row_has_all_columns():
     assert float(row["margin_k"]) == pytest.approx(r.margin_k.relative)
 
 
+@pytest.mark.slow
 def test_vectorised_blocks_agree_with_single_queries():
     pts = _random_points(3, 5)[:120]
     many = query_points(pts)

@@ -67,6 +67,7 @@ def test_simplify_drops_collinear_points_and_keeps_ends():
 
 @given(st.floats(0.05, 20.0), st.floats(1e-5, 1e-2))
 @settings(max_examples=40, deadline=None)
+@pytest.mark.slow
 def test_simplify_stays_within_tolerance(curvature, tol):
     k = np.linspace(0, 1, 400)
     pts = np.column_stack([k, np.sin(curvature * k) / curvature])
@@ -256,6 +257,7 @@ def test_label_anchor_is_inside_its_region(gamma, kprime):
 
 @given(st.floats(0.3, 20.0), st.floats(-0.99, 0.99))
 @settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@pytest.mark.slow
 def test_label_anchor_property(gamma, kprime):
     d = compute_map(Parameters(gamma, kprime), samples=201)
     for mode, polys in d.polygons.items():

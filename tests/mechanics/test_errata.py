@@ -44,6 +44,7 @@ def _slip_sign_change(hyp, k, g, kp, mus):
     return 0.5 * (mus[i[0]] + mus[i[0] + 1])
 
 
+@pytest.mark.slow
 def test_E3_mu_star_star_coefficient():
     """(4.96): the coefficient of k is 4+g^2+3g^2|k'| (as in (4.42), (4.97)), not 3g|k'|."""
     g, kp = 2.0, -0.6

@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+import pytest
 from hypothesis import assume, given, note
 from hypothesis import strategies as st
 
@@ -50,6 +51,7 @@ def _solver_kw(loads):
 
 
 @given(loaded_scene())
+@pytest.mark.slow
 def test_exactly_one_mode_per_point(sc):
     g, kp, loads, k, mu = sc
     lab = classify(k, mu, g, kp, **loads)
@@ -58,6 +60,7 @@ def test_exactly_one_mode_per_point(sc):
 
 
 @given(loaded_scene())
+@pytest.mark.slow
 def test_solver_admissible_set_never_empty_and_label_admissible(sc):
     g, kp, loads, k, mu = sc
     codes, adm, _ = least_constraint(k, mu, g, kp, tol=1e-7, **_solver_kw(loads))
@@ -70,6 +73,7 @@ def test_solver_admissible_set_never_empty_and_label_admissible(sc):
 
 
 @given(loaded_scene(n_max=20), st.floats(1e-12, 1e-9))
+@pytest.mark.slow
 def test_continuity_at_zero_loads(sc, eps):
     """Tiny loads (and a tiny change of inertia) change no label away from the boundaries."""
     g, kp, _, k, mu = sc

@@ -53,7 +53,7 @@ def near_boundary(k, mu, g, kp, loads, codes, adm, rel=1e-6):
     return near
 
 
-@pytest.mark.parametrize(("i",), tiered([(i,) for i in range(len(SWEEP))], every=8),
+@pytest.mark.parametrize(("i",), tiered([(i,) for i in range(len(SWEEP))], every=8, deep=8),
                          ids=[f"{g:.3g}-{kp:.3g}-{n}" for n, (g, kp, _) in enumerate(SWEEP)])
 def test_raw_regions_and_classify_equal_the_solver(i):
     gamma, kprime, loads = SWEEP[i]
@@ -121,6 +121,7 @@ def test_label_grid_equals_classify_exactly(gamma, kprime, loads):
     assert np.array_equal(label_grid(kk, mu[::-1], gamma, kprime, **loads), grid[::-1])
 
 
+@pytest.mark.slow
 def test_lift_off_is_a_whole_column():
     seen = 0
     for g, kp, loads in SWEEP:
@@ -138,6 +139,7 @@ def test_lift_off_is_a_whole_column():
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_loads_create_new_modes_and_overlaps():
     """Which modes win and which overlaps occur with loads (least constraint decides them)."""
     won, overlaps = collections.Counter(), collections.Counter()

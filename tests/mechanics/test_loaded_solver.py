@@ -89,6 +89,7 @@ def test_no_lift_off_while_a_corner_would_sink():
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_admissible_set_never_empty_on_the_sweep():
     for g, kp, loads in loaded_sweep(80, seed=3):
         k, mu = sample(g, kp, loads, 2000, seed=4)

@@ -112,6 +112,7 @@ def test_classify_on_big_random_sets_and_on_exact_thresholds():
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_least_constraint_is_section_4_7_wherever_several_modes_are_admissible():
     multi = 0
     for g, kp in sweep(9):

@@ -178,6 +178,7 @@ def _solvable_everywhere(k, mu, g, kp):
 
 
 @given(scene(gamma_strategy=solver_gammas))
+@pytest.mark.slow
 def test_solver_admits_something_everywhere(sc):
     g, kp, k, mu = sc
     adm = admissible(k, mu, g, kp)
@@ -187,6 +188,7 @@ def test_solver_admits_something_everywhere(sc):
 
 
 @given(scene(gamma_strategy=solver_gammas))
+@pytest.mark.slow
 def test_chosen_mode_is_admissible_and_its_reactions_check_out(sc):
     g, kp, k, mu = sc
     lab = classify(k, mu, g, kp)

@@ -31,7 +31,7 @@ def _stable(fn, k, mu):
 # k' every 0.25 and at every case threshold of the report (tests/_sweep.py), for the 12 aspect
 # ratios: 149 (gamma, k') pairs, 2500 random points each.  The regions change form only at the
 # thresholds, which are all in; the grid at 0.125 (243 pairs) added interior k' only.
-@pytest.mark.parametrize("gamma,kprime", tiered(sweep(9), every=8))
+@pytest.mark.parametrize("gamma,kprime", tiered(sweep(9), every=8, deep=8))
 def test_raw_regions_equal_solver(gamma, kprime):
     p = Parameters(gamma, kprime)
     k, mu = sample_points(gamma, kprime, 2500, seed=int(gamma * 100 + kprime * 10) % 997)

@@ -84,6 +84,7 @@ def swept_hypotheses():
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_admissible_set_never_empty(swept_hypotheses):
     for g, kp, k, mu, hyp in swept_hypotheses:
         assert np.stack(list(hyp.values())).any(axis=0).all(), (g, kp)

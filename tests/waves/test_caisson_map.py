@@ -27,6 +27,7 @@ def _modes(a) -> np.ndarray:
 
 
 @pytest.mark.parametrize("seed", [11, 12])
+@pytest.mark.slow
 def test_safety_factors_agree_with_rest_on_the_map_uniform_caissons(seed: int) -> None:
     a = random_designs(2500, seed)
     st = a.stability
@@ -52,6 +53,7 @@ def test_safety_factors_agree_with_rest_on_the_map_filled_caissons() -> None:
     np.testing.assert_array_equal(safe[far], (modes == RE)[far])
 
 
+@pytest.mark.slow
 def test_moving_modes_of_the_map_match_the_failing_factor() -> None:
     """A caisson that fails only in sliding slides on the map."""
     a = random_designs(1500, 14)

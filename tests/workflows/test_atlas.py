@@ -24,6 +24,7 @@ def test_the_panels_maps_are_computed_in_their_views():
     assert rec.maps[0][1].polygons.keys() == one.polygons.keys()
 
 
+@pytest.mark.slow
 def test_crammed_panels_get_their_own_views_and_a_note():
     rec = run_atlas([1.0, 2.0, 3.0], [-0.6, 0.0, 0.4], samples=21)
     assert rec.share == "none" and rec.crammed

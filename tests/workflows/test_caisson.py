@@ -37,6 +37,7 @@ def _fail_analysis(monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr("regimemap.workflows.caisson.caisson_report", refuse)
 
 
+@pytest.mark.slow
 def test_the_record_holds_what_the_report_prints(tmp_path: Path) -> None:
     path = _write(tmp_path, NO_LIFE)
     r = run_caisson(path)

@@ -18,6 +18,7 @@ NDBC = DATA / "ndbc44007_1996_hs_tz.txt.gz"
 OPTIONS = ClimateOptions(threshold=("quantile", 0.98), bootstrap=20, seed=1)
 
 
+@pytest.mark.slow
 def test_the_record_holds_the_analysis_and_what_the_figures_draw() -> None:
     rec = run_climate(NDBC, OPTIONS)
     assert isinstance(rec, ClimateRecord) and rec.source == str(NDBC)
@@ -30,11 +31,13 @@ def test_the_record_holds_the_analysis_and_what_the_figures_draw() -> None:
     assert rec.report_text().startswith(f"wave climate: {NDBC}\n")
 
 
+@pytest.mark.slow
 def test_the_diagnostics_when_asked() -> None:
     rec = run_climate(NDBC, OPTIONS, diagnostics=True)
     assert isinstance(rec.diagnostics, Diagnostics) and rec.diagnostics.thresholds.size == 30
 
 
+@pytest.mark.slow
 def test_a_record_of_arrays_gives_the_numbers_of_its_file() -> None:
     wave = read_record(NDBC)
     made = make_record("buoy", wave.time, wave.hs, wave.period, wave.period_name)
@@ -43,6 +46,7 @@ def test_a_record_of_arrays_gives_the_numbers_of_its_file() -> None:
     assert rec.result.return_values == run_climate(NDBC, OPTIONS).result.return_values
 
 
+@pytest.mark.slow
 def test_the_warnings_are_notices_naming_the_record() -> None:
     wave = read_record(NDBC)
     repeated = make_record("dup", np.concatenate([wave.time[:100], wave.time[99:]]),

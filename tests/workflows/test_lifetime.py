@@ -70,6 +70,7 @@ def test_no_seed_is_a_fresh_one_reported(goda: Path, tmp_path: Path) -> None:
     assert rec.seed is None and rec.used_seed == rec.result.seed
 
 
+@pytest.mark.slow
 def test_an_implausible_value_is_a_notice(goda: Path, tmp_path: Path) -> None:
     p = tmp_path / "wide.toml"
     p.write_text(goda.read_text().replace("width = 15.0", "width = 150.0", 1))
@@ -104,6 +105,7 @@ def test_jobs_and_a_scheduler_exclude_each_other(goda: Path) -> None:
         run_lifetime(goda, trials=10, jobs=2, scheduler="tcp://127.0.0.1:1")
 
 
+@pytest.mark.slow
 def test_the_chart_record_judges_the_design_width(goda: Path) -> None:
     rec = run_chart(goda, [10.0, 25.0], target=0.1, tolerance=1.0, trials=100, seed=4)
     assert isinstance(rec, ChartRecord)
@@ -122,6 +124,7 @@ def test_a_chart_that_does_not_bracket_the_target_is_a_notice(goda: Path) -> Non
     assert rec.result.checks == () and rec.band is None
 
 
+@pytest.mark.slow
 def test_a_record_climate_adds_the_band(tmp_path: Path) -> None:
     import shutil
 

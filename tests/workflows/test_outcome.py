@@ -28,6 +28,7 @@ def record() -> OutcomeRecord:
     return run_outcome(_options(), refine=False)
 
 
+@pytest.mark.deep
 def test_the_record_holds_the_map_named_after_the_swept_inputs_and_its_counts(record) -> None:
     m = record.outcome
     assert (m.first_name, m.second_name) == ("k_peak", "duration")
@@ -48,12 +49,14 @@ def test_the_summary_says_the_runs_and_the_categories_found(record) -> None:
     assert all(f"{lab} 0" not in line for lab in record.counts)
 
 
+@pytest.mark.deep
 def test_restitution_and_min_rotation_are_recorded_as_given() -> None:
     r = run_outcome(_options(), refine=False, restitution=0.8, min_rotation=2.0)
     assert r.inputs["restitution"] == 0.8 and r.inputs["min_rotation"] == 2.0
     assert r.outcome.min_rotation == pytest.approx(np.radians(2.0))
 
 
+@pytest.mark.deep
 def test_dimensionless_axes_of_the_swept_pulse_inputs() -> None:
     r = run_outcome(_options(dimensionless=True), refine=False, dimensionless=True)
     assert set(r.dimensionless_axes) == {"k_peak", "duration"}
@@ -78,6 +81,7 @@ def test_the_data_of_a_record_are_written_with_its_inputs(record, tmp_path) -> N
         assert z["category"].shape == (2, 3) and float(z["mu"]) == 0.5
 
 
+@pytest.mark.deep
 def test_a_dynamics_figure_is_computed_once_then_read_from_the_cache(tmp_path) -> None:
     small = dataclasses.replace(DYNAMICS_FIGURES["D.3"], first=("k_peak", 0.1, 1.6, 4),
                                 second=("duration", 0.5, 6.0, 3))

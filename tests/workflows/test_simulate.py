@@ -24,6 +24,7 @@ OPTIONS = {"gamma": 3.0, "half_width": 0.2, "kprime": 0.0, "mu": 5.0, "pulse": "
            "k_peak": 0.5, "duration": 0.5}
 
 
+@pytest.mark.deep
 def test_a_block_and_a_pulse_give_the_quantities_a_designer_checks() -> None:
     block, pulse = Block(B=0.2, gamma=3.0, mu=5.0), Pulse.half_sine(0.5, 0.5)
     r = run_simulation(block, pulse)
@@ -38,6 +39,7 @@ def test_a_block_and_a_pulse_give_the_quantities_a_designer_checks() -> None:
     assert r.simulation.history is None and r.design_numbers is None and r.checks == ()
 
 
+@pytest.mark.deep
 def test_options_give_the_run_of_the_same_block_recorded_as_given() -> None:
     by_options = run_simulation(OPTIONS)
     by_objects = run_simulation(Block(B=0.2, gamma=3.0, mu=5.0), Pulse.half_sine(0.5, 0.5))
@@ -62,6 +64,7 @@ def test_options_that_do_not_go_together_name_the_option() -> None:
         run_simulation(Block(B=0.2, gamma=3.0, mu=5.0))
 
 
+@pytest.mark.slow
 def test_a_squat_block_has_no_impact_ratio_unless_given() -> None:
     squat = {**OPTIONS, "gamma": 0.5, "half_width": 1.0, "k_peak": 1.5}
     r = run_simulation(squat)
@@ -70,6 +73,7 @@ def test_a_squat_block_has_no_impact_ratio_unless_given() -> None:
     assert run_simulation(squat, restitution=0.5).impact_ratio == 0.5
 
 
+@pytest.mark.deep
 def test_a_run_still_moving_at_the_time_limit_is_a_notice() -> None:
     caisson = Block(B=7.5, gamma=0.7, kprime=-0.02, beta=0.32, nu=0.52, mu=0.0)
     sim = simulate(caisson, Pulse.breaking(0.86, 2.0), t_max=5.0)
@@ -81,6 +85,7 @@ def test_a_run_still_moving_at_the_time_limit_is_a_notice() -> None:
     assert _run_notices(settled, 0.5) == []
 
 
+@pytest.mark.deep
 def test_min_rotation_counts_rocking_only_above_it() -> None:
     r = run_simulation({**OPTIONS, "mu": 0.35, "k_peak": 0.6})
     assert r.category == "slide-rock"
@@ -97,6 +102,7 @@ def design_file(tmp_path):
     return write
 
 
+@pytest.mark.slow
 def test_a_design_file_gives_the_block_the_pulse_and_the_checks(design_file) -> None:
     path = design_file()
     r = run_simulation(path)
@@ -112,6 +118,7 @@ def test_a_design_file_gives_the_block_the_pulse_and_the_checks(design_file) -> 
     assert d["files"] == ["a.csv"] and d["design"]["file"] == path and len(d["checks"]) == 2
 
 
+@pytest.mark.slow
 def test_implausible_values_are_notices_or_refused_under_strict(design_file) -> None:
     path = design_file(example_design_text().replace("buoyant_weight = 2312", "buoyant_weight = 4800"))
     r = run_simulation(path)
@@ -130,6 +137,7 @@ def test_a_bad_design_file_is_an_option_error_naming_the_key(design_file) -> Non
     assert err.value.options == ("--design",)
 
 
+@pytest.mark.deep
 def test_the_json_of_a_run_rounds_and_says_what_is_not_residual() -> None:
     r = run_simulation({**OPTIONS, "mu": 0.35, "k_peak": 0.6})
     d = simulation_record(r)
@@ -138,6 +146,7 @@ def test_the_json_of_a_run_rounds_and_says_what_is_not_residual() -> None:
     assert d["inputs"]["k_peak"] == 0.6 and "design" not in d
 
 
+@pytest.mark.deep
 def test_the_history_is_kept_only_when_asked(tmp_path) -> None:
     with pytest.raises(ValueError, match="history=True"):
         write_simulation_history(tmp_path / "h.csv", run_simulation(OPTIONS))
@@ -147,6 +156,7 @@ def test_the_history_is_kept_only_when_asked(tmp_path) -> None:
         assert z["t"].size == r.simulation.history.t.size and float(z["k_peak"]) == 0.5
 
 
+@pytest.mark.slow
 def test_the_html_display_reads_the_field_table_and_the_notices(design_file) -> None:
     path = design_file(example_design_text().replace("buoyant_weight = 2312", "buoyant_weight = 4800"))
     html = run_simulation(path)._repr_html_()

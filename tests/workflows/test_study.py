@@ -114,12 +114,14 @@ def test_jobs_do_not_change_the_bytes(tmp_path):
 
 @pytest.mark.subprocess
 @pytest.mark.slow
+@pytest.mark.deep
 def test_a_dask_local_cluster_gives_the_same_bytes(tmp_path):
     pytest.importorskip("distributed")
     path = _write(tmp_path)
     assert _bytes(run_study(path, jobs=2, scheduler="local")) == _bytes(run_study(path))
 
 
+@pytest.mark.slow
 def test_resuming_a_partial_store_gives_the_same_bytes(tmp_path):
     path = _write(tmp_path)
     whole = _bytes(run_study(path, store=tmp_path / "a"))
@@ -155,6 +157,7 @@ def test_a_store_is_refused_without_resume_and_for_a_changed_study(tmp_path):
         StudyStore(tmp_path / "other" / "notes.txt", "h", "x", 1)
 
 
+@pytest.mark.slow
 def test_a_failed_store_loses_only_the_task_in_flight(tmp_path, monkeypatch):
     """A task whose store fails (a full disk) stops the run; the tasks before stay, --resume redoes it."""
     path = _write(tmp_path)
@@ -191,6 +194,7 @@ def test_atomic_save_leaves_no_partial_file_when_interrupted(tmp_path, monkeypat
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_a_target_section_finds_its_width_and_the_band_of_a_record(tmp_path):
     shutil.copy(RECORD, tmp_path / "buoy.txt.gz")
     text = example_design_text()

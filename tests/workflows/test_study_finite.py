@@ -32,6 +32,7 @@ rate = 0.01
 """
 
 
+@pytest.mark.slow
 def test_an_infinite_sliding_is_refused_without_a_numpy_warning(tmp_path):
     (tmp_path / "goda.toml").write_text(example_design_text())
     study = parse_study(STUDY, str(tmp_path / "study.toml"))
