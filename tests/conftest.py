@@ -1,7 +1,8 @@
 """Shared test settings: hypothesis profiles, a headless matplotlib, and the fixtures of every folder.
 
-The tests mirror the packages (``tests/<package>/``: mechanics, waves, maps, dynamics, lifetime,
-io, drawing, cli); the tests of the whole package stay at the top (the layers, the public API,
+The tests mirror the folders: a product's (``tests/<product>/``: maps, caisson, motion, lifetime,
+climate, study, with the tests of its commands) and a shared package's (``tests/<package>/``:
+mechanics, waves, dynamics, io, drawing, cli); the tests of the whole package stay at the top (the layers, the public API,
 the lazy loader, the README, the packaging, the notebook reprs), with the helpers shared across
 folders (``_sweep.py``, ``_writers.py``).
 
@@ -111,7 +112,7 @@ def goda(tmp_path: Path) -> Path:
 
     A test that needs the design as data rather than as a file defines a fixture of another name.
     """
-    from regimemap.io.design import example_design_text
+    from regimemap.caisson.file import example_design_text
 
     path = tmp_path / "goda.toml"
     path.write_text(example_design_text(), encoding="utf-8")
@@ -125,7 +126,7 @@ class _PresetMaps(dict):
     (its preset's block, view, modes and raw flag), computed on first use and kept for the session."""
 
     def __missing__(self, fid: str):
-        from regimemap.drawing.maps.presets import get_preset
+        from regimemap.maps.figures.presets import get_preset
         from regimemap.maps.mapdata import compute_map
 
         pr = get_preset(fid)
@@ -145,11 +146,11 @@ def draw_sheet(report: Any, *, required: tuple[float, float] = (1.2, 1.2), lifet
                checks: Any = None, **kw: Any) -> Any:
     """The design sheet as ``regimemap caisson -o`` draws it: the view, map and checks computed first.
 
-    The checks default to the caisson's (:func:`regimemap.maps.caisson.caisson_checks` of
+    The checks default to the caisson's (:func:`regimemap.caisson.report.caisson_checks` of
     ``required``) and those of ``lifetime``.
     """
-    from regimemap.drawing.sheet.page import sheet_figure
-    from regimemap.maps.caisson import caisson_checks, sheet_map
+    from regimemap.caisson.figures.page import sheet_figure
+    from regimemap.caisson.report import caisson_checks, sheet_map
 
     view, data = sheet_map(report)
     if checks is None:

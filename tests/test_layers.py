@@ -1,11 +1,15 @@
 """The layers and their import rules, read from the source (AST), so a breach fails a test.
 
-mechanics (numpy only) -> waves -> maps, dynamics, lifetime -> io -> drawing -> cli: a package
-imports only from its own layer or the layers before it (``io`` is files in and out and never
-draws; ``drawing`` writes its figures through ``io``); matplotlib only under ``drawing/``,
-click only under ``cli/``; no module imports another module's private (underscore) name; no
-import cycle between modules, counting the imports inside functions too (they run as soon as
-the function does: a cycle through them is still a cycle).
+The physics core -- mechanics (numpy only) -> waves -> dynamics -- and beside the engine each
+product's computation; then io (files in and out, by format), each product's input declaration
+(``file*``) and record (``record*``), its run (``run*``), the index of the runs (``workflows``),
+drawing and each product's figures (``figures*``), and the command line (``cli``): a module
+imports only from its own layer or the layers before it.  The products are the folders of
+:data:`PRODUCTS`, one per command family; a product module's role is the first word of its name
+(:data:`ROLE`), any other name is the product's computation.  matplotlib only under ``drawing/``
+and in the products' figures, click only under ``cli/``; no module imports another module's
+private (underscore) name; no import cycle between modules, counting the imports inside
+functions too (they run as soon as the function does: a cycle through them is still a cycle).
 """
 
 from __future__ import annotations
@@ -16,9 +20,17 @@ from pathlib import Path
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
 
-#: Layer of each package: a module may import from layers <= its own.
-LAYER = {"mechanics": 0, "waves": 1, "dynamics": 2, "maps": 2, "lifetime": 2, "climate": 2, "io": 3,
-         "workflows": 3.5, "drawing": 4, "cli": 5}
+#: Layer of each package that is not a product: a module may import from layers <= its own.
+LAYER = {"mechanics": 0, "waves": 1, "dynamics": 2, "io": 3, "workflows": 3.6, "drawing": 4, "cli": 5}
+#: The products: one folder each, holding its computation, input declaration, run, record and figures.
+PRODUCTS = ("maps", "caisson", "motion", "lifetime", "climate", "study")
+#: The layer of a product module by its role, the first word of its name (``file_keys`` is a
+#: ``file``, ``figures/page`` a ``figures``): its input declaration and its record beside io, its
+#: run above them, its figures beside drawing.  Any other name is the product's computation.
+ROLE = {"file": 3.2, "record": 3.2, "run": 3.5, "figures": 4.2}
+#: The layer of a product's computation, and of its ``__init__`` (which imports nothing but the
+#: lazy loader: every name it lists is imported on first use).
+COMPUTE = 2
 #: The top-level modules (the package's front door and its version) sit above the
 #: evaluation layer: regimemap/__init__.py re-exports maps and mechanics.
 TOP = 2.5
@@ -73,34 +85,57 @@ def _imports_of_text(name: str, is_pkg: bool, text: str) -> list[tuple[str, list
     return found
 
 
+def _role(module: str) -> str | None:
+    """The role of a product module (``file``, ``record``, ``run``, ``figures`` or ``compute``);
+    None outside the products."""
+    parts = module.split(".")
+    if len(parts) < 2 or parts[1] not in PRODUCTS:
+        return None
+    word = parts[2].split("_")[0] if len(parts) > 2 else ""
+    return word if word in ROLE else "compute"
+
+
 def _layer(module: str) -> float:
     if module == "regimemap.__main__":  # ``python -m regimemap``: the command line
         return LAYER["cli"]
     if module == LAZY:
         return -1
+    role = _role(module)
+    if role is not None:
+        return ROLE.get(role, COMPUTE)
     parts = module.split(".")
     if len(parts) >= 2 and parts[1] in LAYER:
         return LAYER[parts[1]]
     return TOP
 
 
+def _draws(module: str) -> bool:
+    """A module that draws: under ``drawing/`` or a product's figures."""
+    return module.startswith("regimemap.drawing") or _role(module) == "figures"
+
+
+def _engine(module: str) -> bool:
+    """The engine, numpy only: mechanics, waves, dynamics and the map's computation."""
+    return (module.startswith(("regimemap.mechanics", "regimemap.waves", "regimemap.dynamics"))
+            or (module.startswith("regimemap.maps") and _role(module) == "compute"))
+
+
 def _breaches(module: str, path: Path) -> list[str]:
     """Every breach of the import rules by one module, one line each (``module:line what``).
 
-    The rules: an import of regimemap points down the layers (or sideways); matplotlib only under
-    ``drawing/``, click only under ``cli/``, scipy not in the engine (mechanics, waves, maps,
-    dynamics); mechanics imports nothing of regimemap but itself and the lazy loader; no private
+    The rules: an import of regimemap points down the layers (or sideways); matplotlib only where
+    a module draws (:func:`_draws`), click only under ``cli/``, scipy not in the engine
+    (:func:`_engine`); mechanics imports nothing of regimemap but itself and the lazy loader; no private
     (underscore) name crosses modules, and a package's private module serves that package only.
     """
     here = _layer(module)
-    engine = module.startswith(("regimemap.mechanics", "regimemap.maps", "regimemap.waves",
-                                "regimemap.dynamics"))
+    engine = _engine(module)
     out = []
     for imported, names, line, _top in _imports(module, path):
         at = f"{module}:{line}"
         root = imported.split(".")[0]
-        if root == "matplotlib" and ".drawing" not in module:
-            out.append(f"{at} imports matplotlib (drawing/ only)")
+        if root == "matplotlib" and not _draws(module):
+            out.append(f"{at} imports matplotlib (drawing/ and the figures only)")
         if root == "click" and ".cli" not in module:
             out.append(f"{at} imports click (cli/ only)")
         # (the statistics, lifetime and climate, fit with scipy: a runtime dependency)
@@ -145,7 +180,14 @@ def test_the_contract_catches_each_rule(tmp_path):
     assert breaches("regimemap.maps.x", "from ..drawing.style import MODE_STYLE\n") == [
         "regimemap.maps.x:1 imports regimemap.drawing.style (a higher layer)"]
     assert breaches("regimemap.io.x", "import numpy\ndef g():\n    import matplotlib.pyplot\n") == [
-        "regimemap.io.x:3 imports matplotlib (drawing/ only)"]
+        "regimemap.io.x:3 imports matplotlib (drawing/ and the figures only)"]
+    assert breaches("regimemap.study.record_x", "import matplotlib\nfrom .figures import f\n") == [
+        "regimemap.study.record_x:1 imports matplotlib (drawing/ and the figures only)",
+        "regimemap.study.record_x:2 imports regimemap.study.figures (a higher layer)"]
+    assert breaches("regimemap.lifetime.x", "from .run import run_lifetime\n") == [
+        "regimemap.lifetime.x:1 imports regimemap.lifetime.run (a higher layer)"]
+    assert breaches("regimemap.maps.x", "from scipy import optimize\n") == [
+        "regimemap.maps.x:1 imports scipy (the engine is numpy only)"]
     assert breaches("regimemap.drawing.x", "import click\n") == ["regimemap.drawing.x:1 imports click (cli/ only)"]
     assert breaches("regimemap.dynamics.x", "from scipy import optimize\n") == [
         "regimemap.dynamics.x:1 imports scipy (the engine is numpy only)"]
@@ -159,6 +201,10 @@ def test_the_contract_catches_each_rule(tmp_path):
     # allowed: scipy in the statistics, the lazy loader in mechanics, the version anywhere above
     # mechanics, a package's own private module, an import for the type checker only
     assert breaches("regimemap.climate.x", "from scipy import stats\n") == []
+    assert breaches("regimemap.study.figures_x", "import matplotlib\nfrom ..drawing.save import s\n"
+                    "from .record import R\nfrom ..lifetime.figures.style import FS\n") == []
+    assert breaches("regimemap.study.run", "from ..lifetime.run import run_lifetime\n"
+                    "from .file import read_study\nfrom ..io.atomic import atomic_open\n") == []
     assert breaches("regimemap.mechanics", "from .._lazy import attach\n", "__init__.py") == []
     assert breaches("regimemap.io.x", "from .. import __version__\nfrom ._helpers import g\n"
                     "if TYPE_CHECKING:\n    from ..drawing.style import S\n") == []
@@ -253,10 +299,20 @@ def test_the_rules_can_fail(tmp_path):
     assert _layer("regimemap.drawing.style") > _layer("regimemap.maps.x")
 
 
-#: The packages that compute the physics (and the statistics), and the workflows that call
-#: them: drawing/ imports from them only the data types and pure helpers below (a record's type
-#: only for type checking), and draws what its caller computed.
-PHYSICS = ("mechanics", "waves", "maps", "dynamics", "lifetime", "climate", "workflows")
+#: The packages that compute the physics (and the statistics): a module that draws
+#: (:func:`_draws`) imports from them, from a product's computation and from any run only the
+#: data types and pure helpers below (a record's type only for type checking), and draws what
+#: its caller computed.
+PHYSICS = ("mechanics", "waves", "dynamics", "workflows")
+
+
+def _computes(module: str) -> bool:
+    """A module whose names a figure may not call: the physics core, a product's computation, a run."""
+    parts = module.split(".")
+    return (len(parts) >= 2 and parts[0] == "regimemap"
+            and (parts[1] in PHYSICS or _role(module) in ("compute", "run")))
+
+
 #: What drawing/ may import from :data:`PHYSICS`, each with why it computes nothing.
 DRAWING_MAY_IMPORT = {
     # data types, enumerations and constants: records a figure is handed
@@ -274,8 +330,8 @@ DRAWING_MAY_IMPORT = {
     "lifetime.workers.available_cores": "the pool's default number of workers (no physics)",
     "maps.mapdata.MapData": "a computed map, a record",
     "maps.mapdata.CurveData": "a computed boundary curve, a record",
-    "maps.caisson.CaissonReport": "a computed caisson analysis, a record",
-    "maps.caisson.MapView": "the sheet map's extent, a record",
+    "caisson.report.CaissonReport": "a computed caisson analysis, a record",
+    "caisson.report.MapView": "the sheet map's extent, a record",
     "maps.loadedmap.Margin": "a computed margin, a record",
     "maps.loadedmap.mode_label": "a mode's name in words (formatting)",
     "maps.points.DesignPoint": "a design point to mark, a record",
@@ -311,16 +367,16 @@ DRAWING_STILL_COMPUTES: set[tuple[str, str]] = set()
 
 
 def _drawing_physics_imports(modules: dict[str, Path]) -> list[tuple[str, int, str]]:
-    """(drawing module, line, ``package.module.name``) for every name drawing/ imports from PHYSICS."""
+    """(drawing module, line, ``package.module.name``) for every name a module that draws imports
+    from a module that computes (:func:`_computes`)."""
     found = []
     for module, path in modules.items():
-        if not module.startswith("regimemap.drawing"):
+        if not _draws(module):
             continue
         for imported, names, line, _top in _imports(module, path):
-            parts = imported.split(".")
-            if len(parts) < 2 or parts[0] != "regimemap" or parts[1] not in PHYSICS:
+            if not _computes(imported) or imported.split(".")[1:2] == ["__init__"]:
                 continue
-            where = ".".join(parts[1:])
+            where = ".".join(imported.split(".")[1:])
             found += [(module, line, f"{where}.{n}") for n in names] if names else [(module, line, where)]
     return found
 
@@ -344,10 +400,12 @@ def test_the_drawing_rule_can_fail(tmp_path):
     f = tmp_path / "x.py"
     f.write_text("from ...maps.mapdata import MapData\n"
                  "def g():\n    from ...maps.mapdata import compute_map\n")
-    found = _drawing_physics_imports({"regimemap.drawing.maps.x": f})
-    assert found == [("regimemap.drawing.maps.x", 1, "maps.mapdata.MapData"),
-                     ("regimemap.drawing.maps.x", 3, "maps.mapdata.compute_map")]
+    found = _drawing_physics_imports({"regimemap.maps.figures.x": f})
+    assert found == [("regimemap.maps.figures.x", 1, "maps.mapdata.MapData"),
+                     ("regimemap.maps.figures.x", 3, "maps.mapdata.compute_map")]
     assert [n for *_, n in found if n not in DRAWING_MAY_IMPORT] == ["maps.mapdata.compute_map"]
-    f.write_text("def g():\n    from ...workflows.map import run_map\n")  # a workflow computes too
-    assert _drawing_physics_imports({"regimemap.drawing.maps.x": f}) == [
-        ("regimemap.drawing.maps.x", 2, "workflows.map.run_map")]
+    f.write_text("def g():\n    from ..run import run_map\n")  # a run computes too
+    assert _drawing_physics_imports({"regimemap.maps.figures.x": f}) == [
+        ("regimemap.maps.figures.x", 2, "maps.run.run_map")]
+    f.write_text("from ..record import R\nfrom ...drawing.style import S\n")  # a record, the style: allowed
+    assert _drawing_physics_imports({"regimemap.maps.figures.x": f}) == []

@@ -2,7 +2,7 @@
 
 A classification (:class:`~regimemap.PointResult`), a map
 (:class:`~regimemap.maps.MapData`), a caisson analysis
-(:class:`~regimemap.waves.CaissonAnalysis`, :class:`~regimemap.maps.caisson.CaissonReport`)
+(:class:`~regimemap.waves.CaissonAnalysis`, :class:`~regimemap.caisson.report.CaissonReport`)
 and a lifetime (:class:`~regimemap.lifetime.LifetimeResult`): the repr is one or
 two lines without numpy's noise, the HTML parses as one table whose cells hold
 the key numbers, and every text in it is escaped.
@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 
 from regimemap import Parameters, query_point
+from regimemap.caisson.report import caisson_report
 from regimemap.lifetime import LifetimeResult
 from regimemap.maps import compute_map
-from regimemap.maps.caisson import caisson_report
 from regimemap.mechanics.htmltable import cell_text, html_table, number, number_range
 from regimemap.waves import analyse_caisson
 

@@ -40,8 +40,10 @@ def attach(package: str, submodules: Mapping[str, Sequence[str]]
     package : str
         The package's ``__name__``.
     submodules : mapping of str to sequence of str
-        Each submodule (relative to the package, dotted for deeper ones) and the
-        public names it defines.
+        Each submodule and the public names it defines, spelled as the module of a
+        relative import from the package without its first dot: ``"fits"`` is the
+        package's own submodule, ``".study.run"`` its sibling package's (so an index
+        package such as :mod:`regimemap.workflows` names where each name lives).
 
     Returns
     -------
@@ -68,7 +70,7 @@ def attach(package: str, submodules: Mapping[str, Sequence[str]]
     def __getattr__(name: str) -> Any:
         if name not in home:
             raise AttributeError(f"module {package!r} has no attribute {name!r}")
-        value = getattr(importlib.import_module(f"{package}.{home[name]}"), name)
+        value = getattr(importlib.import_module(f".{home[name]}", package), name)
         setattr(sys.modules[package], name, value)
         return value
 

@@ -260,7 +260,7 @@ def test_figures_bad_out_folder(tmp_path, inputs, make, pattern):
 @pytest.mark.render
 def test_figures_creates_a_missing_out_folder_whose_parent_exists(tmp_path, monkeypatch):
     needs("figures")
-    import regimemap.drawing.maps.presets as figs
+    import regimemap.maps.figures.presets as figs
 
     # two of the report's figures are enough to see the folder made and filled (test_cli_plot.py
     # draws all of them)
@@ -324,12 +324,12 @@ def test_bad_points_file(tmp_path, inputs, monkeypatch, command, name, pattern):
 
 def _break(monkeypatch, exc: BaseException):
     """Make the library call of 'export' raise ``exc``."""
-    import regimemap.io.export
+    import regimemap.maps.record_export
 
     def boom(*a, **k):
         raise exc
 
-    monkeypatch.setattr(regimemap.io.export, "export_map", boom)
+    monkeypatch.setattr(regimemap.maps.record_export, "export_map", boom)
 
 
 @pytest.mark.parametrize("exc,code,pattern", [
@@ -637,8 +637,8 @@ def test_random_arguments_never_crash(name, tmp_path_factory, monkeypatch):
         # keep a valid 'figures' run short: of the report's 24 figures and of the worked figures
         # (--set worked, --set all: W.4 is an atlas), one each -- with the model's figure, still two
         # figures, so that --jobs starts a pool
-        import regimemap.drawing.maps.presets as figs
-        import regimemap.drawing.maps.worked as worked
+        import regimemap.maps.figures.presets as figs
+        import regimemap.maps.figures.worked as worked
 
         monkeypatch.setattr(figs, "PRESETS", dict(list(figs.PRESETS.items())[:1]))
         monkeypatch.setattr(worked, "WORKED", dict(list(worked.WORKED.items())[:1]))
@@ -738,7 +738,7 @@ def test_case_threshold_a_zero_runs(tmp_path, args):
 
 def _slipped_design(folder: Path) -> str:
     """The example design with its weight in N/m (an implausible value: a warning, not an error)."""
-    from regimemap.io.design import example_design_text
+    from regimemap.caisson.file import example_design_text
 
     p = folder / "slip.toml"
     p.write_text(example_design_text().replace("buoyant_weight = 2312", "buoyant_weight = 2312000"))
@@ -760,7 +760,7 @@ def _record_with_copies(folder: Path) -> str:
 
 def _record_design(folder: Path) -> str:
     """The example design whose climate is ``[lifetime.record]`` of :func:`_record_with_copies`."""
-    from regimemap.io.design import example_design_text
+    from regimemap.caisson.file import example_design_text
 
     _record_with_copies(folder)
     text = example_design_text()
@@ -775,7 +775,7 @@ def _record_design(folder: Path) -> str:
 
 def _study_not_bracketed(folder: Path) -> str:
     """A study of one section whose widths all meet the target (a warning: give narrower widths)."""
-    from regimemap.io.design import example_design_text
+    from regimemap.caisson.file import example_design_text
 
     (folder / "goda.toml").write_text(example_design_text())
     p = folder / "study.toml"

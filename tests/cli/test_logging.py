@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.io.design import example_design_text
+from regimemap.caisson.file import example_design_text
 
 from ..conftest import invoke_cli
 
@@ -44,7 +44,7 @@ def test_verbose_shows_the_main_steps(tmp_path):
     assert r.code == 0, r.output
     recs = _records(r.stderr)
     assert {level for level, _, _ in recs} == {"INFO"}  # -v: no DEBUG
-    assert any(name == "regimemap.io.export" and "401 x 401 points" in msg for _, name, msg in recs), recs
+    assert any(name == "regimemap.maps.record_export" and "401 x 401 points" in msg for _, name, msg in recs), recs
     assert ("INFO", "regimemap.io.atomic", f"wrote {out} ({out.stat().st_size:,} bytes)") in recs
     assert r.stdout == f"{out}\n"  # standard output is the command's, with or without -v
 
@@ -112,7 +112,7 @@ def test_the_library_logs_its_main_steps(caplog, capsys, tmp_path):
 
     caplog.set_level(logging.DEBUG, logger="regimemap")
     compute_map(Parameters(3.0, 0.4), samples=50)
-    from regimemap.io.design import parse_design
+    from regimemap.caisson.file import parse_design
 
     d = parse_design(example_design_text())
     lifetime_sliding(d.lifetime_caisson(), d.lifetime_model(), trials=300, seed=1, chunk=100)

@@ -15,9 +15,9 @@ from pathlib import Path
 
 import pytest
 
-import regimemap.io.design
+import regimemap.caisson.file
+from regimemap.caisson.file import example_design_text
 from regimemap.cli._signals import Terminated, stop_signals
-from regimemap.io.design import example_design_text
 
 from ..conftest import invoke_cli
 
@@ -35,7 +35,7 @@ def _signal_while_reading(monkeypatch, sig: int, times: int = 1) -> list[str]:
         after.append("not interrupted")
         raise AssertionError("the signal did not stop the command")
 
-    monkeypatch.setattr(regimemap.io.design, "read_design", read)
+    monkeypatch.setattr(regimemap.caisson.file, "read_design", read)
     return after
 
 

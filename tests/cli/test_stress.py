@@ -23,7 +23,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from regimemap.io.design import example_design_text
+from regimemap.caisson.file import example_design_text
 
 from .._processes import START_WITHIN, describe, group_members, kill_group, start, wait_until
 
@@ -59,7 +59,7 @@ def _band_design(d: Path) -> Path:
 
 
 def _study(d: Path) -> Path:
-    from regimemap.io.study_example import example_study_text
+    from regimemap.study.file_example import example_study_text
 
     f = d / "bw.toml"
     f.write_text(example_study_text().replace("trials = 2000 ", "trials = 200000 ", 1), encoding="utf-8")

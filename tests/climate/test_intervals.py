@@ -11,9 +11,9 @@ import pytest
 from scipy import optimize, stats
 
 from regimemap.climate import ClimateOptions, analyse, fit, make_record
+from regimemap.climate.file import read_record
 from regimemap.climate.guards import XI_NONREGULAR, endpoint, fit_notices, limit_notices
 from regimemap.climate.intervals import POSTERIOR_DRAWS, interval_band, likelihood_grid, profile_interval
-from regimemap.io.records import read_record
 
 DATA = Path(__file__).parent / "data"
 
@@ -212,7 +212,7 @@ def test_stability_panels_have_their_intervals():
                                                ("bootstrap", "90 % bootstrap interval")])
 def test_the_figure_names_the_method(method, label):
     from regimemap.climate.analysis import curves
-    from regimemap.drawing.climate.figures import climate_figure
+    from regimemap.climate.figures import climate_figure
 
     r = analyse(read_record(DATA / "ndbc44007_1996_hs_tz.txt.gz"),
                 ClimateOptions(threshold=("quantile", 0.99), interval=method, replicates=20))

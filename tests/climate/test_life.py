@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 from scipy import stats
 
+from regimemap.caisson.file import DesignFileError, example_design_text, read_design
 from regimemap.climate.fits import Fit
 from regimemap.climate.life import climate_of, climate_of_maxima
-from regimemap.io.design import DesignFileError, example_design_text, read_design
 from regimemap.lifetime import Climate
 from regimemap.lifetime.replicates import climate_band
 
@@ -116,7 +116,7 @@ def _record_design(tmp_path: Path, record_lines: str, lifetime_extra: str = "") 
 
 def test_design_record_gives_the_fitted_climate(tmp_path):
     from regimemap.climate import ClimateOptions, analyse
-    from regimemap.io.records import read_record
+    from regimemap.climate.file import read_record
 
     p = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "98%"\ngap_hours = 36')
     model = read_design(p).lifetime_model()
@@ -167,8 +167,8 @@ def test_lifetime_command_climate_band_same_bytes_any_jobs(run_cli, tmp_path):
 
 def test_period_law_fitted_only_with_period_ratio(tmp_path):
     from regimemap.climate import storms
+    from regimemap.climate.file import read_record
     from regimemap.climate.peaks import resolve_threshold
-    from regimemap.io.records import read_record
 
     plain = _record_design(tmp_path, 'path = "buoy.txt.gz"\nthreshold = "98%"')
     assert read_design(plain).lifetime_model().period_law is None  # Goda's relation

@@ -9,8 +9,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from regimemap.climate.record import SPIKE_JUMP, SPIKE_RATIO, find_spikes, make_record
-from regimemap.io.records import RecordError, read_record
+from regimemap.climate.file import RecordError, read_record
+from regimemap.climate.wave_record import SPIKE_JUMP, SPIKE_RATIO, find_spikes, make_record
 
 DATA = Path(__file__).parent / "data"
 NDBC44007 = DATA / "ndbc44007_1996_hs_tz.txt.gz"
@@ -220,7 +220,7 @@ def test_coverage_per_calendar_year():
 def test_a_gzip_record_that_decompresses_past_the_limit_is_refused(tmp_path, monkeypatch):
     import gzip
 
-    import regimemap.io.records as records
+    import regimemap.climate.file as records
 
     f = tmp_path / "bomb.txt.gz"
     f.write_bytes(gzip.compress(b"0" * 100_000))  # 100 kB of text in a few hundred bytes

@@ -10,8 +10,8 @@ import pytest
 from scipy import stats
 
 from regimemap.climate import ClimateOptions, analyse, annual_maxima, bootstrap, fit, make_record, storms
+from regimemap.climate.file import read_record
 from regimemap.climate.peaks import parse_threshold, resolve_threshold
-from regimemap.io.records import read_record
 
 DATA = Path(__file__).parent / "data"
 HOUR = np.timedelta64(3600, "s")

@@ -21,14 +21,14 @@ pytest.importorskip("matplotlib")
 from matplotlib.path import Path  # noqa: E402
 
 from regimemap import Mode, Parameters  # noqa: E402
-from regimemap.drawing.maps.animation import draw_frame, frame_figure  # noqa: E402
-from regimemap.drawing.maps.atlas import atlas_figure  # noqa: E402
-from regimemap.drawing.maps.figure import map_figure  # noqa: E402
-from regimemap.drawing.maps.presets import FIGURE_IDS  # noqa: E402
 from regimemap.drawing.text.tidy import MEASURE_DPI, text_boxes  # noqa: E402
 from regimemap.maps import DesignPoint, classify  # noqa: E402
-from regimemap.workflows.atlas import run_atlas  # noqa: E402
-from regimemap.workflows.map import run_map  # noqa: E402
+from regimemap.maps.figures.animation import draw_frame, frame_figure  # noqa: E402
+from regimemap.maps.figures.atlas import atlas_figure  # noqa: E402
+from regimemap.maps.figures.figure import map_figure  # noqa: E402
+from regimemap.maps.figures.presets import FIGURE_IDS  # noqa: E402
+from regimemap.maps.run import run_map  # noqa: E402
+from regimemap.maps.run_atlas import run_atlas  # noqa: E402
 
 pytestmark = pytest.mark.render
 
@@ -203,8 +203,8 @@ def test_animation_frames_never_collide(kprime):
 @pytest.mark.parametrize("fid", FIGURE_IDS)
 def test_report_figures_never_collide(fid):
     """The report's 24 figures keep their views and get the same tidy pass (Figs 3.8, 3.9a, 4.7b)."""
-    from regimemap.drawing.maps.figure import preset_figure
-    from regimemap.drawing.maps.presets import get_preset
+    from regimemap.maps.figures.figure import preset_figure
+    from regimemap.maps.figures.presets import get_preset
 
     preset = get_preset(fid)
     fig, ax, art = preset_figure(preset, run_map(**preset.map_keywords, samples=201), dpi=DPI)
@@ -219,7 +219,7 @@ def test_report_figures_never_collide(fid):
 @pytest.mark.slow
 @pytest.mark.parametrize("wid", ["W.1", "W.2", "W.3", "W.4"])
 def test_worked_figures_never_collide(wid):
-    from regimemap.drawing.maps.worked import WORKED, render_worked
+    from regimemap.maps.figures.worked import WORKED, render_worked
 
     w = WORKED[wid]
     if w.sweep is not None:  # an atlas: the artists of its panels

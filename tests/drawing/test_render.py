@@ -1,4 +1,4 @@
-"""regimemap.drawing.maps.mapplot: fills where the modes are, vector and byte-stable output, no pyplot."""
+"""regimemap.maps.figures.mapplot: fills where the modes are, vector and byte-stable output, no pyplot."""
 
 from __future__ import annotations
 
@@ -13,15 +13,15 @@ import numpy as np
 import pytest
 
 from regimemap import MAP_MODES, Mode, Parameters, label_grid
-from regimemap.drawing.maps.artists import MapArtists
-from regimemap.drawing.maps.figure import map_figure, new_figure, render_map, render_preset
-from regimemap.drawing.maps.mapplot import MapStyle, draw_design_points, draw_map
-from regimemap.drawing.maps.presets import PRESETS, get_preset
+from regimemap.drawing.artists import MapArtists
 from regimemap.drawing.save import FORMATS, format_from_path, save_figure
 from regimemap.drawing.style import MODE_STYLE
-from regimemap.io.points import DesignPoint
+from regimemap.maps.figures.figure import map_figure, new_figure, render_map, render_preset
+from regimemap.maps.figures.mapplot import MapStyle, draw_design_points, draw_map
+from regimemap.maps.figures.presets import PRESETS, get_preset
+from regimemap.maps.file_points import DesignPoint
 from regimemap.maps.mapdata import map_for_view
-from regimemap.workflows.map import run_map
+from regimemap.maps.run import run_map
 
 pytestmark = pytest.mark.render
 
@@ -312,9 +312,9 @@ def test_no_pyplot_and_no_global_rcparams():
         "keys = [k for k in rc if k != 'backend']  # reading 'backend' would import pyplot\n"
         "before = {k: rc[k] for k in keys}\n"
         "from regimemap import Parameters\n"
-        "from regimemap.drawing.maps.figure import render_map\nfrom regimemap.drawing.save import save_figure\n"
+        "from regimemap.maps.figures.figure import render_map\nfrom regimemap.drawing.save import save_figure\n"
         "import io\n"
-        "from regimemap.workflows.map import run_map\n"
+        "from regimemap.maps.run import run_map\n"
         "fig = render_map(run_map(Parameters(3, 0.4)), dpi=40)\n"
         "fig.savefig(io.BytesIO(), format='svg')\n"
         "changed = [k for k in keys if rc[k] != before[k]]\n"

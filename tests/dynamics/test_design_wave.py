@@ -16,6 +16,7 @@ import re
 import numpy as np
 import pytest
 
+from regimemap.caisson.file import example_design_text, parse_design
 from regimemap.dynamics import (
     DESIGN_INPUTS,
     Block,
@@ -25,7 +26,6 @@ from regimemap.dynamics import (
     design_wave_run,
     simulate,
 )
-from regimemap.io.design import example_design_text, parse_design
 from regimemap.waves import analyse_caisson, wave_duration
 
 from ..conftest import invoke_cli

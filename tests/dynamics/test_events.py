@@ -25,7 +25,7 @@ from regimemap.dynamics import (
     simulate,
 )
 from regimemap.dynamics.events import EVENT_STEP, crossing_times, onset_boundaries
-from regimemap.io.simulation import format_simulation
+from regimemap.motion.record_simulation import format_simulation
 
 from ..conftest import invoke_cli
 

@@ -70,7 +70,7 @@ BAD_OUTPUTS = [
 @pytest.mark.parametrize("args,hint", BAD_OUTPUTS, ids=[a[0] for a, _ in BAD_OUTPUTS])
 def test_every_command_words_an_unknown_suffix_once(run_cli, tmp_path, args, hint):
     design = tmp_path / "goda.toml"
-    from regimemap.io.design_example import example_design_text
+    from regimemap.caisson.file_example import example_design_text
 
     design.write_text(example_design_text(), encoding="utf-8")
     argv = [str(design) if a == "DESIGN" else a.format(d=tmp_path) for a in args]

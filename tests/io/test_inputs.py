@@ -15,7 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.io.design import DesignFileError, example_design_text, read_design
+from regimemap.caisson.file import DesignFileError, example_design_text, read_design
+from regimemap.climate.file import MAX_RECORD_FILE_BYTES, RecordError, read_record
 from regimemap.io.inputs import (
     MAX_DESIGN_FILE_BYTES,
     DesignInputError,
@@ -25,9 +26,8 @@ from regimemap.io.inputs import (
     read_design_text,
     read_limited,
 )
-from regimemap.io.points import MAX_POINTS_FILE_BYTES, read_points_csv
-from regimemap.io.pulses import MAX_PULSE_FILE_BYTES, read_pulse_csv
-from regimemap.io.records import MAX_RECORD_FILE_BYTES, RecordError, read_record
+from regimemap.maps.file_points import MAX_POINTS_FILE_BYTES, read_points_csv
+from regimemap.motion.file_pulses import MAX_PULSE_FILE_BYTES, read_pulse_csv
 
 from ..conftest import invoke_cli
 

@@ -12,9 +12,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from regimemap.io.design import example_design_text
-from regimemap.io.lifetime_options import check_chunk, check_scheduler, check_target, parse_widths
+from regimemap.caisson.file import example_design_text
 from regimemap.lifetime import DEFAULT_ERRORS
+from regimemap.lifetime.file_options import check_chunk, check_scheduler, check_target, parse_widths
 
 EXAMPLE = example_design_text()
 TRIALS = "300"

@@ -8,7 +8,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from regimemap.io.design import example_design_text
+from regimemap.caisson.file import example_design_text
 from regimemap.lifetime.finite import NonFiniteResult, quiet_arithmetic, require_finite
 
 
@@ -68,7 +68,7 @@ def test_the_lifetime_command_refuses_a_non_finite_result_and_writes_nothing(run
 
 def test_the_design_chart_refuses_a_non_finite_esd(goda, monkeypatch):
     import regimemap.lifetime as lifetime
-    from regimemap.workflows.lifetime import run_chart
+    from regimemap.lifetime.run import run_chart
 
     real = lifetime.design_chart
 

@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.io.design import example_design_text
+from regimemap.caisson.file import example_design_text
 
 pytestmark = [pytest.mark.subprocess, pytest.mark.slow,
               pytest.mark.skipif(not sys.platform.startswith("linux"), reason="process groups, /proc")]
@@ -255,7 +255,7 @@ def test_a_signal_while_the_process_starts(goda: Path, tmp_path: Path, sig: int,
 def test_ctrl_c_while_a_local_cluster_starts(tmp_path: Path) -> None:
     """``study --scheduler local``: its workers, still starting, print nothing and are gone."""
     pytest.importorskip("distributed")
-    from regimemap.io.study_example import example_study_text
+    from regimemap.study.file_example import example_study_text
 
     study = tmp_path / "bw.toml"
     study.write_text(example_study_text(), encoding="utf-8")

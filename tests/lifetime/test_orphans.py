@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.io.design import example_design_text
+from regimemap.caisson.file import example_design_text
 
 from .._processes import START_WITHIN, alive, descendants, describe, kill_group, start, wait_until
 
@@ -59,7 +59,7 @@ def test_lifetime_workers_die_with_their_parent(goda: Path, tmp_path: Path) -> N
 
 
 def _study(tmp_path: Path, trials: int) -> Path:
-    from regimemap.io.study_example import example_study_text
+    from regimemap.study.file_example import example_study_text
 
     text = example_study_text()
     f = tmp_path / "bw.toml"

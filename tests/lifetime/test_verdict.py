@@ -10,11 +10,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from regimemap.io.design import example_design_text, read_design
+from regimemap.caisson.file import example_design_text, read_design
 from regimemap.lifetime import Climate, LifetimeResult, Requirements, judge_lifetime, lifetime_sliding
 from regimemap.lifetime.replicates import DEFAULT_REPLICATES, ClimateBand, climate_band
 from regimemap.lifetime.requirements import WITH_CLIMATE, lifetime_checks
-from regimemap.workflows.lifetime import run_chart, run_lifetime
+from regimemap.lifetime.run import run_chart, run_lifetime
 
 EXCERPT = Path(__file__).parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
 _CLIMATE_KEYS = ("H0_10", "H0_50", "distribution", "shape", "storms_per_year", "annual_maxima")
@@ -69,7 +69,7 @@ def test_the_band_flips_the_verdict_and_each_line_says_so():
 
 
 def test_each_replicate_keeps_its_exceedance_from_its_own_lifetimes():
-    from regimemap.io.design import parse_design
+    from regimemap.caisson.file import parse_design
 
     d = parse_design(example_design_text())
     caisson, model = d.lifetime_caisson(), d.lifetime_model()
@@ -166,7 +166,7 @@ def test_caisson_names_the_record_and_judges_the_band_as_lifetime_does(run_cli, 
 
 @pytest.mark.render
 def test_the_exceedance_figure_draws_the_climate_band():
-    from regimemap.drawing.lifetime.exceedance import lifetime_figure
+    from regimemap.lifetime.figures.exceedance import lifetime_figure
     from regimemap.lifetime.replicates import CURVE_X
 
     rng = np.random.default_rng(3)
@@ -189,7 +189,7 @@ def test_the_exceedance_figure_draws_the_climate_band():
 
 
 def test_esd_at_the_width_found_carries_each_climate_s_ratio_to_the_design_chart():
-    from regimemap.workflows.study import _esd_at
+    from regimemap.study.run import _esd_at
 
     widths = np.array([16.0, 22.0, 28.0])
     design = np.array([1.0, 0.1, 0.0])
@@ -202,7 +202,7 @@ def test_esd_at_the_width_found_carries_each_climate_s_ratio_to_the_design_chart
 @pytest.mark.slow
 @pytest.mark.deep
 def test_a_study_target_section_with_a_record_has_its_band_and_width_at_the_upper_level(tmp_path):
-    from regimemap.workflows.study import run_study
+    from regimemap.study.run import run_study
 
     record_design(tmp_path, "climate_replicates = 3", width=20.0)
     (tmp_path / "study.toml").write_text(

@@ -16,8 +16,8 @@ from regimemap.maps.ambiguity import (
     column_pieces,
     set_label,
 )
+from regimemap.maps.run import run_map
 from regimemap.mechanics.solver import admissible
-from regimemap.workflows.map import run_map
 
 from .._sweep import sweep, tiered
 
@@ -222,7 +222,7 @@ def test_bad_view_rejected():
 
 
 def _map_axes(gamma, kprime, **kw):
-    from regimemap.drawing.maps.figure import map_figure
+    from regimemap.maps.figures.figure import map_figure
 
     fig, ax, art = map_figure(run_map(Parameters(gamma, kprime), samples=201, **kw))
     return fig, ax, art
@@ -232,7 +232,7 @@ def _map_axes(gamma, kprime, **kw):
 def test_draw_ambiguity_outlines_and_annotates():
     from matplotlib.patches import Polygon as MplPolygon
 
-    from regimemap.drawing.maps.ambiguity import GID, LEGEND_LABEL, draw_ambiguity
+    from regimemap.maps.figures.ambiguity import GID, LEGEND_LABEL, draw_ambiguity
 
     fig, ax, art = _map_axes(3.0, -0.6, k_max=4.0, mu_max=3.0)
     n_before = len(ax.patches)
@@ -254,7 +254,7 @@ def test_draw_ambiguity_outlines_and_annotates():
 
 @pytest.mark.render
 def test_draw_ambiguity_nothing_above_c_or_out_of_view():
-    from regimemap.drawing.maps.ambiguity import draw_ambiguity
+    from regimemap.maps.figures.ambiguity import draw_ambiguity
 
     fig, ax, art = _map_axes(3.0, 0.4)
     n = len(ax.get_children())
@@ -270,7 +270,7 @@ def test_draw_ambiguity_without_legend():
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    from regimemap.drawing.maps.ambiguity import LEGEND_LABEL, draw_ambiguity
+    from regimemap.maps.figures.ambiguity import LEGEND_LABEL, draw_ambiguity
 
     fig = Figure()
     FigureCanvasAgg(fig)

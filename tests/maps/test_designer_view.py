@@ -46,7 +46,7 @@ def test_parameters_repr_has_no_float_noise():
 
 
 def test_exports_round_for_people(tmp_path):
-    from regimemap.io.export import export_map
+    from regimemap.maps.record_export import export_map
 
     p = Parameters(3.0, -0.6)
     export_map(tmp_path / "m.json", p)
@@ -59,7 +59,7 @@ def test_exports_round_for_people(tmp_path):
 @pytest.mark.render
 def test_model_figure_draws_the_block():
     pytest.importorskip("matplotlib")
-    from regimemap.drawing.maps.model import model_figure
+    from regimemap.maps.figures.model import model_figure
 
     fig = model_figure(dpi=40)
     texts = " ".join(t.get_text() for ax in fig.axes for t in ax.texts) + " ".join(

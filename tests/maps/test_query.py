@@ -9,8 +9,7 @@ import numpy as np
 import pytest
 
 from regimemap import Mode, Parameters, classify
-from regimemap.io.points import DesignPoint
-from regimemap.io.tables import CSV_COLUMNS, format_result, result_row
+from regimemap.maps.file_points import DesignPoint
 from regimemap.maps.query import (
     HYPOTHESES_OF_MODE,
     Crossing,
@@ -18,6 +17,7 @@ from regimemap.maps.query import (
     query_point,
     query_points,
 )
+from regimemap.maps.record_tables import CSV_COLUMNS, format_result, result_row
 from regimemap.mechanics.solver import Hypothesis, admissible, solve
 
 from .._sweep import sample_points, sweep

@@ -294,7 +294,7 @@ def test_curve_label_anchor_keeps_clear_of_lines():
 
 @pytest.mark.subprocess
 def test_view_does_not_import_matplotlib():
-    code = ("import sys, regimemap.maps.view, regimemap.drawing.maps.presets; "
+    code = ("import sys, regimemap.maps.view, regimemap.maps.figures.presets; "
             "print(any(m.startswith('matplotlib') for m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "False"

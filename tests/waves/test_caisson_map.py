@@ -9,8 +9,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from regimemap.io.design import example_design_text, parse_design
-from regimemap.maps.caisson import PATH_FACTORS, caisson_report, loaded_map_of, map_view
+from regimemap.caisson.file import example_design_text, parse_design
+from regimemap.caisson.report import PATH_FACTORS, caisson_report, loaded_map_of, map_view
 from regimemap.maps.loadedmap import LO, LoadedMap, classify_at, margins, mode_grid, mode_label
 from regimemap.mechanics.modes import Mode
 from regimemap.waves import Densities, analyse_caisson

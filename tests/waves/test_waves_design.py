@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.io.design import DesignFileError, example_design_text, parse_design, read_design
+from regimemap.caisson.file import DesignFileError, example_design_text, parse_design, read_design
 
 EXAMPLE = example_design_text()
 

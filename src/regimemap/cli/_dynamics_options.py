@@ -1,6 +1,6 @@
 """Options shared by ``regimemap simulate`` and ``regimemap outcome`` (and the figure formats of
 ``regimemap dynamics-figures``): the block and pulse options, their types, the output checks,
-and :class:`~regimemap.dynamics.options.OptionError` as click's usage errors."""
+and :class:`~regimemap.motion.file.OptionError` as click's usage errors."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ from typing import Any
 import click
 
 from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
-from ..dynamics.options import OptionError
 from ..dynamics.pulses import SHAPES
+from ..motion.file import OptionError
 from ._common import ParamType, echo_notices, gamma_option, kprime_option, output_path
 from ._writing import checked_format
 from .atlas import Values
@@ -146,7 +146,7 @@ def check_output_file(path: str, record: str | Sequence[tuple[str, Sequence[str]
 
 @contextlib.contextmanager
 def option_errors() -> Iterator[None]:
-    """An :class:`~regimemap.dynamics.options.OptionError` inside becomes a usage error (exit 2):
+    """An :class:`~regimemap.motion.file.OptionError` inside becomes a usage error (exit 2):
     ``Invalid value for '--opt'`` when it names options, the message alone when not; the
     warnings it carries are printed first (:func:`echo_notices`)."""
     try:

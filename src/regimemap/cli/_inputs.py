@@ -19,7 +19,7 @@ import click
 from ._common import ParamType
 
 if TYPE_CHECKING:
-    from ..io.design import Design
+    from ..caisson.file import Design
 
 __all__ = ["InputFile", "DESIGN_FILE", "POINTS_FILE", "PULSE_FILE", "RECORD_FILE", "read_design_file"]
 
@@ -33,18 +33,18 @@ def _check(kind: str, path: str) -> None:
         check_design_file(path)
         return
     if kind == "record":
-        from ..io.records import check_record_file
+        from ..climate.file import check_record_file
 
         check_record_file(path)
         return
     from ..io.inputs import check_input_file
 
     if kind == "points":
-        from ..io import points
+        from ..maps import file_points as points
 
         check_input_file(path, max_bytes=points.MAX_POINTS_FILE_BYTES, what="points file")
     else:
-        from ..io import pulses
+        from ..motion import file_pulses as pulses
 
         check_input_file(path, max_bytes=pulses.MAX_PULSE_FILE_BYTES, what="pulse file")
 
@@ -80,9 +80,9 @@ RECORD_FILE = InputFile("record")
 
 
 def read_design_file(path: str, param_hint: str) -> Design:
-    """:func:`regimemap.io.design.read_design` of ``path``; a file it refuses is a usage error (exit 2)
+    """:func:`regimemap.caisson.file.read_design` of ``path``; a file it refuses is a usage error (exit 2)
     naming the argument ``param_hint`` (``"'DESIGN.toml'"``, ``"'--design'"``)."""
-    from ..io.design import DesignFileError, read_design
+    from ..caisson.file import DesignFileError, read_design
 
     try:
         return read_design(path)

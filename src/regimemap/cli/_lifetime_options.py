@@ -4,8 +4,8 @@
 overridden), :func:`chart_options` (``--width``, ``--target``, ``--width-tolerance``: a design
 chart instead), :func:`run_options` (``--jobs``, ``--chunk``, ``--scheduler``, ``--quiet``:
 where the lifetimes run) and :func:`report_options` (``--json``, ``-o``).  Each value is checked
-by a function of :mod:`regimemap.io` (:mod:`regimemap.io.lifetime_options`,
-:func:`regimemap.io.design.check_lifetime_option`), whose ValueError is the usage error.
+by a function of :mod:`regimemap.io` (:mod:`regimemap.lifetime.file_options`,
+:func:`regimemap.caisson.file.check_lifetime_option`), whose ValueError is the usage error.
 """
 
 from __future__ import annotations
@@ -40,7 +40,7 @@ class _Checked(ParamType):
 
 def _file_key(key: str) -> Callable[[str], Any]:
     def check(text: str) -> Any:
-        from ..io.design import check_lifetime_option
+        from ..caisson.file import check_lifetime_option
 
         return check_lifetime_option(key, text)
 
@@ -48,9 +48,9 @@ def _file_key(key: str) -> Callable[[str], Any]:
 
 
 def _option_check(name: str) -> Callable[[str], Any]:
-    """The check ``name`` of :mod:`regimemap.io.lifetime_options`, imported on first use."""
+    """The check ``name`` of :mod:`regimemap.lifetime.file_options`, imported on first use."""
     def check(text: str) -> Any:
-        from ..io import lifetime_options
+        from ..lifetime import file_options as lifetime_options
 
         return getattr(lifetime_options, name)(text)
 

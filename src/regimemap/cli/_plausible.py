@@ -1,10 +1,10 @@
 """Warnings for valid but implausible design files (likely unit slips), and ``--strict``.
 
-The checks are :func:`regimemap.io.plausibility.implausible_notices`; here they
+The checks are :func:`regimemap.caisson.file_plausibility.implausible_notices`; here they
 become one warning line each on standard error, with the file's name
 (:func:`~regimemap.cli._common.echo_notices`), or, with ``--strict``, a usage
 error (exit 2) naming the first.  :func:`caisson_record` is
-:func:`regimemap.workflows.caisson.run_caisson` with its warnings and failures
+:func:`regimemap.caisson.run.run_caisson` with its warnings and failures
 turned into the command line's lines and exit statuses.
 """
 
@@ -18,10 +18,10 @@ import click
 from ._common import RunError, echo_notices
 
 if TYPE_CHECKING:  # pragma: no cover
-    from regimemap.io.design import Design
+    from regimemap.caisson.file import Design
+    from regimemap.caisson.run import CaissonRecord
     from regimemap.mechanics.notices import Notice
     from regimemap.waves import CaissonAnalysis
-    from regimemap.workflows.caisson import CaissonRecord
 
 __all__ = ["STRICT_HELP", "STRICT_RECORD_HELP", "caisson_record", "check_plausible"]
 
@@ -48,7 +48,7 @@ def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bo
     ``param_hint`` names the design file's argument or option in the usage error of
     ``strict`` (``'DESIGN.toml'``, or ``'--design'`` for ``regimemap simulate``).
     """
-    from ..io.plausibility import implausible_notices
+    from ..caisson.file_plausibility import implausible_notices
 
     found = implausible_notices(design, analysis)
     if strict and found:
@@ -58,13 +58,13 @@ def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bo
 
 def caisson_record(design: Design, source: str, *, strict: bool = False, sheet: bool = False,
                    param_hint: str = "'DESIGN.toml'", usage_error: bool = False) -> CaissonRecord:
-    """:func:`~regimemap.workflows.caisson.run_caisson` of ``design``, its warnings on standard error.
+    """:func:`~regimemap.caisson.run.run_caisson` of ``design``, its warnings on standard error.
 
     With ``strict`` an implausible value is a usage error naming ``param_hint``; a caisson
     that cannot be analysed is a one-line error naming ``source``, after the warnings of its
     inputs: exit 1, or with ``usage_error`` a usage error naming ``param_hint`` (exit 2).
     """
-    from ..workflows.caisson import CaissonError, ImplausibleDesignError, run_caisson
+    from ..caisson.run import CaissonError, ImplausibleDesignError, run_caisson
 
     try:
         record = run_caisson(design, strict=strict, sheet=sheet)

@@ -21,7 +21,7 @@ from ..io.formats import FIGURE_FORMATS, kind_of, suffix_error, suffix_of
 from ._common import ParamType, output_path
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..io.points import DesignPoint
+    from ..maps.file_points import DesignPoint
 
 __all__ = [
     "FORMATS",
@@ -158,12 +158,12 @@ def check_modes_on_map(modes: tuple[Any, ...] | None, loaded: bool) -> tuple[Any
 
 
 class PointSpec(ParamType):
-    """``--point K,MU[:NAME]``: one design point (:func:`regimemap.io.points.parse_point_spec`)."""
+    """``--point K,MU[:NAME]``: one design point (:func:`regimemap.maps.file_points.parse_point_spec`)."""
 
     name = "K,MU[:NAME]"
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..io.points import DesignPoint, parse_point_spec
+        from ..maps.file_points import DesignPoint, parse_point_spec
 
         if isinstance(value, DesignPoint):
             return value
@@ -227,11 +227,11 @@ def read_points(files: Sequence[str], specs: Sequence[DesignPoint]) -> list[Desi
     Returns
     -------
     list of DesignPoint
-        Every point; :func:`regimemap.workflows.map.run_map` keeps those of its block.
+        Every point; :func:`regimemap.maps.run.run_map` keeps those of its block.
     """
     points = list(specs)
     if files:
-        from ..io.points import read_points_table  # imports csv: only when needed
+        from ..maps.file_points import read_points_table  # imports csv: only when needed
     for f in files:
         try:
             table = read_points_table(f)

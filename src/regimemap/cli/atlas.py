@@ -191,8 +191,8 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
     _checked_blocks(gammas, sweep, values, fixed)
     fmt = _figure_output(output)
     import_matplotlib()
-    from ..drawing.maps.atlas import write_atlas
-    from ..workflows.atlas import run_atlas
+    from ..maps.figures.atlas import write_atlas
+    from ..maps.run_atlas import run_atlas
 
     record = run_atlas(gammas, values, sweep=sweep, fixed=fixed, share=share, k_max=k_max,
                        mu_max=mu_max, view=view)
@@ -251,8 +251,8 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
     _checked_blocks([gamma], sweep, values, fixed)
     import_matplotlib()
-    from ..drawing.maps.animation import write_animation
-    from ..workflows.atlas import run_animation
+    from ..maps.figures.animation import write_animation
+    from ..maps.run_atlas import run_animation
 
     record = run_animation(gamma, values, k_max=k_max, mu_max=mu_max, view=view, sweep=sweep,
                            fixed=fixed)

@@ -14,7 +14,7 @@ from ._plausible import STRICT_RECORD_HELP, caisson_record
 from ._writing import checked_format, writing
 
 if TYPE_CHECKING:
-    from ..workflows.caisson import CaissonRecord
+    from ..caisson.run import CaissonRecord
 
 __all__ = ["caisson_cmd"]
 
@@ -84,12 +84,12 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
         import_matplotlib()
     record = caisson_record(d, source, strict=strict, sheet=output is not None)
     if output is not None:  # the sheet first: a failure leaves no report half-printed
+        from ..caisson.figures.page import caisson_sheet
         from ..drawing.save import save_figure
-        from ..drawing.sheet.page import caisson_sheet
 
         with writing(output):
             save_figure(caisson_sheet(record), output)
-    from ..io.caisson import caisson_json, format_caisson
+    from ..caisson.record import caisson_json, format_caisson
 
     if as_json:
         obj = caisson_json(record.report, source=source, required=record.required, checks=record.checks,
@@ -107,7 +107,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
 
 def _lifetime_lines(record: CaissonRecord) -> list[str]:
     """The sliding over the design life in the report's words (none without ``[lifetime]``)."""
-    from ..io.lifetime import lifetime_brief_lines
+    from ..lifetime.record import lifetime_brief_lines
 
     run = record.lifetime_run
     if run is None:
@@ -117,7 +117,7 @@ def _lifetime_lines(record: CaissonRecord) -> list[str]:
 
 def _lifetime_json(record: CaissonRecord) -> dict[str, Any] | None:
     """The sliding over the design life for the JSON (None without ``[lifetime]``)."""
-    from ..io.lifetime import lifetime_brief_json
+    from ..lifetime.record import lifetime_brief_json
 
     run = record.lifetime_run
     if run is None:
@@ -127,7 +127,7 @@ def _lifetime_json(record: CaissonRecord) -> dict[str, Any] | None:
 
 def _print_example(design: str | None, as_json: bool, output: str | None) -> None:
     """``--example``: print the commented example design file; it takes nothing else."""
-    from ..io.design import example_design_text
+    from ..caisson.file import example_design_text
 
     if design is not None or as_json or output is not None:
         raise click.UsageError("--example prints the example file and takes nothing else "

@@ -1,7 +1,7 @@
 """``regimemap climate``: return values of the significant wave height, with their bands, from a record.
 
-Parses the options, calls :func:`regimemap.workflows.climate.run_climate` and writes its
-record: the report (:mod:`regimemap.io.climate`) and the figures
+Parses the options, calls :func:`regimemap.climate.run.run_climate` and writes its
+record: the report (:mod:`regimemap.climate.record`) and the figures
 (:mod:`regimemap.drawing.climate`), each drawn once and written atomically.
 """
 
@@ -23,7 +23,7 @@ if TYPE_CHECKING:
 
     from ..climate import ClimateOptions
     from ..climate.analysis import ClimateResult, Curves, Diagnostics, Sensitivity
-    from ..workflows.climate import ClimateRecord
+    from ..climate.run import ClimateRecord
 
 __all__ = ["climate_cmd"]
 
@@ -40,7 +40,7 @@ class _Threshold(ParamType):
         if not isinstance(value, str):
             return value
         from ..climate.peaks import parse_threshold
-        from ..climate.record import HS_MAX
+        from ..climate.wave_record import HS_MAX
 
         try:
             kind, u = parse_threshold(value)
@@ -190,10 +190,10 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
 def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,
          period_col: str | None, drop_spikes: bool, diagnostics: bool) -> ClimateRecord:
     """The workflow's call: an unreadable record or an impossible analysis is a usage error naming the
-    record and the option it blames (:func:`regimemap.io.design_record.analysis_fault`), or RECORD."""
-    from ..io.design_record import analysis_fault
-    from ..io.records import RecordError
-    from ..workflows.climate import run_climate
+    record and the option it blames (:func:`regimemap.lifetime.file_record.analysis_fault`), or RECORD."""
+    from ..climate.file import RecordError
+    from ..climate.run import run_climate
+    from ..lifetime.file_record import analysis_fault
 
     try:
         return run_climate(record, options, time=time_col, hs=hs_col, period=period_col,
@@ -213,7 +213,7 @@ def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str
 
 def _climate_figure(result: ClimateResult, curves: Curves, title: str) -> Figure:
     """The record, the return levels with the band and the observations, the QQ plot."""
-    from ..drawing.climate.figures import climate_figure as draw
+    from ..climate.figures import climate_figure as draw
 
     return draw(result, curves, title)
 
@@ -222,6 +222,6 @@ def _diagnostics_figure(found: Diagnostics, threshold: float | None, title: str,
                         moved: Sensitivity | None) -> Figure:
     """Mean residual life, parameter stability and the return value across thresholds, the
     threshold used marked."""
-    from ..drawing.climate.figures import diagnostics_figure as draw
+    from ..climate.figures import diagnostics_figure as draw
 
     return draw(found, threshold, title, sensitivity=moved)

@@ -1,7 +1,7 @@
 """``regimemap dynamics-figures``: the outcome-map figures D.1-D.3 of regimemap.dynamics into a folder.
 
-Each map comes from :func:`regimemap.workflows.outcome.run_dynamics_figure` (computed, or read
-from the cache) and :func:`regimemap.drawing.motion.presets.dynamics_figure` draws it.
+Each map comes from :func:`regimemap.motion.run_maps.run_dynamics_figure` (computed, or read
+from the cache) and :func:`regimemap.motion.figures.presets.dynamics_figure` draws it.
 """
 
 from __future__ import annotations
@@ -54,7 +54,7 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
       regimemap dynamics-figures --list
     """
     from ..dynamics.presets import DYNAMICS_FIGURES
-    from ..workflows.outcome import run_dynamics_figure
+    from ..motion.run_maps import run_dynamics_figure
 
     if list_only:
         click.echo("\n".join(f"{f.id:4s} {f.caption}" for f in DYNAMICS_FIGURES.values()))
@@ -64,7 +64,7 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
         raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
     import_matplotlib()
-    from ..drawing.motion.presets import dynamics_figure
+    from ..motion.figures.presets import dynamics_figure
 
     for f in DYNAMICS_FIGURES.values():
         t0 = time.perf_counter()

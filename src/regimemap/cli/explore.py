@@ -1,6 +1,6 @@
 """``regimemap explore``: the regime map, live (sliders for gamma and k', a click, Save).
 
-The window is :class:`regimemap.drawing.explore.explorer.Explorer`; this module only
+The window is :class:`regimemap.maps.figures.explore.explorer.Explorer`; this module only
 parses the options, wires the explorer to the rest of the command line (the
 file names of ``regimemap plot``, and the ``plot`` command that writes the
 same file, on standard error) and opens the window.  :func:`open_explorer` does the same
@@ -32,7 +32,7 @@ from .plot import DEFAULT_SAMPLES, plot_stem
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-    from ..drawing.explore.explorer import Explorer
+    from ..maps.figures.explore.explorer import Explorer
     from ..maps.points import DesignPoint
     from ..mechanics.block import Parameters
 
@@ -54,7 +54,7 @@ def plot_command_line(explorer: Explorer) -> str:
 def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT_SAMPLES,
                   fig: Figure | None = None, echo: Any = click.echo, window: bool = True,
                   point: DesignPoint | None = None) -> Explorer:
-    """An :class:`~regimemap.drawing.explore.explorer.Explorer` wired as ``regimemap explore`` wires it.
+    """An :class:`~regimemap.maps.figures.explore.explorer.Explorer` wired as ``regimemap explore`` wires it.
 
     A click shows the text of ``regimemap classify``
     (:func:`regimemap.io.format_result`); *Save* writes atomically
@@ -69,11 +69,11 @@ def open_explorer(params: Parameters | None = None, *, resolution: int = DEFAULT
 
         ex = open_explorer(Parameters(gamma=3, kprime=0.4))
     """
-    from ..drawing.explore.explorer import Explorer
     from ..drawing.save import save_figure
-    from ..io.tables import format_result
+    from ..maps.figures.explore.explorer import Explorer
     from ..maps.mapdata import map_for_view
     from ..maps.query import classify_point
+    from ..maps.record_tables import format_result
 
     holder: list[Explorer] = []
 
@@ -153,7 +153,7 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
             ex.save(path)
         report_written(path)
         return
-    from ..drawing.explore.text import window_problem
+    from ..maps.figures.explore.text import window_problem
 
     problem = window_problem()
     if problem is not None:
@@ -194,7 +194,7 @@ def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, Desig
     The file gives the block: --gamma, --kprime or a load given too is a usage error; a bad
     file is a usage error naming the file, its line and the key, as ``regimemap caisson``
     reports it; implausible values are warnings on standard error
-    (:func:`regimemap.workflows.caisson.run_caisson`, as ``regimemap caisson`` runs it).
+    (:func:`regimemap.caisson.run.run_caisson`, as ``regimemap caisson`` runs it).
     """
     from click.core import ParameterSource
 

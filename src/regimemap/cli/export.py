@@ -68,7 +68,7 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
       regimemap export --gamma 3 --kprime -0.6 --k-max 4 --mu-max 3 -o map.json
       regimemap export --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52 -o goda.json
     """
-    from ..io.export import export_map, format_of
+    from ..maps.record_export import export_map, format_of
     from ..mechanics.block import Parameters
 
     try:

@@ -1,8 +1,8 @@
 """``regimemap lifetime``: the expected sliding distance of a caisson over its design life.
 
-Parses the options, calls :func:`regimemap.workflows.lifetime.run_lifetime` -- or, with
-``--width``, :func:`regimemap.workflows.lifetime.run_chart` -- and writes its record: the
-report (text or JSON), the lifetimes or the chart's table (:mod:`regimemap.io.lifetime`) and
+Parses the options, calls :func:`regimemap.lifetime.run.run_lifetime` -- or, with
+``--width``, :func:`regimemap.lifetime.run.run_chart` -- and writes its record: the
+report (text or JSON), the lifetimes or the chart's table (:mod:`regimemap.lifetime.record`) and
 the figure (:mod:`regimemap.drawing.lifetime`), each file atomically.
 """
 
@@ -26,7 +26,7 @@ from ._writing import checked_format, distinct_files, write_files
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from ..workflows.lifetime import ChartRecord, LifetimeDesign, LifetimeRecord
+    from ..lifetime.run import ChartRecord, LifetimeDesign, LifetimeRecord
 
 __all__ = ["lifetime_cmd"]
 
@@ -112,7 +112,7 @@ def _run(design: str, inputs: LifetimeDesign, widths: list[float] | None, target
          chunk: int | None, scheduler: str | None, quiet: bool) -> LifetimeRecord | ChartRecord:
     """The workflow's run with a progress bar; a run that cannot be made is a :class:`RunError`."""
     from ..lifetime import ClusterUnavailable
-    from ..workflows.lifetime import run_chart, run_lifetime
+    from ..lifetime.run import run_chart, run_lifetime
     from ._progress import progress_bar
 
     def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
@@ -160,8 +160,8 @@ def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None
 def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign:
     """The design file read for the workflow: a file it refuses, or (``--strict``) an implausible
     value, is a usage error naming it; the implausible values are warnings otherwise."""
-    from ..io.design import DesignFileError
-    from ..workflows.lifetime import RECORD_WARNINGS, read_lifetime_design
+    from ..caisson.file import DesignFileError
+    from ..lifetime.run import RECORD_WARNINGS, read_lifetime_design
 
     try:
         inputs = read_lifetime_design(design, years)
@@ -204,12 +204,12 @@ def _figure(record: LifetimeRecord | ChartRecord, design: str) -> Figure:
 
     title = Path(design).stem
     if isinstance(record.result, LifetimeResult):
-        from ..drawing.lifetime.exceedance import lifetime_figure, lifetime_title
+        from ..lifetime.figures.exceedance import lifetime_figure, lifetime_title
         from ..lifetime.replicates import ClimateBand
 
         life_band = record.band if isinstance(record.band, ClimateBand) else None
         return lifetime_figure(record.result, lifetime_title(title, record.result), band=life_band)
-    from ..drawing.lifetime.chart import chart_figure, chart_title
+    from ..lifetime.figures.chart import chart_figure, chart_title
     from ..lifetime.replicates import ChartBand
 
     band = record.band if isinstance(record.band, ChartBand) else None

@@ -1,8 +1,8 @@
 """``regimemap outcome``: an outcome map (rest, slide, rock, slide-rock, overturned) over two
 swept inputs.
 
-The command hands its options to :func:`regimemap.dynamics.options.map_options` (which sweeps,
-which pulse, the limits), calls :func:`regimemap.workflows.outcome.run_outcome`, and writes the
+The command hands its options to :func:`regimemap.motion.file.map_options` (which sweeps,
+which pulse, the limits), calls :func:`regimemap.motion.run_maps.run_outcome`, and writes the
 record's data through :mod:`regimemap.io` or draws it with :mod:`regimemap.drawing.outcome`
 (matplotlib only then).
 """
@@ -28,7 +28,7 @@ from ._writing import distinct_files, write_files
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
 
-    from ..workflows.outcome import OutcomeRecord
+    from ..motion.run_maps import OutcomeRecord
 
 __all__ = ["outcome_cmd"]
 
@@ -91,8 +91,8 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
           --pulse half-sine --omega-p 3:30:28 --k-peak 0.3:2.5:23 --dimensionless \\
           -o spectrum.svg -o spectrum.npz
     """
-    from ..dynamics.options import map_options
-    from ..workflows.outcome import run_outcome
+    from ..motion.file import map_options
+    from ..motion.run_maps import run_outcome
 
     values: dict[str, list[float] | None] = {
         "k_peak": k_peak, "duration": duration, "omega_p": omega_p, "mu": mu, "kprime": kprime,
@@ -109,7 +109,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     with option_errors():
         record = run_outcome(opts, restitution=restitution, min_rotation=min_rotation, refine=not no_refine,
                              dimensionless=dimensionless, bars=_bars(quiet))
-    from ..io.dynamics import outcome_summary
+    from ..motion.record_files import outcome_summary
 
     _note(quiet, "\n".join(outcome_summary(record)))
     _write(record, outputs)
@@ -141,10 +141,10 @@ def _check_outputs(outputs: tuple[str, ...]) -> None:
 
 def _write(record: OutcomeRecord, outputs: tuple[str, ...]) -> None:
     """Write the map's data (.npz, .csv, .json) and draw its figure once (.png, .svg, .pdf)."""
-    from ..io.dynamics import write_outcome_record
+    from ..motion.record_files import write_outcome_record
 
     def draw() -> Figure:
-        from ..drawing.outcome.record import outcome_record_figure
+        from ..motion.figures.outcome_record import outcome_record_figure
 
         return outcome_record_figure(record)
 

@@ -40,8 +40,8 @@ from ._plot_options import number_text as _num
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..workflows.atlas import AtlasRecord
-    from ..workflows.map import MapRecord
+    from ..maps.run import MapRecord
+    from ..maps.run_atlas import AtlasRecord
 
 __all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command", "figure_maps",
            "figures_command", "plot_command", "plot_stem"]
@@ -49,7 +49,7 @@ __all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figu
 _LO, _HI = DPI_RANGE
 
 DEFAULT_SAMPLES = 801
-#: The number of the report's model figure (repeated from regimemap.drawing.maps.model).
+#: The number of the report's model figure (repeated from regimemap.maps.figures.model).
 MODEL_ID = "2.1"
 
 
@@ -177,10 +177,10 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     modes = check_modes_on_map(modes, params.loaded)
     points = read_points(points_files, point_specs)
     import_matplotlib()
-    from ..drawing.maps.figure import map_figure
-    from ..drawing.maps.mapplot import MapStyle
     from ..drawing.save import save_figure
-    from ..workflows.map import run_map
+    from ..maps.figures.figure import map_figure
+    from ..maps.figures.mapplot import MapStyle
+    from ..maps.run import run_map
 
     record = run_map(params, view=view, k_max=k_max, mu_max=mu_max, modes=modes, raw=raw,
                      samples=resolution, curves=not no_curves, points=points,
@@ -214,8 +214,8 @@ Examples:
 
 
 def _preset_or_usage_error(fid: str) -> Any:
-    from ..drawing.maps.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
-    from ..drawing.maps.worked import WORKED
+    from ..maps.figures.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
+    from ..maps.figures.worked import WORKED
 
     if normalise_id(fid) == MODEL_ID:
         return None
@@ -244,8 +244,8 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
     path, fmt = resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
 
     import_matplotlib()
-    from ..drawing.maps.batch import render_figure
     from ..drawing.save import save_figure
+    from ..maps.figures.batch import render_figure
 
     fid = MODEL_ID if preset is None else preset.id
     fig = render_figure(fid, figure_maps(fid), dpi=dpi)
@@ -294,8 +294,8 @@ W.4: the uplift ratio swept); --set all draws both.
 @click.option("--quiet", "-q", is_flag=True, help="No progress bar on standard error.")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
                     which: str, jobs: int | None, quiet: bool) -> None:
-    from ..drawing.maps.presets import PRESETS
-    from ..drawing.maps.worked import WORKED
+    from ..maps.figures.presets import PRESETS
+    from ..maps.figures.worked import WORKED
 
     if list_only:
         _list_figures(which)
@@ -303,7 +303,7 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     folder = _check_dir(out_dir, "--out")
 
     import_matplotlib()
-    from ..drawing.maps.batch import write_figures
+    from ..maps.figures.batch import write_figures
 
     ids = [] if which == "worked" else [MODEL_ID, *PRESETS]
     if which != "report":
@@ -322,12 +322,12 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
 
 def figure_maps(fid: str) -> MapRecord | AtlasRecord | None:
     """The maps a figure of the report shows, by its id, from the workflows (None for the model
-    figure, 2.1): what :func:`regimemap.drawing.maps.batch.render_figure` draws."""
-    from ..drawing.maps.model import MODEL_FIGURE_ID
-    from ..drawing.maps.presets import get_preset
-    from ..drawing.maps.worked import WORKED
-    from ..workflows.atlas import run_atlas
-    from ..workflows.map import run_map
+    figure, 2.1): what :func:`regimemap.maps.figures.batch.render_figure` draws."""
+    from ..maps.figures.model import MODEL_FIGURE_ID
+    from ..maps.figures.presets import get_preset
+    from ..maps.figures.worked import WORKED
+    from ..maps.run import run_map
+    from ..maps.run_atlas import run_atlas
 
     if fid == MODEL_FIGURE_ID:
         return None
@@ -339,8 +339,8 @@ def figure_maps(fid: str) -> MapRecord | AtlasRecord | None:
 
 def _list_figures(which: str) -> None:
     """``figures --list``: a line per figure of the set, with its parameters and caption."""
-    from ..drawing.maps.presets import PRESETS
-    from ..drawing.maps.worked import WORKED
+    from ..maps.figures.presets import PRESETS
+    from ..maps.figures.worked import WORKED
 
     report = {} if which == "worked" else PRESETS
     if which != "worked":

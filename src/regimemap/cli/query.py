@@ -101,7 +101,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
       regimemap classify --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52 --k 0.28 --mu 0.6
     """
     points, to_json = _classify_input(gamma, kprime, k, mu, points_file, as_json, output)
-    from ..workflows.query import run_query
+    from ..maps.run_query import run_query
 
     try:
         record = run_query(points, gamma=gamma, kprime=kprime, **loads)
@@ -110,7 +110,7 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     if points_file is None:
         _echo_point(record.results[0], as_json)
         return
-    from ..io.tables import results_text
+    from ..maps.record_tables import results_text
 
     text = results_text(record.results, to_json)
     if output is None:
@@ -143,7 +143,7 @@ def _classify_input(gamma: float | None, kprime: float | None, k: float | None, 
 def _one_point(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
                output: str | None) -> DesignPoint:
     """The point of ``--k``/``--mu``; a usage error for ``-o`` or an option missing."""
-    from ..io.points import DesignPoint
+    from ..maps.file_points import DesignPoint
 
     if output is not None:
         raise click.UsageError("-o/--output is for --points; one point prints to standard "
@@ -160,7 +160,7 @@ def _one_point(gamma: float | None, kprime: float | None, k: float | None, mu: f
 
 def _echo_point(result: PointResult, as_json: bool) -> None:
     """One point's answer as text (or JSON) on standard output."""
-    from ..io.tables import format_result, result_json
+    from ..maps.record_tables import format_result, result_json
 
     if as_json:
         click.echo(json.dumps(result_json(result), indent=2, allow_nan=False))
@@ -172,7 +172,7 @@ def _points_of_file(points_file: str, gamma: float | None, kprime: float | None
                     ) -> list[DesignPoint]:
     """The rows of ``--points``; a usage error for a bad file or a row without its gamma or
     k' when no ``--gamma``/``--kprime`` gives it."""
-    from ..io.points import read_points_table
+    from ..maps.file_points import read_points_table
 
     try:
         table = read_points_table(points_file)

@@ -1,8 +1,8 @@
 """``regimemap simulate``: one run of a block under a force pulse, past initiation.
 
-The command parses its options, calls :func:`regimemap.workflows.simulate.run_simulation`
+The command parses its options, calls :func:`regimemap.motion.run.run_simulation`
 (which checks how they go together and runs), writes the record through :mod:`regimemap.io`
-and draws it through :mod:`regimemap.drawing.motion.run`; matplotlib is imported only when a
+and draws it through :mod:`regimemap.motion.figures.simulation`; matplotlib is imported only when a
 plot or an animation is asked for.
 """
 
@@ -27,7 +27,7 @@ from ._plausible import STRICT_HELP
 from ._writing import writing
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..workflows.simulate import SimulationRecord
+    from ..motion.run import SimulationRecord
 
 __all__ = ["simulate_cmd"]
 
@@ -118,7 +118,7 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
       regimemap caisson --example > goda.toml
       regimemap simulate --design goda.toml --json
     """
-    from ..workflows.simulate import IMPLAUSIBLE, run_simulation
+    from ..motion.run import IMPLAUSIBLE, run_simulation
 
     _check_design_flags(design, strict, check)
     want_history = _check_outputs(output, plot, animate)  # before the run
@@ -135,11 +135,11 @@ def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | 
     written = _write_outputs(record, output, plot, animate)
     echo_notices(n for n in record.notices if n.code != IMPLAUSIBLE)
     if as_json:
-        from ..io.simulation import simulation_json
+        from ..motion.record_simulation import simulation_json
 
         click.echo(simulation_json(record, written))
     else:
-        from ..io.simulation import format_simulation
+        from ..motion.record_simulation import format_simulation
 
         click.echo("\n".join([format_simulation(record), *written]))
     exit_on_failure(record.checks, check)
@@ -186,7 +186,7 @@ def _write_outputs(record: SimulationRecord, output: str | None, plot: str | Non
     """Write the time history (-o), its plot (--plot) and the animation (--animate); the paths."""
     written: list[str] = []
     if output is not None:
-        from ..io.simulation import write_simulation_history
+        from ..motion.record_simulation import write_simulation_history
 
         with writing(output):
             write_simulation_history(output, record)
@@ -195,14 +195,14 @@ def _write_outputs(record: SimulationRecord, output: str | None, plot: str | Non
         return written
     import_matplotlib()
     if plot is not None:
-        from ..drawing.motion.run import simulation_figure
         from ..drawing.save import save_figure
+        from ..motion.figures.simulation import simulation_figure
 
         with writing(plot):
             save_figure(simulation_figure(record), plot)
         written.append(plot)
     if animate is not None:
-        from ..drawing.motion.run import simulation_animation
+        from ..motion.figures.simulation import simulation_animation
 
         with writing(animate):
             n, (w, h), speed = simulation_animation(animate, record)

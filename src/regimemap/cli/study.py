@@ -1,9 +1,9 @@
 """``regimemap study``: a whole breakwater, section by section, under climate scenarios; resumable.
 
-Reads the study file (:func:`regimemap.io.study.read_study`), runs
-:func:`regimemap.workflows.study.run_study` -- its tasks in this process, in local
+Reads the study file (:func:`regimemap.study.file.read_study`), runs
+:func:`regimemap.study.run.run_study` -- its tasks in this process, in local
 processes or on Dask, each stored as it finishes -- and writes the table
-(:mod:`regimemap.io.study_table`, :mod:`regimemap.io.study_netcdf`) or the figures
+(:mod:`regimemap.study.record_table`, :mod:`regimemap.study.record_netcdf`) or the figures
 (:mod:`regimemap.drawing.study`).
 """
 
@@ -25,8 +25,8 @@ from ._writing import checked_format, write_files
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from ..io.study import Study
-    from ..workflows.study import StudyRecord
+    from ..study.file import Study
+    from ..study.run import StudyRecord
 
 __all__ = ["study_cmd"]
 
@@ -34,12 +34,12 @@ FIGURE_KINDS = ("chainage", "years", "width")
 
 
 class _Scheduler(ParamType):
-    """``local``, or a Dask scheduler's address (:func:`regimemap.io.lifetime_options.check_scheduler`)."""
+    """``local``, or a Dask scheduler's address (:func:`regimemap.lifetime.file_options.check_scheduler`)."""
 
     name = "text"
 
     def convert(self, value: object, param: click.Parameter | None, ctx: click.Context | None) -> str:
-        from ..io.lifetime_options import check_scheduler
+        from ..lifetime.file_options import check_scheduler
 
         text = str(value).strip()
         if text == "local":
@@ -86,7 +86,7 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
     if scheduler is not None and _missing("distributed"):
         raise click.BadParameter(NO_DASK, param_hint="'--scheduler'")
     if any(suffix_of(path) == "nc" for path in outputs) and _missing("xarray"):
-        from ..io.study_netcdf import NO_XARRAY
+        from ..study.record_netcdf import NO_XARRAY
 
         bad = next(path for path in outputs if suffix_of(path) == "nc")
         raise click.BadParameter(f"{bad!r}: {NO_XARRAY} (or write the table as .csv)",
@@ -114,7 +114,7 @@ def _progress(quiet: bool) -> Iterator[Callable[[int, int], None]]:
 
 def _read(study: str, section: str | None) -> Study:
     """The study file (refused: a usage error, exit 2) and ``--section`` among its sections."""
-    from ..io.study import StudyFileError, read_study
+    from ..study.file import StudyFileError, read_study
 
     try:
         parsed = read_study(study)
@@ -130,9 +130,9 @@ def _read(study: str, section: str | None) -> Study:
 def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, overwrite: bool,
          store: str | None, quiet: bool) -> StudyRecord:
     """Run the study; a refused store is a usage error (exit 2), a missing cluster a failure."""
-    from ..io.study_store import StudyStoreError
     from ..lifetime import ClusterUnavailable, available_cores
-    from ..workflows.study import run_study
+    from ..study.record_store import StudyStoreError
+    from ..study.run import run_study
 
     source = Path(study.source)
     folder = Path(store) if store is not None else source.parent / f"{source.stem}.store"
@@ -151,13 +151,13 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
     """Each output file: the table (.csv, .nc) or the figure (.png, .svg, .pdf, drawn once); the files
     written, in order."""
     def table(path: str) -> None:
-        from ..io.study_netcdf import write_study_netcdf
-        from ..io.study_table import write_study_csv
+        from ..study.record_netcdf import write_study_netcdf
+        from ..study.record_table import write_study_csv
 
         (write_study_csv if suffix_of(path) == "csv" else write_study_netcdf)(path, record)
 
     def draw() -> Figure:
-        from ..drawing.study.figures import study_figure
+        from ..study.figures import study_figure
 
         return study_figure(record, kind=figure, section=section)
 
@@ -226,12 +226,12 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
       regimemap study breakwater.toml --overwrite --check
       regimemap study breakwater.toml --scheduler local -o esd.svg
     """
-    from ..io.study_table import study_check_lines, study_checks_json, study_json, study_lines
-    from ..workflows.study import study_checks
+    from ..study.record_table import study_check_lines, study_checks_json, study_json, study_lines
+    from ..study.run import study_checks
 
     _check_call(study, example, outputs, scheduler, jobs, resume, overwrite)
     if example:
-        from ..io.study_example import example_study_text
+        from ..study.file_example import example_study_text
 
         click.echo(example_study_text(), nl=False)
         return

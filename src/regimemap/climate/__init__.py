@@ -3,7 +3,7 @@ with their intervals (numpy and scipy; layer 2, beside :mod:`regimemap.lifetime`
 imported on first use (:func:`regimemap._lazy.attach`): reading a record does not import scipy.
 
 * :class:`Record`, :func:`make_record` -- a record and its quality control (the files are read by
-  :func:`regimemap.io.records.read_record`);
+  :func:`regimemap.climate.file.read_record`);
 * :func:`storms`, :func:`annual_maxima` -- peaks over a threshold (runs declustering) and the
   maxima of well-observed years;
 * :func:`fit` -- GPD, Weibull, Gumbel and GEV by maximum likelihood; :mod:`regimemap.climate.intervals`
@@ -24,7 +24,7 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .fits import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Fit, fit
     from .intervals import Band, bootstrap
     from .peaks import AnnualMaxima, Storms, annual_maxima, parse_threshold, storms
-    from .record import Quality, Record, make_record
+    from .wave_record import Quality, Record, make_record
 
 __all__ = [
     "AM_DISTRIBUTIONS", "METHODS", "POT_DISTRIBUTIONS", "AnnualMaxima", "Band", "ClimateOptions",
@@ -37,6 +37,6 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
         "analysis": ["METHODS", "ClimateOptions", "ClimateResult", "analyse"],
         "fits": ["AM_DISTRIBUTIONS", "POT_DISTRIBUTIONS", "Fit", "fit"],
         "intervals": ["Band", "bootstrap"],
-        "record": ["Quality", "Record", "make_record"],
         "peaks": ["AnnualMaxima", "Storms", "annual_maxima", "parse_threshold", "storms"],
+        "wave_record": ["Quality", "Record", "make_record"],
     })

@@ -33,7 +33,7 @@ from .peaks import (
     resolve_threshold,
     storms,
 )
-from .record import HS_MAX, Record
+from .wave_record import HS_MAX, Record
 
 __all__ = ["METHODS", "MIN_YEARS", "SENSITIVITY_QUANTILES", "ClimateOptions", "ClimateResult", "Curves",
            "Diagnostics", "Sensitivity", "analyse", "curves", "diagnostics", "sensitivity"]
@@ -81,7 +81,7 @@ class ClimateOptions:
         (:mod:`regimemap.climate.intervals`).
     hs_limit : float or None
         A physical limit [m]: a return value or interval bound above it is flagged (None: the
-        :data:`~regimemap.climate.record.HS_MAX` the record reader refuses in a record).
+        :data:`~regimemap.climate.wave_record.HS_MAX` the record reader refuses in a record).
     hs_limit_name : str
         What the limit is, for the notice.
     bootstrap : int, optional

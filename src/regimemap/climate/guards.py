@@ -14,7 +14,7 @@ quantity and its value; ``regimemap climate --strict`` makes them errors.
   the GPD search at its lowest :math:`\\theta = \\xi/\\sigma = -1/\\max y` (the end point is the
   largest storm);
 * a return value or interval bound above a physical limit (by default the
-  :data:`~regimemap.climate.record.HS_MAX` the record reader refuses in a record; a design file
+  :data:`~regimemap.climate.wave_record.HS_MAX` the record reader refuses in a record; a design file
   may give the depth-limited breaker height).
 """
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .record import Record
+from .wave_record import Record
 
 __all__ = ["DEFAULT_COVERAGE", "DEFAULT_GAP", "DEFAULT_QUANTILE", "AnnualMaxima", "Storms",
            "annual_maxima", "parse_threshold", "resolve_threshold", "storms"]
@@ -139,7 +139,7 @@ def storms(record: Record, threshold: float, gap_hours: float = DEFAULT_GAP) -> 
 
     Examples
     --------
-    >>> from regimemap.climate.record import make_record
+    >>> from regimemap.climate.wave_record import make_record
     >>> t = np.datetime64("2000-01-01T00", "s") + np.arange(8) * np.timedelta64(3600, "s")
     >>> r = make_record("x", t, np.array([1, 3, 1, 3.5, 1, 1, 1, 4.0]))
     >>> s = storms(r, 2.0, gap_hours=2.0)

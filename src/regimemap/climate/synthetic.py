@@ -35,14 +35,14 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import NDArray
 
-from .record import Record, make_record
+from .wave_record import Record, make_record
 
 __all__ = ["DEFAULT_SEPARATION", "DEFAULT_STORM_HOURS", "HOURS_PER_YEAR", "SyntheticClimate",
            "record_seeds", "synthetic_hs", "synthetic_record"]
 
 FloatArray = NDArray[np.float64]
 
-#: Hours in a year of the records (365.25 days, as :attr:`regimemap.climate.record.Record.years`).
+#: Hours in a year of the records (365.25 days, as :attr:`regimemap.climate.wave_record.Record.years`).
 HOURS_PER_YEAR = 24.0 * 365.25
 #: A storm is above the base level for ``2 K + 1`` hours, ``K`` = this.
 DEFAULT_STORM_HOURS = 6
@@ -228,7 +228,7 @@ def synthetic_hs(climate: SyntheticClimate, years: float, seed: np.random.SeedSe
 def synthetic_record(climate: SyntheticClimate, years: float, seed: np.random.SeedSequence | int,
                      storm_hours: int = DEFAULT_STORM_HOURS,
                      separation_hours: int = DEFAULT_SEPARATION) -> Record:
-    """The :class:`~regimemap.climate.record.Record` of :func:`synthetic_hs` (hourly from
+    """The :class:`~regimemap.climate.wave_record.Record` of :func:`synthetic_hs` (hourly from
     2000-01-01T00Z, no period), with its quality control, as a reader would make it.
 
     Examples

@@ -1,24 +1,14 @@
-"""The drawing layer: the only part of regimemap that imports matplotlib.
+"""What every figure shares, and the index of the figures: the only shared package that imports matplotlib.
 
-One room per family of figures, and what they share at the top:
-
-* :mod:`.maps` -- the regime map, its key, a map figure, the report's figures,
-  the atlas and the animation;
-* :mod:`.outcome` -- outcome maps of :mod:`regimemap.dynamics`;
-* :mod:`.motion` -- one run's motion, and the figures D.1-D.3;
-* :mod:`.sheet` -- the caisson's design sheet;
-* :mod:`.lifetime` -- the exceedance figure and the design chart of a caisson's
-  design life;
-* :mod:`.climate` -- a wave record's extremes: the record, return levels, QQ and
-  threshold diagnostics;
-* :mod:`.study` -- a whole breakwater: sliding along the chainage, by service
-  year, and the width for a target, a line per climate scenario;
-* :mod:`.explore` -- ``regimemap explore``, the map with sliders;
-* :mod:`.text` -- label placement and the passes that keep texts legible;
-* :mod:`.style`, :mod:`.save`, :mod:`.limits`, :mod:`.verdict` -- the style of
-  every drawing, figure bytes and files (written atomically through
-  :mod:`regimemap.io`, the layer below), the sizes the command line checks, the
-  PASS/FAIL badge.
+Shared by the products' figures (``figures*`` of :mod:`regimemap.maps`,
+:mod:`regimemap.caisson`, :mod:`regimemap.motion`, :mod:`regimemap.lifetime`,
+:mod:`regimemap.climate` and :mod:`regimemap.study`): :mod:`.style` (colours and
+hatches per category, rcParams), :mod:`.save` (figure bytes and files, written
+atomically through :mod:`regimemap.io`, the layer below), :mod:`.limits` (the sizes
+the command line checks), :mod:`.verdict` (the PASS/FAIL badge), :mod:`.artists`
+(what a drawn map holds) and :mod:`.text` (label placement and the passes that keep
+texts legible).  The names below are also those of the figures themselves, each
+imported from its product on first use.
 
 Names are imported on first use (:func:`regimemap._lazy.attach`), so ``import
 regimemap.drawing`` does not import matplotlib; the ``if TYPE_CHECKING`` block
@@ -32,19 +22,19 @@ from typing import TYPE_CHECKING
 from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
-    from .climate.figures import climate_figure, diagnostics_figure
-    from .lifetime.chart import chart_figure
-    from .lifetime.exceedance import lifetime_figure
-    from .maps.ambiguity import draw_ambiguity
-    from .maps.animation import write_animation
-    from .maps.artists import MapArtists
-    from .maps.atlas import atlas_figure, write_atlas
-    from .maps.figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
-    from .maps.mapplot import MapStyle, default_title, draw_design_points, draw_map
-    from .motion.history import motion_figure
-    from .outcome.figure import OutcomeStyle, draw_outcome_map, outcome_figure
+    from ..climate.figures import climate_figure, diagnostics_figure
+    from ..lifetime.figures.chart import chart_figure
+    from ..lifetime.figures.exceedance import lifetime_figure
+    from ..maps.figures.ambiguity import draw_ambiguity
+    from ..maps.figures.animation import write_animation
+    from ..maps.figures.atlas import atlas_figure, write_atlas
+    from ..maps.figures.figure import FIGSIZE, fit_figure, map_figure, new_figure, render_map, render_preset
+    from ..maps.figures.mapplot import MapStyle, default_title, draw_design_points, draw_map
+    from ..motion.figures.history import motion_figure
+    from ..motion.figures.outcome import OutcomeStyle, draw_outcome_map, outcome_figure
+    from ..study.figures import study_figure
+    from .artists import MapArtists
     from .save import save_figure
-    from .study.figures import study_figure
     from .style import MODE_STYLE, OUTCOME_STYLE, style_context
 
 __all__ = [
@@ -91,18 +81,19 @@ def load_matplotlib() -> None:
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
-        "maps.ambiguity": ["draw_ambiguity"],
-        "maps.animation": ["write_animation"],
-        "maps.artists": ["MapArtists"],
-        "maps.atlas": ["atlas_figure", "write_atlas"],
-        "maps.figure": ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "render_map", "render_preset"],
-        "maps.mapplot": ["MapStyle", "default_title", "draw_design_points", "draw_map"],
-        "lifetime.exceedance": ["lifetime_figure"],
-        "lifetime.chart": ["chart_figure"],
-        "climate.figures": ["climate_figure", "diagnostics_figure"],
-        "motion.history": ["motion_figure"],
-        "outcome.figure": ["OutcomeStyle", "draw_outcome_map", "outcome_figure"],
+        ".climate.figures": ["climate_figure", "diagnostics_figure"],
+        ".lifetime.figures.chart": ["chart_figure"],
+        ".lifetime.figures.exceedance": ["lifetime_figure"],
+        ".maps.figures.ambiguity": ["draw_ambiguity"],
+        ".maps.figures.animation": ["write_animation"],
+        "artists": ["MapArtists"],
+        ".maps.figures.atlas": ["atlas_figure", "write_atlas"],
+        ".maps.figures.figure": ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "render_map",
+                                 "render_preset"],
+        ".maps.figures.mapplot": ["MapStyle", "default_title", "draw_design_points", "draw_map"],
+        ".motion.figures.history": ["motion_figure"],
+        ".motion.figures.outcome": ["OutcomeStyle", "draw_outcome_map", "outcome_figure"],
         "save": ["save_figure"],
-        "study.figures": ["study_figure"],
+        ".study.figures": ["study_figure"],
         "style": ["MODE_STYLE", "OUTCOME_STYLE", "style_context"],
     })

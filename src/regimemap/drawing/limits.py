@@ -2,8 +2,8 @@
 
 The command line builds its options from these numbers (``regimemap atlas``, ``regimemap
 animate``); this module imports nothing, so ``regimemap --help`` does not load the drawing
-modules (or the maps they draw) to learn them.  :mod:`regimemap.drawing.maps.atlas` and
-:mod:`regimemap.drawing.maps.animation` re-export them under the same names.
+modules (or the maps they draw) to learn them.  :mod:`regimemap.maps.figures.atlas` and
+:mod:`regimemap.maps.figures.animation` re-export them under the same names.
 """
 
 from __future__ import annotations

@@ -83,7 +83,7 @@ MODE_STYLE: dict[Mode, ModeStyle] = {
 #: greyscale too), with a light crossed hatch; a run still moving at the time limit is light pink
 #: with rings (a hatch no other outcome has).
 #: (The codes are written out so that drawing a regime map does not import regimemap.dynamics;
-#: tests/dynamics/test_outcome_drawing.py checks them against it.)
+#: tests/motion/test_figures_outcome.py checks them against it.)
 OUTCOME_STYLE: dict[int, ModeStyle] = {
     0: MODE_STYLE[Mode.RE],  # REST
     1: MODE_STYLE[Mode.SL],  # SLIDE

@@ -132,7 +132,7 @@ def design_wave_run(analysis: CaissonAnalysis, depth: npt.ArrayLike, period: npt
 
     Examples
     --------
-    >>> from regimemap.io.design import example_design_text, parse_design
+    >>> from regimemap.caisson.file import example_design_text, parse_design
     >>> d = parse_design(example_design_text())
     >>> block, pulse = design_wave_run(d.analyse(), d.site.depth, d.wave.period)
     >>> round(float(pulse.k_peak), 4), round(float(pulse.duration), 3), pulse.shape
@@ -211,7 +211,7 @@ def describe_design_wave(numbers: Mapping[str, float], source: str | None = None
 
     Examples
     --------
-    >>> from regimemap.io.design import example_design_text, parse_design
+    >>> from regimemap.caisson.file import example_design_text, parse_design
     >>> d = parse_design(example_design_text())
     >>> print(describe_design_wave(design_wave_numbers(d.analyse(), d.site.depth, d.wave.period),
     ...                            "goda.toml"))  # doctest: +NORMALIZE_WHITESPACE

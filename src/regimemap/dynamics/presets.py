@@ -19,7 +19,7 @@ Each map is computed on a grid coarser than ``bench/bench_dynamics.py``'s
 minute, and its boundaries are refined by bisection to 10^-3 of each axis
 (:func:`regimemap.dynamics.outcome.refine_map`): the regions are drawn as
 polygons bounded by them, not as cells
-(:func:`regimemap.drawing.motion.presets.dynamics_figure`).
+(:func:`regimemap.motion.figures.presets.dynamics_figure`).
 """
 
 from __future__ import annotations

@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING
 from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from ..climate.file import read_record
+    from ..maps.file_points import parse_point_spec, read_points_csv
+    from ..maps.record_export import export_map
+    from ..maps.record_tables import format_result, result_row
+    from ..motion.file_pulses import read_pulse_csv
+    from ..motion.record_files import write_history, write_outcome
     from .atomic import atomic_open, atomic_path
-    from .dynamics import write_history, write_outcome
-    from .export import export_map
-    from .points import parse_point_spec, read_points_csv
-    from .pulses import read_pulse_csv
-    from .records import read_record
-    from .tables import format_result, result_row
 
 __all__ = [
     "atomic_open",
@@ -41,10 +41,10 @@ __all__ = [
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "atomic": ["atomic_open", "atomic_path"],
-        "dynamics": ["write_history", "write_outcome"],
-        "export": ["export_map"],
-        "points": ["parse_point_spec", "read_points_csv"],
-        "pulses": ["read_pulse_csv"],
-        "records": ["read_record"],
-        "tables": ["format_result", "result_row"],
+        ".motion.record_files": ["write_history", "write_outcome"],
+        ".maps.record_export": ["export_map"],
+        ".maps.file_points": ["parse_point_spec", "read_points_csv"],
+        ".motion.file_pulses": ["read_pulse_csv"],
+        ".climate.file": ["read_record"],
+        ".maps.record_tables": ["format_result", "result_row"],
     })

@@ -6,7 +6,7 @@ from collections.abc import Sequence
 from typing import Any
 
 from ..mechanics.checks import Check, all_pass
-from ._numbers import round_sig
+from .numbers import round_sig
 
 __all__ = ["checks_json", "checks_lines"]
 

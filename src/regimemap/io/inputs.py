@@ -9,8 +9,8 @@ so a link to a regular file is accepted.  Each kind of input has its limit:
 * design files (TOML): :data:`MAX_DESIGN_FILE_BYTES`, 4 MiB (a design file is
   about 2 KB);
 * points and pulse files (CSV): ``MAX_POINTS_FILE_BYTES`` in
-  :mod:`regimemap.io.points` and ``MAX_PULSE_FILE_BYTES`` in
-  :mod:`regimemap.io.pulses`, 128 MiB, room for their limits of 1,000,000 rows.
+  :mod:`regimemap.maps.file_points` and ``MAX_PULSE_FILE_BYTES`` in
+  :mod:`regimemap.motion.file_pulses`, 128 MiB, room for their limits of 1,000,000 rows.
 
 The limit is a parameter of :func:`check_input_file`, so a reader of larger
 inputs gives its own.
@@ -21,7 +21,7 @@ from __future__ import annotations
 import os
 import stat
 
-from .design_errors import DesignFileError
+from .toml_errors import DesignFileError
 
 __all__ = ["DesignInputError", "InputFileError", "MAX_DESIGN_FILE_BYTES", "check_design_file",
            "check_input_file", "file_kind", "read_design_text", "read_limited"]
@@ -154,7 +154,7 @@ def read_limited(path: str | os.PathLike[str], *, max_bytes: int, what: str) -> 
 
 class DesignInputError(InputFileError, DesignFileError):
     """A design file refused by :func:`check_input_file`: both an :class:`InputFileError` and a
-    :class:`~regimemap.io.design_errors.DesignFileError`."""
+    :class:`~regimemap.io.toml_errors.DesignFileError`."""
 
 
 def _design_error(exc: InputFileError) -> DesignInputError:

@@ -1,7 +1,7 @@
 """Where a key is set in a TOML text: :func:`key_line`, for messages that name the line.
 
 tomllib parses a file but gives no positions; the design file's readers
-(:mod:`regimemap.io.design_lifetime`) name the line of the key they refuse.
+(:mod:`regimemap.lifetime.file`) name the line of the key they refuse.
 The standard library only (``re``).
 """
 

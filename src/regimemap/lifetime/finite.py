@@ -5,8 +5,8 @@ water, a depth of a kilometre) may slide a caisson an infinite distance; its mea
 then ``inf``, its standard error ``nan``, and the probabilities counted from it look
 like numbers.  :func:`require_finite` refuses such a result before it is printed or
 stored -- the lifetimes of ``regimemap lifetime`` and its chart
-(:mod:`regimemap.workflows.lifetime`) and every task of a study
-(:mod:`regimemap.workflows.study_tasks`) -- naming what is not finite and in how many
+(:mod:`regimemap.lifetime.run`) and every task of a study
+(:mod:`regimemap.study.run_tasks`) -- naming what is not finite and in how many
 of its values.  The arithmetic that made them runs under :func:`quiet_arithmetic`, so
 numpy's ``RuntimeWarning`` never reaches the terminal: the check that follows says
 what went wrong, once, in words.  numpy only.

@@ -5,7 +5,7 @@ sliding of every trial, the largest single-storm slide of every trial, the
 number of storms) and computes the expected sliding distance with its
 standard error, quantiles and exceedance probabilities from them.  One table,
 :data:`STATISTICS`, names the statistics a person reads: the result's dict
-(:meth:`LifetimeResult.summary`), its JSON (:func:`regimemap.io.lifetime.lifetime_json`)
+(:meth:`LifetimeResult.summary`), its JSON (:func:`regimemap.lifetime.record.lifetime_json`)
 and its notebook table read it.
 """
 

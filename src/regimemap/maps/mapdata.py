@@ -3,7 +3,7 @@
 This module computes everything a drawing needs, after the split of
 pycalphad's ``mapping`` package (strategies compute, ``plotting.py`` draws).
 :func:`compute_map` returns a :class:`MapData`; the renderer
-(:mod:`regimemap.drawing.maps.mapplot`) only turns it into artists, so the numbers
+(:mod:`regimemap.maps.figures.mapplot`) only turns it into artists, so the numbers
 behind every line and fill of a figure stay reachable.
 
 The curves and named points (sampled in the view, split into boundary and

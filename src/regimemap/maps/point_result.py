@@ -2,7 +2,7 @@
 
 :func:`regimemap.maps.query.query_point` computes it; :data:`INITIATION_FIELDS`
 describes the reactions and accelerations at initiation once, for its table here
-and for the text report of :func:`regimemap.io.tables.format_result`.
+and for the text report of :func:`regimemap.maps.record_tables.format_result`.
 """
 
 from __future__ import annotations

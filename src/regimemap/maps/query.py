@@ -31,7 +31,7 @@ admissible Gauss's least constraint chooses (:attr:`PointResult.chosen_by`).
 
 The margin is computed by :mod:`regimemap.maps.margins`, the result and its display
 are :mod:`regimemap.maps.point_result`; flat rows and text for people are
-:mod:`regimemap.io.tables`.
+:mod:`regimemap.maps.record_tables`.
 """
 
 from __future__ import annotations

@@ -2,10 +2,10 @@
 
 No matplotlib: the command line parses the lists (:func:`parse_values`) and
 checks the blocks (:func:`sweep_params`) before anything is drawn, and the
-drawing layer (:mod:`regimemap.drawing.maps.atlas`, :mod:`regimemap.drawing.maps.animation`)
+drawing layer (:mod:`regimemap.maps.figures.atlas`, :mod:`regimemap.maps.figures.animation`)
 draws the panels and frames in the views chosen here (:func:`resolve_share`,
 :func:`sweep_extent`); an animation's frames, their blocks and maps, are computed here
-(:func:`sweep_frames`) and handed to :func:`regimemap.drawing.maps.animation.write_animation`.
+(:func:`sweep_frames`) and handed to :func:`regimemap.maps.figures.animation.write_animation`.
 
 The value lists use the syntax of the command line: ``1,2,3`` (a list) or
 ``-1:1:41`` (start:stop:count, both ends included, as ``numpy.linspace``).

@@ -3,7 +3,7 @@
 Each curve of the map is described once here, with its equation, where it
 comes from in the report, its kind (boundary, construction or dotted) and the
 function that evaluates it; drawing (:mod:`regimemap.maps.view`) and export
-(:mod:`regimemap.io.export`) sample the same entries.  The formulas themselves
+(:mod:`regimemap.maps.record_export`) sample the same entries.  The formulas themselves
 are written once, in :mod:`regimemap.mechanics.constants`.
 
 Lines are named as in the report: above C (Chapter III) OA is mu = k, AB the

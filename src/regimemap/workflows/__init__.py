@@ -18,11 +18,9 @@ from typing import TYPE_CHECKING
 from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
-    from ._record import Field, Notice, Record
-    from .atlas import AnimationRecord, AtlasRecord, run_animation, run_atlas
-    from .caisson import CaissonError, CaissonNumbers, CaissonRecord, ImplausibleDesignError, run_caisson
-    from .climate import ClimateRecord, run_climate
-    from .lifetime import (
+    from ..caisson.run import CaissonError, CaissonNumbers, CaissonRecord, ImplausibleDesignError, run_caisson
+    from ..climate.run import ClimateRecord, run_climate
+    from ..lifetime.run import (
         ChartRecord,
         LifetimeDesign,
         LifetimeRecord,
@@ -30,11 +28,14 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
         run_chart,
         run_lifetime,
     )
-    from .map import MapRecord, points_of_map, run_map
-    from .outcome import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
-    from .query import QueryRecord, run_query
-    from .simulate import SimulationRecord, run_simulation
-    from .study import StudyRecord, StudyRow, run_study
+    from ..maps.run import MapRecord, points_of_map, run_map
+    from ..maps.run_atlas import AnimationRecord, AtlasRecord, run_animation, run_atlas
+    from ..maps.run_query import QueryRecord, run_query
+    from ..mechanics.notices import Notice
+    from ..mechanics.records import Field, Record
+    from ..motion.run import SimulationRecord, run_simulation
+    from ..motion.run_maps import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
+    from ..study.run import StudyRecord, StudyRow, run_study
 
 __all__ = [
     "AnimationRecord",
@@ -75,27 +76,17 @@ __all__ = [
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
-        "_record": ["Field", "Notice", "Record"],
-        "atlas": ["AnimationRecord", "AtlasRecord", "run_animation", "run_atlas"],
-        "caisson": [
-            "CaissonError",
-            "CaissonNumbers",
-            "CaissonRecord",
-            "ImplausibleDesignError",
-            "run_caisson",
-        ],
-        "climate": ["ClimateRecord", "run_climate"],
-        "lifetime": [
-            "ChartRecord",
-            "LifetimeDesign",
-            "LifetimeRecord",
-            "read_lifetime_design",
-            "run_chart",
-            "run_lifetime",
-        ],
-        "map": ["MapRecord", "points_of_map", "run_map"],
-        "outcome": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
-        "query": ["QueryRecord", "run_query"],
-        "simulate": ["SimulationRecord", "run_simulation"],
-        "study": ["StudyRecord", "StudyRow", "run_study"],
+        ".caisson.run": ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError",
+                         "run_caisson"],
+        ".climate.run": ["ClimateRecord", "run_climate"],
+        ".lifetime.run": ["ChartRecord", "LifetimeDesign", "LifetimeRecord", "read_lifetime_design",
+                          "run_chart", "run_lifetime"],
+        ".maps.run": ["MapRecord", "points_of_map", "run_map"],
+        ".maps.run_atlas": ["AnimationRecord", "AtlasRecord", "run_animation", "run_atlas"],
+        ".maps.run_query": ["QueryRecord", "run_query"],
+        ".mechanics.notices": ["Notice"],
+        ".mechanics.records": ["Field", "Record"],
+        ".motion.run": ["SimulationRecord", "run_simulation"],
+        ".motion.run_maps": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
+        ".study.run": ["StudyRecord", "StudyRow", "run_study"],
     })

@@ -1,6 +1,6 @@
 """The texts of a map: names of the points, labels of the curves, mode symbols, arrows off view.
 
-:func:`~regimemap.drawing.maps.mapplot.draw_map` calls these once the fills and the
+:func:`~regimemap.maps.figures.mapplot.draw_map` calls these once the fills and the
 lines are drawn.  Each works in one :class:`Frame` of conversions (data, view
 fractions, points) and keeps a list of *obstacles* -- the boxes (view fractions)
 of the texts written so far -- so that a later text keeps clear of the earlier

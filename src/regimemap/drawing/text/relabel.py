@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.artists import MapArtists
+from ..artists import MapArtists
 from .placement import (
     band_columns,
     box_hits,

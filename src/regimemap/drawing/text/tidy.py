@@ -1,6 +1,6 @@
 """Keep every text of a map figure legible: nothing overlaps, nothing leaves the figure.
 
-:func:`regimemap.drawing.maps.mapplot.draw_map` places its labels
+:func:`regimemap.maps.figures.mapplot.draw_map` places its labels
 (:mod:`regimemap.drawing.text.labels`) with a size model of the text
 (:func:`regimemap.drawing.style.text_size`) and knows nothing of the tick
 labels, the title, the key or the design points drawn after it.
@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..maps.artists import MapArtists
+from ..artists import MapArtists
 from .relabel import (
     Placer,
     axes_bounds,
@@ -257,7 +257,7 @@ def tidy_figure(fig: Figure, maps: Sequence[MapArtists], *, fixed: Iterable[Arti
     fig : Figure
         With an Agg canvas; its size and the axes' positions are final.
     maps : sequence of MapArtists
-        What :func:`regimemap.drawing.maps.mapplot.draw_map` drew, one per map.
+        What :func:`regimemap.maps.figures.mapplot.draw_map` drew, one per map.
     fixed : iterable of Artist
         Other texts that must stay where they are (e.g. the k' of an animation frame).
     fit_titles : bool

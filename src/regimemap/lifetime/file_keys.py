@@ -1,0 +1,188 @@
+"""The keys of the ``[lifetime]`` and ``[lifetime.errors]`` tables: what each accepts and why.
+
+:data:`LIFETIME_KEYS` and :data:`ERROR_FACTORS` hold, for each key, what it
+accepts in words (the messages and the design-file reference read them), its
+TOML kind and the check of its value, with the physical limits (heights up to
+30 m, periods 1-30 s ...) and the reason a value beyond them is refused;
+:func:`check_lifetime_option` checks one value as the file's (the command
+line's ``--years``, ``--trials``, ``--seed``).  :mod:`regimemap.lifetime.file`
+reads the tables with them.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+__all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_HEIGHT", "MAX_STORM_HOURS",
+           "MAX_STORMS_PER_YEAR", "MAX_TIDE_RANGE", "MAX_TRIALS", "MAX_YEARS", "PERIOD_RANGE",
+           "LifetimeKey", "check_lifetime_option"]
+
+#: Most lifetimes a run may simulate (its arrays take ~24 bytes a lifetime).
+MAX_TRIALS = 10_000_000
+#: Longest design life [years].
+MAX_YEARS = 1000
+#: Largest deep-water significant height H0' a climate may give [m].  The largest significant
+#: heights measured are about 20 m (19 m, a North Atlantic buoy, February 2013: the WMO record);
+#: above 30 m no sea has been seen, and the value is a unit slip (centimetres for metres).
+MAX_HEIGHT = 30.0
+#: Significant periods of wind seas and swell [s]: outside, not a sea state (tenths of a second,
+#: a frequency for a period).
+PERIOD_RANGE = (1.0, 30.0)
+#: Largest tidal range [m]: the largest on Earth is about 16 m (Bay of Fundy).
+MAX_TIDE_RANGE = 20.0
+#: Most storms a year: more than one a day are not separate storms.
+MAX_STORMS_PER_YEAR = 365.0
+#: Longest peak sea state of one storm [hours]: a week.
+MAX_STORM_HOURS = 168.0
+
+
+def _positive(x: float) -> bool:
+    return x > 0.0
+
+
+def _height(x: float) -> bool:
+    return 0.0 < x <= MAX_HEIGHT
+
+
+def _why_height(x: float) -> str:
+    if x > MAX_HEIGHT:
+        slip = f"; {x / 100:.4g} m in centimetres for metres?" if x / 100 <= MAX_HEIGHT else ""
+        return (f"above {MAX_HEIGHT:g} m, higher than any sea measured (the largest significant "
+                f"heights measured are about 20 m){slip}")
+    return "not > 0"
+
+
+def _why_period(x: float) -> str:
+    lo, hi = PERIOD_RANGE
+    if x > hi:
+        return f"above {hi:g} s, longer than any sea wave; {x / 10:.3g} s in tenths of a second?"
+    return f"below {lo:g} s, shorter than any sea wave that loads a breakwater; a frequency for a period?"
+
+
+@dataclass(frozen=True)
+class LifetimeKey:
+    """What one key of ``[lifetime]`` or ``[lifetime.errors]`` accepts: in words, its TOML kind,
+    the check of its value and why a refused value is wrong."""
+
+    accepted: str                      # what is accepted, in words
+    kind: str                          # "int", "number", "text", "bool", "numbers", "pair", "limits",
+    #                                    "table"
+    check: Callable[[Any], bool] = lambda x: True
+    why: Callable[[float], str] = lambda x: "out of range"   # why a value the check refuses is wrong
+
+
+def _at_least(lo: float) -> Callable[[Any], bool]:
+    return lambda x: x >= lo
+
+
+#: The keys of ``[lifetime]``, in the order the messages list them.
+LIFETIME_KEYS: dict[str, LifetimeKey] = {
+    "years": LifetimeKey(f"a design life in whole years, 1 <= years <= {MAX_YEARS} (default 50)", "int",
+                   lambda x: 1 <= x <= MAX_YEARS),
+    "trials": LifetimeKey(f"a number of simulated lifetimes, 1 <= trials <= {MAX_TRIALS} (default 5000)",
+                    "int", lambda x: 1 <= x <= MAX_TRIALS),
+    "seed": LifetimeKey("a whole number >= 0, the root seed of the random numbers (default: a fresh one, "
+                  "reported)", "int", _at_least(0)),
+    "distribution": LifetimeKey('"weibull" or "gumbel", the distribution of the storm peaks H0\' '
+                          '(default "weibull")', "text", lambda x: x in ("weibull", "gumbel")),
+    "shape": LifetimeKey("a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", "number",
+                   _positive),
+    "H0_10": LifetimeKey(f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
+                   "significant heights measured are about 20 m)", "number", _height, _why_height),
+    "H0_50": LifetimeKey(f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", "number",
+                   _height, _why_height),
+    "annual_maxima": LifetimeKey(f"a list of at least three annual maxima of H0', each 0 < H0' <= "
+                           f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", "numbers",
+                           _height, _why_height),
+    "storms_per_year": LifetimeKey(f"a mean number of storms a year, 0.1 < storms_per_year <= "
+                             f"{MAX_STORMS_PER_YEAR:g} (a Poisson number of storms, peaks over a "
+                             "threshold; not with annual_maxima; default: one storm a year, its peak "
+                             "the annual maximum)", "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR),
+    "storm_hours": LifetimeKey(f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
+                         "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS),
+    "period": LifetimeKey(f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
+                    "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness",
+                    "number", lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period),
+    "steepness": LifetimeKey("a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period",
+                       "number", lambda x: 0.0 < x <= 0.142),
+    "tide_range": LifetimeKey(f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
+                        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE),
+    "thresholds": LifetimeKey("a list of lifetime slides, each > 0 in metres, whose exceedance probability "
+                        "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive),
+    "truncate": LifetimeKey("a cut-off > 0 of the normal error factors, in standard deviations (default: "
+                      "none)", "number", _positive),
+    "impulsive": LifetimeKey("true or false: Takahashi's impulsive coefficient in each wave's force "
+                       "(default false)", "bool"),
+    "target": LifetimeKey("the tolerable expected sliding distance, > 0 in metres: the requirement "
+                    "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive),
+    "allowed": LifetimeKey('a table of lifetime slides (m) and the largest allowed probability of '
+                     'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
+                     "default: none)", "limits"),
+    "failure_sliding": LifetimeKey("the sliding in metres at which the caisson is off its mound (the "
+                             "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
+                             "the probability of failure over the life (default: none)", "number",
+                             _positive),
+    "errors": LifetimeKey("the table [lifetime.errors] of the uncertainty factors (deepwater, "
+                    "transformation, force, friction)", "table"),
+    "record": LifetimeKey("the table [lifetime.record] of a measured wave record (path and the options of "
+                    "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table"),
+    "climate_replicates": LifetimeKey("a number of replicate climates of [lifetime.record]'s fit, 2 to "
+                                "10000, each run for the ESD's climate band, on which the requirements are "
+                                "judged (default 50), or 0: the fitted climate alone, its uncertainty "
+                                "not counted", "int",
+                                lambda x: x == 0 or 2 <= x <= 10_000),
+}
+
+_PAIR = "a pair [ratio, cov] with ratio > 0 and cov >= 0, the factor ratio (1 + cov z) "
+_DEFAULT = "; absent: its default in regimemap.lifetime.DEFAULT_ERRORS"
+#: The keys of ``[lifetime.errors]`` (the factors of :class:`regimemap.lifetime.Errors`).
+ERROR_FACTORS: dict[str, LifetimeKey] = {
+    "deepwater": LifetimeKey(_PAIR + "on the storm's H0' (once per lifetime)" + _DEFAULT, "pair"),
+    "transformation": LifetimeKey(_PAIR + "on H1/3 at the wall (once per storm)" + _DEFAULT, "pair"),
+    "force": LifetimeKey(_PAIR + "on the wave force P and the uplift U (once per storm)" + _DEFAULT, "pair"),
+    "friction": LifetimeKey(_PAIR + "on the friction coefficient (once per storm)" + _DEFAULT, "pair"),
+}
+
+#: The key tables of ``[lifetime]`` and ``[lifetime.errors]``.
+LIFETIME_TABLES = {"lifetime": LIFETIME_KEYS, "lifetime.errors": ERROR_FACTORS}
+
+
+def check_lifetime_option(name: str, value: Any) -> Any:
+    """One value of ``[lifetime]`` (``years``, ``trials``, ``seed`` ...), checked as the file's.
+
+    Text (from the command line) is read as the key's kind: a whole number
+    for ``years``, ``trials`` and ``seed``, a number for the others.
+
+    Returns
+    -------
+    int or float
+        The value.
+
+    Raises
+    ------
+    ValueError
+        ``"trials must be a number of simulated lifetimes, 1 <= trials <= ..., got '0'"``.
+    """
+    spec = LIFETIME_KEYS[name]
+    if spec.kind not in ("int", "number"):
+        raise ValueError(f"{name} is not a single number")
+    got = value
+    if isinstance(value, str):
+        try:
+            value = int(value.strip(), 10) if spec.kind == "int" else float(value.strip())
+        except ValueError:
+            kind = "a whole number" if spec.kind == "int" else "a number"
+            raise ValueError(f"{name} must be {spec.accepted}, got {got!r} (not {kind})") from None
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or (
+            spec.kind == "int" and not isinstance(value, int)):
+        raise ValueError(f"{name} must be {spec.accepted}, got {got!r}")
+    if spec.kind == "number":
+        value = float(value)
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be {spec.accepted}, got {got!r}")
+    if not spec.check(value):
+        raise ValueError(f"{name} must be {spec.accepted}, got {got!r}")
+    return value

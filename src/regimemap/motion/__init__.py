@@ -1,0 +1,34 @@
+"""The motion past initiation (``regimemap simulate``, ``outcome``, ``dynamics-figures``), in one folder.
+
+Over the engine of :mod:`regimemap.dynamics`: the input declaration, a run and an
+outcome map from flat options (:mod:`.file`) or a force history from a CSV file
+(:mod:`.file_pulses`); the runs (:mod:`.run` one run, :mod:`.run_maps` an outcome
+map and the figures D.1-D.3); the records (:mod:`.record`), as text and JSON
+(:mod:`.record_simulation`) and as time-history and outcome-map files
+(:mod:`.record_files`); the figures (:mod:`.figures`).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from .._lazy import attach
+
+if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from .figures.history import motion_figure
+    from .figures.outcome import outcome_figure
+    from .record import DynamicsFigureRecord, OutcomeRecord, SimulationRecord
+    from .run import run_simulation
+    from .run_maps import run_dynamics_figure, run_outcome
+
+__all__ = ["DynamicsFigureRecord", "OutcomeRecord", "SimulationRecord", "motion_figure", "outcome_figure",
+           "run_dynamics_figure", "run_outcome", "run_simulation"]
+
+if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
+    __getattr__, __dir__ = attach(__name__, {
+        "figures.history": ["motion_figure"],
+        "figures.outcome": ["outcome_figure"],
+        "record": ["DynamicsFigureRecord", "OutcomeRecord", "SimulationRecord"],
+        "run": ["run_simulation"],
+        "run_maps": ["run_dynamics_figure", "run_outcome"],
+    })

@@ -1,0 +1,324 @@
+"""Time histories and outcome maps as files (``regimemap simulate``, ``regimemap outcome``).
+
+* :func:`write_history` -- the time history of a run, ``.csv`` or ``.npz`` (a run's text and
+  JSON: :mod:`regimemap.motion.record_simulation`);
+* :func:`write_outcome` -- an outcome map, ``.npz``, ``.csv`` or ``.json`` (with its refined
+  boundaries, :func:`outcome_record`), :func:`write_outcome_record` that of a workflow's
+  record, :func:`outcome_summary` what it took, in words;
+* :func:`cached_outcome` -- computed outcome maps kept in ``.npz`` files (``make figures``).
+
+The figures of a run (its history, its animation) are :mod:`regimemap.motion.figures.history`'s.
+
+Every file is written atomically (a temporary file in the same folder, then a rename).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ..dynamics.outcome import OutcomeMap
+from ..dynamics.stepper import History, Phase
+from ..io.atomic import atomic_open
+from ..io.formats import format_for, record_formats
+from ..io.numbers import DIGITS as SIGNIFICANT
+from ..io.numbers import round_sig
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .record import OutcomeRecord
+
+__all__ = [
+    "HISTORY_FORMATS",
+    "cached_outcome",
+    "OUTCOME_DATA_FORMATS",
+    "SIGNIFICANT",
+    "history_arrays",
+    "json_inputs",
+    "outcome_record",
+    "outcome_summary",
+    "round_sig",
+    "write_history",
+    "write_outcome",
+    "write_outcome_record",
+]
+
+#: Formats of a time history and of an outcome map's data, by file suffix (:data:`~.formats.RECORDS`).
+HISTORY_FORMATS: tuple[str, ...] = record_formats("time history")
+OUTCOME_DATA_FORMATS: tuple[str, ...] = record_formats("outcome data")
+
+def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
+    """Inputs as JSON values: floats (and those in lists) rounded to :data:`SIGNIFICANT` digits."""
+    out: dict[str, Any] = {}
+    for key, v in inputs.items():
+        if isinstance(v, float):
+            out[key] = round_sig(v)
+        elif isinstance(v, (list, tuple)):
+            out[key] = [round_sig(x) if isinstance(x, float) else x for x in v]
+        else:
+            out[key] = v
+    return out
+
+
+# -- files ----------------------------------------------------------------------------------------
+
+
+def history_arrays(history: History, H: float) -> dict[str, NDArray[Any]]:
+    """The columns of a time history: t, k, x, y, theta, vx, vy, omega, slide (of the base,
+    positive towards O) and phase (the label of the step ending at t; '' at t = 0)."""
+    labels = np.array([""] + [ph.label for ph in Phase])
+    return {
+        "t": history.t, "k": history.k, "x": history.x, "y": history.y, "theta": history.theta,
+        "vx": history.vx, "vy": history.vy, "omega": history.omega, "slide": history.base_slide(H),
+        "phase": labels[history.phase.astype(np.int64) + 1],
+    }
+
+
+def write_history(path: str | os.PathLike[str], history: History, H: float,
+                  inputs: Mapping[str, Any] | None = None) -> str:
+    """Write the time history of a run, atomically; the format (csv or npz) from the suffix.
+
+    ``.csv``: a header and one row per step (numbers as ``repr``, so they read back exactly).
+    ``.npz``: the same columns as 1-D arrays, and the inputs as 0-d arrays.
+    Returns the format.
+    """
+    fmt = format_for(path, "time history")
+    cols = history_arrays(history, H)
+    if fmt == "npz":
+        arrays: dict[str, NDArray[Any]] = dict(cols)
+        for key, v in (inputs or {}).items():
+            if v is not None and key not in arrays:
+                arrays[key] = np.asarray(v)
+        with atomic_open(path, "wb") as fh:
+            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        return fmt
+    names = list(cols)
+    numeric = [cols[n].tolist() for n in names[:-1]]
+    phase = cols["phase"].tolist()
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write(",".join(names) + "\n")
+        for i in range(len(phase)):
+            fh.write(",".join(repr(float(c[i]) + 0.0) for c in numeric) + f",{phase[i]}\n")
+    return fmt
+
+
+def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, second: str,
+                  inputs: Mapping[str, Any] | None = None,
+                  axes: Mapping[str, NDArray[np.float64]] | None = None) -> str:
+    """Write an outcome map's data, atomically; the format (npz or csv) from the suffix.
+
+    Parameters
+    ----------
+    m : OutcomeMap
+    first, second : str
+        Names of the swept inputs (columns, rows), e.g. ``k_peak`` and ``duration``.
+    inputs : mapping, optional
+        The fixed inputs (written as 0-d arrays in ``.npz``).
+    axes : mapping, optional
+        More 1-D arrays (e.g. the dimensionless values of the axes), written to ``.npz``.
+
+    ``.npz``: 1-D arrays ``first`` and ``second`` (the swept values), 2-D arrays ``category``
+    (int8 codes), ``overturned``, ``max_rotation`` (rad) and ``residual_slide`` (m, positive
+    towards O) of shape (len(second), len(first)), ``labels`` (category names by code) and the
+    inputs.  ``.csv``: header ``first,second,category,overturned,max_rotation,residual_slide``,
+    one row per cell (second outer, first inner), the category as its name.  ``.json``: one
+    object, :func:`outcome_record`, with the refined boundaries.
+    Returns the format.
+    """
+    fmt = format_for(path, "outcome data")
+    if first == second:
+        raise ValueError("the two swept inputs must differ")
+    if fmt == "json":
+        import json
+
+        record = outcome_record(m, first, second, inputs, axes)
+        with atomic_open(path, "w", encoding="utf-8") as fh:
+            json.dump(record, fh, ensure_ascii=False, allow_nan=False)
+            fh.write("\n")
+        return fmt
+    if fmt == "npz":
+        arrays: dict[str, NDArray[Any]] = {
+            first: np.asarray(m.first_values, dtype=np.float64),
+            second: np.asarray(m.second_values, dtype=np.float64),
+            "category": np.asarray(m.category, dtype=np.int8),
+            "overturned": np.asarray(m.overturned, dtype=bool),
+            "max_rotation": np.asarray(m.max_rotation, dtype=np.float64),
+            "residual_slide": np.asarray(m.residual_slide, dtype=np.float64),
+            "labels": np.array(m.labels),
+        }
+        for key, arr in (axes or {}).items():
+            arrays[key] = np.asarray(arr, dtype=np.float64)
+        for key, v in (inputs or {}).items():
+            if v is not None and key not in arrays:
+                arrays[key] = np.asarray(v)
+        with atomic_open(path, "wb") as fh:
+            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        return fmt
+    xs = [repr(float(v)) for v in m.first_values]
+    labels = list(m.labels)
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write(f"{first},{second},category,overturned,max_rotation,residual_slide\n")
+        for i, yv in enumerate(m.second_values):
+            yt = repr(float(yv))
+            cat = m.category[i].tolist()
+            over = m.overturned[i].tolist()
+            rot = m.max_rotation[i].tolist()
+            sl = m.residual_slide[i].tolist()
+            fh.write("".join(f"{xs[j]},{yt},{labels[cat[j]]},{'true' if over[j] else 'false'},"
+                             f"{rot[j] + 0.0!r},{sl[j] + 0.0!r}\n" for j in range(len(xs))))
+    return fmt
+
+
+def write_outcome_record(path: str | os.PathLike[str], record: OutcomeRecord) -> str:
+    """Write the data of an outcome map (:class:`~regimemap.motion.record.OutcomeRecord`) with
+    :func:`write_outcome`: its fixed inputs, and its dimensionless axes when it has them; the format."""
+    m = record.outcome
+    return write_outcome(path, m, m.first_name, m.second_name, inputs=record.inputs, axes=record.extra_axes)
+
+
+def outcome_summary(record: OutcomeRecord) -> list[str]:
+    """What an outcome map took, in words: its runs, their time and the count of each category
+    found; the runs and batches of the refined boundaries."""
+    m = record.outcome
+    lines = [f"{record.n_runs} runs in {m.seconds:.1f} s: "
+             + ", ".join(f"{lab} {c}" for lab, c in record.counts.items() if c)]
+    if m.crossings is not None:
+        lines.append(f"boundaries refined to 1/1000 of each axis: {m.crossings.runs} runs in "
+                     f"{m.crossings.batches} batches, {m.refine_seconds:.1f} s")
+    return lines
+
+
+def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, Any] | None = None,
+                   axes: Mapping[str, NDArray[np.float64]] | None = None) -> dict[str, Any]:
+    """An outcome map as a JSON-ready dict (numbers rounded to :data:`SIGNIFICANT` digits).
+
+    Keys: ``first`` and ``second`` (the swept inputs' names: x and y), ``axes`` (their values,
+    and any ``axes`` given, e.g. dimensionless ones), ``labels`` (the categories by code),
+    ``category`` (the category of every cell by name, a list of rows: ``category[i][j]`` at
+    ``second[i]``, ``first[j]``), ``max_rotation`` (rad) and ``residual_slide`` (m) likewise,
+    ``refined`` (whether the boundaries were refined), ``boundaries`` (a list of
+    ``{"between": [category, category], "points": [[x, y], ...]}`` in the swept inputs' units,
+    x the first; empty when not refined), ``min_rotation`` (rad) and ``inputs``.
+    """
+    labels = list(m.labels)
+    names = np.asarray(labels, dtype=object)[np.asarray(m.category, dtype=np.int64)]
+    ax: dict[str, Any] = {first: [round_sig(v) for v in np.asarray(m.first_values).tolist()],
+                          second: [round_sig(v) for v in np.asarray(m.second_values).tolist()]}
+    for key, arr in (axes or {}).items():
+        ax[key] = [round_sig(v) for v in np.asarray(arr, dtype=np.float64).tolist()]
+    return {
+        "first": first,
+        "second": second,
+        "axes": ax,
+        "labels": labels,
+        "category": names.tolist(),
+        "max_rotation": [[round_sig(v) for v in row] for row in np.asarray(m.max_rotation).tolist()],
+        "residual_slide": [[round_sig(v) for v in row] for row in np.asarray(m.residual_slide).tolist()],
+        "refined": m.refined,
+        "boundaries": [{"between": [a, b], "points": [[round_sig(x), round_sig(y)] for x, y in p.tolist()]}
+                       for a, b, p in m.boundaries()],
+        "min_rotation": round_sig(m.min_rotation),
+        "inputs": json_inputs(inputs or {}),
+    }
+
+
+# -- a cache of computed outcome maps (make figures) ----------------------------------------------
+
+
+#: The layout of a cached map: a new one makes every older cache file out of date (2: the
+#: refined boundaries, ``crossings_*``).
+_CACHE_FORMAT = "outcome-map 2 (refined boundaries)"
+
+
+def _numpy_dispatch() -> str:
+    """The CPU dispatch targets numpy runs here, e.g. ``"X86_V3 X86_V4 AVX512_ICL"``.
+
+    numpy picks at import, for each loop (exp, log, sin, power ...), the highest of its compiled
+    targets that the CPU has and ``NPY_DISABLE_CPU_FEATURES`` leaves; the targets' loops differ
+    in the last bits, so numbers computed under one set are not those of another, bit for bit.
+    ``""`` on a CPU with none above numpy's baseline, or a numpy that does not tell.
+    """
+    import importlib
+
+    try:
+        umath = importlib.import_module("numpy._core._multiarray_umath")
+    except ImportError:  # numpy 1.x
+        umath = importlib.import_module("numpy.core._multiarray_umath")
+    dispatch: Sequence[str] = getattr(umath, "__cpu_dispatch__", ())
+    found: Mapping[str, bool] = getattr(umath, "__cpu_features__", {})
+    return " ".join(t for t in dispatch if found.get(t))
+
+
+def _cache_key(spec: str) -> str:
+    """A digest of ``spec``, the cache's layout, regimemap's and numpy's versions, numpy's CPU
+    dispatch targets (:func:`_numpy_dispatch`) and the source of regimemap.dynamics: any change to
+    the stepper, or a map computed on other loops, makes a new key."""
+    import hashlib
+
+    from .. import __version__
+    from ..dynamics import stepper
+
+    h = hashlib.sha256()
+    h.update(f"{_CACHE_FORMAT}\n{spec}\n{__version__}\n{np.__version__}\n{_numpy_dispatch()}\n".encode())
+    for src in sorted(Path(stepper.__file__).parent.glob("*.py")):
+        h.update(src.name.encode())
+        h.update(src.read_bytes())
+    return h.hexdigest()[:20]
+
+
+_CACHED = ("first_values", "second_values", "category", "overturned", "max_rotation", "residual_slide")
+
+
+def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
+                   compute: Any) -> tuple[OutcomeMap, NDArray[np.float64], NDArray[np.float64], bool]:
+    """``compute()`` -> (OutcomeMap, x, y), through a cache of ``.npz`` files in ``folder``.
+
+    The file ``<name>-<key>.npz`` holds the map's arrays and its refined crossings exactly
+    (float64), so a figure drawn from it is byte-identical to one drawn from a fresh
+    computation on the same machine.  The key (:func:`_cache_key`) covers ``spec`` (the
+    figure's definition), the layout of the file, the versions of regimemap and numpy, numpy's
+    CPU dispatch targets (a cache shared between machines, or filled under another
+    ``NPY_DISABLE_CPU_FEATURES``, is computed again) and the source of
+    :mod:`regimemap.dynamics`.  ``folder`` None: no cache.
+    Returns the map, x, y and whether it came from the cache.
+    """
+    if folder is None:
+        m, x, y = compute()
+        return m, x, y, False
+    path = Path(folder) / f"{name}-{_cache_key(spec)}.npz"
+    for old in Path(folder).glob(f"{name}-*.npz"):  # the same figure's out-of-date maps
+        if old != path:
+            old.unlink(missing_ok=True)
+    if path.is_file():
+        try:
+            with np.load(path, allow_pickle=False) as z:
+                crossings = None
+                if bool(z["refined"]):
+                    from ..dynamics.boundaries import Crossings
+
+                    crossings = Crossings.from_arrays({k[len("crossings_"):]: z[k] for k in z.files
+                                                       if k.startswith("crossings_")})
+                m = OutcomeMap(first_name=str(z["first_name"]), second_name=str(z["second_name"]),
+                               labels=tuple(str(v) for v in z["labels"]),
+                               seconds=float(z["seconds"]), crossings=crossings,
+                               refine_seconds=float(z["refine_seconds"]),
+                               min_rotation=float(z["min_rotation"]), **{k: z[k] for k in _CACHED})
+                return m, z["x"], z["y"], True
+        except (OSError, ValueError, KeyError):  # a damaged cache file: compute again
+            pass
+    m, x, y = compute()
+    Path(folder).mkdir(parents=True, exist_ok=True)
+    arrays = {k: np.asarray(getattr(m, k)) for k in _CACHED}
+    if m.crossings is not None:
+        arrays.update({f"crossings_{k}": v for k, v in m.crossings.arrays().items()})
+    with atomic_open(path, "wb") as fh:
+        np.savez_compressed(fh, first_name=np.array(m.first_name), second_name=np.array(m.second_name),
+                            labels=np.array(m.labels), seconds=np.float64(m.seconds), x=np.asarray(x),
+                            y=np.asarray(y), refined=np.bool_(m.refined),
+                            refine_seconds=np.float64(m.refine_seconds),
+                            min_rotation=np.float64(m.min_rotation), **arrays)  # type: ignore[arg-type]
+    return m, x, y, False
