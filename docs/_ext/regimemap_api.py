@@ -10,7 +10,7 @@ three things autosummary cannot tell from the objects:
   (:mod:`regimemap._lazy`) and a constant has no ``__module__``: the table of a
   package's ``__all__`` links each name to the public module that defines it
   (found from the modules' source), and documents on the package page itself
-  a name whose module is private (``workflows/_record.py``, which re-exports the record types);
+  a name whose module is private (a package's underscore module, which re-exports it);
 - **which names a module documents**: the names of its ``__all__`` that it
   binds itself (``def``, ``class``, assignment), not the ones it re-exports.
   autosummary's own test reads ``__module__``, which a constant lacks, so it

@@ -16,7 +16,7 @@ Directives
 ``regimemap-design-keys``
     Every table and key of the caisson design file, with what the reader
     accepts (range and unit), whether it is required and its default, read
-    from the tables :mod:`regimemap.io.design` validates against (``_SPEC``,
+    from the tables :mod:`regimemap.caisson.file` validates against (``_SPEC``,
     ``LIFETIME_KEYS``, ``ERROR_FACTORS``) and the defaults of its dataclasses.
 ``regimemap-study-keys``
     Every key of the study file (``regimemap study``), from the declarations its reader
@@ -131,8 +131,8 @@ class DesignKeys(SphinxDirective):
     has_content = False
 
     def run(self) -> list[nodes.Node]:
-        from regimemap.io import design
-        from regimemap.io.design_keys import DESIGN_KEYS as spec
+        from regimemap.caisson import file as design
+        from regimemap.caisson.file_keys import DESIGN_KEYS as spec
         classes = {"site": design.SiteSpec, "wave": design.WaveSpec, "caisson": design.CaissonSpec}
         lines: list[str] = []
         for table, keys in spec.items():
@@ -141,7 +141,7 @@ class DesignKeys(SphinxDirective):
                 (key, "required" if getattr(k, "required", True) else "optional", k.accepted,
                  _default_text(defaults.get(key)))
                 for key, k in keys.items()])
-        from regimemap.io.design_lifetime_keys import LIFETIME_TABLES as lifetime_tables
+        from regimemap.lifetime.file_keys import LIFETIME_TABLES as lifetime_tables
 
         if lifetime_tables:
             spec_defaults = _defaults(design.LifetimeSpec)

@@ -3,11 +3,11 @@
 :func:`study_keys_rst` writes the reST of every key of a study file -- the top
 level, ``[[section]]``, ``[[scenario]]``, the design tables a section may
 change and the limits each scenario's sea level is checked against -- from
-:mod:`regimemap.io.study_sections` (``STUDY_KEYS``, ``SECTION_KEYS``,
+:mod:`regimemap.study.file_sections` (``STUDY_KEYS``, ``SECTION_KEYS``,
 ``SCENARIO_KEYS``, ``OVERRIDABLE``, ``STUDY_WIDE``, ``DESIGN_TABLES``),
-:mod:`regimemap.io.study_limits` (``SEA_LEVEL_LIMITS``) and the design file's
-declarations (:data:`regimemap.io.design_keys.DESIGN_KEYS`,
-:data:`regimemap.io.design_lifetime_keys.LIFETIME_KEYS`), so the page says what
+:mod:`regimemap.study.file_limits` (``SEA_LEVEL_LIMITS``) and the design file's
+declarations (:data:`regimemap.caisson.file_keys.DESIGN_KEYS`,
+:data:`regimemap.lifetime.file_keys.LIFETIME_KEYS`), so the page says what
 the parser accepts.  regimemap only (no Sphinx): a unit test calls it; the
 directive is :mod:`regimemap_docs`'s.
 """
@@ -40,10 +40,10 @@ def study_keys_rst() -> str:
     str
         Sections headed with ``~`` (under the page's ``-`` heading), each a ``list-table``.
     """
-    from regimemap.io.design_keys import DESIGN_KEYS
-    from regimemap.io.design_lifetime_keys import LIFETIME_KEYS
-    from regimemap.io.study_limits import SEA_LEVEL_LIMITS
-    from regimemap.io.study_sections import (
+    from regimemap.caisson.file_keys import DESIGN_KEYS
+    from regimemap.lifetime.file_keys import LIFETIME_KEYS
+    from regimemap.study.file_limits import SEA_LEVEL_LIMITS
+    from regimemap.study.file_sections import (
         DESIGN_TABLES,
         OVERRIDABLE,
         SCENARIO_KEYS,

@@ -12,6 +12,6 @@ its source text; this one is redrawn from the definitions of its Chapter II.
 Command line: ``regimemap figure 2.1``.
 """
 
-from regimemap.drawing.maps.model import model_figure
+from regimemap.maps.figures.model import model_figure
 
 fig = model_figure()

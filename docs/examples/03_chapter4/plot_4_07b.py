@@ -13,7 +13,7 @@ Command line: ``regimemap figure 4.7b``.
 """
 
 from regimemap.drawing import render_preset
-from regimemap.drawing.maps.presets import get_preset
+from regimemap.maps.figures.presets import get_preset
 from regimemap.workflows import run_map
 
 preset = get_preset("4.7b")

@@ -16,8 +16,8 @@ Command line::
 
 import regimemap
 from regimemap.drawing import map_figure
-from regimemap.drawing.maps.worked import WORKED
 from regimemap.maps import DesignPoint
+from regimemap.maps.figures.worked import WORKED
 from regimemap.workflows import run_map
 
 block = regimemap.Parameters(0.70, -0.018, buoyancy=0.318, uplift_ratio=0.524)

@@ -9,8 +9,8 @@ rest reaches μ = 1.45, and there is no lift-off.
 
 import regimemap
 from regimemap.drawing import map_figure
-from regimemap.drawing.maps.worked import WORKED
 from regimemap.maps import DesignPoint
+from regimemap.maps.figures.worked import WORKED
 from regimemap.workflows import run_map
 
 block = regimemap.Parameters(0.70, -0.018)

@@ -9,7 +9,7 @@ beyond G, and the block lifts off beyond L.
 
 import regimemap
 from regimemap.drawing import map_figure
-from regimemap.drawing.maps.worked import WORKED
+from regimemap.maps.figures.worked import WORKED
 from regimemap.workflows import run_map
 
 block = regimemap.Parameters(3.0, 0.4, uplift_ratio=1.0)

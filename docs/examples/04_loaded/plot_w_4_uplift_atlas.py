@@ -13,7 +13,7 @@ Command line::
 """
 
 from regimemap.drawing import atlas_figure
-from regimemap.drawing.maps.worked import WORKED
+from regimemap.maps.figures.worked import WORKED
 from regimemap.workflows import run_atlas
 
 atlas = run_atlas([0.70], [0.0, 0.524, 1.0], sweep="uplift_ratio",

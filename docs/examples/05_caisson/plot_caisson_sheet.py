@@ -17,10 +17,10 @@ Command line::
 The command simulates the file's 5000 lifetimes; the docs simulate 2000.
 """
 
-from regimemap.drawing.sheet.page import sheet_figure
-from regimemap.io.design import example_design_text, parse_design
+from regimemap.caisson.figures.page import sheet_figure
+from regimemap.caisson.file import example_design_text, parse_design
 from regimemap.lifetime import lifetime_sliding
-from regimemap.maps.caisson import caisson_checks, caisson_report, sheet_map
+from regimemap.caisson.report import caisson_checks, caisson_report, sheet_map
 from regimemap.maps.loadedmap import mode_label
 
 design = parse_design(example_design_text(), source="goda.toml")

@@ -14,8 +14,8 @@ smaller than a cell of that grid may be missing.
 
 import dataclasses
 
-from regimemap.drawing.motion.presets import dynamics_figure
 from regimemap.dynamics.presets import DYNAMICS_FIGURES
+from regimemap.motion.figures.presets import dynamics_figure
 
 figure = DYNAMICS_FIGURES["D.1"]
 quick = dataclasses.replace(figure, first=(*figure.first[:3], 48), second=(*figure.second[:3], 40))

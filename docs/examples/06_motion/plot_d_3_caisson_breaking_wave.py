@@ -10,8 +10,8 @@ the residual slide.  The map of ``make figures`` (61 × 45 runs).
 
 import numpy as np
 
-from regimemap.drawing.motion.presets import dynamics_figure
 from regimemap.dynamics.presets import DYNAMICS_FIGURES
+from regimemap.motion.figures.presets import dynamics_figure
 
 figure = DYNAMICS_FIGURES["D.3"]
 print(figure.make_block())

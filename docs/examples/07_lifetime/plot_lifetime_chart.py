@@ -15,8 +15,8 @@ Command line::
 
 import numpy as np
 
-from regimemap.drawing.lifetime.chart import chart_figure
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, design_chart
+from regimemap.lifetime.figures.chart import chart_figure
 
 goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
                friction=0.6, buoyant_weight=2312e3, berm_width=8.0, angle_deg=15.0)

@@ -15,8 +15,8 @@ Command line::
     regimemap lifetime goda.toml --trials 2000 -o life.png
 """
 
-from regimemap.drawing.lifetime.exceedance import lifetime_figure
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, lifetime_sliding
+from regimemap.lifetime.figures.exceedance import lifetime_figure
 
 goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
                friction=0.6, buoyant_weight=2312e3, berm_width=8.0, angle_deg=15.0)

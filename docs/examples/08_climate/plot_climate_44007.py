@@ -18,8 +18,8 @@ from pathlib import Path
 
 from regimemap.climate import ClimateOptions, analyse
 from regimemap.climate.analysis import curves
-from regimemap.drawing.climate.figures import climate_figure
-from regimemap.io.records import read_record
+from regimemap.climate.figures import climate_figure
+from regimemap.climate.file import read_record
 
 
 def find_record() -> Path:

@@ -16,9 +16,9 @@ Command line::
 from pathlib import Path
 
 from regimemap.climate.analysis import diagnostics
+from regimemap.climate.figures import diagnostics_figure
+from regimemap.climate.file import read_record
 from regimemap.climate.peaks import resolve_threshold
-from regimemap.drawing.climate.figures import diagnostics_figure
-from regimemap.io.records import read_record
 
 
 def find_record() -> Path:

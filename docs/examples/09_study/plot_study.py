@@ -18,9 +18,9 @@ Command line::
     regimemap study breakwater.toml --resume --figure width -o width.png
 """
 
-from regimemap.drawing.study.figures import study_figure
-from regimemap.io.study import parse_study
-from regimemap.io.study_example import example_study_text
+from regimemap.study.figures import study_figure
+from regimemap.study.file import parse_study
+from regimemap.study.file_example import example_study_text
 from regimemap.workflows import run_study
 
 text = example_study_text().replace("trials = 2000 ", "trials = 200 ")
