@@ -54,56 +54,15 @@ from ..lifetime.file import LifetimeSpec, read_lifetime
 from ..lifetime.file import lifetime_model as _lifetime_model
 from ..lifetime.file_keys import ERROR_FACTORS, LIFETIME_KEYS, MAX_TRIALS, MAX_YEARS, check_lifetime_option
 from .file_example import example_design_text
-from .file_keys import DESIGN_KEYS, DesignReader
+from .file_keys import DESIGN_KEYS, CaissonSpec, DesignReader, SiteSpec, WaveSpec
 
 if TYPE_CHECKING:
     from regimemap.lifetime import Caisson, LifetimeModel
     from regimemap.waves import CaissonAnalysis
 
-__all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "MAX_TRIALS", "MAX_YEARS", "CaissonSpec", "Design",
-           "DesignFileError", "LifetimeSpec", "SiteSpec", "WaveSpec", "check_lifetime_option",
+__all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "MAX_TRIALS", "MAX_YEARS", "Design",
+           "DesignFileError", "LifetimeSpec", "check_lifetime_option",
            "example_design_text", "key_line", "parse_design", "read_design"]
-
-
-@dataclass(frozen=True)
-class SiteSpec:
-    """``[site]``: depth ``h``, armour depth ``d`` [m], ``tan theta``, water density [kg/m^3]."""
-
-    depth: float
-    armour_depth: float
-    seabed_slope: float
-    water_density: float = 1030.0
-
-
-@dataclass(frozen=True)
-class WaveSpec:
-    """``[wave]``: ``H0'`` or (``H1/3``, ``Hmax``) [m], ``T1/3`` [s], angle and rotation [deg]."""
-
-    period: float
-    H0: float | None = None
-    H13: float | None = None
-    Hmax: float | None = None
-    angle: float = 0.0
-    rotation: float = 0.0
-
-
-@dataclass(frozen=True)
-class CaissonSpec:
-    """``[caisson]``: geometry [m], friction, and ``W'`` [kN/m] or densities [kg/m^3]."""
-
-    width: float
-    base_depth: float
-    crest: float
-    friction: float
-    berm_width: float = 0.0
-    buoyant_weight: float | None = None
-    concrete_fraction: float | None = None
-    concrete_density: float | None = None
-    fill_density: float | None = None
-    fill_density_above: float | None = None
-    impulsive: bool = True
-    required_sliding: float = 1.2
-    required_overturning: float = 1.2
 
 
 @dataclass(frozen=True)
@@ -249,10 +208,7 @@ def _load_toml(text: str, r: DesignReader) -> dict[str, Any]:
 
 def _read_site(data: Mapping[str, Any], r: DesignReader) -> SiteSpec:
     """``[site]``."""
-    return SiteSpec(depth=r.required(data, "site", "depth"),
-                    armour_depth=r.required(data, "site", "armour_depth"),
-                    seabed_slope=r.required(data, "site", "seabed_slope"),
-                    water_density=r.number(data, "site", "water_density") or 1030.0)
+    return r.table(data, "site", SiteSpec)
 
 
 def _read_wave(data: Mapping[str, Any], r: DesignReader) -> WaveSpec:
@@ -273,9 +229,7 @@ def _read_wave(data: Mapping[str, Any], r: DesignReader) -> WaveSpec:
         if Hmax < H13:
             raise r.key_error("wave", "Hmax", Hmax,
                               f"smaller than [wave] H13 = {r.written('wave', 'H13', H13)}")
-    return WaveSpec(period=r.required(data, "wave", "period"), H0=H0, H13=H13, Hmax=Hmax,
-                    angle=r.number(data, "wave", "angle") or 0.0,
-                    rotation=r.number(data, "wave", "rotation") or 0.0)
+    return r.table(data, "wave", WaveSpec, H0=H0, H13=H13, Hmax=Hmax)
 
 
 def _read_caisson(data: Mapping[str, Any], r: DesignReader) -> CaissonSpec:
@@ -294,17 +248,7 @@ def _read_caisson(data: Mapping[str, Any], r: DesignReader) -> CaissonSpec:
         absent = [k for k, v in dens.items() if v is None]
         raise r.fail(f"[caisson] {' and '.join(absent)} missing; accepted: either buoyant_weight "
                      "(kN/m) or all of concrete_fraction, concrete_density, fill_density (kg/m^3)", c)
-    return CaissonSpec(width=r.required(data, c, "width"),
-                       base_depth=r.required(data, c, "base_depth"),
-                       crest=r.required(data, c, "crest"),
-                       friction=r.required(data, c, "friction"),
-                       berm_width=r.number(data, c, "berm_width") or 0.0,
-                       buoyant_weight=weight, concrete_fraction=dens["concrete_fraction"],
-                       concrete_density=dens["concrete_density"], fill_density=dens["fill_density"],
-                       fill_density_above=above,
-                       impulsive=r.boolean(data, c, "impulsive", True),
-                       required_sliding=r.number(data, c, "required_sliding") or 1.2,
-                       required_overturning=r.number(data, c, "required_overturning") or 1.2)
+    return r.table(data, c, CaissonSpec, buoyant_weight=weight, fill_density_above=above, **dens)
 
 
 def _check_depths(site: SiteSpec, caisson: CaissonSpec, r: DesignReader) -> None:

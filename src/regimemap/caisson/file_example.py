@@ -11,37 +11,7 @@ _EXAMPLE = """\
 # Expected: H1/3 = 5.80 m, Hmax = 8.05 m, p1 = 97.6 kPa, P = 941 kN/m,
 #           U = 493 kN/m, SF sliding = 1.16, SF overturning = 2.56.
 
-[site]
-depth = 10.1          # h, water depth at the wall
-armour_depth = 5.6    # d, depth above the armour layer of the mound
-seabed_slope = 0.01   # tan(theta) of the sea bed in front (1/100)
-water_density = 1030  # optional, default 1030
-
-[wave]
-H0 = 6.3              # equivalent deep-water significant height H0'
-                      # (or give H13 and Hmax at the wall instead)
-period = 11.4         # T1/3, significant period
-angle = 15            # beta, degrees from the normal to the wall
-rotation = 0          # optional: rotate beta toward the normal by up to 15 degrees
-                      # (Goda's recommendation for uncertain directions); default 0
-
-[caisson]
-width = 15.0          # full width of the upright section
-base_depth = 7.1      # h', depth of its base below still water
-crest = 3.4           # hc, crest height above still water
-berm_width = 8.0      # BM, berm width (Takahashi's impulsive coefficient)
-friction = 0.6        # mu, caisson on rubble
-buoyant_weight = 2312 # W', weight in still water, kN/m
-# or, instead of buoyant_weight, the densities of a filled caisson:
-# concrete_fraction = 0.25   # area fraction of concrete in the section
-# concrete_density = 2400    # kg/m^3
-# fill_density = 2000        # saturated fill below still water, kg/m^3
-# fill_density_above = 1800  # optional: fill above still water, kg/m^3
-# impulsive = true           # optional: Takahashi's impulsive coefficient (default true)
-# required_sliding = 1.2     # optional: the safety factors the design must reach (default 1.2
-# required_overturning = 1.2 #   for both, Goda 2000); `regimemap caisson` says when one fails
-
-# Optional: the sliding of the caisson over its design life (`regimemap lifetime`), the
+{tables}# Optional: the sliding of the caisson over its design life (`regimemap lifetime`), the
 # expected sliding distance (ESD) of Shimosako & Takahashi (1999) by Monte Carlo: storms
 # from the climate below, Rayleigh waves in each, the slide of every wave (docs/lifetime.md).
 # The caisson, its site and the wave's angle are those above; the storms replace the design
@@ -92,12 +62,16 @@ _ERROR_COMMENTS = {
 def example_design_text() -> str:
     """The commented example design file (Goda's worked upright breakwater, with a life of 50 years).
 
-    Its ``[lifetime.errors]`` are the defaults of :data:`regimemap.lifetime.DEFAULT_ERRORS`.
+    Its ``[site]``, ``[wave]`` and ``[caisson]`` are the example lines of their keys
+    (:func:`~regimemap.caisson.file_keys.example_tables`); its ``[lifetime.errors]`` are the
+    defaults of :data:`regimemap.lifetime.DEFAULT_ERRORS`.
     """
     from regimemap.lifetime import DEFAULT_ERRORS
+
+    from .file_keys import example_tables
 
     lines = []
     for name, comment in _ERROR_COMMENTS.items():
         f = getattr(DEFAULT_ERRORS, name)
         lines.append(f"{f'{name} = [{f.ratio!r}, {f.cov!r}]':<30} # {comment}\n")
-    return _EXAMPLE.replace("{errors}", "".join(lines))
+    return _EXAMPLE.replace("{tables}", example_tables()).replace("{errors}", "".join(lines))

@@ -1,22 +1,28 @@
-"""The keys of a design file's ``[site]``, ``[wave]`` and ``[caisson]`` tables and their reader.
+"""The keys of a design file's ``[site]``, ``[wave]`` and ``[caisson]`` tables, declared once; their reader.
 
-:data:`DESIGN_KEYS` says what each key accepts (the words of the error messages, and
-of the documentation's table of the keys); :class:`DesignReader` reads a value and checks
-it against them.  :func:`regimemap.caisson.file.parse_design` uses both.
+Each key is one field of its table's dataclass (:class:`SiteSpec`, :class:`WaveSpec`,
+:class:`CaissonSpec`), declared with :func:`key`: its name and type, its default (none:
+required), what it accepts in words, its range test, why a value out of range is refused, and
+its lines in the commented example.  From those fields come :data:`DESIGN_KEYS` (the words of
+the error messages, the "did you mean" of an unknown key, the documentation's table of the
+keys, the study file's overrides), the reading and checking of a table
+(:meth:`DesignReader.table`) and the example's tables (:func:`example_tables`).
+:func:`regimemap.caisson.file.parse_design` reads a file with them.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
-from typing import Any
+from dataclasses import MISSING, dataclass, field, fields
+from typing import Any, TypeVar
 
 from ..io.toml_errors import DesignFileError, did_you_mean
 from ..io.toml_lines import key_line, key_text
 
-__all__ = ["DEPTH_RANGE", "DESIGN_KEYS", "MAX_BERM", "MAX_CREST", "MAX_HEIGHT", "MAX_WEIGHT", "MIN_LENGTH",
-           "PERIOD_RANGE", "WIDTH_RANGE", "DesignReader", "KeySpec"]
+__all__ = ["DEPTH_RANGE", "DESIGN_KEYS", "DESIGN_TABLES", "MAX_BERM", "MAX_CREST", "MAX_HEIGHT", "MAX_WEIGHT",
+           "MIN_LENGTH", "PERIOD_RANGE", "WIDTH_RANGE", "CaissonSpec", "DesignReader", "KeySpec", "SiteSpec",
+           "WaveSpec", "example_tables", "key"]
 
 
 # -- the accepted keys ----------------------------------------------------------------------------
@@ -31,6 +37,30 @@ class KeySpec:
     required: bool = True
     boolean: bool = False
     why: Callable[[float], str] | None = None
+    example: str = ""                  # its lines in the commented example (none: not shown)
+
+
+def key(accepted: str, check: Callable[[float], bool], *, default: Any = MISSING, boolean: bool = False,
+        why: Callable[[float], str] | None = None, example: str = "") -> Any:
+    """One key of a design-file table, declared once: the dataclass field of its value.
+
+    Parameters
+    ----------
+    accepted : str
+        What the key accepts, in words (the error messages and the docs say it).
+    check : callable
+        The range test of a number.
+    default : optional
+        The value when the file does not give the key; without one the key is required.
+    boolean : bool
+        A ``true``/``false`` key (``check`` is not used).
+    why : callable, optional
+        ``why(value)``: why a value out of range is refused (the physics, the likely unit slip).
+    example : str
+        Its lines in the commented example file, as written there.
+    """
+    spec = KeySpec(accepted, check, required=default is MISSING, boolean=boolean, why=why, example=example)
+    return field(default=default, metadata={"key": spec})
 
 
 def _positive(x: float) -> bool:
@@ -108,72 +138,125 @@ def _depth_why(x: float) -> str:
     return f"shallower than {lo:g} m, less than a laboratory model's flume; metres expected"
 
 
-#: The keys of the tables ``[site]``, ``[wave]`` and ``[caisson]`` (``[lifetime]`` is
-#: :mod:`regimemap.lifetime.file`'s).
-DESIGN_KEYS: dict[str, dict[str, KeySpec]] = {
-    "site": {
-        "depth": KeySpec(f"a water depth {DEPTH_RANGE[0]:g} <= h <= {DEPTH_RANGE[1]:g} in metres",
-                         lambda x: DEPTH_RANGE[0] <= x <= DEPTH_RANGE[1], why=_depth_why),
-        "armour_depth": KeySpec(f"a depth d >= {MIN_LENGTH:g} in metres above the armour layer of the "
-                                "mound", lambda x: x >= MIN_LENGTH,
-                                why=_beyond(MIN_LENGTH, math.inf, "m", "less than a laboratory model's")),
-        "seabed_slope": KeySpec("tan(theta) of the sea bed, 0 <= seabed_slope <= 1",
-                             lambda x: 0.0 <= x <= 1.0),
-        "water_density": KeySpec("a density 900 <= water_density <= 1100 kg/m^3",
-                              lambda x: 900.0 <= x <= 1100.0, required=False),
-    },
-    "wave": {
-        "H0": KeySpec(f"an equivalent deep-water significant height {MIN_LENGTH:g} <= H0 <= "
-                      f"{MAX_HEIGHT:g} in metres", _length(MIN_LENGTH, MAX_HEIGHT), required=False,
-                      why=_height_why),
-        "H13": KeySpec(f"a significant height {MIN_LENGTH:g} <= H13 <= {MAX_HEIGHT:g} in metres at the "
-                       "wall", _length(MIN_LENGTH, MAX_HEIGHT), required=False, why=_height_why),
-        "Hmax": KeySpec(f"a maximum height H13 <= Hmax <= {2 * MAX_HEIGHT:g} in metres at the wall",
-                        _length(MIN_LENGTH, 2 * MAX_HEIGHT), required=False, why=_hmax_why),
-        "period": KeySpec(f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} "
-                          "in seconds", lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1],
-                          why=_period_why),
-        "angle": KeySpec("an angle -90 < angle < 90 degrees from the normal to the wall",
-                      lambda x: -90.0 < x < 90.0, required=False),
-        "rotation": KeySpec("a rotation toward the normal 0 <= rotation <= 15 degrees (Goda 2000)",
-                         lambda x: 0.0 <= x <= 15.0, required=False),
-    },
-    "caisson": {
-        "width": KeySpec(f"a full width {WIDTH_RANGE[0]:g} <= width <= {WIDTH_RANGE[1]:g} in metres",
-                         _length(*WIDTH_RANGE),
-                         why=_beyond(*WIDTH_RANGE, "m", "no caisson (models in a flume to breakwaters "
-                                     "are 0.1-100 m wide); metres expected")),
-        "base_depth": KeySpec(f"a depth h' >= {MIN_LENGTH:g} in metres of the base below still water",
+@dataclass(frozen=True, kw_only=True)
+class SiteSpec:
+    """``[site]``: depth ``h``, armour depth ``d`` [m], ``tan theta``, water density [kg/m^3]."""
+
+    depth: float = key(f"a water depth {DEPTH_RANGE[0]:g} <= h <= {DEPTH_RANGE[1]:g} in metres",
+                       lambda x: DEPTH_RANGE[0] <= x <= DEPTH_RANGE[1], why=_depth_why,
+                       example="depth = 10.1          # h, water depth at the wall")
+    armour_depth: float = key(f"a depth d >= {MIN_LENGTH:g} in metres above the armour layer of the mound",
                               lambda x: x >= MIN_LENGTH,
-                              why=_beyond(MIN_LENGTH, math.inf, "m", "less than a laboratory model's")),
-        "crest": KeySpec(f"a crest height 0 <= hc <= {MAX_CREST:g} in metres above still water (not below "
-                         "the water)", _length(0.0, MAX_CREST),
-                         why=_beyond(0.0, MAX_CREST, "m", "no breakwater's crest; metres expected")),
-        "berm_width": KeySpec(f"a berm width 0 <= BM <= {MAX_BERM:g} in metres", _length(0.0, MAX_BERM),
-                              required=False, why=_beyond(0.0, MAX_BERM, "m", "metres expected")),
-        "friction": KeySpec("a friction coefficient 0 < friction <= 2", lambda x: 0.0 < x <= 2.0),
-        "buoyant_weight": KeySpec(f"a buoyant weight 0 < W' <= {MAX_WEIGHT:g} in kN per metre",
-                                  lambda x: 0.0 < x <= MAX_WEIGHT, required=False,
-                                  why=_beyond(0.0, MAX_WEIGHT, "kN/m", "more than forty times a 100 m "
-                                              "square block of concrete; kN/m expected")),
-        "concrete_fraction": KeySpec("an area fraction 0 <= concrete_fraction <= 1",
-                                  lambda x: 0.0 <= x <= 1.0, required=False),
-        "concrete_density": KeySpec("a density concrete_density > 0 in kg/m^3", _positive,
-                                 required=False),
-        "fill_density": KeySpec("a density fill_density > 0 in kg/m^3 (fill below still water)",
-                             _positive, required=False),
-        "fill_density_above": KeySpec("a density fill_density_above > 0 in kg/m^3", _positive,
-                                   required=False),
-        "required_sliding": KeySpec("a required sliding safety factor 1 <= required_sliding <= 3 "
-                                 "(default 1.2, Goda 2000, Sect. 4.2)", lambda x: 1.0 <= x <= 3.0,
-                                 required=False),
-        "required_overturning": KeySpec("a required overturning safety factor 1 <= required_overturning "
-                                     "<= 3 (default 1.2, Goda 2000, Sect. 4.2)", lambda x: 1.0 <= x <= 3.0,
-                                     required=False),
-        "impulsive": KeySpec("true or false (Takahashi's impulsive coefficient)", lambda x: True,
-                          required=False, boolean=True),
-    },
-}
+                              why=_beyond(MIN_LENGTH, math.inf, "m", "less than a laboratory model's"),
+                              example="armour_depth = 5.6    # d, depth above the armour layer of the mound")
+    seabed_slope: float = key("tan(theta) of the sea bed, 0 <= seabed_slope <= 1", lambda x: 0.0 <= x <= 1.0,
+                              example="seabed_slope = 0.01   # tan(theta) of the sea bed in front (1/100)")
+    water_density: float = key("a density 900 <= water_density <= 1100 kg/m^3",
+                               lambda x: 900.0 <= x <= 1100.0, default=1030.0,
+                               example="water_density = 1030  # optional, default 1030")
+
+
+@dataclass(frozen=True, kw_only=True)
+class WaveSpec:
+    """``[wave]``: ``H0'`` or (``H1/3``, ``Hmax``) [m], ``T1/3`` [s], angle and rotation [deg]."""
+
+    H0: float | None = key(f"an equivalent deep-water significant height {MIN_LENGTH:g} <= H0 <= "
+                           f"{MAX_HEIGHT:g} in metres", _length(MIN_LENGTH, MAX_HEIGHT), default=None,
+                           why=_height_why,
+                           example="H0 = 6.3              # equivalent deep-water significant height H0'\n"
+                                   "                      # (or give H13 and Hmax at the wall instead)")
+    H13: float | None = key(f"a significant height {MIN_LENGTH:g} <= H13 <= {MAX_HEIGHT:g} in metres at the "
+                            "wall", _length(MIN_LENGTH, MAX_HEIGHT), default=None, why=_height_why)
+    Hmax: float | None = key(f"a maximum height H13 <= Hmax <= {2 * MAX_HEIGHT:g} in metres at the wall",
+                             _length(MIN_LENGTH, 2 * MAX_HEIGHT), default=None, why=_hmax_why)
+    period: float = key(f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} in seconds",
+                        lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], why=_period_why,
+                        example="period = 11.4         # T1/3, significant period")
+    angle: float = key("an angle -90 < angle < 90 degrees from the normal to the wall",
+                       lambda x: -90.0 < x < 90.0, default=0.0,
+                       example="angle = 15            # beta, degrees from the normal to the wall")
+    rotation: float = key("a rotation toward the normal 0 <= rotation <= 15 degrees (Goda 2000)",
+                          lambda x: 0.0 <= x <= 15.0, default=0.0,
+                          example="rotation = 0          # optional: rotate beta toward the normal by up "
+                                  "to 15 degrees\n"
+                                  "                      # (Goda's recommendation for uncertain directions); "
+                                  "default 0")
+
+
+@dataclass(frozen=True, kw_only=True)
+class CaissonSpec:
+    """``[caisson]``: geometry [m], friction, and ``W'`` [kN/m] or densities [kg/m^3]."""
+
+    width: float = key(f"a full width {WIDTH_RANGE[0]:g} <= width <= {WIDTH_RANGE[1]:g} in metres",
+                       _length(*WIDTH_RANGE),
+                       why=_beyond(*WIDTH_RANGE, "m", "no caisson (models in a flume to breakwaters are "
+                                   "0.1-100 m wide); metres expected"),
+                       example="width = 15.0          # full width of the upright section")
+    base_depth: float = key(f"a depth h' >= {MIN_LENGTH:g} in metres of the base below still water",
+                            lambda x: x >= MIN_LENGTH,
+                            why=_beyond(MIN_LENGTH, math.inf, "m", "less than a laboratory model's"),
+                            example="base_depth = 7.1      # h', depth of its base below still water")
+    crest: float = key(f"a crest height 0 <= hc <= {MAX_CREST:g} in metres above still water (not below the "
+                       "water)", _length(0.0, MAX_CREST),
+                       why=_beyond(0.0, MAX_CREST, "m", "no breakwater's crest; metres expected"),
+                       example="crest = 3.4           # hc, crest height above still water")
+    berm_width: float = key(f"a berm width 0 <= BM <= {MAX_BERM:g} in metres", _length(0.0, MAX_BERM),
+                            default=0.0, why=_beyond(0.0, MAX_BERM, "m", "metres expected"),
+                            example="berm_width = 8.0      # BM, berm width (Takahashi's impulsive "
+                                    "coefficient)")
+    friction: float = key("a friction coefficient 0 < friction <= 2", lambda x: 0.0 < x <= 2.0,
+                          example="friction = 0.6        # mu, caisson on rubble")
+    buoyant_weight: float | None = key(f"a buoyant weight 0 < W' <= {MAX_WEIGHT:g} in kN per metre",
+                                       lambda x: 0.0 < x <= MAX_WEIGHT, default=None,
+                                       why=_beyond(0.0, MAX_WEIGHT, "kN/m", "more than forty times a 100 m "
+                                                   "square block of concrete; kN/m expected"),
+                                       example="buoyant_weight = 2312 # W', weight in still water, kN/m")
+    concrete_fraction: float | None = key("an area fraction 0 <= concrete_fraction <= 1",
+                                          lambda x: 0.0 <= x <= 1.0, default=None,
+                                          example="# or, instead of buoyant_weight, the densities of a "
+                                                  "filled caisson:\n"
+                                                  "# concrete_fraction = 0.25   # area fraction of concrete "
+                                                  "in the section")
+    concrete_density: float | None = key("a density concrete_density > 0 in kg/m^3", _positive, default=None,
+                                         example="# concrete_density = 2400    # kg/m^3")
+    fill_density: float | None = key("a density fill_density > 0 in kg/m^3 (fill below still water)",
+                                     _positive, default=None,
+                                     example="# fill_density = 2000        # saturated fill below still "
+                                             "water, kg/m^3")
+    fill_density_above: float | None = key("a density fill_density_above > 0 in kg/m^3", _positive,
+                                           default=None,
+                                           example="# fill_density_above = 1800  # optional: fill above "
+                                                   "still water, kg/m^3")
+    required_sliding: float = key("a required sliding safety factor 1 <= required_sliding <= 3 (default 1.2, "
+                                  "Goda 2000, Sect. 4.2)", lambda x: 1.0 <= x <= 3.0, default=1.2,
+                                  example="# required_sliding = 1.2     # optional: the safety factors the "
+                                          "design must reach (default 1.2")
+    required_overturning: float = key("a required overturning safety factor 1 <= required_overturning <= 3 "
+                                      "(default 1.2, Goda 2000, Sect. 4.2)", lambda x: 1.0 <= x <= 3.0,
+                                      default=1.2,
+                                      example="# required_overturning = 1.2 #   for both, Goda 2000); "
+                                              "`regimemap caisson` says when one fails")
+    impulsive: bool = key("true or false (Takahashi's impulsive coefficient)", lambda x: True, default=True,
+                          boolean=True,
+                          example="# impulsive = true           # optional: Takahashi's impulsive "
+                                  "coefficient (default true)")
+
+
+#: The tables ``[site]``, ``[wave]`` and ``[caisson]`` and the dataclass of each (``[lifetime]`` is
+#: :mod:`regimemap.lifetime.file`'s).
+DESIGN_TABLES: dict[str, type] = {"site": SiteSpec, "wave": WaveSpec, "caisson": CaissonSpec}
+#: The keys of each table, as their fields declare them.
+DESIGN_KEYS: dict[str, dict[str, KeySpec]] = {
+    table: {f.name: f.metadata["key"] for f in fields(cls)} for table, cls in DESIGN_TABLES.items()}
+
+
+def example_tables() -> str:
+    """The tables ``[site]``, ``[wave]`` and ``[caisson]`` of the commented example, from the keys' lines."""
+    return "".join(f"[{table}]\n" + "".join(f"{k.example}\n" for k in keys.values() if k.example) + "\n"
+                   for table, keys in DESIGN_KEYS.items())
+
+
+_Table = TypeVar("_Table")
 
 
 class DesignReader:
@@ -239,6 +322,21 @@ class DesignReader:
             raise self.key_error(section, key, value, "out of range" if spec.why is None
                                  else f"out of range, {spec.why(x)}")
         return x
+
+    def table(self, data: Mapping[str, Any], section: str, cls: type[_Table], **given: Any) -> _Table:
+        """``[section]`` as its dataclass ``cls``: each key read and checked in the order declared
+        (its default when the file leaves an optional key out), but those ``given`` (read already,
+        for a check across keys)."""
+        values = dict(given)
+        for f in fields(cls):  # type: ignore[arg-type]
+            if f.name in values:
+                continue
+            if f.metadata["key"].boolean:
+                values[f.name] = self.boolean(data, section, f.name, bool(f.default))
+            else:
+                x = self.number(data, section, f.name)
+                values[f.name] = f.default if x is None else x
+        return cls(**values)
 
     def required(self, data: Mapping[str, Any], section: str, key: str) -> float:
         x = self.number(data, section, key)
