@@ -133,10 +133,10 @@ class DesignKeys(SphinxDirective):
     def run(self) -> list[nodes.Node]:
         from regimemap.caisson import file as design
         from regimemap.caisson.file_keys import DESIGN_KEYS as spec
-        classes = {"site": design.SiteSpec, "wave": design.WaveSpec, "caisson": design.CaissonSpec}
+        from regimemap.caisson.file_keys import DESIGN_TABLES as classes
         lines: list[str] = []
         for table, keys in spec.items():
-            defaults = _defaults(classes[table]) if table in classes else {}
+            defaults = _defaults(classes[table])
             lines += self._table(f"[{table}]", [
                 (key, "required" if getattr(k, "required", True) else "optional", k.accepted,
                  _default_text(defaults.get(key)))
