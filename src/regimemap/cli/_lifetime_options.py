@@ -15,6 +15,7 @@ from typing import Any
 
 import click
 
+from ..io.formats import FIGURES
 from ._common import ParamType
 
 __all__ = ["chart_options", "lifetime_options", "report_options", "run_options"]
@@ -95,7 +96,7 @@ chart_options = _group(
 report_options = _group(
     click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text."),
     click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-                 help="Output file (repeatable), written atomically: .png, .svg or .pdf draws the "
+                 help=f"Output file (repeatable), written atomically: {FIGURES} draws the "
                       "figure (with --width: the design chart), .csv or .npz writes every lifetime "
                       "(with --width: .csv writes the chart's table)."))
 

@@ -69,7 +69,7 @@ class Dpi(ParamType):
 class Format(ParamType):
     """``--format`` of one figure: png, svg or pdf (case and a leading dot ignored)."""
 
-    name = "png|svg|pdf"
+    name = "|".join(FIGURE_FORMATS)
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> str:
         v = str(value).strip().lower().lstrip(".")

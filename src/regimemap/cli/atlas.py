@@ -16,6 +16,7 @@ from ..drawing.limits import (
     MAX_FRAMES,
     MAX_PANELS,
 )
+from ..io.formats import FIGURES
 from ._common import (
     LOAD_OPTIONS,
     ParamType,
@@ -150,7 +151,7 @@ def _figure_output(path: str) -> str:
 @click.option("--dpi", type=click.IntRange(*ATLAS_DPI_RANGE), default=ATLAS_DPI, show_default=True,
               help="Resolution of PNG output.")
 @click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
-              help="Output file: .png, .svg or .pdf (written atomically).")
+              help=f"Output file: {FIGURES} (written atomically).")
 @load_options(sweep=MAX_PANELS)
 def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: float | None,
               mu_max: float | None, view: str, dpi: int, output: str,

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ..io.formats import FIGURES
 from ._check import refuse_notices
 from ._common import ParamType, echo_notices, output_path, report_written
 from ._inputs import RECORD_FILE
@@ -121,7 +122,7 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--drop-spikes", is_flag=True, help="Remove the isolated spikes (else flagged and kept).")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-              help="Figure (repeatable; .png, .svg or .pdf): the record, the return levels with the "
+              help=f"Figure (repeatable; {FIGURES}): the record, the return levels with the "
                    "band and the observations, the QQ plot.")
 @click.option("--diagnostics", type=click.Path(dir_okay=False), default=None, metavar="FILE",
               help="Threshold diagnostics figure: mean residual life and parameter stability.")

@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ..io.formats import FIGURES
 from ._common import (
     RunError,
     gamma_option,
@@ -136,7 +137,7 @@ Examples:
 @click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
               help="Samples of k for the region polygons and curves (2-5000).")
 @click.option("-o", "--output", metavar="FILE",
-              help="Save the first view (as regimemap plot draws it; .png, .svg or .pdf) and "
+              help=f"Save the first view (as regimemap plot draws it; {FIGURES}) and "
                    "exit without opening a window.")
 @click.option("--design", "design", type=DESIGN_FILE, metavar="FILE.toml",
               help="Start at a caisson's design wave: its loaded block and design point (k, mu) "

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import record_formats
+from ..io.formats import FIGURES, record_formats
 from ._check import check_option, exit_on_failure, refuse_notices
 from ._common import RunError, echo_notices, output_path, report_written
 from ._inputs import DESIGN_FILE
@@ -152,8 +152,8 @@ def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None
         kind = checked_format(path, "lifetime", "'--output'")
         if kind == "npz" and widths is not None:
             raise click.BadParameter(f"{path!r}: the lifetimes (.npz) are written for one width, not "
-                                     "with --width (a chart is written as .csv, its table, or as .png, "
-                                     ".svg or .pdf)", param_hint="'--output'")
+                                     f"with --width (a chart is written as .csv, its table, or as {FIGURES})",
+                                     param_hint="'--output'")
         output_path(path, "--output")
 
 

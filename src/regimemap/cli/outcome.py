@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import FIGURE_FORMATS, record_formats
+from ..io.formats import FIGURE_FORMATS, FIGURES, record_formats
 from ._dynamics_options import (
     block_options,
     check_output_file,
@@ -45,7 +45,7 @@ _DATA_FORMATS = record_formats("outcome data")
                    "2000), for a k_peak, duration or omega_p sweep.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE",
               multiple=True, required=True,
-              help="Output file (repeatable): .png, .svg or .pdf draws the map, .npz, .csv or .json "
+              help=f"Output file (repeatable): {FIGURES} draws the map, .npz, .csv or .json "
                    "writes its data (atomically; .json with the refined boundaries).")
 @min_rotation_option()
 @click.option("--no-refine", "no_refine", is_flag=True,

@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..drawing.save import DEFAULT_DPI, DPI_RANGE
+from ..io.formats import FIGURE_FORMATS, FIGURES
 from ._common import (
     RunError,
     echo_notices,
@@ -125,10 +126,10 @@ title states the loads, and the default file name carries them.
 @gamma_option()
 @kprime_option()
 @click.option("-o", "--output", metavar="FILE",
-              help="Output file; its suffix (.png, .svg, .pdf) sets the format. "
+              help=f"Output file; its suffix ({', '.join('.' + f for f in FIGURE_FORMATS)}) sets the format. "
                    "Default: regime-g<GAMMA>-kp<KPRIME>.<format>.")
 @click.option("--format", "fmt", type=Format(), default=None,
-              help="png, svg or pdf (default: from the suffix of -o, else png).")
+              help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
 @click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
               show_default=True,
               help="designer: mu up to 1.2 and k far enough to show every boundary that "
@@ -236,7 +237,7 @@ def _preset_or_usage_error(fid: str) -> Any:
 @click.option("-o", "--output", metavar="FILE",
               help="Output file (.png, .svg, .pdf); default fig-<ID>.<format>.")
 @click.option("--format", "fmt", type=Format(), default=None,
-              help="png, svg or pdf (default: from the suffix of -o, else png).")
+              help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
 @click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: float) -> None:

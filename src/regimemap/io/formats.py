@@ -37,6 +37,7 @@ from pathlib import Path
 from typing import Literal
 
 __all__ = [
+    "FIGURES",
     "FIGURE_FORMATS",
     "FORMATS",
     "RECORDS",
@@ -133,6 +134,10 @@ def listed(formats: Sequence[str]) -> str:
     """Suffixes in words: ``.png, .svg or .pdf``."""
     dotted = [f".{f}" for f in formats]
     return dotted[0] if len(dotted) == 1 else f"{', '.join(dotted[:-1])} or {dotted[-1]}"
+
+
+#: The figure suffixes in words (``.png, .svg or .pdf``), as every command's help says them.
+FIGURES = listed(FIGURE_FORMATS)
 
 
 def _parts(record: str | Sequence[tuple[str, Sequence[str]]]) -> Sequence[tuple[str, Sequence[str]]]:
