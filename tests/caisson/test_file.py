@@ -115,3 +115,37 @@ def test_the_period_ratio_error_names_its_line(tmp_path):
 ])
 def test_analysis_fault(message, fault):
     assert analysis_fault(message) == fault
+
+
+def test_each_key_is_declared_once_as_a_field_of_its_table():
+    """DESIGN_KEYS, the reading of a table and the example's tables all come from the fields of the
+    tables' dataclasses: the keys in the order declared, a key's default its field's, its lines in
+    the example its own (each naming its key), every required key shown in the example."""
+    import dataclasses
+    import re
+
+    from regimemap.caisson.file_keys import DESIGN_KEYS, DESIGN_TABLES, DesignReader, example_tables
+
+    text = example_tables()
+    assert text in example_design_text()
+    for table, cls in DESIGN_TABLES.items():
+        names = [f.name for f in dataclasses.fields(cls)]
+        assert list(DESIGN_KEYS[table]) == names
+        assert f"[{table}]\n" in text
+        for f in dataclasses.fields(cls):
+            spec = DESIGN_KEYS[table][f.name]
+            assert spec.required == (f.default is dataclasses.MISSING), f.name
+            if spec.example:
+                first = next(line for line in spec.example.splitlines() if f"{f.name} = " in line)
+                assert re.match(rf"(# )?{f.name} = ", first), f.name
+                assert spec.example in text
+            else:
+                assert not spec.required, f"required [{table}] {f.name} has no example line"
+    # the reader fills a table from its fields: given keys, defaults for the others, in order
+    r = DesignReader("x.toml", "")
+    site = r.table({"site": {"depth": 10.0, "armour_depth": 5.0, "seabed_slope": 0.01}}, "site",
+                   DESIGN_TABLES["site"])
+    assert site == DESIGN_TABLES["site"](depth=10.0, armour_depth=5.0, seabed_slope=0.01)
+    assert site.water_density == 1030.0
+    with pytest.raises(DesignFileError, match=r"x.toml: \[site\] armour_depth is missing; accepted: a depth"):
+        r.table({"site": {"depth": 10.0}}, "site", DESIGN_TABLES["site"])
