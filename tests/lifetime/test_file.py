@@ -353,3 +353,25 @@ def test_command_line_values_are_checked_as_the_file_s() -> None:
         with pytest.raises(ValueError, match=re.escape(why)) as info:
             check_lifetime_option(name, text)
         assert str(info.value).startswith(f"{name} must be ") and repr(text) in str(info.value)
+
+
+def test_each_lifetime_key_is_declared_once_as_a_field():
+    """LIFETIME_KEYS is read from LifetimeSpec's fields (every field but ``written``, in order), each
+    key's default is its field's, and where its words name a default they name that one
+    (``climate_replicates`` says 50, the default with a [lifetime.record]: without one it is 0)."""
+    import dataclasses
+    import re
+
+    from regimemap.lifetime.file_keys import LifetimeSpec, default_of
+
+    names = [f.name for f in dataclasses.fields(LifetimeSpec)]
+    assert names == [*LIFETIME_KEYS, "written"]
+    plain = LifetimeSpec()
+    said = 0
+    for key, spec in LIFETIME_KEYS.items():
+        assert default_of(key) == getattr(plain, key), key
+        m = re.search(r"default ([0-9.]+)\b", spec.accepted)
+        if m and key != "climate_replicates":
+            assert float(m.group(1)) == default_of(key), key
+            said += 1
+    assert said >= 6  # years, trials, shape, storm_hours, tide_range, target

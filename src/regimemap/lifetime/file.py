@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from typing import TYPE_CHECKING, Any
 
 from ..io.toml_errors import DesignFileError, did_you_mean
@@ -21,6 +21,8 @@ from .file_keys import (
     ERROR_FACTORS,
     LIFETIME_KEYS,
     LIFETIME_TABLES,
+    LifetimeSpec,
+    default_of,
 )
 
 if TYPE_CHECKING:
@@ -29,54 +31,6 @@ if TYPE_CHECKING:
     from .file_record import RecordSpec
 
 __all__ = ["LifetimeSpec", "lifetime_model", "read_lifetime"]
-
-@dataclass(frozen=True)
-class LifetimeSpec:
-    """``[lifetime]``: the climate and the options of a lifetime simulation, as the file gives them.
-
-    The climate is ``H0_10`` and ``H0_50`` [m], or ``annual_maxima`` [m];
-    ``errors`` holds the factors ``[lifetime.errors]`` names, as ``(ratio,
-    cov)``: the others take :data:`regimemap.lifetime.DEFAULT_ERRORS`.
-    ``thresholds`` None means :data:`regimemap.lifetime.DEFAULT_THRESHOLDS`,
-    ``seed`` None a fresh seed for every run.  The requirements: ``target``
-    (the tolerable ESD [m]), ``allowed`` (lifetime sliding [m] -> the largest
-    allowed probability of exceeding it, Kim & Suh 2013) and
-    ``failure_sliding`` (the sliding at which the caisson is off its mound [m],
-    None: not given).  ``written`` holds the climate's values as the file
-    wrote them (TOML's text of the parsed value), for the reports to echo.
-    """
-
-    years: int = 50
-    trials: int = 5000
-    seed: int | None = None
-    distribution: str = "weibull"
-    shape: float = 2.0
-    H0_10: float | None = None
-    H0_50: float | None = None
-    annual_maxima: tuple[float, ...] | None = None
-    storms_per_year: float | None = None
-    storm_hours: float = 2.0
-    period: float | None = None
-    steepness: float | None = None
-    tide_range: float = 0.0
-    thresholds: tuple[float, ...] | None = None
-    truncate: float | None = None
-    impulsive: bool = False
-    errors: Mapping[str, tuple[float, float]] = field(default_factory=dict)
-    target: float = 0.1
-    allowed: Mapping[float, float] = field(default_factory=dict)
-    failure_sliding: float | None = None
-    written: Mapping[str, str] = field(default_factory=dict)
-    record: RecordSpec | None = None
-    climate_replicates: int = 0
-
-    def climate_as_written(self) -> str:
-        """The climate's keys as the file wrote them (``H0_10 = 5.0 m, H0_50 = 6.3 m``)."""
-        if self.record is not None:
-            return f"[lifetime.record] path = {self.record.path}"
-        keys = ("annual_maxima",) if self.annual_maxima is not None else ("H0_10", "H0_50")
-        return ", ".join(f"{key} = {self.written.get(key, '?')} m" for key in keys)
-
 
 _CLIMATE = ("either H0_10 and H0_50 (the 10- and 50-year return values of H0', metres) or "
             "annual_maxima (a list of annual maxima of H0', metres)")
@@ -251,7 +205,6 @@ class _LifetimeReader:
                 if pair is not None:
                     errors[key] = pair
 
-        h10, h50, maxima = got["H0_10"], got["H0_50"], got["annual_maxima"]
         record = _record_table(self.text, self.source, got, data)
         if record is None:
             self.check_climate(t, got, data)
@@ -259,22 +212,13 @@ class _LifetimeReader:
             raise self.fail(t, "steepness", f"[lifetime] steepness = {data['steepness']!r} together with "
                             f"[lifetime] period = {data['period']!r}; accepted: one of them, or neither "
                             "(Goda's T1/3 = 3.3 H0'^0.63)")
-        spec = LifetimeSpec(
-            years=50 if got["years"] is None else got["years"],
-            trials=5000 if got["trials"] is None else got["trials"],
-            seed=got["seed"], distribution=got["distribution"] or "weibull",
-            shape=2.0 if got["shape"] is None else got["shape"],
-            H0_10=h10, H0_50=h50, annual_maxima=maxima, storms_per_year=got["storms_per_year"],
-            storm_hours=2.0 if got["storm_hours"] is None else got["storm_hours"],
-            period=got["period"], steepness=got["steepness"],
-            tide_range=0.0 if got["tide_range"] is None else got["tide_range"],
+        # every key as given, else its declared default; then those read with others
+        values = {key: default_of(key) if got[key] is None else got[key] for key in LIFETIME_KEYS}
+        values.update(
             thresholds=None if got["thresholds"] is None else tuple(sorted(set(got["thresholds"]))),
-            truncate=got["truncate"], impulsive=bool(got["impulsive"]), errors=errors,
-            target=0.1 if got["target"] is None else got["target"],
-            allowed={} if got["allowed"] is None else got["allowed"],
-            failure_sliding=got["failure_sliding"],
-            record=record, climate_replicates=_replicates(got["climate_replicates"], record),
+            errors=errors, record=record, climate_replicates=_replicates(got["climate_replicates"], record),
             written={key: _written(data[key]) for key in ("H0_10", "H0_50", "annual_maxima") if key in data})
+        spec = LifetimeSpec(**values)
         try:  # anything the checks above missed, said the library's way
             lifetime_model(spec)
         except ValueError as exc:

@@ -1,9 +1,11 @@
-"""The keys of the ``[lifetime]`` and ``[lifetime.errors]`` tables: what each accepts and why.
+"""The keys of the ``[lifetime]`` and ``[lifetime.errors]`` tables, declared once: what each accepts and why.
 
-:data:`LIFETIME_KEYS` and :data:`ERROR_FACTORS` hold, for each key, what it
-accepts in words (the messages and the design-file reference read them), its
-TOML kind and the check of its value, with the physical limits (heights up to
-30 m, periods 1-30 s ...) and the reason a value beyond them is refused;
+Each key of ``[lifetime]`` is one field of :class:`LifetimeSpec`, declared with
+:func:`lifetime_key`: its type, its default, what it accepts in words (the
+messages and the design-file reference read them), its TOML kind and the check of
+its value, with the physical limits (heights up to 30 m, periods 1-30 s ...) and
+the reason a value beyond them is refused; :data:`LIFETIME_KEYS` is read from those
+fields.  :data:`ERROR_FACTORS` holds the factors of ``[lifetime.errors]``;
 :func:`check_lifetime_option` checks one value as the file's (the command
 line's ``--years``, ``--trials``, ``--seed``).  :mod:`regimemap.lifetime.file`
 reads the tables with them.
@@ -12,13 +14,16 @@ reads the tables with them.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
-from dataclasses import dataclass
-from typing import Any
+from collections.abc import Callable, Mapping
+from dataclasses import MISSING, dataclass, field, fields
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .file_record import RecordSpec
 
 __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_HEIGHT", "MAX_STORM_HOURS",
            "MAX_STORMS_PER_YEAR", "MAX_TIDE_RANGE", "MAX_TRIALS", "MAX_YEARS", "PERIOD_RANGE",
-           "LifetimeKey", "check_lifetime_option"]
+           "LifetimeKey", "LifetimeSpec", "check_lifetime_option", "default_of", "lifetime_key"]
 
 #: Most lifetimes a run may simulate (its arrays take ~24 bytes a lifetime).
 MAX_TRIALS = 10_000_000
@@ -78,63 +83,132 @@ def _at_least(lo: float) -> Callable[[Any], bool]:
     return lambda x: x >= lo
 
 
-#: The keys of ``[lifetime]``, in the order the messages list them.
-LIFETIME_KEYS: dict[str, LifetimeKey] = {
-    "years": LifetimeKey(f"a design life in whole years, 1 <= years <= {MAX_YEARS} (default 50)", "int",
-                   lambda x: 1 <= x <= MAX_YEARS),
-    "trials": LifetimeKey(f"a number of simulated lifetimes, 1 <= trials <= {MAX_TRIALS} (default 5000)",
-                    "int", lambda x: 1 <= x <= MAX_TRIALS),
-    "seed": LifetimeKey("a whole number >= 0, the root seed of the random numbers (default: a fresh one, "
-                  "reported)", "int", _at_least(0)),
-    "distribution": LifetimeKey('"weibull" or "gumbel", the distribution of the storm peaks H0\' '
-                          '(default "weibull")', "text", lambda x: x in ("weibull", "gumbel")),
-    "shape": LifetimeKey("a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", "number",
-                   _positive),
-    "H0_10": LifetimeKey(f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
-                   "significant heights measured are about 20 m)", "number", _height, _why_height),
-    "H0_50": LifetimeKey(f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", "number",
-                   _height, _why_height),
-    "annual_maxima": LifetimeKey(f"a list of at least three annual maxima of H0', each 0 < H0' <= "
-                           f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", "numbers",
-                           _height, _why_height),
-    "storms_per_year": LifetimeKey(f"a mean number of storms a year, 0.1 < storms_per_year <= "
-                             f"{MAX_STORMS_PER_YEAR:g} (a Poisson number of storms, peaks over a "
-                             "threshold; not with annual_maxima; default: one storm a year, its peak "
-                             "the annual maximum)", "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR),
-    "storm_hours": LifetimeKey(f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
-                         "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS),
-    "period": LifetimeKey(f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
-                    "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness",
-                    "number", lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period),
-    "steepness": LifetimeKey("a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period",
-                       "number", lambda x: 0.0 < x <= 0.142),
-    "tide_range": LifetimeKey(f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
-                        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE),
-    "thresholds": LifetimeKey("a list of lifetime slides, each > 0 in metres, whose exceedance probability "
-                        "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive),
-    "truncate": LifetimeKey("a cut-off > 0 of the normal error factors, in standard deviations (default: "
-                      "none)", "number", _positive),
-    "impulsive": LifetimeKey("true or false: Takahashi's impulsive coefficient in each wave's force "
-                       "(default false)", "bool"),
-    "target": LifetimeKey("the tolerable expected sliding distance, > 0 in metres: the requirement "
-                    "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive),
-    "allowed": LifetimeKey('a table of lifetime slides (m) and the largest allowed probability of '
-                     'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
-                     "default: none)", "limits"),
-    "failure_sliding": LifetimeKey("the sliding in metres at which the caisson is off its mound (the "
-                             "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
-                             "the probability of failure over the life (default: none)", "number",
-                             _positive),
-    "errors": LifetimeKey("the table [lifetime.errors] of the uncertainty factors (deepwater, "
-                    "transformation, force, friction)", "table"),
-    "record": LifetimeKey("the table [lifetime.record] of a measured wave record (path and the options of "
-                    "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table"),
-    "climate_replicates": LifetimeKey("a number of replicate climates of [lifetime.record]'s fit, 2 to "
-                                "10000, each run for the ESD's climate band, on which the requirements are "
-                                "judged (default 50), or 0: the fitted climate alone, its uncertainty "
-                                "not counted", "int",
-                                lambda x: x == 0 or 2 <= x <= 10_000),
-}
+def lifetime_key(accepted: str, kind: str, check: Callable[[Any], bool] = lambda x: True,
+                 why: Callable[[float], str] = lambda x: "out of range", *, default: Any = MISSING,
+                 factory: Callable[[], Any] | None = None) -> Any:
+    """One key of ``[lifetime]``, declared once: the field of :class:`LifetimeSpec` that holds it.
+
+    ``accepted``, ``kind``, ``check`` and ``why`` are its :class:`LifetimeKey`; ``default`` (or
+    ``factory``, for a table) is its value when the file leaves it out.
+    """
+    spec = LifetimeKey(accepted, kind, check, why)
+    if factory is not None:
+        return field(default_factory=factory, metadata={"key": spec})
+    return field(default=default, metadata={"key": spec})
+
+
+@dataclass(frozen=True, kw_only=True)
+class LifetimeSpec:
+    """``[lifetime]``: the climate and the options of a lifetime simulation, as the file gives them.
+
+    The climate is ``H0_10`` and ``H0_50`` [m], or ``annual_maxima`` [m];
+    ``errors`` holds the factors ``[lifetime.errors]`` names, as ``(ratio,
+    cov)``: the others take :data:`regimemap.lifetime.DEFAULT_ERRORS`.
+    ``thresholds`` None means :data:`regimemap.lifetime.DEFAULT_THRESHOLDS`,
+    ``seed`` None a fresh seed for every run.  The requirements: ``target``
+    (the tolerable ESD [m]), ``allowed`` (lifetime sliding [m] -> the largest
+    allowed probability of exceeding it, Kim & Suh 2013) and
+    ``failure_sliding`` (the sliding at which the caisson is off its mound [m],
+    None: not given).  ``written`` holds the climate's values as the file
+    wrote them (TOML's text of the parsed value), for the reports to echo.
+    Each field but ``written`` is a key, in the order the messages list them.
+    """
+
+    years: int = lifetime_key(
+        f"a design life in whole years, 1 <= years <= {MAX_YEARS} (default 50)", "int",
+        lambda x: 1 <= x <= MAX_YEARS, default=50)
+    trials: int = lifetime_key(
+        f"a number of simulated lifetimes, 1 <= trials <= {MAX_TRIALS} (default 5000)", "int",
+        lambda x: 1 <= x <= MAX_TRIALS, default=5000)
+    seed: int | None = lifetime_key(
+        "a whole number >= 0, the root seed of the random numbers (default: a fresh one, reported)",
+        "int", _at_least(0), default=None)
+    distribution: str = lifetime_key(
+        '"weibull" or "gumbel", the distribution of the storm peaks H0\' (default "weibull")', "text",
+        lambda x: x in ("weibull", "gumbel"), default="weibull")
+    shape: float = lifetime_key(
+        "a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", "number", _positive,
+        default=2.0)
+    H0_10: float | None = lifetime_key(
+        f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
+        "significant heights measured are about 20 m)", "number", _height, _why_height, default=None)
+    H0_50: float | None = lifetime_key(
+        f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", "number", _height,
+        _why_height, default=None)
+    annual_maxima: tuple[float, ...] | None = lifetime_key(
+        f"a list of at least three annual maxima of H0', each 0 < H0' <= "
+        f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", "numbers", _height,
+        _why_height, default=None)
+    storms_per_year: float | None = lifetime_key(
+        f"a mean number of storms a year, 0.1 < storms_per_year <= "
+        f"{MAX_STORMS_PER_YEAR:g} (a Poisson number of storms, peaks over a "
+        "threshold; not with annual_maxima; default: one storm a year, its peak the annual maximum)",
+        "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR, default=None)
+    storm_hours: float = lifetime_key(
+        f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
+        "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS, default=2.0)
+    period: float | None = lifetime_key(
+        f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
+        "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness", "number",
+        lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period, default=None)
+    steepness: float | None = lifetime_key(
+        "a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period", "number",
+        lambda x: 0.0 < x <= 0.142, default=None)
+    tide_range: float = lifetime_key(
+        f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
+        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE, default=0.0)
+    thresholds: tuple[float, ...] | None = lifetime_key(
+        "a list of lifetime slides, each > 0 in metres, whose exceedance probability "
+        "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive, default=None)
+    truncate: float | None = lifetime_key(
+        "a cut-off > 0 of the normal error factors, in standard deviations (default: none)", "number",
+        _positive, default=None)
+    impulsive: bool = lifetime_key(
+        "true or false: Takahashi's impulsive coefficient in each wave's force (default false)",
+        "bool", default=False)
+    target: float = lifetime_key(
+        "the tolerable expected sliding distance, > 0 in metres: the requirement "
+        "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive, default=0.1)
+    allowed: Mapping[float, float] = lifetime_key(
+        'a table of lifetime slides (m) and the largest allowed probability of '
+        'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
+        "default: none)", "limits", factory=dict)
+    failure_sliding: float | None = lifetime_key(
+        "the sliding in metres at which the caisson is off its mound (the "
+        "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
+        "the probability of failure over the life (default: none)", "number", _positive, default=None)
+    errors: Mapping[str, tuple[float, float]] = lifetime_key(
+        "the table [lifetime.errors] of the uncertainty factors (deepwater, "
+        "transformation, force, friction)", "table", factory=dict)
+    record: RecordSpec | None = lifetime_key(
+        "the table [lifetime.record] of a measured wave record (path and the options of "
+        "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table", default=None)
+    climate_replicates: int = lifetime_key(
+        "a number of replicate climates of [lifetime.record]'s fit, 2 to "
+        "10000, each run for the ESD's climate band, on which the requirements are "
+        "judged (default 50), or 0: the fitted climate alone, its uncertainty not counted", "int",
+        lambda x: x == 0 or 2 <= x <= 10_000, default=0)
+    written: Mapping[str, str] = field(default_factory=dict)
+
+    def climate_as_written(self) -> str:
+        """The climate's keys as the file wrote them (``H0_10 = 5.0 m, H0_50 = 6.3 m``)."""
+        if self.record is not None:
+            return f"[lifetime.record] path = {self.record.path}"
+        keys = ("annual_maxima",) if self.annual_maxima is not None else ("H0_10", "H0_50")
+        return ", ".join(f"{key} = {self.written.get(key, '?')} m" for key in keys)
+
+
+def default_of(name: str) -> Any:
+    """The value of ``[lifetime] name`` when the file leaves it out."""
+    f = _FIELDS[name]
+    if f.default is MISSING:
+        return f.default_factory()  # type: ignore[operator]
+    return f.default
+
+
+_FIELDS = {f.name: f for f in fields(LifetimeSpec) if "key" in f.metadata}
+#: The keys of ``[lifetime]``, in the order the messages list them (the fields of :class:`LifetimeSpec`).
+LIFETIME_KEYS: dict[str, LifetimeKey] = {name: f.metadata["key"] for name, f in _FIELDS.items()}
 
 _PAIR = "a pair [ratio, cov] with ratio > 0 and cov >= 0, the factor ratio (1 + cov z) "
 _DEFAULT = "; absent: its default in regimemap.lifetime.DEFAULT_ERRORS"
