@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING, Any
 
 import click
 
+from ..io.formats import FIGURES
 from ._check import check_option, exit_on_failure
 from ._common import import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE, read_design_file
@@ -28,7 +29,7 @@ __all__ = ["caisson_cmd"]
               help="Print the commented example design file (Goda's worked caisson) and exit.")
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
-              help="Also write a one-page design sheet (.pdf, .svg or .png), atomically.")
+              help=f"Also write a one-page design sheet ({FIGURES}), atomically.")
 @click.option("--strict", is_flag=True, help=STRICT_RECORD_HELP)
 @check_option
 def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool,

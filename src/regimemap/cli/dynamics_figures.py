@@ -28,7 +28,7 @@ __all__ = ["dynamics_figures_cmd"]
 @click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
               help="Existing, writable folder for the files.")
 @click.option("--format", "formats", default="png", show_default=True, metavar="FORMATS",
-              help="Comma-separated formats: png, svg, pdf.")
+              help=f"Comma-separated formats: {', '.join(FIGURE_FORMATS)}.")
 @click.option("--cache", "cache", default=None, metavar="DIR",
               help="Keep the computed maps in DIR (created if missing) and reuse them while the "
                    "figures' definitions and regimemap.dynamics are unchanged.")

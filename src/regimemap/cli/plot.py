@@ -235,7 +235,7 @@ def _preset_or_usage_error(fid: str) -> Any:
 @click.command("figure", help=_FIGURE_HELP, short_help="Draw one figure of the report.")
 @click.argument("figure_id", metavar="FIGURE_ID")
 @click.option("-o", "--output", metavar="FILE",
-              help="Output file (.png, .svg, .pdf); default fig-<ID>.<format>.")
+              help=f"Output file ({', '.join('.' + f for f in FIGURE_FORMATS)}); default fig-<ID>.<format>.")
 @click.option("--format", "fmt", type=Format(), default=None,
               help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
 @click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
@@ -281,7 +281,7 @@ W.4: the uplift ratio swept); --set all draws both.
 @click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
               help="Folder for the files (created if its parent folder exists).")
 @click.option("--format", "formats", type=FormatList(), default="png", show_default=True,
-              help="Comma-separated formats: png, svg, pdf.")
+              help=f"Comma-separated formats: {', '.join(FIGURE_FORMATS)}.")
 @click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
               help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
 @click.option("--list", "list_only", is_flag=True,

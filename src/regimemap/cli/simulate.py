@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import FIGURE_FORMATS
+from ..io.formats import FIGURE_FORMATS, FIGURES
 from ._check import CHECK_HELP, exit_on_failure
 from ._common import check_kprime_crest, echo_notices, import_matplotlib
 from ._dynamics_options import (
@@ -54,7 +54,7 @@ __all__ = ["simulate_cmd"]
 @click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
               help="Write the time history: .csv or .npz (atomically).")
 @click.option("--plot", "plot", type=click.Path(dir_okay=False), metavar="FILE",
-              help="Draw k(t), the slide and theta(t) with the phases shaded: .png, .svg or .pdf.")
+              help=f"Draw k(t), the slide and theta(t) with the phases shaded: {FIGURES}.")
 @click.option("--animate", "animate", type=click.Path(dir_okay=False), metavar="FILE.gif",
               help="Draw the block moving, to scale, as a GIF.")
 def simulate_cmd(gamma: float | None, half_width: float | None, kprime: float | None, mu: float | None,

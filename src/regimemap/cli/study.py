@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import record_formats, suffix_of
+from ..io.formats import FIGURES, record_formats, suffix_of
 from ._common import ParamType, RunError, echo_notices, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._writing import checked_format, write_files
@@ -186,8 +186,8 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows; with --check, the "
               "requirements) instead of text.")
 @click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-              help="Output file (repeatable), written atomically: .csv or .nc the table, .png, .svg or "
-                   ".pdf the figure (--figure).")
+              help=f"Output file (repeatable), written atomically: .csv or .nc the table, {FIGURES} the "
+                   "figure (--figure).")
 @click.option("--figure", type=click.Choice(FIGURE_KINDS), default="chainage", show_default=True,
               help="The figure: ESD along the chainage, expected sliding by service year (of --section), "
                    "or the required width along the chainage.")
