@@ -100,9 +100,11 @@ def print_figure(fig: Figure, target: str | os.PathLike[str] | IO[bytes], fmt: s
         Resolution of PNG output (default: the figure's, :data:`DEFAULT_DPI`).
     """
     extra = dict(BY_SUFFIX[fmt].options)
+    meta = metadata(fmt)
+    if meta:  # a format without metadata (webp, jpeg ...) refuses even an empty dict
+        extra["metadata"] = meta
     with style_context(), _quiet_font_subsetting():
-        fig.savefig(target, format=fmt, dpi=dpi if dpi is not None else fig.dpi,
-                    metadata=metadata(fmt), **extra)
+        fig.savefig(target, format=fmt, dpi=dpi if dpi is not None else fig.dpi, **extra)
 
 
 def save_figure(fig: Figure, path: str | os.PathLike[str], fmt: str | None = None,
