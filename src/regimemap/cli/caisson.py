@@ -61,7 +61,7 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     "verdict").  With --check the exit status is 1 when any requirement
     fails (after the report and the sheet are written); usage errors exit 2.
 
-    With -o SHEET.pdf (or .svg, .png) it also writes a one-page design sheet:
+    With -o SHEET.pdf (or any figure format) it also writes a one-page design sheet:
     the cross-section, the pressure diagram, the loaded map with the design
     point and its path as the wave grows, and the numbers -- and, when the file
     has a [lifetime] table, the sliding over the design life (with a record,
