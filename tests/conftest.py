@@ -81,7 +81,7 @@ def invoke_cli(args: list[str], env: dict[str, str | None] | None = None) -> Cli
     from click.testing import CliRunner
 
     from regimemap.cli import cli
-    from regimemap.cli._common import run_main
+    from regimemap.cli._main import run_main
 
     runner = CliRunner()
     full_env = {"REGIMEMAP_DEBUG": None, "COLUMNS": "100"}

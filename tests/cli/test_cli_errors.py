@@ -8,7 +8,7 @@
 * random arguments (hypothesis) to every registered command give exit 0, 1 or
   2 and never a traceback.
 
-The commands are run in-process through :func:`regimemap.cli._common.run_main`
+The commands are run in-process through :func:`regimemap.cli._main.run_main`
 (what the ``regimemap`` console script does), see ``tests/conftest.py``.
 """
 

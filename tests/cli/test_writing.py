@@ -7,7 +7,7 @@ from pathlib import Path
 import click
 import pytest
 
-from regimemap.cli._common import RunError
+from regimemap.cli._main import RunError
 from regimemap.cli._writing import distinct_files, file_suffix, write_files
 
 

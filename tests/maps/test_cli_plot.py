@@ -303,7 +303,7 @@ def test_main_entry_point_exit_codes(tmp_path):
 def test_gc_paused_until_matplotlib_is_imported_then_restored():
     import gc
 
-    from regimemap.cli._common import gc_paused_at_start, import_matplotlib
+    from regimemap.cli._main import gc_paused_at_start, import_matplotlib
 
     assert gc.isenabled()
     frozen_before = gc.get_freeze_count()
@@ -320,7 +320,7 @@ def test_gc_paused_until_matplotlib_is_imported_then_restored():
 def test_gc_does_not_thaw_what_the_caller_froze():
     import gc
 
-    from regimemap.cli._common import gc_paused_at_start, import_matplotlib
+    from regimemap.cli._main import gc_paused_at_start, import_matplotlib
 
     caller_owned = [[]]  # a tracked object the caller froze: it must stay out of the collected generations
     gc.freeze()
@@ -339,7 +339,7 @@ def test_gc_does_not_thaw_what_the_caller_froze():
 def test_gc_left_disabled_when_the_caller_disabled_it():
     import gc
 
-    from regimemap.cli._common import gc_paused_at_start, import_matplotlib
+    from regimemap.cli._main import gc_paused_at_start, import_matplotlib
 
     gc.disable()
     try:

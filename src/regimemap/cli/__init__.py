@@ -15,8 +15,9 @@ from typing import NoReturn
 import click
 
 from .. import __version__
-from ._common import CONTEXT_SETTINGS, gc_paused_at_start, run_main
+from ._common import CONTEXT_SETTINGS
 from ._logging import verbose_option
+from ._main import gc_paused_at_start, run_main
 
 __all__ = ["cli", "main", "console_main"]
 
@@ -94,7 +95,7 @@ def main(argv: list[str] | None = None, *, exiting: bool = False) -> NoReturn:
     Ctrl-C or SIGTERM a second one is ignored rather than interrupting the exit.
 
     The cyclic garbage collector is paused while the process starts (see
-    ``regimemap.cli._common.import_matplotlib``) and restored before exiting,
+    ``regimemap.cli._main.import_matplotlib``) and restored before exiting,
     so ``main`` can be called from Python (it raises ``SystemExit``).
     """
     with gc_paused_at_start():

@@ -2,7 +2,7 @@
 
 ``--check`` makes the verdict of the requirements the exit status (1 when any fails); a
 record's notices (:class:`~regimemap.mechanics.notices.Notice`) are printed on standard error
-by :func:`regimemap.cli._common.echo_notices`, or, those ``--strict`` refuses, are a usage
+by :func:`regimemap.cli._writing.echo_notices`, or, those ``--strict`` refuses, are a usage
 error (exit 2) naming the first.
 """
 

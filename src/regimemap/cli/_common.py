@@ -1,17 +1,13 @@
-"""Options, validation and error handling shared by the commands.
+"""The options shared by the commands: their types, checks and the loads of a block.
 
-One module of some length: every command imports its options and its error handling from
-this one place, so that they read and fail alike."""
+Every command takes gamma, k' and the loads (buoyancy, uplift, inertia) from here, so that
+they read and fail alike.  What a command writes and prints is :mod:`._writing`'s; how the
+process starts and ends (every error one line, Ctrl-C) :mod:`._main`'s."""
 
 from __future__ import annotations
 
-import contextlib
 import functools
-import gc
-import os
-import sys
-from collections.abc import Callable, Iterable, Iterator
-from pathlib import Path
+from collections.abc import Callable
 from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import click
@@ -27,13 +23,10 @@ from ..mechanics.validation import (
     check_positive,
     check_resolution,
 )
-from ..process import INTERRUPTED, TERMINATED, exit_now, flush_on_exit
-from ._signals import EXIT_DEADLINE, Terminated, stop_signals
 
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
 
-    from ..mechanics.notices import Notice
 
     #: Base of the option types.  Recent click makes ParamType generic in the
     #: converted value; click 8.1 cannot subscript it at run time.
@@ -43,35 +36,21 @@ else:
 
 __all__ = [
     "CONTEXT_SETTINGS",
+    "LOAD_OPTIONS",
+    "ParamType",
+    "check_kprime_crest",
+    "check_load_value",
     "gamma_option",
     "kprime_option",
-    "LOAD_OPTIONS",
     "load_options",
     "load_range",
-    "check_load_value",
-    "check_kprime_crest",
     "positive_float",
     "resolution_type",
-    "output_path",
-    "output_dir",
-    "echo_notices",
-    "run_main",
-    "RunError",
-    "Terminated",
-    "stop_signals",
-    "gc_paused_at_start",
-    "import_matplotlib",
-    "ParamType",
-    "report_written",
 ]
 
 CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
 
-class RunError(click.ClickException):
-    """A failure while running (exit code 1), printed as one line."""
-
-    exit_code = 1
 
 
 class _Checked(ParamType):
@@ -282,221 +261,3 @@ def load_options(f: Callable[..., Any] | None = None, *, sweep: int | None = Non
         out = click.option(option, name, type=kind, default=None, metavar=metavar,
                            help=text)(out)
     return out
-
-
-def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
-    """Check that the folder of ``path`` exists and is writable; raise a usage error if not."""
-    from ..io.atomic import check_output_path
-
-    try:
-        return check_output_path(path, param)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'") from None
-
-
-def report_written(path: str | os.PathLike[str], note: str | None = None) -> None:
-    """Report a written file the one way every command does: its path on standard output.
-
-    A ``note`` about it (frames, points ...) goes to standard error, so that
-    ``$(regimemap ...)`` captures the path alone.
-    """
-    click.echo(os.fspath(path))
-    if note:
-        click.echo(f"regimemap: {note}", err=True)
-
-
-def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None, *,
-                 source: str | None = None) -> None:
-    """Notices on standard error, one line each: ``regimemap: warning: MESSAGE`` -- the one
-    printer of every command's warnings.
-
-    ``prefix`` gives another start of the line to the notices of some codes
-    (``{"crammed": "regimemap: note: "}``); ``source`` (a design file's name) goes before
-    each message: ``regimemap: warning: SOURCE: MESSAGE``.
-    """
-    where = f"{source}: " if source else ""
-    for n in notices:
-        click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{where}{n.message}", err=True)
-
-
-def _one_line(text: str) -> str:
-    """``text`` on one line (newlines and runs of blanks become one space)."""
-    return " ".join(str(text).split())
-
-
-def _say(message: str) -> None:
-    try:
-        click.echo(_one_line(message), err=True)
-    except (OSError, ValueError):  # pragma: no cover - stderr closed
-        pass
-
-
-def _error_message(exc: BaseException) -> str:
-    if isinstance(exc, OSError) and exc.strerror:
-        where = exc.filename if exc.filename is not None else None
-        return f"{exc.strerror}: {str(where)!r}" if where is not None else exc.strerror
-    return str(exc) or type(exc).__name__
-
-
-def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False) -> Path:
-    """Check that ``path`` is an existing folder where files can be created; usage error if not.
-
-    With ``create``, a missing folder whose parent exists (and accepts new
-    files) is created first; a missing parent is still a usage error.
-
-    Like :func:`output_path` for a folder: the check creates and removes an
-    empty hidden file, since permission bits do not tell (root, read-only or
-    virtual file systems such as /proc).
-    """
-    from ..io.atomic import folder_problem
-
-    p = Path(path)
-    if not str(path).strip():
-        raise click.BadParameter(f"must be a folder, got {str(path)!r}", param_hint=f"'{param}'")
-    if p.exists() and not p.is_dir():
-        raise click.BadParameter(f"{str(path)!r} is a file, not a folder", param_hint=f"'{param}'")
-    if not p.is_dir() and create:
-        parent = p.parent if str(p.parent) else Path(".")
-        if parent.is_dir() and not folder_problem(parent):
-            try:
-                p.mkdir()
-            except FileExistsError:
-                pass
-            except OSError as exc:
-                raise click.BadParameter(f"cannot create folder {str(path)!r}: {exc.strerror}",
-                                         param_hint=f"'{param}'") from None
-    if not p.is_dir():
-        hint = " (its parent folder must exist)" if create else ""
-        raise click.BadParameter(f"folder {str(path)!r} does not exist{hint}",
-                                 param_hint=f"'{param}'")
-    problem = folder_problem(p)
-    if problem:
-        raise click.BadParameter(f"folder {str(path)!r} {problem}", param_hint=f"'{param}'")
-    return p
-
-
-# -- start-up: the cyclic garbage collector -------------------------------------------------
-#
-# ``regimemap plot`` is a short process that spends most of its time importing
-# matplotlib, which allocates ~120 000 long-lived objects.  With the collector
-# running, CPython scans them again and again while they are being created
-# (~35-40 ms of a 0.6 s run, measured with gc.callbacks).  ``cli.main``
-# therefore pauses the collector at start; a drawing command calls
-# :func:`import_matplotlib`, which imports matplotlib, freezes what the imports
-# allocated (``gc.freeze``: later collections skip it) and resumes collecting,
-# so commands that draw many figures (figures, atlas, animate) still free their
-# garbage.  Library users and click's test runner are not affected.
-
-_gc_state = {"paused": False, "frozen": False, "may_freeze": False}
-
-
-@contextlib.contextmanager
-def gc_paused_at_start() -> Iterator[None]:
-    """Pause the cyclic GC until :func:`import_matplotlib` (or the end); restore it after."""
-    was_enabled = gc.isenabled()
-    gc.disable()
-    _gc_state["paused"] = was_enabled  # a caller that disabled it keeps it disabled
-    # gc.unfreeze() cannot tell whose objects it thaws: freeze only if nobody else has
-    _gc_state["may_freeze"] = gc.get_freeze_count() == 0
-    try:
-        yield
-    finally:
-        if _gc_state["frozen"]:
-            gc.unfreeze()
-        _gc_state["paused"] = _gc_state["frozen"] = False
-        if was_enabled:
-            gc.enable()
-
-
-def import_matplotlib() -> None:
-    """Import matplotlib and its Agg canvas for a drawing command; then resume the GC.
-
-    The renderer imports matplotlib lazily; a drawing command calls this first
-    so that the import happens while the collector is paused (see above).
-    """
-    from ..drawing import load_matplotlib
-
-    load_matplotlib()
-
-    if _gc_state["paused"]:
-        _gc_state["paused"] = False
-        if _gc_state["may_freeze"]:
-            gc.freeze()
-            _gc_state["frozen"] = True
-        gc.enable()
-
-
-def _guess_path(group: click.Command, argv: list[str] | None) -> str:
-    """``regimemap CMD`` from the arguments, for usage errors click reports without a context."""
-    args = sys.argv[1:] if argv is None else argv
-    commands = getattr(group, "commands", {})
-    for a in args:
-        if a in commands:
-            return f"regimemap {a}"
-        if not a.startswith("-"):
-            break
-    return "regimemap"
-
-
-def _stopped(how: tuple[str, int], exiting: bool) -> int:
-    """The end of an interrupted command: its one line and exit code.  ``exiting`` (the
-    ``regimemap`` process): the process ends here, without the interpreter's teardown
-    (:func:`regimemap.process.exit_now`; every cleanup of the command has run)."""
-    line, code = how
-    if exiting:
-        exit_now(code, _one_line(line))
-    _say(line)
-    return code
-
-
-def run_main(group: click.Command, argv: list[str] | None = None, *, exiting: bool = False) -> int:
-    """Run ``group`` and return an exit code; no traceback ever reaches the user.
-
-    Every error is one line on stderr:
-
-    * usage errors (bad option or value, unknown command) exit 2:
-      ``regimemap plot: error: Invalid value for '--gamma': ... (see 'regimemap plot --help')``;
-    * failures while running (:class:`RunError`, ``ValueError``, ``OSError``)
-      exit 1: ``regimemap: error: ...``;
-    * an unexpected exception (a bug) exits 1 with ``regimemap: internal error: ...``
-      (set ``REGIMEMAP_DEBUG=1`` to see the traceback);
-    * an interrupt (Ctrl-C, SIGINT) exits 130 with ``regimemap: interrupted``,
-      SIGTERM 143 with ``regimemap: terminated`` (128 + the signal's number, as
-      a shell reports a process the signal ended); worker processes are
-      stopped and no file is left half-written (:func:`._signals.stop_signals`; with
-      ``exiting``, the process ends here, at the latest 1.5 s after the signal, and a
-      second signal is ignored).
-    """
-    if exiting:
-        flush_on_exit(sys.stdout, sys.stderr)
-    try:
-        with stop_signals(exiting=exiting, deadline=EXIT_DEADLINE if exiting else None):
-            # without standalone mode click returns the code of a click.exceptions.Exit (--check's 1)
-            code = group.main(args=argv, prog_name="regimemap", standalone_mode=False)
-    except Terminated:
-        return _stopped(TERMINATED, exiting)
-    except click.exceptions.Abort:
-        return _stopped(INTERRUPTED, exiting)
-    except click.UsageError as exc:
-        path = exc.ctx.command_path if exc.ctx is not None else _guess_path(group, argv)
-        _say(f"{path}: error: {exc.format_message()} (see '{path} --help')")
-        return exc.exit_code
-    except click.ClickException as exc:
-        _say(f"regimemap: error: {exc.format_message()}")
-        return exc.exit_code
-    except click.exceptions.Exit as exc:
-        return exc.exit_code
-    except KeyboardInterrupt:
-        return _stopped(INTERRUPTED, exiting)
-    except BrokenPipeError:
-        return 1
-    except (ValueError, OSError) as exc:
-        _say(f"regimemap: error: {_error_message(exc)}")
-        return 1
-    except Exception as exc:  # a bug; still one line, no traceback
-        if os.environ.get("REGIMEMAP_DEBUG"):
-            raise
-        _say(f"regimemap: internal error: {type(exc).__name__}: {exc}"
-             " (please report it; REGIMEMAP_DEBUG=1 shows the traceback)")
-        return 1
-    return code if isinstance(code, int) and not isinstance(code, bool) else 0

@@ -2,7 +2,7 @@
 
 The checks are :func:`regimemap.caisson.file_plausibility.implausible_notices`; here they
 become one warning line each on standard error, with the file's name
-(:func:`~regimemap.cli._common.echo_notices`), or, with ``--strict``, a usage
+(:func:`~regimemap.cli._writing.echo_notices`), or, with ``--strict``, a usage
 error (exit 2) naming the first.  :func:`caisson_record` is
 :func:`regimemap.caisson.run.run_caisson` with its warnings and failures
 turned into the command line's lines and exit statuses.
@@ -15,7 +15,8 @@ from typing import TYPE_CHECKING
 
 import click
 
-from ._common import RunError, echo_notices
+from ._main import RunError
+from ._writing import echo_notices
 
 if TYPE_CHECKING:  # pragma: no cover
     from regimemap.caisson.file import Design

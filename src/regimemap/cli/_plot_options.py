@@ -18,7 +18,8 @@ import click
 
 from ..drawing.save import DPI_RANGE
 from ..io.formats import FIGURE_FORMATS, kind_of, suffix_error, suffix_of
-from ._common import ParamType, output_path
+from ._common import ParamType
+from ._writing import output_path
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..maps.file_points import DesignPoint

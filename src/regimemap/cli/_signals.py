@@ -1,7 +1,7 @@
 """Ctrl-C and SIGTERM while a command runs: one exception each, raised once, in the main thread.
 
 :func:`stop_signals` turns SIGINT into KeyboardInterrupt and SIGTERM into
-:class:`Terminated` for the duration of a command (:func:`regimemap.cli._common.run_main`),
+:class:`Terminated` for the duration of a command (:func:`regimemap.cli._main.run_main`),
 so the cleanups of an interrupted run -- a process pool stopped, a temporary file removed --
 run for both, and a second signal cannot break them half-way.  Before the command runs (the
 imports of the process's start) and after it, :mod:`regimemap.process` ends the ``regimemap``

@@ -1,24 +1,28 @@
-"""How the commands write their files: one error for a file that cannot be written, the ``-o``
-files checked to be distinct and of a suffix their record is written in (the one registry,
-:mod:`regimemap.io.formats`), and each file written once with the figure drawn once."""
+"""How the commands write their files and what they print: one error for a file that cannot be
+written, the ``-o`` files checked to be distinct, in a writable folder and of a suffix their record
+is written in (the one registry, :mod:`regimemap.io.formats`), each file written once with the
+figure drawn once, the path of each file written, and the one printer of the notices."""
 
 from __future__ import annotations
 
 import contextlib
 import os
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
 from ..io.formats import SuffixError, format_for, suffix_of
-from ._common import RunError, import_matplotlib
+from ._main import RunError, import_matplotlib
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["checked_format", "distinct_files", "file_suffix", "write_files", "writing"]
+    from ..mechanics.notices import Notice
+
+__all__ = ["checked_format", "distinct_files", "echo_notices", "file_suffix", "output_dir", "output_path",
+           "report_written", "write_files", "writing"]
 
 
 @contextlib.contextmanager
@@ -39,7 +43,7 @@ def writing(path: str | os.PathLike[str] | None, what: str | None = None) -> Ite
     ...     open("/no/such/folder/x.csv", "w")
     Traceback (most recent call last):
     ...
-    regimemap.cli._common.RunError: cannot write /no/such/folder/x.csv: No such file or directory
+    regimemap.cli._main.RunError: cannot write /no/such/folder/x.csv: No such file or directory
     """
     try:
         yield
@@ -97,3 +101,75 @@ def write_files(paths: Sequence[str], draw: Callable[[], Figure], *,
                 save_figure(fig, path)
         written.append(path)
     return written
+
+
+def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
+    """Check that the folder of ``path`` exists and is writable; raise a usage error if not."""
+    from ..io.atomic import check_output_path
+
+    try:
+        return check_output_path(path, param)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'") from None
+
+
+def report_written(path: str | os.PathLike[str], note: str | None = None) -> None:
+    """Report a written file the one way every command does: its path on standard output.
+
+    A ``note`` about it (frames, points ...) goes to standard error, so that
+    ``$(regimemap ...)`` captures the path alone.
+    """
+    click.echo(os.fspath(path))
+    if note:
+        click.echo(f"regimemap: {note}", err=True)
+
+
+def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None, *,
+                 source: str | None = None) -> None:
+    """Notices on standard error, one line each: ``regimemap: warning: MESSAGE`` -- the one
+    printer of every command's warnings.
+
+    ``prefix`` gives another start of the line to the notices of some codes
+    (``{"crammed": "regimemap: note: "}``); ``source`` (a design file's name) goes before
+    each message: ``regimemap: warning: SOURCE: MESSAGE``.
+    """
+    where = f"{source}: " if source else ""
+    for n in notices:
+        click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{where}{n.message}", err=True)
+
+
+def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False) -> Path:
+    """Check that ``path`` is an existing folder where files can be created; usage error if not.
+
+    With ``create``, a missing folder whose parent exists (and accepts new
+    files) is created first; a missing parent is still a usage error.
+
+    Like :func:`output_path` for a folder: the check creates and removes an
+    empty hidden file, since permission bits do not tell (root, read-only or
+    virtual file systems such as /proc).
+    """
+    from ..io.atomic import folder_problem
+
+    p = Path(path)
+    if not str(path).strip():
+        raise click.BadParameter(f"must be a folder, got {str(path)!r}", param_hint=f"'{param}'")
+    if p.exists() and not p.is_dir():
+        raise click.BadParameter(f"{str(path)!r} is a file, not a folder", param_hint=f"'{param}'")
+    if not p.is_dir() and create:
+        parent = p.parent if str(p.parent) else Path(".")
+        if parent.is_dir() and not folder_problem(parent):
+            try:
+                p.mkdir()
+            except FileExistsError:
+                pass
+            except OSError as exc:
+                raise click.BadParameter(f"cannot create folder {str(path)!r}: {exc.strerror}",
+                                         param_hint=f"'{param}'") from None
+    if not p.is_dir():
+        hint = " (its parent folder must exist)" if create else ""
+        raise click.BadParameter(f"folder {str(path)!r} does not exist{hint}",
+                                 param_hint=f"'{param}'")
+    problem = folder_problem(p)
+    if problem:
+        raise click.BadParameter(f"folder {str(path)!r} {problem}", param_hint=f"'{param}'")
+    return p

@@ -17,19 +17,9 @@ from ..drawing.limits import (
     MAX_PANELS,
 )
 from ..io.formats import FIGURES
-from ._common import (
-    LOAD_OPTIONS,
-    ParamType,
-    check_kprime_crest,
-    echo_notices,
-    gamma_option,
-    import_matplotlib,
-    load_options,
-    output_path,
-    positive_float,
-    report_written,
-)
-from ._writing import checked_format, writing
+from ._common import LOAD_OPTIONS, ParamType, check_kprime_crest, gamma_option, load_options, positive_float
+from ._main import import_matplotlib
+from ._writing import checked_format, echo_notices, output_path, report_written, writing
 
 __all__ = ["atlas_cmd", "animate_cmd"]
 

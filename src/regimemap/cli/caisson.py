@@ -9,10 +9,10 @@ import click
 
 from ..io.formats import FIGURES
 from ._check import check_option, exit_on_failure
-from ._common import import_matplotlib, output_path, report_written
 from ._inputs import DESIGN_FILE, read_design_file
+from ._main import import_matplotlib
 from ._plausible import STRICT_RECORD_HELP, caisson_record
-from ._writing import checked_format, writing
+from ._writing import checked_format, output_path, report_written, writing
 
 if TYPE_CHECKING:
     from ..caisson.run import CaissonRecord

@@ -15,9 +15,9 @@ import click
 
 from ..io.formats import FIGURES
 from ._check import refuse_notices
-from ._common import ParamType, echo_notices, output_path, report_written
+from ._common import ParamType
 from ._inputs import RECORD_FILE
-from ._writing import checked_format, distinct_files, write_files
+from ._writing import checked_format, distinct_files, echo_notices, output_path, report_written, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -15,8 +15,8 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURE_FORMATS
-from ._common import import_matplotlib, output_dir, report_written
-from ._writing import writing
+from ._main import import_matplotlib
+from ._writing import output_dir, report_written, writing
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure

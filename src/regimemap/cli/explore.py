@@ -16,18 +16,10 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import FIGURES
-from ._common import (
-    RunError,
-    gamma_option,
-    import_matplotlib,
-    kprime_option,
-    load_options,
-    output_path,
-    report_written,
-    resolution_type,
-)
+from ._common import gamma_option, kprime_option, load_options, resolution_type
 from ._inputs import DESIGN_FILE, read_design_file
-from ._writing import writing
+from ._main import RunError, import_matplotlib
+from ._writing import output_path, report_written, writing
 from .plot import DEFAULT_SAMPLES, plot_stem
 
 if TYPE_CHECKING:  # pragma: no cover

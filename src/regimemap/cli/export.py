@@ -7,16 +7,8 @@ from typing import Any
 import click
 
 from ..io.formats import record_formats
-from ._common import (
-    gamma_option,
-    kprime_option,
-    load_options,
-    output_path,
-    positive_float,
-    report_written,
-    resolution_type,
-)
-from ._writing import writing
+from ._common import gamma_option, kprime_option, load_options, positive_float, resolution_type
+from ._writing import output_path, report_written, writing
 
 __all__ = ["export_cmd"]
 

@@ -17,11 +17,11 @@ import click
 
 from ..io.formats import FIGURES, record_formats
 from ._check import check_option, exit_on_failure, refuse_notices
-from ._common import RunError, echo_notices, output_path, report_written
 from ._inputs import DESIGN_FILE
 from ._lifetime_options import chart_options, lifetime_options, report_options, run_options
+from ._main import RunError
 from ._plausible import STRICT_RECORD_HELP
-from ._writing import checked_format, distinct_files, write_files
+from ._writing import checked_format, distinct_files, echo_notices, output_path, report_written, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure

@@ -13,19 +13,9 @@ import click
 
 from ..drawing.save import DEFAULT_DPI, DPI_RANGE
 from ..io.formats import FIGURE_FORMATS, FIGURES
-from ._common import (
-    RunError,
-    echo_notices,
-    gamma_option,
-    import_matplotlib,
-    kprime_option,
-    load_options,
-    output_dir,
-    positive_float,
-    report_written,
-    resolution_type,
-)
+from ._common import gamma_option, kprime_option, load_options, positive_float, resolution_type
 from ._inputs import POINTS_FILE
+from ._main import RunError, import_matplotlib
 from ._plot_options import (
     FORMATS,
     Dpi,
@@ -38,7 +28,7 @@ from ._plot_options import (
     resolve_output,
 )
 from ._plot_options import number_text as _num
-from ._writing import writing
+from ._writing import echo_notices, output_dir, report_written, writing
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..maps.run import MapRecord

@@ -9,17 +9,10 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import suffix_of
-from ._common import (
-    ParamType,
-    RunError,
-    gamma_option,
-    kprime_option,
-    load_options,
-    output_path,
-    report_written,
-)
+from ._common import ParamType, gamma_option, kprime_option, load_options
 from ._inputs import POINTS_FILE
-from ._writing import writing
+from ._main import RunError
+from ._writing import output_path, report_written, writing
 
 if TYPE_CHECKING:
     from ..maps.points import DesignPoint

@@ -15,7 +15,7 @@ import click
 
 from ..io.formats import FIGURE_FORMATS, FIGURES
 from ._check import CHECK_HELP, exit_on_failure
-from ._common import check_kprime_crest, echo_notices, import_matplotlib
+from ._common import check_kprime_crest
 from ._dynamics_options import (
     block_options,
     check_output_file,
@@ -23,8 +23,9 @@ from ._dynamics_options import (
     option_errors,
 )
 from ._inputs import DESIGN_FILE, PULSE_FILE
+from ._main import import_matplotlib
 from ._plausible import STRICT_HELP
-from ._writing import writing
+from ._writing import echo_notices, writing
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..motion.run import SimulationRecord

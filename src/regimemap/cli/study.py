@@ -18,9 +18,10 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURES, record_formats, suffix_of
-from ._common import ParamType, RunError, echo_notices, output_path, report_written
+from ._common import ParamType
 from ._inputs import DESIGN_FILE
-from ._writing import checked_format, write_files
+from ._main import RunError
+from ._writing import checked_format, echo_notices, output_path, report_written, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
