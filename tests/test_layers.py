@@ -36,6 +36,10 @@ COMPUTE = 2
 TOP = 2.5
 #: The lazy loader of every package's ``__init__`` (standard library only) sits below every layer.
 LAZY = "regimemap._lazy"
+#: The process's own modules (standard library only): its exit on Ctrl-C and SIGTERM, and the one
+#: place where worker processes start.  Every layer may use them; they import none of regimemap's
+#: layers.
+RUNTIME = ("regimemap.process", "regimemap.workers")
 
 
 def _modules() -> dict[str, Path]:
@@ -100,6 +104,8 @@ def _layer(module: str) -> float:
         return LAYER["cli"]
     if module == LAZY:
         return -1
+    if module in RUNTIME:
+        return -0.5
     role = _role(module)
     if role is not None:
         return ROLE.get(role, COMPUTE)
@@ -208,6 +214,10 @@ def test_the_contract_catches_each_rule(tmp_path):
     assert breaches("regimemap.mechanics", "from .._lazy import attach\n", "__init__.py") == []
     assert breaches("regimemap.io.x", "from .. import __version__\nfrom ._helpers import g\n"
                     "if TYPE_CHECKING:\n    from ..drawing.style import S\n") == []
+    # the process's modules serve every layer and import none
+    assert breaches("regimemap.workers", "from .lifetime.model import Caisson\n") == [
+        "regimemap.workers:1 imports regimemap.lifetime.model (a higher layer)"]
+    assert breaches("regimemap.maps.figures.batch", "from ...workers import worker_pool\n") == []
     # every breach of a module is reported, not only the first
     assert len(breaches("regimemap.waves.x", "import click\nimport matplotlib\nfrom ..cli import c\n")) == 3
 
@@ -326,8 +336,6 @@ DRAWING_MAY_IMPORT = {
     "mechanics.checks.all_pass": "whether every given check passed (a comparison, no physics)",
     "mechanics.validation.check_gamma": "input range check, raises ValueError",
     "mechanics.validation.check_resolution": "input range check, raises ValueError",
-    "lifetime.workers.worker_pool": "the one process pool, which runs the figures (no physics)",
-    "lifetime.workers.available_cores": "the pool's default number of workers (no physics)",
     "maps.mapdata.MapData": "a computed map, a record",
     "maps.mapdata.CurveData": "a computed boundary curve, a record",
     "caisson.report.CaissonReport": "a computed caisson analysis, a record",

@@ -138,9 +138,9 @@ def exit_on_signal_at_start() -> None:
 def die_with_spawning_parent() -> None:
     """In a process spawned for a LocalCluster of the ``regimemap`` process (a Dask worker, which
     imports regimemap as it starts): SIGKILL when that parent dies, from this moment on."""
-    parent = os.environ.get("REGIMEMAP_DIE_WITH_PARENT", "")  # regimemap.lifetime.workers.PARENT_VARIABLE
+    parent = os.environ.get("REGIMEMAP_DIE_WITH_PARENT", "")  # regimemap.workers.PARENT_VARIABLE
     if parent.isdigit() and int(parent) != os.getpid() and os.getppid() in (int(parent), 1):
-        from .lifetime.workers import die_with_parent
+        from .workers import die_with_parent
 
         die_with_parent(int(parent), signal.SIGKILL)
 

@@ -1,4 +1,4 @@
-"""The one process pool (regimemap.lifetime.workers): results, errors, stop, signals."""
+"""The one process pool (regimemap.workers): results, errors, stop, signals."""
 
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.lifetime.workers import PoolBroken, WorkerPool, worker_pool
+from regimemap.workers import PoolBroken, WorkerPool, worker_pool
 
 pytestmark = [pytest.mark.subprocess,
               pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork, signals")]

@@ -6,7 +6,7 @@ so the cleanups of an interrupted run -- a process pool stopped, a temporary fil
 run for both, and a second signal cannot break them half-way.  Before the command runs (the
 imports of the process's start) and after it, :mod:`regimemap.process` ends the ``regimemap``
 process at once on either signal; the worker processes ignore both
-(:mod:`regimemap.lifetime.workers`): the parent stops them.
+(:mod:`regimemap.workers`): the parent stops them.
 """
 
 from __future__ import annotations

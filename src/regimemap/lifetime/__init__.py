@@ -31,6 +31,7 @@ from typing import TYPE_CHECKING
 from .._lazy import attach
 
 if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at run time
+    from ..workers import available_cores
     from .chart import DesignChart, design_chart, sf_width
     from .climate import DISTRIBUTIONS, Climate
     from .model import (
@@ -47,7 +48,6 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from .results import Failure, LifetimeResult
     from .simulate import lifetime_sliding
     from .sliding import ADDED_MASS_COEFFICIENT, added_mass, half_sine_slide, wave_duration
-    from .workers import available_cores
 
 __all__ = [
     "ADDED_MASS_COEFFICIENT", "DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "DISTRIBUTIONS", "Caisson",
@@ -68,5 +68,5 @@ if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, 
         "results": ["Failure", "LifetimeResult"],
         "simulate": ["lifetime_sliding"],
         "sliding": ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_duration"],
-        "workers": ["available_cores"],
+        ".workers": ["available_cores"],
     })

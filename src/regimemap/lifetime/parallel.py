@@ -4,7 +4,7 @@ Chunks are runs of consecutive blocks (:mod:`regimemap.lifetime.engine`); each
 block has its own stream spawned from the root seed, so the concatenated
 result does not depend on the chunk size, on ``jobs`` or on the cluster.
 Dask (``distributed``) is imported only when a scheduler address is given.  The local
-processes are those of :func:`regimemap.lifetime.workers.worker_pool`, the one place where
+processes are those of :func:`regimemap.workers.worker_pool`, the one place where
 regimemap starts processes (Ctrl-C, SIGTERM and a dead parent end them at once).
 """
 
@@ -22,10 +22,10 @@ from typing import Any, TypeVar
 
 import numpy as np
 
+from ..workers import WorkerPool, worker_pool
 from .engine import BLOCK, BlockResult, YearStats, simulate_blocks
 from .finite import quiet_arithmetic
 from .model import Caisson, LifetimeModel
-from .workers import WorkerPool, worker_pool
 
 __all__ = ["Chunk", "ClusterUnavailable", "make_chunks", "run_chunk", "run_chunks",
            "root_seed", "submit_all", "worker_pool"]

@@ -114,7 +114,7 @@ def _dask(todo: Iterator[tuple[str, StudyTask]], scheduler: str,
     except ImportError:
         raise ClusterUnavailable(
             "--scheduler needs Dask's distributed package: pip install 'regimemap[cluster]'") from None
-    from regimemap.lifetime.workers import local_cluster
+    from regimemap.workers import local_cluster
 
     with contextlib.ExitStack() as stack:
         if scheduler == "local":  # its processes leave Ctrl-C to this one, and die with it

@@ -4,7 +4,7 @@
 figure is drawn and written by one process alone, atomically
 (:func:`regimemap.drawing.save.save_figure`), so the files are byte-identical
 to a one-process run on the same machine.  The workers are those of
-:func:`regimemap.lifetime.workers.worker_pool`, the one place where regimemap
+:func:`regimemap.workers.worker_pool`, the one place where regimemap
 starts processes.  :func:`render_figure` draws one of
 them by its id from its maps; the maps are computed by the function the caller
 hands over (``compute``: the command line's, which calls the workflows
@@ -136,7 +136,7 @@ def write_figures(folder: str | os.PathLike[str], ids: Sequence[str], formats: S
     OSError
         If a file cannot be written (the files finished before it are complete).
     """
-    from ...lifetime.workers import available_cores, worker_pool
+    from ...workers import available_cores, worker_pool
 
     ids = list(ids)
     jobs = available_cores() if jobs is None else max(1, int(jobs))
