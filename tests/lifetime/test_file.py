@@ -375,3 +375,12 @@ def test_each_lifetime_key_is_declared_once_as_a_field():
             assert float(m.group(1)) == default_of(key), key
             said += 1
     assert said >= 6  # years, trials, shape, storm_hours, tide_range, target
+    # the example's [lifetime] is the keys' lines, each naming its key, in the order declared
+    from regimemap.lifetime.file_keys import example_lifetime
+
+    text = example_lifetime()
+    assert text in example_design_text()
+    shown = [key for key, spec in LIFETIME_KEYS.items() if spec.example]
+    assert [re.match(r"(?:# )?([A-Za-z0-9_]+) = ", line).group(1)
+            for line in text.splitlines()[1:] if not line.startswith(" ")] == shown
+    assert set(LIFETIME_KEYS) - set(shown) == {"errors"}  # its own table, [lifetime.errors]

@@ -23,7 +23,8 @@ if TYPE_CHECKING:
 
 __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_HEIGHT", "MAX_STORM_HOURS",
            "MAX_STORMS_PER_YEAR", "MAX_TIDE_RANGE", "MAX_TRIALS", "MAX_YEARS", "PERIOD_RANGE",
-           "LifetimeKey", "LifetimeSpec", "check_lifetime_option", "default_of", "lifetime_key"]
+           "LifetimeKey", "LifetimeSpec", "check_lifetime_option", "default_of", "example_lifetime",
+           "lifetime_key"]
 
 #: Most lifetimes a run may simulate (its arrays take ~24 bytes a lifetime).
 MAX_TRIALS = 10_000_000
@@ -77,6 +78,7 @@ class LifetimeKey:
     #                                    "table"
     check: Callable[[Any], bool] = lambda x: True
     why: Callable[[float], str] = lambda x: "out of range"   # why a value the check refuses is wrong
+    example: str = ""                  # its lines in the commented example (none: not shown)
 
 
 def _at_least(lo: float) -> Callable[[Any], bool]:
@@ -85,13 +87,14 @@ def _at_least(lo: float) -> Callable[[Any], bool]:
 
 def lifetime_key(accepted: str, kind: str, check: Callable[[Any], bool] = lambda x: True,
                  why: Callable[[float], str] = lambda x: "out of range", *, default: Any = MISSING,
-                 factory: Callable[[], Any] | None = None) -> Any:
+                 factory: Callable[[], Any] | None = None, example: str = "") -> Any:
     """One key of ``[lifetime]``, declared once: the field of :class:`LifetimeSpec` that holds it.
 
-    ``accepted``, ``kind``, ``check`` and ``why`` are its :class:`LifetimeKey`; ``default`` (or
-    ``factory``, for a table) is its value when the file leaves it out.
+    ``accepted``, ``kind``, ``check``, ``why`` and ``example`` (its lines in the commented example)
+    are its :class:`LifetimeKey`; ``default`` (or ``factory``, for a table) is its value when the
+    file leaves it out.
     """
-    spec = LifetimeKey(accepted, kind, check, why)
+    spec = LifetimeKey(accepted, kind, check, why, example)
     if factory is not None:
         return field(default_factory=factory, metadata={"key": spec})
     return field(default=default, metadata={"key": spec})
@@ -116,78 +119,114 @@ class LifetimeSpec:
 
     years: int = lifetime_key(
         f"a design life in whole years, 1 <= years <= {MAX_YEARS} (default 50)", "int",
-        lambda x: 1 <= x <= MAX_YEARS, default=50)
+        lambda x: 1 <= x <= MAX_YEARS, default=50,
+        example="years = 50                # design life, years")
     trials: int = lifetime_key(
         f"a number of simulated lifetimes, 1 <= trials <= {MAX_TRIALS} (default 5000)", "int",
-        lambda x: 1 <= x <= MAX_TRIALS, default=5000)
+        lambda x: 1 <= x <= MAX_TRIALS, default=5000,
+        example="trials = 5000             # lifetimes simulated (the ESD's standard error falls as "
+                "1/sqrt(trials))")
     seed: int | None = lifetime_key(
         "a whole number >= 0, the root seed of the random numbers (default: a fresh one, reported)",
-        "int", _at_least(0), default=None)
+        "int", _at_least(0), default=None,
+        example="seed = 2026               # root seed: the same seed, the same numbers (omit: a fresh seed, "
+                "reported)")
     distribution: str = lifetime_key(
         '"weibull" or "gumbel", the distribution of the storm peaks H0\' (default "weibull")', "text",
-        lambda x: x in ("weibull", "gumbel"), default="weibull")
+        lambda x: x in ("weibull", "gumbel"), default="weibull",
+        example="distribution = \"weibull\"  # storm peaks H0': \"weibull\" or \"gumbel\"")
     shape: float = lifetime_key(
         "a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", "number", _positive,
-        default=2.0)
+        default=2.0,
+        example="shape = 2.0               # Weibull shape k (> 0)")
     H0_10: float | None = lifetime_key(
         f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
-        "significant heights measured are about 20 m)", "number", _height, _why_height, default=None)
+        "significant heights measured are about 20 m)", "number", _height, _why_height, default=None,
+        example="H0_10 = 5.0               # 10-year return value of H0', m")
     H0_50: float | None = lifetime_key(
         f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", "number", _height,
-        _why_height, default=None)
+        _why_height, default=None,
+        example="H0_50 = 6.3               # 50-year return value of H0', m (the design wave above)")
     annual_maxima: tuple[float, ...] | None = lifetime_key(
         f"a list of at least three annual maxima of H0', each 0 < H0' <= "
         f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", "numbers", _height,
-        _why_height, default=None)
+        _why_height, default=None,
+        example="# annual_maxima = [4.1, 3.6, 5.2, 4.4, 3.9]  # instead of H0_10 and H0_50: observed annual\n"
+                "                          # maxima of H0', m (at least three; Weibull needs shape > 1)")
     storms_per_year: float | None = lifetime_key(
         f"a mean number of storms a year, 0.1 < storms_per_year <= "
         f"{MAX_STORMS_PER_YEAR:g} (a Poisson number of storms, peaks over a "
         "threshold; not with annual_maxima; default: one storm a year, its peak the annual maximum)",
-        "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR, default=None)
-    storm_hours: float = lifetime_key(
-        f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
-        "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS, default=2.0)
-    period: float | None = lifetime_key(
-        f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
-        "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness", "number",
-        lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period, default=None)
-    steepness: float | None = lifetime_key(
-        "a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period", "number",
-        lambda x: 0.0 < x <= 0.142, default=None)
-    tide_range: float = lifetime_key(
-        f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
-        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE, default=0.0)
-    thresholds: tuple[float, ...] | None = lifetime_key(
-        "a list of lifetime slides, each > 0 in metres, whose exceedance probability "
-        "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive, default=None)
-    truncate: float | None = lifetime_key(
-        "a cut-off > 0 of the normal error factors, in standard deviations (default: none)", "number",
-        _positive, default=None)
-    impulsive: bool = lifetime_key(
-        "true or false: Takahashi's impulsive coefficient in each wave's force (default false)",
-        "bool", default=False)
-    target: float = lifetime_key(
-        "the tolerable expected sliding distance, > 0 in metres: the requirement "
-        "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive, default=0.1)
-    allowed: Mapping[float, float] = lifetime_key(
-        'a table of lifetime slides (m) and the largest allowed probability of '
-        'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
-        "default: none)", "limits", factory=dict)
-    failure_sliding: float | None = lifetime_key(
-        "the sliding in metres at which the caisson is off its mound (the "
-        "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
-        "the probability of failure over the life (default: none)", "number", _positive, default=None)
-    errors: Mapping[str, tuple[float, float]] = lifetime_key(
-        "the table [lifetime.errors] of the uncertainty factors (deepwater, "
-        "transformation, force, friction)", "table", factory=dict)
+        "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR, default=None,
+        example="# storms_per_year = 4     # a Poisson number of storms a year (peaks over a threshold;\n"
+                "                          # not with annual_maxima); default: one storm a year, the annual "
+                "maximum")
     record: RecordSpec | None = lifetime_key(
         "the table [lifetime.record] of a measured wave record (path and the options of "
-        "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table", default=None)
+        "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table", default=None,
+        example='# record = { path = "buoy.txt", threshold = "99.5%" }  # instead of the climate above: a\n'
+                "                          # measured offshore record and the options of `regimemap climate`")
     climate_replicates: int = lifetime_key(
         "a number of replicate climates of [lifetime.record]'s fit, 2 to "
         "10000, each run for the ESD's climate band, on which the requirements are "
         "judged (default 50), or 0: the fitted climate alone, its uncertainty not counted", "int",
-        lambda x: x == 0 or 2 <= x <= 10_000, default=0)
+        lambda x: x == 0 or 2 <= x <= 10_000, default=0,
+        example="# climate_replicates = 200  # with record: the ESD under 200 bootstrap climates, and its "
+                "band")
+    storm_hours: float = lifetime_key(
+        f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
+        "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS, default=2.0,
+        example="storm_hours = 2.0         # duration of each storm's peak sea state, hours")
+    period: float | None = lifetime_key(
+        f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
+        "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness", "number",
+        lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period, default=None,
+        example="# period = 11.4           # a fixed T1/3 for every storm, s (default: Goda's 3.3 H0'^0.63)")
+    steepness: float | None = lifetime_key(
+        "a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period", "number",
+        lambda x: 0.0 < x <= 0.142, default=None,
+        example="# steepness = 0.035       # or a fixed deep-water steepness H0'/L0 (not with period)")
+    tide_range: float = lifetime_key(
+        f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
+        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE, default=0.0,
+        example="tide_range = 0.0          # tidal range, m: each storm's water level is (range/2) sin(2 pi "
+                "phase)")
+    thresholds: tuple[float, ...] | None = lifetime_key(
+        "a list of lifetime slides, each > 0 in metres, whose exceedance probability "
+        "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive, default=None,
+        example="thresholds = [0.03, 0.1, 0.3, 1.0, 3.0]  # lifetime slides whose exceedance is reported, m")
+    truncate: float | None = lifetime_key(
+        "a cut-off > 0 of the normal error factors, in standard deviations (default: none)", "number",
+        _positive, default=None,
+        example="# truncate = 3.0          # cut the normal error factors at +-3 standard deviations "
+                "(default: none)")
+    impulsive: bool = lifetime_key(
+        "true or false: Takahashi's impulsive coefficient in each wave's force (default false)",
+        "bool", default=False,
+        example="impulsive = false         # Takahashi's impulsive coefficient in each wave's force (default "
+                "false)")
+    target: float = lifetime_key(
+        "the tolerable expected sliding distance, > 0 in metres: the requirement "
+        "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive, default=0.1,
+        example="target = 0.1              # the requirement ESD <= target, m (Goda & Takagi 2000; default "
+                "0.1)")
+    allowed: Mapping[float, float] = lifetime_key(
+        'a table of lifetime slides (m) and the largest allowed probability of '
+        'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
+        "default: none)", "limits", factory=dict,
+        example='# allowed = {"0.1" = 0.2, "0.3" = 0.05}  # the largest allowed P(lifetime sliding > x m)\n'
+                "                          # (Kim & Suh 2013; default: none)")
+    failure_sliding: float | None = lifetime_key(
+        "the sliding in metres at which the caisson is off its mound (the "
+        "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
+        "the probability of failure over the life (default: none)", "number", _positive, default=None,
+        example="# failure_sliding = 5.0   # m the caisson may slide before it is off its mound (the "
+                "harbour-side\n"
+                "                          # crest width of the mound): P(S > it) is the probability of "
+                "failure")
+    errors: Mapping[str, tuple[float, float]] = lifetime_key(
+        "the table [lifetime.errors] of the uncertainty factors (deepwater, "
+        "transformation, force, friction)", "table", factory=dict)
     written: Mapping[str, str] = field(default_factory=dict)
 
     def climate_as_written(self) -> str:
@@ -207,6 +246,12 @@ def default_of(name: str) -> Any:
 
 
 _FIELDS = {f.name: f for f in fields(LifetimeSpec) if "key" in f.metadata}
+
+
+def example_lifetime() -> str:
+    """The ``[lifetime]`` table of the commented example, from the keys' lines."""
+    return "[lifetime]\n" + "".join(f"{f.metadata['key'].example}\n" for f in _FIELDS.values()
+                                    if f.metadata["key"].example)
 #: The keys of ``[lifetime]``, in the order the messages list them (the fields of :class:`LifetimeSpec`).
 LIFETIME_KEYS: dict[str, LifetimeKey] = {name: f.metadata["key"] for name, f in _FIELDS.items()}
 
