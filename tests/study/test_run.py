@@ -4,13 +4,10 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from regimemap.caisson.file import example_design_text
 from regimemap.lifetime import lifetime_sliding
 from regimemap.study.file import read_study
 from regimemap.study.record_store import StudyStore, StudyStoreError
@@ -18,9 +15,8 @@ from regimemap.study.record_table import study_csv_text, study_json
 from regimemap.study.run import run_study
 from regimemap.study.run_tasks import task_seed
 
+from ..conftest import band_design
 from .conftest import SITE, scenario_table, section_table, study_head
-
-RECORD = Path(__file__).parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
 
 STUDY = (study_head(11, 150) + section_table("shallow", 0.0, *SITE, "width = 12.0")
          + section_table("deep", 300.0, "widths = [13.0, 16.0]")
@@ -168,14 +164,7 @@ def test_atomic_save_leaves_no_partial_file_when_interrupted(tmp_path, monkeypat
 @pytest.mark.slow
 @pytest.mark.deep
 def test_a_target_section_finds_its_width_and_the_band_of_a_record(tmp_path):
-    shutil.copy(RECORD, tmp_path / "buoy.txt.gz")
-    text = example_design_text()
-    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
-    drop = ("H0_10", "H0_50", "distribution", "shape", "storms_per_year", "annual_maxima")
-    life = [line for line in text[i:j].splitlines() if line.split("=")[0].strip() not in drop]
-    (tmp_path / "site.toml").write_text(text[:i] + "\n".join(life) + "\nclimate_replicates = 3\n"
-                                        '\n[lifetime.record]\npath = "buoy.txt.gz"\nthreshold = "98%"\n\n'
-                                        + text[j:])
+    band_design(tmp_path, replicates=3)  # tmp_path/site.toml
     study = ('seed = 3\ntrials = 60\nbase = "site.toml"\n\n[[section]]\nname = "fixed"\nchainage = 0\n'
              'widths = [12.0, 16.0]\n\n[[section]]\nname = "target"\nchainage = 10\ntarget = 0.1\n'
              'widths = [16.0, 40.0]\ntolerance = 2.0\n\n[[scenario]]\nname = "today"\n')
