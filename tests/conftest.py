@@ -119,6 +119,30 @@ def goda(tmp_path: Path) -> Path:
     return path
 
 
+#: A year of a buoy's sea states (NDBC 44007, 1996): the record of :func:`band_design`.
+BUOY_RECORD = Path(__file__).resolve().parent / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
+
+
+def band_design(d: Path, replicates: int = 400) -> Path:
+    """The example design with the buoy's record for its climate: ``d/site.toml``, its ``[lifetime]``
+    climate keys replaced by ``climate_replicates`` and a ``[lifetime.record]`` of ``d/buoy.txt.gz``
+    (:data:`BUOY_RECORD`, copied), so that a run draws its band of replicate climates."""
+    import shutil
+
+    from regimemap.caisson.file import example_design_text
+
+    shutil.copy(BUOY_RECORD, d / "buoy.txt.gz")
+    text = example_design_text()
+    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
+    climate = ("H0_10", "H0_50", "annual_maxima", "distribution", "shape", "storms_per_year")
+    kept = [ln for ln in text[i:j].splitlines() if ln.split("=")[0].strip() not in climate]
+    life = ("\n".join(kept) + f"\nclimate_replicates = {replicates}\n\n[lifetime.record]\npath = \"buoy.txt.gz\"\n"
+            "threshold = \"98%\"\n\n")
+    f = d / "site.toml"
+    f.write_text(text[:i] + life + text[j:], encoding="utf-8")
+    return f
+
+
 # -- the report's figures, computed once ----------------------------------------------------------------
 
 class _PresetMaps(dict):

@@ -13,7 +13,6 @@ longer than the last signal.  Marked ``stress``: ``make test-stress`` (and CI) r
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import subprocess
 import sys
@@ -26,6 +25,7 @@ import pytest
 from regimemap.caisson.file import example_design_text
 
 from .._processes import START_WITHIN, describe, group_members, kill_group, start, wait_until
+from ..conftest import band_design
 
 pytestmark = [pytest.mark.stress, pytest.mark.subprocess, pytest.mark.slow,
               pytest.mark.skipif(not sys.platform.startswith("linux"), reason="process groups, /proc")]
@@ -44,20 +44,6 @@ def _design(d: Path) -> Path:
     return f
 
 
-def _band_design(d: Path) -> Path:
-    record = Path(__file__).resolve().parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
-    shutil.copy(record, d / "buoy.txt.gz")
-    text = example_design_text()
-    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
-    climate = ("H0_10", "H0_50", "annual_maxima", "distribution", "shape", "storms_per_year")
-    kept = [ln for ln in text[i:j].splitlines() if ln.split("=")[0].strip() not in climate]
-    life = ("\n".join(kept) + "\nclimate_replicates = 400\n\n[lifetime.record]\npath = \"buoy.txt.gz\"\n"
-            "threshold = \"98%\"\n\n")
-    f = d / "site.toml"
-    f.write_text(text[:i] + life + text[j:], encoding="utf-8")
-    return f
-
-
 def _study(d: Path) -> Path:
     from regimemap.study.file_example import example_study_text
 
@@ -73,7 +59,7 @@ COMMANDS = {
                             "-o", "life.png", "-o", "life.csv"], 4.0),
     "chart": (lambda d: ["lifetime", str(_design(d)), "--trials", "200000", "--width", "10:25:5",
                          "--target", "0.1", "--jobs", "2", "-o", "chart.png"], 4.0),
-    "band": (lambda d: ["lifetime", str(_band_design(d)), "--trials", "2000", "--jobs", "2",
+    "band": (lambda d: ["lifetime", str(band_design(d)), "--trials", "2000", "--jobs", "2",
                         "-o", "band.png"], 5.0),
     "study": (lambda d: ["study", str(_study(d)), "--jobs", "2", "--store", "bw.store", "-q"], 5.0),
     "outcome": (lambda d: ["outcome", "--gamma", "3", "--half-width", "0.2", "--kprime", "0", "--mu", "0.5",

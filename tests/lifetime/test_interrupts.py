@@ -24,13 +24,14 @@ import pytest
 
 from regimemap.caisson.file import example_design_text
 
+from .._processes import START_WITHIN, describe, group_members, start
+from ..conftest import band_design
+
 pytestmark = [pytest.mark.subprocess, pytest.mark.slow,
               pytest.mark.skipif(not sys.platform.startswith("linux"), reason="process groups, /proc")]
 
 #: Seconds the command may take to exit after the signal (it hung for minutes before).
 EXIT_WITHIN = 10.0
-#: Seconds to wait for the run to start (the interpreter, numpy, the design file) on a busy machine.
-START_WITHIN = 120.0
 
 
 @pytest.fixture
@@ -42,15 +43,9 @@ def goda(tmp_path: Path) -> Path:
     return f
 
 
-def _default_sigint() -> None:
-    """In the child: Ctrl-C as a terminal delivers it (the test runner may have it ignored)."""
-    signal.signal(signal.SIGINT, signal.SIG_DFL)
-
-
 def _start(args: list[str], cwd: Path) -> subprocess.Popen[bytes]:
-    return subprocess.Popen([sys.executable, "-m", "regimemap", "-v", *args], cwd=cwd,
-                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            start_new_session=True, preexec_fn=_default_sigint)
+    """``regimemap -v ARGS``: its log says when the run is under way (:func:`_wait_for`)."""
+    return start(["-v", *args], cwd)
 
 
 def _wait_for(proc: subprocess.Popen[bytes], *needles: str) -> bytes:
@@ -74,23 +69,6 @@ def _wait_for(proc: subprocess.Popen[bytes], *needles: str) -> bytes:
     raise AssertionError(f"the run did not start: {seen.decode('utf-8', 'replace')!r}")
 
 
-def _group_members(pgid: int) -> list[str]:
-    """Live processes (not zombies) of process group ``pgid``, from /proc."""
-    out = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            text = Path(f"/proc/{entry}/stat").read_text()
-        except OSError:
-            continue
-        fields = text[text.rindex(")") + 2:].split()
-        state, group = fields[0], int(fields[2])
-        if group == pgid and state not in ("Z", "X"):
-            out.append(f"{entry} {state} {text[:text.rindex(')') + 1]}")
-    return out
-
-
 def _interrupt(proc: subprocess.Popen[bytes], sig: int, started: bytes, out_dir: Path,
                code: int, message: str, delay: float = 0.5, again: int = 0,
                finished: bool = False) -> None:
@@ -110,7 +88,7 @@ def _interrupt(proc: subprocess.Popen[bytes], sig: int, started: bytes, out_dir:
     try:
         _, rest = proc.communicate(timeout=EXIT_WITHIN)
     except subprocess.TimeoutExpired:
-        members = _group_members(proc.pid)
+        members = describe(group_members(proc.pid))
         os.killpg(proc.pid, signal.SIGKILL)
         proc.communicate()
         raise AssertionError(f"still running {EXIT_WITHIN} s after the signal: {members}") from None
@@ -122,9 +100,9 @@ def _interrupt(proc: subprocess.Popen[bytes], sig: int, started: bytes, out_dir:
             if ln.strip() and not ln.startswith("regimemap: [")]
     assert said == [message], stderr
     deadline = time.monotonic() + 5.0
-    while _group_members(proc.pid) and time.monotonic() < deadline:
+    while group_members(proc.pid) and time.monotonic() < deadline:
         time.sleep(0.05)
-    assert _group_members(proc.pid) == [], "a process of the run outlived it"
+    assert group_members(proc.pid) == [], "a process of the run outlived it"
     left = sorted(os.listdir(out_dir))
     if finished:
         left = [name for name in left if name.startswith(".")]
@@ -197,12 +175,9 @@ def test_ctrl_c_ends_the_figures_pool(tmp_path: Path) -> None:
     """``figures --jobs 2``: the figures not started are not drawn; those drawn are whole."""
     out = tmp_path / "out"
     out.mkdir()
-    proc = subprocess.Popen([sys.executable, "-m", "regimemap", "figures", "--out", str(out),
-                             "--format", "png,svg,pdf", "--jobs", "2"], cwd=tmp_path,
-                            stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            start_new_session=True, preexec_fn=_default_sigint)
+    proc = start(["figures", "--out", str(out), "--format", "png,svg,pdf", "--jobs", "2"], tmp_path)
     deadline = time.monotonic() + START_WITHIN
-    while len(_group_members(proc.pid)) < 3 and proc.poll() is None and time.monotonic() < deadline:
+    while len(group_members(proc.pid)) < 3 and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.05)  # the two workers are up
     _interrupt(proc, signal.SIGINT, b"", out, 130, "regimemap: interrupted", delay=1.0, finished=True)
     assert len(os.listdir(out)) < 60, "every figure was drawn after Ctrl-C"
@@ -211,22 +186,12 @@ def test_ctrl_c_ends_the_figures_pool(tmp_path: Path) -> None:
 @pytest.mark.deep
 def test_ctrl_c_during_a_climate_band(tmp_path: Path) -> None:
     """The replicate climates of ``[lifetime.record]`` run on the same stoppable pool."""
-    import shutil
-
-    record = Path(__file__).resolve().parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
     d = tmp_path / "design"
     d.mkdir()
-    shutil.copy(record, d / "buoy.txt.gz")
-    text = example_design_text()
-    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
-    climate = ("H0_10", "H0_50", "annual_maxima", "distribution", "shape", "storms_per_year")
-    kept = [ln for ln in text[i:j].splitlines() if ln.split("=")[0].strip() not in climate]
-    life = ("\n".join(kept) + "\nclimate_replicates = 400\n\n[lifetime.record]\npath = \"buoy.txt.gz\"\n"
-            "threshold = \"98%\"\n\n")
-    (d / "site.toml").write_text(text[:i] + life + text[j:], encoding="utf-8")
+    site = band_design(d)
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(["lifetime", str(d / "site.toml"), "--trials", "2000", "--jobs", "2", "-o", "band.png"], out)
+    proc = _start(["lifetime", str(site), "--trials", "2000", "--jobs", "2", "-o", "band.png"], out)
     started = _wait_for(proc, "lifetimes of", "in this process")  # a replicate, whole in a worker
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted")
 
@@ -264,6 +229,6 @@ def test_ctrl_c_while_a_local_cluster_starts(tmp_path: Path) -> None:
     proc = _start(["study", str(study), "--scheduler", "local", "--jobs", "2", "-q",
                    "--store", str(tmp_path / "bw.store")], out)
     deadline = time.monotonic() + START_WITHIN
-    while len(_group_members(proc.pid)) < 3 and proc.poll() is None and time.monotonic() < deadline:
+    while len(group_members(proc.pid)) < 3 and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.02)  # the resource tracker and a worker at least: the cluster is starting
     _interrupt(proc, signal.SIGINT, b"", out, 130, "regimemap: interrupted", delay=0.0, again=2)

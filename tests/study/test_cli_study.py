@@ -15,44 +15,17 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from regimemap.caisson.file import example_design_text
 from regimemap.study.record_table import STUDY_COLUMNS
 
-SMALL = """seed = 4
-trials = 100
-base = "goda.toml"
+from .conftest import SITE, scenario_table, section_table, study_head
 
-[[section]]
-name = "a"
-chainage = 0.0
-depth = 8.0
-armour_depth = 4.5
-base_depth = 5.5
-width = 12.0
-
-[[section]]
-name = "b"
-chainage = 50.0
-widths = [14.0, 16.0]
-
-[[scenario]]
-name = "today"
-
-[[scenario]]
-name = "rise"
-rate = 0.01
-"""
+SMALL = (study_head(4, 100) + section_table("a", 0.0, *SITE, "width = 12.0")
+         + section_table("b", 50.0, "widths = [14.0, 16.0]")
+         + scenario_table("today") + scenario_table("rise", "rate = 0.01"))
 
 
-def _small(tmp_path: Path, text: str = SMALL) -> Path:
-    (tmp_path / "goda.toml").write_text(example_design_text())
-    path = tmp_path / "study.toml"
-    path.write_text(text)
-    return path
-
-
-def test_the_table_the_csv_and_the_json(run_cli, tmp_path):
-    path = _small(tmp_path)
+def test_the_table_the_csv_and_the_json(run_cli, tmp_path, write_study):
+    path = write_study(SMALL)
     out = run_cli(["study", str(path), "--jobs", "1", "-o", str(tmp_path / "t.csv")])
     assert out.code == 0, out.output
     lines = out.stdout.splitlines()  # the table, then the file written
@@ -86,8 +59,8 @@ def test_the_table_the_csv_and_the_json(run_cli, tmp_path):
     (["STUDY", "--scheduler", "nowhere"], "scheduler must be the address of a Dask scheduler"),
     (["STUDY", "--resume", "--overwrite"], "--resume and --overwrite exclude each other"),
 ])
-def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, args, says):
-    path = _small(tmp_path)
+def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, write_study, args, says):
+    path = write_study(SMALL)
     (tmp_path / "x.toml").write_text("")
     args = [str(path) if a == "STUDY" else str(tmp_path / a) if a in ("x.toml", "t.xlsx") else a for a in args]
     out = run_cli(["study", *args] if "--jobs" in args else ["study", *args, "--jobs", "1"])
@@ -95,16 +68,17 @@ def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, args, says):
     assert says in out.stderr and out.stderr.count("\n") == 1
 
 
-def test_a_bad_study_file_exits_2_naming_its_line(run_cli, tmp_path):
-    path = _small(tmp_path, SMALL.replace('name = "b"', 'name = "a"'))
+def test_a_bad_study_file_exits_2_naming_its_line(run_cli, tmp_path, write_study):
+    path = write_study(SMALL.replace('name = "b"', 'name = "a"'))
     out = run_cli(["study", str(path)])
     assert out.code == 2
     assert f"{path}, line 14: [[section]] name = 'a': a duplicate" in out.stderr
     assert out.stderr.count("\n") == 1 and not (tmp_path / "study.store").exists()
 
 
-def test_a_store_is_refused_without_resume_and_a_changed_study_leaves_it_untouched(run_cli, tmp_path):
-    path = _small(tmp_path)
+def test_a_store_is_refused_without_resume_and_a_changed_study_leaves_it_untouched(run_cli, tmp_path,
+                                                                                   write_study):
+    path = write_study(SMALL)
     assert run_cli(["study", str(path), "--jobs", "1", "-q"]).code == 0
     store = tmp_path / "study.store"
     before = {p: p.read_bytes() for p in store.rglob("*") if p.is_file()}
@@ -136,31 +110,16 @@ def test_the_example_runs(tmp_path):
     assert all(r["required_width"] for r in head)
 
 
-KILLED = """seed = 8
-trials = 1500
-base = "goda.toml"
-""" + "".join(f"""
-[[section]]
-name = "s{i}"
-chainage = {10.0 * i}
-depth = {8.0 + i}
-armour_depth = 4.5
-base_depth = 5.5
-width = 13.0
-""" for i in range(5)) + """
-[[scenario]]
-name = "today"
-
-[[scenario]]
-name = "rise"
-sea_level_rise = { 50 = 1.0 }
-"""
+KILLED = (study_head(8, 1500)
+          + "".join(section_table(f"s{i}", 10.0 * i, f"depth = {8.0 + i}", *SITE[1:], "width = 13.0")
+                    for i in range(5))
+          + scenario_table("today") + scenario_table("rise", "sea_level_rise = { 50 = 1.0 }"))
 
 
 @pytest.mark.subprocess
 @pytest.mark.slow
-def test_kill_9_halfway_then_resume_gives_the_same_bytes(tmp_path):
-    path = _small(tmp_path, KILLED)
+def test_kill_9_halfway_then_resume_gives_the_same_bytes(tmp_path, write_study):
+    path = write_study(KILLED)
     whole = subprocess.run(_command("study", str(path), "--jobs", "1", "-q", "--store", str(tmp_path / "w"),
                                     "-o", str(tmp_path / "whole.csv")), capture_output=True, text=True)
     assert whole.returncode == 0, whole.stderr
@@ -183,11 +142,11 @@ def test_kill_9_halfway_then_resume_gives_the_same_bytes(tmp_path):
 
 
 @pytest.mark.render
-def test_the_netcdf_table_and_the_figures(run_cli, tmp_path):
+def test_the_netcdf_table_and_the_figures(run_cli, tmp_path, write_study):
     pytest.importorskip("xarray")
     import xarray as xr
 
-    path = _small(tmp_path)
+    path = write_study(SMALL)
     out = run_cli(["study", str(path), "--jobs", "1", "-q", "-o", str(tmp_path / "t.nc"),
                    "-o", str(tmp_path / "esd.svg")])
     assert out.code == 0, out.output
@@ -209,15 +168,15 @@ def _quiet_table(run_cli, path: Path, *args: str):
     return run_cli(["study", str(path), "--jobs", "1", *args])
 
 
-def test_with_o_quiet_prints_only_the_files(run_cli, tmp_path):
-    path = _small(tmp_path)
+def test_with_o_quiet_prints_only_the_files(run_cli, tmp_path, write_study):
+    path = write_study(SMALL)
     out = _quiet_table(run_cli, path, "-q", "-o", str(tmp_path / "t.csv"))
     assert out.code == 0, out.output
     assert out.stdout.strip() == str(tmp_path / "t.csv")
 
 
-def test_millimetres_for_metres_exit_2_in_one_line_before_any_store(run_cli, tmp_path):
-    path = _small(tmp_path, SMALL.replace("rate = 0.01", "sea_level_rise = { 50 = 1000 }"))
+def test_millimetres_for_metres_exit_2_in_one_line_before_any_store(run_cli, tmp_path, write_study):
+    path = write_study(SMALL.replace("rate = 0.01", "sea_level_rise = { 50 = 1000 }"))
     out = _quiet_table(run_cli, path, "-o", str(tmp_path / "t.csv"))
     assert out.code == 2, out.output
     assert f"{path}, line 23: [[scenario]] 'rise' sea_level_rise: service year 1 = 20 m puts the crest of " \
@@ -226,8 +185,8 @@ def test_millimetres_for_metres_exit_2_in_one_line_before_any_store(run_cli, tmp
     assert not (tmp_path / "study.store").exists() and not (tmp_path / "t.csv").exists()
 
 
-def test_a_falling_sea_level_is_warned_on_stderr(run_cli, tmp_path):
-    path = _small(tmp_path, SMALL.replace("rate = 0.01", "sea_level_rise = { 20 = 0.5, 50 = 0.2 }"))
+def test_a_falling_sea_level_is_warned_on_stderr(run_cli, write_study):
+    path = write_study(SMALL.replace("rate = 0.01", "sea_level_rise = { 20 = 0.5, 50 = 0.2 }"))
     out = _quiet_table(run_cli, path, "-q")
     assert out.code == 0, out.output
     warnings = [line for line in out.stderr.splitlines() if line.startswith("regimemap: warning:")]
@@ -235,7 +194,8 @@ def test_a_falling_sea_level_is_warned_on_stderr(run_cli, tmp_path):
     assert "falls" not in out.stdout
 
 
-def test_a_non_finite_result_is_an_error_and_the_tasks_stored_stay(run_cli, tmp_path, monkeypatch):
+def test_a_non_finite_result_is_an_error_and_the_tasks_stored_stay(run_cli, tmp_path, write_study,
+                                                                   monkeypatch):
     import regimemap.lifetime.parallel as parallel
 
     real = parallel.run_chunks
@@ -249,7 +209,7 @@ def test_a_non_finite_result_is_an_error_and_the_tasks_stored_stay(run_cli, tmp_
         return type(out)(**{**out.__dict__, "sliding": sliding})
 
     monkeypatch.setattr(parallel, "run_chunks", broken)
-    path = _small(tmp_path)
+    path = write_study(SMALL)
     out = _quiet_table(run_cli, path, "-q", "-o", str(tmp_path / "t.csv"))
     assert out.code == 1, out.output
     assert out.stderr.strip() == (f"regimemap: error: {path}: section 'a', scenario 'rise', width 12 m: the "
@@ -267,8 +227,8 @@ def test_a_non_finite_result_is_an_error_and_the_tasks_stored_stay(run_cli, tmp_
     assert whole.code == 0 and (tmp_path / "t.csv").read_bytes() == (tmp_path / "w.csv").read_bytes()
 
 
-def test_overwrite_runs_the_tour_again_and_replaces_only_a_study_store(run_cli, tmp_path):
-    path = _small(tmp_path)
+def test_overwrite_runs_the_tour_again_and_replaces_only_a_study_store(run_cli, tmp_path, write_study):
+    path = write_study(SMALL)
     store = tmp_path / "study.store"
     assert _quiet_table(run_cli, path, "-q").code == 0
     again = _quiet_table(run_cli, path, "-q")
@@ -289,10 +249,11 @@ def test_overwrite_runs_the_tour_again_and_replaces_only_a_study_store(run_cli, 
     assert [p.name for p in other.iterdir()] == ["mine.txt"]
 
 
-def test_an_interrupted_overwrite_leaves_the_old_store_whole(run_cli, tmp_path, monkeypatch):
+def test_an_interrupted_overwrite_leaves_the_old_store_whole(run_cli, tmp_path, write_study,
+                                                            monkeypatch):
     import regimemap.study.run as study
 
-    path = _small(tmp_path)
+    path = write_study(SMALL)
     store = tmp_path / "study.store"
     assert _quiet_table(run_cli, path, "-q").code == 0
     before = {p: p.read_bytes() for p in store.rglob("*") if p.is_file()}
@@ -316,9 +277,10 @@ def test_an_interrupted_overwrite_leaves_the_old_store_whole(run_cli, tmp_path, 
                                               "distributed package: pip install 'regimemap[cluster]'"),
     ("xarray", ["-o", "t.csv", "-o", "bw.nc"], "pip install 'regimemap[metocean]'"),
 ])
-def test_a_missing_extra_exits_2_before_anything_is_made(run_cli, tmp_path, monkeypatch, module, args, says):
+def test_a_missing_extra_exits_2_before_anything_is_made(run_cli, tmp_path, write_study, monkeypatch, module,
+                                                         args, says):
     monkeypatch.setitem(sys.modules, module, None)  # as if not installed: import and find_spec fail
-    path = _small(tmp_path)
+    path = write_study(SMALL)
     args = [str(tmp_path / a) if a.endswith((".csv", ".nc")) else a for a in args]
     out = run_cli(["study", str(path), *args])
     assert out.code == 2, out.output
@@ -326,8 +288,9 @@ def test_a_missing_extra_exits_2_before_anything_is_made(run_cli, tmp_path, monk
     assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml", "study.toml"]
 
 
-def test_check_prints_a_line_per_section_and_scenario_and_exits_1_on_a_fail(run_cli, tmp_path):
-    path = _small(tmp_path)
+def test_check_prints_a_line_per_section_and_scenario_and_exits_1_on_a_fail(run_cli, tmp_path,
+                                                                            write_study):
+    path = write_study(SMALL)
     out = _quiet_table(run_cli, path, "-q", "--check", "-o", str(tmp_path / "t.csv"))
     assert out.code == 1, out.output
     lines = out.stdout.splitlines()
@@ -345,14 +308,14 @@ def test_check_prints_a_line_per_section_and_scenario_and_exits_1_on_a_fail(run_
     assert rows["b", "today", 16.0] > 0.1 > rows["a", "rise", 12.0]
     # the narrowest width that meets the section's own target ([lifetime] target, overridden)
     lax = SMALL.replace('widths = [14.0, 16.0]', 'widths = [14.0, 16.0]\nlifetime.target = 1.0')
-    ok = _quiet_table(run_cli, _small(tmp_path, lax), "--check", "--overwrite", "--json")
+    ok = _quiet_table(run_cli, write_study(lax), "--check", "--overwrite", "--json")
     assert ok.code == 1, ok.output
     data = json.loads(ok.stdout)
     assert [(c["section"], c["scenario"], c["pass"]) for c in data["checks"]] == [
         ("a", "today", True), ("a", "rise", True), ("b", "today", True), ("b", "rise", False)]
     assert data["checks"][2]["basis"] == ("the ESD of the design's climate at 16 m, the narrowest of 14, 16 m "
                                           "that meets it") and data["checks"][2]["required"] == 1.0
-    none = _quiet_table(run_cli, _small(tmp_path, SMALL.replace('widths = [14.0, 16.0]', 'widths = [30.0]')),
+    none = _quiet_table(run_cli, write_study(SMALL.replace('widths = [14.0, 16.0]', 'widths = [30.0]')),
                         "--check", "--overwrite", "-q")
     assert none.code == 0, none.output
     assert none.stdout.count("  PASS  ") == 4 and "verdict: PASS (every requirement met)" in none.stdout
@@ -368,8 +331,8 @@ def test_the_study_is_in_the_help_of_regimemap_and_its_help_says_what_it_prints(
     assert "also with -o, unless --quiet" in flat and "--overwrite" in flat and "--check" in flat
 
 
-def test_a_stored_task_that_is_not_finite_is_refused_not_printed(run_cli, tmp_path):
-    path = _small(tmp_path)
+def test_a_stored_task_that_is_not_finite_is_refused_not_printed(run_cli, tmp_path, write_study):
+    path = write_study(SMALL)
     assert _quiet_table(run_cli, path, "-q").code == 0
     task = tmp_path / "study.store" / "tasks" / "s0001-c00-r0000.json"
     task.write_text(task.read_text().replace('"esd":[', '"esd":[Infinity,', 1))

@@ -10,38 +10,18 @@ from regimemap.caisson.file import example_design_text
 from regimemap.study.file import StudyFileError, parse_study, read_study
 from regimemap.study.file_example import example_study_text
 
-SECTIONS = """
-[[section]]
-name = "a"
-chainage = 0.0
-depth = 8.0
-armour_depth = 4.5
-base_depth = 5.5
-width = 14.0
+from .conftest import SITE, scenario_table, section_table, study_head
 
-[[section]]
-name = "b"
-chainage = 100.0
-widths = [12.0, 15.0]
-"""
+SECTIONS = (section_table("a", 0.0, *SITE, "width = 14.0")
+            + section_table("b", 100.0, "widths = [12.0, 15.0]"))
 
-SCENARIOS = """
-[[scenario]]
-name = "today"
-
-[[scenario]]
-name = "rise"
-sea_level_rise = { 10 = 0.2, 30 = 1.0 }
-wave_height_factor = { 50 = 1.1 }
-storm_rate_factor = { 25 = 2.0 }
-"""
+SCENARIOS = (scenario_table("today")
+             + scenario_table("rise", "sea_level_rise = { 10 = 0.2, 30 = 1.0 }",
+                              "wave_height_factor = { 50 = 1.1 }", "storm_rate_factor = { 25 = 2.0 }"))
 
 
-def _study(tmp_path, sections=SECTIONS, scenarios=SCENARIOS, head="seed = 5\ntrials = 50\n"):
-    (tmp_path / "goda.toml").write_text(example_design_text())
-    path = tmp_path / "study.toml"
-    path.write_text(f'{head}base = "goda.toml"\n{sections}{scenarios}')
-    return path
+def _study(write_study, sections=SECTIONS, scenarios=SCENARIOS):
+    return write_study(study_head(5, 50) + sections + scenarios)
 
 
 def test_the_example_parses_into_three_sections_and_two_scenarios(tmp_path):
@@ -61,8 +41,8 @@ def test_the_example_parses_into_three_sections_and_two_scenarios(tmp_path):
     assert s.model(s.sections[0], rise).trend.sea_level == rise.sea_level
 
 
-def test_a_section_changes_the_base_design_and_keeps_the_rest(tmp_path):
-    s = read_study(_study(tmp_path))
+def test_a_section_changes_the_base_design_and_keeps_the_rest(write_study):
+    s = read_study(_study(write_study))
     a, b = s.sections
     assert (a.design.site.depth, a.design.site.armour_depth, a.design.caisson.base_depth) == (8.0, 4.5, 5.5)
     assert a.design.caisson.crest == b.design.caisson.crest == 3.4
@@ -71,8 +51,8 @@ def test_a_section_changes_the_base_design_and_keeps_the_rest(tmp_path):
     assert a.design.caisson.width == 15.0  # the widths are simulated from the design's section
 
 
-def test_the_scenario_tables_are_linear_between_years_and_constant_after_the_last(tmp_path):
-    rise = read_study(_study(tmp_path)).scenarios[1]
+def test_the_scenario_tables_are_linear_between_years_and_constant_after_the_last(write_study):
+    rise = read_study(_study(write_study)).scenarios[1]
     assert len(rise.sea_level) == 50
     assert rise.sea_level[4] == pytest.approx(0.1)      # year 5: halfway from 0 m today to 0.2 m
     assert rise.sea_level[19] == pytest.approx(0.6)     # year 20: halfway from 0.2 to 1.0
@@ -81,22 +61,22 @@ def test_the_scenario_tables_are_linear_between_years_and_constant_after_the_las
     assert rise.storm_rate[24:] == (2.0,) * 26
 
 
-def test_rate_and_acceleration_give_the_quadratic_rise(tmp_path):
+def test_rate_and_acceleration_give_the_quadratic_rise(write_study):
     sc = '[[scenario]]\nname = "q"\nrate = 0.004\nacceleration = 0.0002\n'
-    rise = read_study(_study(tmp_path, scenarios=sc)).scenarios[0]
+    rise = read_study(_study(write_study, scenarios=sc)).scenarios[0]
     assert rise.sea_level[49] == pytest.approx(0.004 * 50 + 0.5 * 0.0002 * 50**2)
     assert rise.sea_level[0] == pytest.approx(0.004 + 0.0001)
 
 
-def test_a_key_two_tables_share_is_written_with_its_table(tmp_path):
+def test_a_key_two_tables_share_is_written_with_its_table(write_study):
     sec = '[[section]]\nname = "a"\nchainage = 0\ncaisson.impulsive = false\nlifetime.impulsive = true\n'
-    s = read_study(_study(tmp_path, sections=sec))
+    s = read_study(_study(write_study, sections=sec))
     assert s.sections[0].design.caisson.impulsive is False
     assert s.sections[0].design.lifetime_spec().impulsive is True
 
 
-def test_the_hash_follows_the_content_not_the_comments(tmp_path):
-    path = _study(tmp_path)
+def test_the_hash_follows_the_content_not_the_comments(tmp_path, write_study):
+    path = _study(write_study)
     h = read_study(path).study_hash
     path.write_text(path.read_text().replace("seed = 5", "seed = 5   # a comment"))
     assert read_study(path).study_hash == h
@@ -130,8 +110,8 @@ BAD_SECTIONS = [
 
 
 @pytest.mark.parametrize(("sections", "needle", "nth", "says"), BAD_SECTIONS)
-def test_a_bad_section_is_refused_with_its_file_line_and_key(tmp_path, sections, needle, nth, says):
-    path = _study(tmp_path, sections=sections)
+def test_a_bad_section_is_refused_with_its_file_line_and_key(write_study, sections, needle, nth, says):
+    path = _study(write_study, sections=sections)
     with pytest.raises(StudyFileError) as info:
         read_study(path)
     msg = str(info.value)
@@ -154,8 +134,8 @@ BAD_SCENARIOS = [
 
 
 @pytest.mark.parametrize(("scenarios", "needle", "nth", "says"), BAD_SCENARIOS)
-def test_a_bad_scenario_is_refused_with_its_file_line_and_key(tmp_path, scenarios, needle, nth, says):
-    path = _study(tmp_path, scenarios=scenarios)
+def test_a_bad_scenario_is_refused_with_its_file_line_and_key(write_study, scenarios, needle, nth, says):
+    path = _study(write_study, scenarios=scenarios)
     with pytest.raises(StudyFileError) as info:
         read_study(path)
     msg = str(info.value)
@@ -163,8 +143,8 @@ def test_a_bad_scenario_is_refused_with_its_file_line_and_key(tmp_path, scenario
     assert says in msg
 
 
-def test_a_key_of_the_base_is_refused_at_its_line_in_the_base(tmp_path):
-    path = _study(tmp_path)
+def test_a_key_of_the_base_is_refused_at_its_line_in_the_base(tmp_path, write_study):
+    path = _study(write_study)
     (tmp_path / "goda.toml").write_text(example_design_text().replace("shape = 2.0 ", "shape = -2.0"))
     with pytest.raises(StudyFileError, match=re.escape(f"{tmp_path / 'goda.toml'}, line ")) as info:
         read_study(path)
@@ -183,10 +163,10 @@ def _with_record(design: str) -> str:
 
 
 @pytest.mark.parametrize("where", ["base", "inline"])
-def test_a_key_of_a_record_table_is_refused_at_its_own_line(tmp_path, where):
+def test_a_key_of_a_record_table_is_refused_at_its_own_line(tmp_path, write_study, where):
     """A key of ``[lifetime.record]`` is named at its own line (in the base file or in the study),
     not at the line of its table or of ``[lifetime]``."""
-    path = _study(tmp_path)
+    path = _study(write_study)
     if where == "base":
         (tmp_path / "goda.toml").write_text(_with_record(example_design_text()))
         file, text = tmp_path / "goda.toml", (tmp_path / "goda.toml").read_text()
@@ -211,10 +191,8 @@ def test_a_key_of_a_record_table_is_refused_at_its_own_line(tmp_path, where):
     ('seed = 1\nbase = "goda.toml"\n[[section]]\nname = "x"\n' + SCENARIOS, "chainage = None"),
     ('seed = [1\n', "TOML syntax error"),
 ])
-def test_a_bad_study_is_refused_in_one_line(tmp_path, text, says):
-    (tmp_path / "goda.toml").write_text(example_design_text())
-    path = tmp_path / "s.toml"
-    path.write_text(text)
+def test_a_bad_study_is_refused_in_one_line(write_study, text, says):
+    path = write_study(text, "s.toml")
     with pytest.raises(StudyFileError) as info:
         read_study(path)
     assert says in str(info.value) and str(info.value).startswith(str(path))

@@ -4,13 +4,10 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
-from pathlib import Path
 
 import numpy as np
 import pytest
 
-from regimemap.caisson.file import example_design_text
 from regimemap.lifetime import lifetime_sliding
 from regimemap.study.file import read_study
 from regimemap.study.record_store import StudyStore, StudyStoreError
@@ -18,52 +15,23 @@ from regimemap.study.record_table import study_csv_text, study_json
 from regimemap.study.run import run_study
 from regimemap.study.run_tasks import task_seed
 
-RECORD = Path(__file__).parents[1] / "climate" / "data" / "ndbc44007_1996_hs_tz.txt.gz"
+from ..conftest import band_design
+from .conftest import SITE, scenario_table, section_table, study_head
 
-STUDY = """seed = 11
-trials = 150
-base = "goda.toml"
-
-[[section]]
-name = "shallow"
-chainage = 0.0
-depth = 8.0
-armour_depth = 4.5
-base_depth = 5.5
-width = 12.0
-
-[[section]]
-name = "deep"
-chainage = 300.0
-widths = [13.0, 16.0]
-
-[[scenario]]
-name = "today"
-
-[[scenario]]
-name = "no change written out"
-sea_level_rise = { 50 = 0.0 }
-wave_height_factor = { 10 = 1.0 }
-
-[[scenario]]
-name = "rise 1 m"
-sea_level_rise = { 50 = 1.0 }
-"""
-
-
-def _write(tmp_path: Path, text: str = STUDY) -> Path:
-    (tmp_path / "goda.toml").write_text(example_design_text())
-    path = tmp_path / "study.toml"
-    path.write_text(text)
-    return path
+STUDY = (study_head(11, 150) + section_table("shallow", 0.0, *SITE, "width = 12.0")
+         + section_table("deep", 300.0, "widths = [13.0, 16.0]")
+         + scenario_table("today")
+         + scenario_table("no change written out", "sea_level_rise = { 50 = 0.0 }",
+                          "wave_height_factor = { 10 = 1.0 }")
+         + scenario_table("rise 1 m", "sea_level_rise = { 50 = 1.0 }"))
 
 
 def _bytes(record) -> tuple[str, str]:
     return study_csv_text(record), json.dumps(study_json(record))
 
 
-def test_a_scenario_without_change_gives_todays_numbers_bit_for_bit(tmp_path):
-    s = read_study(_write(tmp_path))
+def test_a_scenario_without_change_gives_todays_numbers_bit_for_bit(write_study):
+    s = read_study(write_study(STUDY))
     record = run_study(s)
     today = record.rows_for(scenario="today")
     same = record.rows_for(scenario="no change written out")
@@ -80,16 +48,16 @@ def test_a_scenario_without_change_gives_todays_numbers_bit_for_bit(tmp_path):
     assert row.by_year[-1] == pytest.approx(row.expected_sliding, rel=1e-12, abs=1e-15)
 
 
-def test_sea_level_rise_in_depth_limited_water_raises_the_esd(tmp_path):
-    record = run_study(_write(tmp_path))
+def test_sea_level_rise_in_depth_limited_water_raises_the_esd(write_study):
+    record = run_study(write_study(STUDY))
     today = record.rows_for("shallow", "today")[0]
     rise = record.rows_for("shallow", "rise 1 m")[0]
     assert rise.expected_sliding > today.expected_sliding > 0.0
     assert all(b >= a for a, b in zip(today.by_year, rise.by_year))
 
 
-def test_the_record_holds_the_study_in_order(tmp_path):
-    record = run_study(_write(tmp_path))
+def test_the_record_holds_the_study_in_order(write_study):
+    record = run_study(write_study(STUDY))
     assert record.sections == (("shallow", 0.0), ("deep", 300.0))
     assert record.scenarios == ("today", "no change written out", "rise 1 m")
     assert [(r.section, r.scenario, r.width) for r in record.rows[:4]] == [
@@ -105,8 +73,8 @@ def test_the_record_holds_the_study_in_order(tmp_path):
 
 
 @pytest.mark.subprocess
-def test_jobs_do_not_change_the_bytes(tmp_path):
-    path = _write(tmp_path)
+def test_jobs_do_not_change_the_bytes(tmp_path, write_study):
+    path = write_study(STUDY)
     one = _bytes(run_study(path, jobs=1))
     assert _bytes(run_study(path, jobs=2)) == one
     assert _bytes(run_study(path, jobs=2, store=tmp_path / "store")) == one
@@ -115,15 +83,15 @@ def test_jobs_do_not_change_the_bytes(tmp_path):
 @pytest.mark.subprocess
 @pytest.mark.slow
 @pytest.mark.deep
-def test_a_dask_local_cluster_gives_the_same_bytes(tmp_path):
+def test_a_dask_local_cluster_gives_the_same_bytes(write_study):
     pytest.importorskip("distributed")
-    path = _write(tmp_path)
+    path = write_study(STUDY)
     assert _bytes(run_study(path, jobs=2, scheduler="local")) == _bytes(run_study(path))
 
 
 @pytest.mark.slow
-def test_resuming_a_partial_store_gives_the_same_bytes(tmp_path):
-    path = _write(tmp_path)
+def test_resuming_a_partial_store_gives_the_same_bytes(tmp_path, write_study):
+    path = write_study(STUDY)
     whole = _bytes(run_study(path, store=tmp_path / "a"))
     store = tmp_path / "a" / "tasks"
     files = sorted(store.glob("*.json"))
@@ -137,8 +105,8 @@ def test_resuming_a_partial_store_gives_the_same_bytes(tmp_path):
     assert _bytes(run_study(path)) == whole  # and without a store at all
 
 
-def test_a_store_is_refused_without_resume_and_for_a_changed_study(tmp_path):
-    path = _write(tmp_path)
+def test_a_store_is_refused_without_resume_and_for_a_changed_study(tmp_path, write_study):
+    path = write_study(STUDY)
     run_study(path, store=tmp_path / "s")
     before = {p: (p.stat().st_mtime_ns, p.read_bytes()) for p in (tmp_path / "s").rglob("*")
               if p.is_file()}
@@ -158,9 +126,9 @@ def test_a_store_is_refused_without_resume_and_for_a_changed_study(tmp_path):
 
 
 @pytest.mark.slow
-def test_a_failed_store_loses_only_the_task_in_flight(tmp_path, monkeypatch):
+def test_a_failed_store_loses_only_the_task_in_flight(tmp_path, write_study, monkeypatch):
     """A task whose store fails (a full disk) stops the run; the tasks before stay, --resume redoes it."""
-    path = _write(tmp_path)
+    path = write_study(STUDY)
     whole = _bytes(run_study(path))
     real = StudyStore.save
     count = [0]
@@ -196,14 +164,7 @@ def test_atomic_save_leaves_no_partial_file_when_interrupted(tmp_path, monkeypat
 @pytest.mark.slow
 @pytest.mark.deep
 def test_a_target_section_finds_its_width_and_the_band_of_a_record(tmp_path):
-    shutil.copy(RECORD, tmp_path / "buoy.txt.gz")
-    text = example_design_text()
-    i, j = text.index("[lifetime]"), text.index("[lifetime.errors]")
-    drop = ("H0_10", "H0_50", "distribution", "shape", "storms_per_year", "annual_maxima")
-    life = [line for line in text[i:j].splitlines() if line.split("=")[0].strip() not in drop]
-    (tmp_path / "site.toml").write_text(text[:i] + "\n".join(life) + "\nclimate_replicates = 3\n"
-                                        '\n[lifetime.record]\npath = "buoy.txt.gz"\nthreshold = "98%"\n\n'
-                                        + text[j:])
+    band_design(tmp_path, replicates=3)  # tmp_path/site.toml
     study = ('seed = 3\ntrials = 60\nbase = "site.toml"\n\n[[section]]\nname = "fixed"\nchainage = 0\n'
              'widths = [12.0, 16.0]\n\n[[section]]\nname = "target"\nchainage = 10\ntarget = 0.1\n'
              'widths = [16.0, 40.0]\ntolerance = 2.0\n\n[[scenario]]\nname = "today"\n')

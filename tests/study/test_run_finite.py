@@ -7,34 +7,21 @@ from dataclasses import replace
 
 import pytest
 
-from regimemap.caisson.file import example_design_text
 from regimemap.lifetime import YearTrend
 from regimemap.lifetime.finite import NonFiniteResult
 from regimemap.study.file import parse_study
 from regimemap.study.run import study_tasks
 from regimemap.study.run_tasks import run_task
 
-STUDY = """seed = 3
-trials = 40
-base = "goda.toml"
+from .conftest import SITE, scenario_table, section_table, study_head
 
-[[section]]
-name = "trunk"
-chainage = 0.0
-depth = 8.0
-armour_depth = 4.5
-base_depth = 5.5
-widths = [12.0, 15.0]
-
-[[scenario]]
-name = "rise"
-rate = 0.01
-"""
+STUDY = (study_head(3, 40) + section_table("trunk", 0.0, *SITE, "widths = [12.0, 15.0]")
+         + scenario_table("rise", "rate = 0.01"))
 
 
 @pytest.mark.slow
+@pytest.mark.usefixtures("goda")  # the study's base, tmp_path/goda.toml
 def test_an_infinite_sliding_is_refused_without_a_numpy_warning(tmp_path):
-    (tmp_path / "goda.toml").write_text(example_design_text())
     study = parse_study(STUDY, str(tmp_path / "study.toml"))
     ((_, task),) = list(study_tasks(study))
     assert task.label == f"{tmp_path / 'study.toml'}: section 'trunk', scenario 'rise'"

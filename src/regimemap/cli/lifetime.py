@@ -2,7 +2,8 @@
 
 Parses the options, calls :func:`regimemap.lifetime.run.run_lifetime` -- or, with
 ``--width``, :func:`regimemap.lifetime.run.run_chart` -- and writes its record: the
-report (text or JSON), the lifetimes or the chart's table (:mod:`regimemap.lifetime.record`) and
+report (text or JSON, :mod:`regimemap.lifetime.record`), the lifetimes or the chart's table
+(:mod:`regimemap.lifetime.record_files`) and
 the figure (:mod:`regimemap.drawing.lifetime`), each file atomically.
 """
 

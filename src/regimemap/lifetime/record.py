@@ -1,11 +1,11 @@
-"""The sliding of a caisson over its design life, for people (text) and programs (JSON, CSV, NPZ).
+"""The sliding of a caisson over its design life, for people (text) and programs (JSON).
 
 :func:`lifetime_json` and :func:`format_lifetime` report a
 :class:`~regimemap.lifetime.LifetimeResult` (the expected sliding distance with
 its standard error, quantiles, exceedance probabilities, the climate);
 :func:`chart_json` and :func:`format_chart` a
-:class:`~regimemap.lifetime.DesignChart`; :func:`write_samples` writes every
-trial (CSV or NPZ, atomically).  With a wave record's climate band
+:class:`~regimemap.lifetime.DesignChart`; the files of every trial and of the chart's table
+(CSV, NPZ) are written by :mod:`regimemap.lifetime.record_files`.  With a wave record's climate band
 (:class:`~regimemap.lifetime.replicates.ClimateBand`, :class:`~regimemap.lifetime.replicates.ChartBand`)
 the reports add the results with the climate's uncertainty before the requirements, which are
 judged on them; every report ends with its requirements and the verdict.  The options of
@@ -18,14 +18,9 @@ are in metres, probabilities in [0, 1] (per cent in the text); JSON numbers are 
 from __future__ import annotations
 
 import math
-import os
 from typing import TYPE_CHECKING, Any
 
-import numpy as np
-
-from ..io.atomic import atomic_open
 from ..io.checks import checks_json, checks_lines
-from ..io.formats import format_for, record_formats
 from ..io.numbers import json_number
 from . import DesignChart, LifetimeModel, LifetimeResult
 from .results import STATISTICS, threshold_key
@@ -34,12 +29,10 @@ if TYPE_CHECKING:
     from .file_record import RecordSpec
     from .replicates import ChartBand, ClimateBand
 
-__all__ = ["SAMPLE_FORMATS", "band_json", "chart_band_dict", "chart_json", "format_chart", "format_lifetime",
+__all__ = ["band_json", "chart_band_dict", "chart_json", "format_chart", "format_lifetime",
            "impulsive_text", "lifetime_brief_json", "lifetime_brief_lines", "lifetime_json", "record_words",
-           "threshold_key", "verdict_word", "write_chart", "write_samples"]
+           "threshold_key", "verdict_word"]
 
-#: Formats of :func:`write_samples` (from the file's suffix).
-SAMPLE_FORMATS: tuple[str, ...] = record_formats("lifetimes")
 #: Quantiles of the lifetime sliding that are reported.
 _QUANTILES = (0.9, 0.99)
 
@@ -472,99 +465,3 @@ def _chart_band_lines(band: ChartBand) -> list[str]:
         lines.append(f"width for ESD <= {_g(band.target)} m {where}: {w_t:.2f} m (interpolated in "
                      "log ESD between the chart's widths)")
     return lines
-
-
-# -- the chart's table -----------------------------------------------------------------------------
-
-
-def _csv_number(x: float) -> str:
-    return f"{x + 0.0:.12g}" if math.isfinite(x) else ""
-
-
-def write_chart(chart: DesignChart, path: str | os.PathLike[str], band: ChartBand | None = None) -> None:
-    """Write the chart's table as CSV, atomically: one row per width.
-
-    Columns: ``width_m``, ``expected_sliding_m``, ``std_error_m``, then
-    ``p_exceed_<x>m`` for each threshold (``P(S > x)``), then ``p_failure``
-    (``P(S > failure_sliding)``) when the chart has a sliding limit, then, with a
-    record's climate ``band``, ``band_lower_m`` and ``band_upper_m`` (the ends of
-    the ESD's climate band at each width, the curves the chart's figure draws);
-    numbers to 12 significant digits.
-
-    Raises
-    ------
-    OSError
-        If the file cannot be written (nothing is left behind).
-    """
-    head = ["width_m", "expected_sliding_m", "std_error_m"]
-    head += [f"p_exceed_{threshold_key(x)}m" for x in chart.thresholds]
-    fail = chart.failure_probability
-    if fail is not None:
-        head.append("p_failure")
-    if band is not None:
-        if band.widths.size != chart.widths.size or not np.allclose(band.widths, chart.widths):
-            raise ValueError("the climate band was run at other widths than the chart's")
-        head += ["band_lower_m", "band_upper_m"]
-        lower, upper = band.lower, band.upper
-    rows = []
-    for i, (w, e, se) in enumerate(zip(chart.widths, chart.expected_sliding, chart.std_error)):
-        cells = [_csv_number(float(w)), _csv_number(float(e)), _csv_number(float(se))]
-        if chart.exceedance is not None:
-            cells += [_csv_number(float(p)) for p in chart.exceedance[i]]
-        if fail is not None:
-            cells.append(_csv_number(float(fail[i])))
-        if band is not None:
-            cells += [_csv_number(float(lower[i])), _csv_number(float(upper[i]))]
-        rows.append(",".join(cells))
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write(",".join(head) + "\n")
-        for row in rows:
-            fh.write(row + "\n")
-
-
-# -- every trial ---------------------------------------------------------------------------------
-
-
-def write_samples(result: LifetimeResult, path: str | os.PathLike[str]) -> str:
-    """Write every trial of ``result``, atomically; the format (csv or npz) from the suffix.
-
-    ``.csv``: ``trial,sliding_m,max_storm_m,storms``, one row per lifetime
-    (``trial`` from 0, the position in the arrays), numbers to 12 significant
-    digits.  ``.npz``: the arrays ``sliding`` and ``max_storm`` (m), ``storms``,
-    and ``seed`` (as text: a fresh seed has more digits than an int64),
-    ``years``, ``width`` (m) and ``thresholds`` (m).
-
-    Returns
-    -------
-    str
-        The format.
-
-    Raises
-    ------
-    ValueError
-        For another suffix.
-    OSError
-        If the file cannot be written (nothing is left behind).
-    """
-    fmt = format_for(path, "lifetimes")
-    if fmt == "npz":
-        arrays: dict[str, np.ndarray[Any, Any]] = {
-            "sliding": np.asarray(result.sliding, dtype=np.float64),
-            "max_storm": np.asarray(result.max_storm, dtype=np.float64),
-            "storms": np.asarray(result.storms, dtype=np.int64),
-            "seed": np.array(str(result.seed)),
-            "years": np.int64(result.years),
-            "width": np.float64(result.width),
-            "thresholds": np.asarray(result.thresholds, dtype=np.float64),
-        }
-        with atomic_open(path, "wb") as fh:
-            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
-        return fmt
-    sliding = result.sliding.tolist()
-    storm = result.max_storm.tolist()
-    storms = result.storms.tolist()
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write("trial,sliding_m,max_storm_m,storms\n")
-        for i in range(len(sliding)):
-            fh.write(f"{i},{sliding[i] + 0.0:.12g},{storm[i] + 0.0:.12g},{storms[i]}\n")
-    return fmt

@@ -170,7 +170,7 @@ class LifetimeRecord(_LifetimeRun):
 
     def write_data(self, path: str | Path) -> None:
         """Write every lifetime to ``path`` (.csv or .npz, atomically)."""
-        from .record import write_samples
+        from .record_files import write_samples
 
         write_samples(self.result, path)
 
@@ -231,7 +231,7 @@ wave_record
 
     def write_data(self, path: str | Path) -> None:
         """Write the chart's table to ``path`` (.csv, atomically; with the band's columns)."""
-        from .record import write_chart
+        from .record_files import write_chart
 
         write_chart(self.result, path, band=self.band)
 

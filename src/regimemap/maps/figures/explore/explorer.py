@@ -38,8 +38,9 @@ date.  The panel's text is drawn from a bitmap made once per text
 The figure's layout and widgets are built by
 :mod:`~regimemap.maps.figures.explore.layout`, the bitmap artists live in
 :mod:`~regimemap.maps.figures.explore.images`, the texts and rounding in
-:mod:`~regimemap.maps.figures.explore.text`; this module wires them to
-:class:`Explorer`.  It uses pyplot (to
+:mod:`~regimemap.maps.figures.explore.text`, the callbacks of the widgets and the mouse in
+:mod:`~regimemap.maps.figures.explore.events` (the base class of :class:`Explorer`); this
+module wires them to :class:`Explorer`.  It uses pyplot (to
 open a window or a notebook canvas) when no figure is given; it never
 changes matplotlib's global settings.  The module is one class, whose methods
 share the window's state (the block, the sliders, the map drawn, the panel),
@@ -65,6 +66,7 @@ from ...query import PointResult
 from ...record_tables import format_result
 from ..figure import map_figure
 from ..mapplot import MapStyle, draw_design_points, draw_map
+from .events import ExplorerEvents
 from .images import KeyImage, TextPanel, WidgetsImage
 from .layout import (
     build_widgets,
@@ -87,7 +89,6 @@ from .text import (
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
-    from matplotlib.backend_bases import Event
     from matplotlib.figure import Figure
     from matplotlib.widgets import Button, CheckButtons, Slider
 
@@ -104,7 +105,7 @@ Classify = Callable[[DesignPoint, Parameters], PointResult]
 Write = Callable[["Figure", Path, str, float], object]
 
 
-class Explorer:
+class Explorer(ExplorerEvents):
     """The regime map of one block with sliders, a click query and a Save button.
 
     Parameters
@@ -407,54 +408,6 @@ class Explorer:
             finally:
                 self._syncing, slider.drawon = False, drawon
         slider.valtext.set_text(text)
-
-    # -- callbacks (events -> the plain methods) ------------------------------------------------
-    def _dragging(self) -> bool:
-        return any(getattr(s, "drag_active", False) for s in
-                   (self.gamma_slider, self.kprime_slider, self.buoyancy_slider, self.nu_slider))
-
-    def _guard(self, action: Callable[[], object]) -> None:
-        """Run a widget's action; a refused value is shown in the panel, not raised into the GUI."""
-        if self._syncing:
-            return
-        try:
-            action()
-        except ValueError as exc:
-            self._set_info(f"not shown: {exc}")
-            self._request_draw()
-
-    def _on_gamma(self, val: float) -> None:
-        self._guard(lambda: self.set_gamma(10.0 ** val, final=not self._dragging()))
-
-    def _on_kprime(self, val: float) -> None:
-        self._guard(lambda: self.set_kprime(val, final=not self._dragging()))
-
-    def _on_buoyancy(self, val: float) -> None:
-        self._guard(lambda: self.set_loads(buoyancy=val, final=not self._dragging()))
-
-    def _on_nu(self, val: float) -> None:
-        self._guard(lambda: self.set_loads(uplift_ratio=val, final=not self._dragging()))
-
-    def _on_check(self, label: str | None) -> None:
-        self._guard(lambda: self.set_loads(enabled=bool(self.loads_check.get_status()[0])))
-
-    def _on_save(self, event: Event) -> None:
-        try:
-            self.save()
-        except (OSError, ValueError) as exc:
-            self._set_info(f"not saved: {exc}")
-            self._request_draw()
-
-    def _on_press(self, event: Any) -> None:
-        if event.inaxes is not self.ax or event.button != 1 or event.xdata is None:
-            return
-        toolbar: Any = getattr(self.fig.canvas, "toolbar", None)
-        if toolbar is not None and toolbar.mode:
-            return  # zooming or panning
-        self._guard(lambda: self.click(event.xdata, event.ydata))
-
-    def _on_release(self, event: Any) -> None:
-        self.finish()
 
     # -- drawing -----------------------------------------------------------------------------------
     def _update(self, final: bool, changed: bool = True, moving: tuple[Any, ...] = ()) -> None:
