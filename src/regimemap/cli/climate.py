@@ -2,7 +2,7 @@
 
 Parses the options, calls :func:`regimemap.climate.run.run_climate` and writes its
 record: the report (:mod:`regimemap.climate.record`) and the figures
-(:mod:`regimemap.drawing.climate`), each drawn once and written atomically.
+(:mod:`regimemap.climate.figures`), each drawn once and written atomically.
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@ Parses the options, calls :func:`regimemap.lifetime.run.run_lifetime` -- or, wit
 ``--width``, :func:`regimemap.lifetime.run.run_chart` -- and writes its record: the
 report (text or JSON, :mod:`regimemap.lifetime.record`), the lifetimes or the chart's table
 (:mod:`regimemap.lifetime.record_files`) and
-the figure (:mod:`regimemap.drawing.lifetime`), each file atomically.
+the figure (:mod:`regimemap.lifetime.figures`), each file atomically.
 """
 
 from __future__ import annotations

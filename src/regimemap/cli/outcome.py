@@ -3,8 +3,8 @@ swept inputs.
 
 The command hands its options to :func:`regimemap.motion.file.map_options` (which sweeps,
 which pulse, the limits), calls :func:`regimemap.motion.run_maps.run_outcome`, and writes the
-record's data through :mod:`regimemap.io` or draws it with :mod:`regimemap.drawing.outcome`
-(matplotlib only then).
+record's data through :mod:`regimemap.motion.record_files` or draws it with
+:mod:`regimemap.motion.figures.outcome` (matplotlib only then).
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@ Reads the study file (:func:`regimemap.study.file.read_study`), runs
 :func:`regimemap.study.run.run_study` -- its tasks in this process, in local
 processes or on Dask, each stored as it finishes -- and writes the table
 (:mod:`regimemap.study.record_table`, :mod:`regimemap.study.record_netcdf`) or the figures
-(:mod:`regimemap.drawing.study`).
+(:mod:`regimemap.study.figures`).
 """
 
 from __future__ import annotations

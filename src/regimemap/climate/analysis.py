@@ -244,7 +244,7 @@ def analyse(record: Record, options: ClimateOptions) -> ClimateResult:
 
 @dataclass(frozen=True)
 class Curves:
-    """What the return-level and QQ plots draw (computed here, drawn by :mod:`regimemap.drawing.climate`).
+    """What the return-level and QQ plots draw (computed here, drawn by :mod:`regimemap.climate.figures`).
 
     Attributes
     ----------

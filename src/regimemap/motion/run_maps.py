@@ -5,7 +5,7 @@ Each computes an outcome map (rest, slide, rock, slide-rock, overturned, still m
 its boundaries refined by bisection (:func:`regimemap.dynamics.outcome.staged_outcome_map`)
 and returns a record holding its inputs, the map, what is derived from it (the count of each
 category, the axes in dimensionless units) and its warnings; :mod:`regimemap.motion.record_files`
-writes the record, :mod:`regimemap.drawing.outcome` draws it.
+writes the record, :mod:`regimemap.motion.figures.outcome` draws it.
 """
 
 from __future__ import annotations

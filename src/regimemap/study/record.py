@@ -2,7 +2,7 @@
 (:class:`StudyRow`) and the study's record (:class:`StudyRecord`).
 
 Plain data made by :func:`regimemap.workflows.run_study`, written by :mod:`regimemap.io`
-(CSV, JSON, NetCDF) and drawn by :mod:`regimemap.drawing.study`; defined here, beside the
+(CSV, JSON, NetCDF) and drawn by :mod:`regimemap.study.figures`; defined here, beside the
 lifetimes they summarise, so that io (the layer above) may name them.
 """
 
