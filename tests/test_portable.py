@@ -68,7 +68,7 @@ def test_only_the_files_that_mark_portable_tests_are_collected():
 _PROBE = """
 import json
 from numpy.lib import introspect
-from regimemap.motion.record_files import _cache_key
+from regimemap.motion.record_outcome import _cache_key
 info = introspect.opt_func_info(func_name="exp|log|sin|power", signature="float64")
 print(json.dumps({"loops": sorted({s["current"] for f in info.values() for s in f.values()}),
                   "key": _cache_key("D.1")}))

@@ -80,7 +80,7 @@ PUBLIC_API = {
         "Block", "CATEGORY_LABELS", "DESIGN_INPUTS", "DESIGN_UNITS", "FREE_STEP", "G", "History",
         "NO_ADDED_MASS", "OVERTURN", "OutcomeMap", "PROFILE", "PULSE_STEPS", "Phase", "Pulse", "REST", "ROCK",
         "SHAPES", "SLIDE", "SLIDE_ROCK", "STILL_MOVING", "SWEEPABLE", "Simulation", "default_steps",
-        "describe_design_wave", "design_wave_inputs", "design_wave_numbers", "design_wave_run",
+        "design_wave_inputs", "design_wave_numbers", "design_wave_run",
         "frequency_parameter", "from_dimensionless", "outcome_map", "simulate", "size_R", "slenderness",
         "to_dimensionless",
     ],

@@ -157,7 +157,7 @@ def test_the_figure_of_an_outcome_record_labels_its_axes_and_titles_its_inputs()
 def test_the_title_of_a_run_names_the_pulse_and_the_block_or_the_design_file() -> None:
     from types import SimpleNamespace
 
-    from regimemap.motion.figures.simulation import simulation_title
+    from regimemap.motion.figures.history import simulation_title
 
     inputs = {"design": None, "pulse_file": None, "k_peak": 0.6, "mu": 0.35, "kprime": 0.0,
               "pulse": "half-sine", "gamma": 3.0, "half_width": 0.2}

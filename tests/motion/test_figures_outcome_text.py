@@ -19,7 +19,7 @@ from regimemap.dynamics.presets import DYNAMICS_FIGURE_IDS, DYNAMICS_FIGURES  # 
 from regimemap.motion.figures.outcome import outcome_figure, outcome_title  # noqa: E402
 from regimemap.motion.figures.outcome_text import outcome_text_boxes  # noqa: E402
 from regimemap.motion.figures.presets import dynamics_figure  # noqa: E402
-from regimemap.motion.record_files import cached_outcome  # noqa: E402
+from regimemap.motion.record_outcome import cached_outcome  # noqa: E402
 
 from ..drawing.test_legible import _check_boxes  # noqa: E402
 
@@ -45,7 +45,7 @@ def cache_dir(pytestconfig, tmp_path_factory):
     own with ``-p no:cacheprovider``), holding copies of the maps ``make figures`` computed.
 
     Computing the three maps takes about a minute of one core; ``make figures`` (``make``)
-    computes the same ones (the same names and keys: :func:`regimemap.motion.record_files.cached_outcome`
+    computes the same ones (the same names and keys: :func:`regimemap.motion.record_outcome.cached_outcome`
     keys a map by the figure's definition, the versions, numpy's CPU dispatch and the source of
     :mod:`regimemap.dynamics`, and reads back the very arrays a fresh computation gives).  Its
     files are copied, never changed: :func:`cached_outcome` skips those of other keys and

@@ -11,7 +11,7 @@ import pytest
 from regimemap.dynamics.outcome import dimensionless_values
 from regimemap.dynamics.presets import DYNAMICS_FIGURES
 from regimemap.motion.file import OptionError, map_options
-from regimemap.motion.record_files import outcome_summary, write_outcome_record
+from regimemap.motion.record_outcome import outcome_summary, write_outcome_record
 from regimemap.workflows import OutcomeRecord, run_dynamics_figure, run_outcome
 
 VALUES = {"gamma": [3.0], "half_width": [0.2], "kprime": [0.0], "mu": [0.5], "k_peak": [0.3, 0.9, 1.5],

@@ -3,7 +3,7 @@ swept inputs.
 
 The command hands its options to :func:`regimemap.motion.file.map_options` (which sweeps,
 which pulse, the limits), calls :func:`regimemap.motion.run_maps.run_outcome`, and writes the
-record's data through :mod:`regimemap.motion.record_files` or draws it with
+record's data through :mod:`regimemap.motion.record_outcome` or draws it with
 :mod:`regimemap.motion.figures.outcome` (matplotlib only then).
 """
 
@@ -109,7 +109,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     with option_errors():
         record = run_outcome(opts, restitution=restitution, min_rotation=min_rotation, refine=not no_refine,
                              dimensionless=dimensionless, bars=_bars(quiet))
-    from ..motion.record_files import outcome_summary
+    from ..motion.record_outcome import outcome_summary
 
     _note(quiet, "\n".join(outcome_summary(record)))
     _write(record, outputs)
@@ -141,7 +141,7 @@ def _check_outputs(outputs: tuple[str, ...]) -> None:
 
 def _write(record: OutcomeRecord, outputs: tuple[str, ...]) -> None:
     """Write the map's data (.npz, .csv, .json) and draw its figure once (.png, .svg, .pdf)."""
-    from ..motion.record_files import write_outcome_record
+    from ..motion.record_outcome import write_outcome_record
 
     def draw() -> Figure:
         from ..motion.figures.outcome_record import outcome_record_figure

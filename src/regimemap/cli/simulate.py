@@ -2,7 +2,7 @@
 
 The command parses its options, calls :func:`regimemap.motion.run.run_simulation`
 (which checks how they go together and runs), writes the record through :mod:`regimemap.io`
-and draws it through :mod:`regimemap.motion.figures.simulation`; matplotlib is imported only when a
+and draws it through :mod:`regimemap.motion.figures.history`; matplotlib is imported only when a
 plot or an animation is asked for.
 """
 
@@ -197,13 +197,13 @@ def _write_outputs(record: SimulationRecord, output: str | None, plot: str | Non
     import_matplotlib()
     if plot is not None:
         from ..drawing.save import save_figure
-        from ..motion.figures.simulation import simulation_figure
+        from ..motion.figures.history import simulation_figure
 
         with writing(plot):
             save_figure(simulation_figure(record), plot)
         written.append(plot)
     if animate is not None:
-        from ..motion.figures.simulation import simulation_animation
+        from ..motion.figures.history import simulation_animation
 
         with writing(animate):
             n, (w, h), speed = simulation_animation(animate, record)

@@ -22,7 +22,6 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
         DESIGN_UNITS,
         NO_ADDED_MASS,
         PROFILE,
-        describe_design_wave,
         design_wave_inputs,
         design_wave_numbers,
         design_wave_run,
@@ -70,7 +69,6 @@ __all__ = [
     "SWEEPABLE",
     "Simulation",
     "default_steps",
-    "describe_design_wave",
     "design_wave_inputs",
     "design_wave_numbers",
     "design_wave_run",
@@ -86,8 +84,8 @@ __all__ = [
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
         "block": ["Block", "G", "frequency_parameter", "size_R", "slenderness"],
-        "design_wave": ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "describe_design_wave",
-                        "design_wave_inputs", "design_wave_numbers", "design_wave_run"],
+        "design_wave": ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "design_wave_inputs",
+                        "design_wave_numbers", "design_wave_run"],
         "outcome": ["SWEEPABLE", "OutcomeMap", "from_dimensionless", "outcome_map", "to_dimensionless"],
         "pulses": ["SHAPES", "Pulse"],
         "stepper": ["CATEGORY_LABELS", "FREE_STEP", "OVERTURN", "PULSE_STEPS", "REST", "ROCK", "SLIDE",

@@ -31,7 +31,6 @@ reliability design for coastal structures. Proc. Coastal Structures '99.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
@@ -42,8 +41,8 @@ from .block import Block, G
 from .limits import INPUT_LIMITS, check_gyration, check_loads
 from .pulses import Pulse
 
-__all__ = ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "describe_design_wave",
-           "design_wave_inputs", "design_wave_numbers", "design_wave_run"]
+__all__ = ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "design_wave_inputs",
+           "design_wave_numbers", "design_wave_run"]
 
 #: The inputs of a run (named as in :data:`regimemap.dynamics.limits.INPUT_LIMITS`, the options of
 #: ``regimemap simulate``) that the design wave supplies.
@@ -206,20 +205,3 @@ def design_wave_numbers(analysis: CaissonAnalysis, depth: float, period: float,
     }
 
 
-def describe_design_wave(numbers: Mapping[str, float], source: str | None = None) -> str:
-    """One line saying where a design-wave run's numbers come from (:func:`design_wave_numbers`).
-
-    Examples
-    --------
-    >>> from regimemap.caisson.file import example_design_text, parse_design
-    >>> d = parse_design(example_design_text())
-    >>> print(describe_design_wave(design_wave_numbers(d.analyse(), d.site.depth, d.wave.period),
-    ...                            "goda.toml"))  # doctest: +NORMALIZE_WHITESPACE
-    goda.toml: design wave Hmax = 8.050 m (h = 10.1 m, T1/3 = 11.4 s): k = P/(m g) = 0.277621,
-    tau0 = (0.5 - Hmax/(8 h)) T1/3 = 4.5643 s, uplift U = 0.524144 P in phase; rigid block, no added mass
-    """
-    n = numbers
-    where = f"{source}: " if source else ""
-    return (f"{where}design wave Hmax = {n['Hmax']:.3f} m (h = {n['depth']:g} m, T1/3 = {n['period']:g} s): "
-            f"k = P/(m g) = {n['k']:.6g}, tau0 = (0.5 - Hmax/(8 h)) T1/3 = {n['tau0']:.5g} s, "
-            f"uplift U = {n['uplift_ratio']:.6g} P in phase; rigid block, no added mass")

@@ -21,7 +21,8 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from ..maps.record_export import export_map
     from ..maps.record_tables import format_result, result_row
     from ..motion.file_pulses import read_pulse_csv
-    from ..motion.record_files import write_history, write_outcome
+    from ..motion.record_outcome import write_outcome
+    from ..motion.record_simulation import write_history
     from .atomic import atomic_open, atomic_path
 
 __all__ = [
@@ -40,11 +41,12 @@ __all__ = [
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
     __getattr__, __dir__ = attach(__name__, {
-        "atomic": ["atomic_open", "atomic_path"],
-        ".motion.record_files": ["write_history", "write_outcome"],
-        ".maps.record_export": ["export_map"],
-        ".maps.file_points": ["parse_point_spec", "read_points_csv"],
-        ".motion.file_pulses": ["read_pulse_csv"],
         ".climate.file": ["read_record"],
+        ".maps.file_points": ["parse_point_spec", "read_points_csv"],
+        ".maps.record_export": ["export_map"],
         ".maps.record_tables": ["format_result", "result_row"],
+        ".motion.file_pulses": ["read_pulse_csv"],
+        ".motion.record_outcome": ["write_outcome"],
+        ".motion.record_simulation": ["write_history"],
+        "atomic": ["atomic_open", "atomic_path"],
     })

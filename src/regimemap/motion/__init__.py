@@ -3,9 +3,9 @@
 Over the engine of :mod:`regimemap.dynamics`: the input declaration, a run and an
 outcome map from flat options (:mod:`.file`) or a force history from a CSV file
 (:mod:`.file_pulses`); the runs (:mod:`.run` one run, :mod:`.run_maps` an outcome
-map and the figures D.1-D.3); the records (:mod:`.record`), as text and JSON
-(:mod:`.record_simulation`) and as time-history and outcome-map files
-(:mod:`.record_files`); the figures (:mod:`.figures`).
+map and the figures D.1-D.3); the records (:mod:`.record`): a run's as text, JSON and a
+time-history file (:mod:`.record_simulation`), an outcome map's as files
+(:mod:`.record_outcome`); the figures (:mod:`.figures`).
 """
 
 from __future__ import annotations

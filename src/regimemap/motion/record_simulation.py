@@ -2,9 +2,10 @@
 
 * :func:`simulation_record` -- a :class:`~regimemap.motion.record.SimulationRecord` as a
   JSON-ready dict (numbers rounded to 12 significant digits), :func:`simulation_json` as one
-  JSON object, :func:`format_simulation` as text for people;
+  JSON object, :func:`format_simulation` as text for people (a design-wave run's numbers in
+  words: :func:`describe_design_wave`);
 * :func:`write_simulation_history` -- its time history, ``.csv`` or ``.npz``
-  (:func:`regimemap.motion.record_files.write_history`, atomically).
+  (:func:`write_history`, atomically).
 """
 
 from __future__ import annotations
@@ -14,15 +15,20 @@ import os
 from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
-from ..dynamics.stepper import Phase
+import numpy as np
+from numpy.typing import NDArray
+
+from ..dynamics.stepper import History, Phase
+from ..io.atomic import atomic_open
+from ..io.formats import format_for, record_formats
 from ..io.numbers import round_sig
 from ..mechanics.modes import Mode
-from .record_files import json_inputs, write_history
 
 if TYPE_CHECKING:  # pragma: no cover
     from .record import SimulationRecord
 
-__all__ = ["format_simulation", "phase_description", "simulation_json", "simulation_record",
+__all__ = ["HISTORY_FORMATS", "describe_design_wave", "format_simulation", "history_arrays", "json_inputs",
+           "phase_description", "simulation_json", "simulation_record", "write_history",
            "write_simulation_history"]
 
 _PHASE_BY_LABEL = {ph.label: ph for ph in Phase}
@@ -111,7 +117,6 @@ def format_simulation(record: SimulationRecord | Mapping[str, Any]) -> str:
         return _format_run(record)
     lines = []
     if record.design_numbers is not None:
-        from ..dynamics.design_wave import describe_design_wave
 
         lines.append("design     " + describe_design_wave(record.design_numbers, record.design))
     lines.append(_format_run(simulation_record(record)))
@@ -199,3 +204,80 @@ def write_simulation_history(path: str | os.PathLike[str], record: SimulationRec
         raise ValueError("the run kept no time history: run_simulation(..., history=True)")
     scalars = {k: v for k, v in record.inputs.items() if isinstance(v, (int, float, str))}
     return write_history(path, record.simulation.history, record.H, scalars)
+
+
+#: Formats of a time history, by file suffix (:data:`~regimemap.io.formats.RECORDS`).
+HISTORY_FORMATS: tuple[str, ...] = record_formats("time history")
+
+
+def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
+    """Inputs as JSON values: floats (and those in lists) rounded to :data:`SIGNIFICANT` digits."""
+    out: dict[str, Any] = {}
+    for key, v in inputs.items():
+        if isinstance(v, float):
+            out[key] = round_sig(v)
+        elif isinstance(v, (list, tuple)):
+            out[key] = [round_sig(x) if isinstance(x, float) else x for x in v]
+        else:
+            out[key] = v
+    return out
+
+
+def history_arrays(history: History, H: float) -> dict[str, NDArray[Any]]:
+    """The columns of a time history: t, k, x, y, theta, vx, vy, omega, slide (of the base,
+    positive towards O) and phase (the label of the step ending at t; '' at t = 0)."""
+    labels = np.array([""] + [ph.label for ph in Phase])
+    return {
+        "t": history.t, "k": history.k, "x": history.x, "y": history.y, "theta": history.theta,
+        "vx": history.vx, "vy": history.vy, "omega": history.omega, "slide": history.base_slide(H),
+        "phase": labels[history.phase.astype(np.int64) + 1],
+    }
+
+
+def write_history(path: str | os.PathLike[str], history: History, H: float,
+                  inputs: Mapping[str, Any] | None = None) -> str:
+    """Write the time history of a run, atomically; the format (csv or npz) from the suffix.
+
+    ``.csv``: a header and one row per step (numbers as ``repr``, so they read back exactly).
+    ``.npz``: the same columns as 1-D arrays, and the inputs as 0-d arrays.
+    Returns the format.
+    """
+    fmt = format_for(path, "time history")
+    cols = history_arrays(history, H)
+    if fmt == "npz":
+        arrays: dict[str, NDArray[Any]] = dict(cols)
+        for key, v in (inputs or {}).items():
+            if v is not None and key not in arrays:
+                arrays[key] = np.asarray(v)
+        with atomic_open(path, "wb") as fh:
+            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        return fmt
+    names = list(cols)
+    numeric = [cols[n].tolist() for n in names[:-1]]
+    phase = cols["phase"].tolist()
+    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
+        fh.write(",".join(names) + "\n")
+        for i in range(len(phase)):
+            fh.write(",".join(repr(float(c[i]) + 0.0) for c in numeric) + f",{phase[i]}\n")
+    return fmt
+
+
+def describe_design_wave(numbers: Mapping[str, float], source: str | None = None) -> str:
+    """One line saying where a design-wave run's numbers come from
+    (:func:`~regimemap.dynamics.design_wave.design_wave_numbers`).
+
+    Examples
+    --------
+    >>> from regimemap.caisson.file import example_design_text, parse_design
+    >>> from regimemap.dynamics.design_wave import design_wave_numbers
+    >>> d = parse_design(example_design_text())
+    >>> print(describe_design_wave(design_wave_numbers(d.analyse(), d.site.depth, d.wave.period),
+    ...                            "goda.toml"))  # doctest: +NORMALIZE_WHITESPACE
+    goda.toml: design wave Hmax = 8.050 m (h = 10.1 m, T1/3 = 11.4 s): k = P/(m g) = 0.277621,
+    tau0 = (0.5 - Hmax/(8 h)) T1/3 = 4.5643 s, uplift U = 0.524144 P in phase; rigid block, no added mass
+    """
+    n = numbers
+    where = f"{source}: " if source else ""
+    return (f"{where}design wave Hmax = {n['Hmax']:.3f} m (h = {n['depth']:g} m, T1/3 = {n['period']:g} s): "
+            f"k = P/(m g) = {n['k']:.6g}, tau0 = (0.5 - Hmax/(8 h)) T1/3 = {n['tau0']:.5g} s, "
+            f"uplift U = {n['uplift_ratio']:.6g} P in phase; rigid block, no added mass")

@@ -4,7 +4,7 @@
 Each computes an outcome map (rest, slide, rock, slide-rock, overturned, still moving) with
 its boundaries refined by bisection (:func:`regimemap.dynamics.outcome.staged_outcome_map`)
 and returns a record holding its inputs, the map, what is derived from it (the count of each
-category, the axes in dimensionless units) and its warnings; :mod:`regimemap.motion.record_files`
+category, the axes in dimensionless units) and its warnings; :mod:`regimemap.motion.record_outcome`
 writes the record, :mod:`regimemap.motion.figures.outcome` draws it.
 """
 
@@ -88,12 +88,12 @@ def run_dynamics_figure(figure: DynamicsFigure, *, cache: str | os.PathLike[str]
     figure : DynamicsFigure
         One of :data:`regimemap.dynamics.presets.DYNAMICS_FIGURES`.
     cache : str or path, optional
-        A folder of computed maps (:func:`regimemap.motion.record_files.cached_outcome`), reused while
+        A folder of computed maps (:func:`regimemap.motion.record_outcome.cached_outcome`), reused while
         the figure's definition and :mod:`regimemap.dynamics` are unchanged.
     bars : callable, optional
         ``bars(total, description)``: a progress bar for each stage.
     """
-    from .record_files import cached_outcome
+    from .record_outcome import cached_outcome
 
     m, x, y, hit = cached_outcome(cache, figure.id, repr(figure), lambda: figure.compute(bars))
     return DynamicsFigureRecord(figure=figure, outcome=m, x=x, y=y, from_cache=hit)

@@ -7,13 +7,17 @@ slide, rock, slide-rock, flight) shaded in the regime maps' colours
 draws the block, its base and the push at a series of instants and writes
 them as a GIF (:func:`write_block_animation`: to a file, atomically).  Both take a
 :class:`regimemap.dynamics.History` (the data); nothing is computed here beyond
-interpolating it at the frames' times.
+interpolating it at the frames' times.  :func:`simulation_figure` and
+:func:`simulation_animation` draw them for the record of
+:func:`regimemap.motion.run.run_simulation` (its history, its block, and the inputs it
+came from in the title, :func:`simulation_title`).
 """
 
 from __future__ import annotations
 
 import math
 import os
+from pathlib import Path
 from typing import IO, TYPE_CHECKING, Any
 
 import numpy as np
@@ -29,8 +33,11 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
+    from ..record import SimulationRecord
+
 __all__ = ["MOTION_FIGSIZE", "ANIMATION_FPS", "ANIMATION_MAX_FRAMES", "BLOCK_ANIMATION_DPI",
-           "phase_runs", "motion_figure", "render_block_animation", "write_block_animation"]
+           "phase_runs", "motion_figure", "render_block_animation", "simulation_animation",
+           "simulation_figure", "simulation_title", "write_block_animation"]
 
 #: Size of the history figure in inches.
 MOTION_FIGSIZE: tuple[float, float] = (6.4, 6.4)
@@ -310,3 +317,41 @@ def write_block_animation(path: str | os.PathLike[str], history: History, **kwar
     format_for(path, "animation")
     with atomic_path(path) as tmp:
         return render_block_animation(tmp, history, **kwargs)
+
+
+def simulation_title(record: SimulationRecord) -> str:
+    """The title of a run's figures: the pulse and the block (or the design file)."""
+    inp, T = record.inputs, record.duration
+    design, pulse_file, k_peak, mu = inp["design"], inp["pulse_file"], inp["k_peak"], inp["mu"]
+    if design is not None:  # the file gives the block: the title says which, and fits
+        return f"{Path(design).name}: design wave, k = {k_peak:.4g}, τ0 = {T:.4g} s; μ = {mu:.3g}"
+    kprime = inp["kprime"]
+    kp = "" if kprime is None else f", k' = {kprime:g}"
+    what = (f"{inp['pulse']} pulse, k_peak = {k_peak:g}, T = {T:g} s" if pulse_file is None
+            else f"pulse {Path(pulse_file).name}")
+    return f"{what}; γ = {inp['gamma']:g}, B = {inp['half_width']:g} m, μ = {mu:g}{kp}"
+
+
+def _history(record: SimulationRecord) -> History:
+    if record.simulation.history is None:
+        raise ValueError("the run kept no time history: run_simulation(..., history=True)")
+    return record.simulation.history
+
+
+def simulation_figure(record: SimulationRecord) -> Figure:
+    """k(t), the slide of the base and theta(t) of a run kept with its history, the phases shaded."""
+    return motion_figure(_history(record), H=record.H, alpha=record.alpha, duration=record.duration,
+                         title=simulation_title(record))
+
+
+def simulation_animation(path: str | os.PathLike[str], record: SimulationRecord
+                         ) -> tuple[int, tuple[int, int], float]:
+    """The block of a run moving, to scale, as a GIF written atomically to ``path``.
+
+    Returns the number of frames, their size in pixels and the speed-up over real time
+    (:func:`~regimemap.motion.figures.history.write_block_animation`).
+    """
+    kprime = record.inputs["kprime"]
+    return write_block_animation(path, _history(record), B=record.inputs["half_width"], H=record.H,
+                                 kprime=kprime if kprime is not None else 0.0, overturned=record.overturned,
+                                 title=simulation_title(record))

@@ -1,15 +1,13 @@
-"""Time histories and outcome maps as files (``regimemap simulate``, ``regimemap outcome``).
+"""An outcome map's record as files (``regimemap outcome``, ``regimemap dynamics-figures``).
 
-* :func:`write_history` -- the time history of a run, ``.csv`` or ``.npz`` (a run's text and
-  JSON: :mod:`regimemap.motion.record_simulation`);
 * :func:`write_outcome` -- an outcome map, ``.npz``, ``.csv`` or ``.json`` (with its refined
   boundaries, :func:`outcome_record`), :func:`write_outcome_record` that of a workflow's
   record, :func:`outcome_summary` what it took, in words;
 * :func:`cached_outcome` -- computed outcome maps kept in ``.npz`` files (``make figures``).
 
-The figures of a run (its history, its animation) are :mod:`regimemap.motion.figures.history`'s.
-
-Every file is written atomically (a temporary file in the same folder, then a rename).
+A run's record (its text, JSON and time history) is :mod:`regimemap.motion.record_simulation`'s;
+the figures are :mod:`regimemap.motion.figures`'.  Every file is written atomically (a temporary
+file in the same folder, then a rename).
 """
 
 from __future__ import annotations
@@ -23,87 +21,31 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..dynamics.outcome import OutcomeMap
-from ..dynamics.stepper import History, Phase
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
 from ..io.numbers import DIGITS as SIGNIFICANT
 from ..io.numbers import round_sig
+from .record_simulation import json_inputs
 
 if TYPE_CHECKING:  # pragma: no cover
     from .record import OutcomeRecord
 
 __all__ = [
-    "HISTORY_FORMATS",
-    "cached_outcome",
     "OUTCOME_DATA_FORMATS",
     "SIGNIFICANT",
-    "history_arrays",
-    "json_inputs",
+    "cached_outcome",
     "outcome_record",
     "outcome_summary",
     "round_sig",
-    "write_history",
     "write_outcome",
     "write_outcome_record",
 ]
 
-#: Formats of a time history and of an outcome map's data, by file suffix (:data:`~.formats.RECORDS`).
-HISTORY_FORMATS: tuple[str, ...] = record_formats("time history")
+#: Formats of an outcome map's data, by file suffix (:data:`~regimemap.io.formats.RECORDS`).
 OUTCOME_DATA_FORMATS: tuple[str, ...] = record_formats("outcome data")
-
-def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
-    """Inputs as JSON values: floats (and those in lists) rounded to :data:`SIGNIFICANT` digits."""
-    out: dict[str, Any] = {}
-    for key, v in inputs.items():
-        if isinstance(v, float):
-            out[key] = round_sig(v)
-        elif isinstance(v, (list, tuple)):
-            out[key] = [round_sig(x) if isinstance(x, float) else x for x in v]
-        else:
-            out[key] = v
-    return out
 
 
 # -- files ----------------------------------------------------------------------------------------
-
-
-def history_arrays(history: History, H: float) -> dict[str, NDArray[Any]]:
-    """The columns of a time history: t, k, x, y, theta, vx, vy, omega, slide (of the base,
-    positive towards O) and phase (the label of the step ending at t; '' at t = 0)."""
-    labels = np.array([""] + [ph.label for ph in Phase])
-    return {
-        "t": history.t, "k": history.k, "x": history.x, "y": history.y, "theta": history.theta,
-        "vx": history.vx, "vy": history.vy, "omega": history.omega, "slide": history.base_slide(H),
-        "phase": labels[history.phase.astype(np.int64) + 1],
-    }
-
-
-def write_history(path: str | os.PathLike[str], history: History, H: float,
-                  inputs: Mapping[str, Any] | None = None) -> str:
-    """Write the time history of a run, atomically; the format (csv or npz) from the suffix.
-
-    ``.csv``: a header and one row per step (numbers as ``repr``, so they read back exactly).
-    ``.npz``: the same columns as 1-D arrays, and the inputs as 0-d arrays.
-    Returns the format.
-    """
-    fmt = format_for(path, "time history")
-    cols = history_arrays(history, H)
-    if fmt == "npz":
-        arrays: dict[str, NDArray[Any]] = dict(cols)
-        for key, v in (inputs or {}).items():
-            if v is not None and key not in arrays:
-                arrays[key] = np.asarray(v)
-        with atomic_open(path, "wb") as fh:
-            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
-        return fmt
-    names = list(cols)
-    numeric = [cols[n].tolist() for n in names[:-1]]
-    phase = cols["phase"].tolist()
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write(",".join(names) + "\n")
-        for i in range(len(phase)):
-            fh.write(",".join(repr(float(c[i]) + 0.0) for c in numeric) + f",{phase[i]}\n")
-    return fmt
 
 
 def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, second: str,
