@@ -417,3 +417,14 @@ def test_the_drawing_rule_can_fail(tmp_path):
         ("regimemap.maps.figures.x", 2, "maps.run.run_map")]
     f.write_text("from ..record import R\nfrom ...drawing.style import S\n")  # a record, the style: allowed
     assert _drawing_physics_imports({"regimemap.maps.figures.x": f}) == []
+
+
+#: The longest a module of the package may be, in lines: a module that outgrows it holds two jobs.
+MAX_MODULE_LINES = 500
+
+
+def test_no_module_outgrows_one_job():
+    """Every module of the package is at most :data:`MAX_MODULE_LINES` lines long."""
+    long = {m: n for m, p in MODULES.items() if (n := len(p.read_text(encoding="utf-8").splitlines()))
+            > MAX_MODULE_LINES}
+    assert not long, f"split by job (at most {MAX_MODULE_LINES} lines): {long}"
