@@ -182,6 +182,7 @@ def test_check_dataclass_is_what_the_sheet_reads():
 
 @pytest.mark.parametrize(("text", "check", "code"), [(NO_LIFE, True, 1), (NO_LIFE, False, 0), (WIDE, True, 0)])
 @pytest.mark.slow
+@pytest.mark.deep
 def test_simulate_design_check(run_cli, tmp_path, text, check, code):
     path = _write(tmp_path, text)
     args = ["simulate", "--design", path, *(["--check"] if check else [])]

@@ -26,6 +26,7 @@ def _open(poly: np.ndarray) -> np.ndarray:
 
 
 @pytest.mark.parametrize("text", [example_design_text(), LIGHT], ids=["goda", "light"])
+@pytest.mark.deep
 def test_panel_d_fills_are_the_maps_exact_polygons(text: str) -> None:
     """Each region of (d) is a Polygon patch whose vertices are compute_map's, mode by mode."""
     from matplotlib.patches import Polygon

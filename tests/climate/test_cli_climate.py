@@ -63,6 +63,7 @@ def test_text_report_annual_maxima_needs_years(run_cli):
 
 
 @pytest.mark.render
+@pytest.mark.deep
 def test_figures_written(run_cli, tmp_path):
     out, diag = tmp_path / "rl.png", tmp_path / "diag.svg"
     r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--bootstrap", "20", "-o", str(out),

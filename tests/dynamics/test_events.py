@@ -126,6 +126,7 @@ def test_crossing_times_are_just_past_the_target() -> None:
 
 @pytest.mark.slow
 @pytest.mark.parametrize("dt", [None, 0.01, 0.0037])
+@pytest.mark.deep
 def test_the_issue_peak_starts_slide_rock_for_every_duration(dt: float | None) -> None:
     """The issue's case: the impulsive peak 0.86 is past the SL/SRO- boundary 0.8557, 0.85 is not."""
     T = np.tile(np.linspace(2.0, 5.0, 8), 2)
@@ -150,6 +151,7 @@ def test_without_events_the_issue_flips_with_the_duration() -> None:
 @pytest.mark.parametrize("shape", ["rectangular", "half-sine", "triangular"])
 @pytest.mark.parametrize("dt", [None, 0.0011, 0.0173])
 @pytest.mark.slow
+@pytest.mark.deep
 def test_initiation_is_decided_by_the_peak_alone(shape: str, dt: float | None) -> None:
     """The Makris-Roussos block starts rocking when k passes k_A = 1/3: a peak 3e-6 above it does
     for every duration and step, one 3e-6 below never does (the exact event on the peak)."""

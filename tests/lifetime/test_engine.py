@@ -152,6 +152,7 @@ QUIET = Errors(ONE, ONE, ONE, ONE)
 @pytest.mark.slow
 @pytest.mark.parametrize("name,sign", [("deepwater", +1), ("transformation", +1), ("force", +1),
                                        ("friction", -1)])
+@pytest.mark.deep
 def test_a_larger_ratio_moves_the_esd(name, sign):
     base = MODEL.with_(errors=replace(QUIET, **{name: ErrorFactor(1.0, 0.05)}))
     up = MODEL.with_(errors=replace(QUIET, **{name: ErrorFactor(1.1, 0.05)}))
@@ -160,6 +161,7 @@ def test_a_larger_ratio_moves_the_esd(name, sign):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ["deepwater", "transformation", "force", "friction"])
+@pytest.mark.deep
 def test_a_larger_spread_slides_more(name):
     base = MODEL.with_(errors=replace(QUIET, **{name: ErrorFactor(1.0, 0.02)}))
     wide = MODEL.with_(errors=replace(QUIET, **{name: ErrorFactor(1.0, 0.15)}))

@@ -215,6 +215,7 @@ def test_a_study_target_section_with_a_record_has_its_band_and_width_at_the_uppe
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_strict_refuses_the_record_s_warnings_before_the_run(run_cli, tmp_path):
     """``--strict`` of ``lifetime`` and ``caisson`` refuses what ``climate --strict`` refuses: the
     warnings of the ``[lifetime.record]`` (here the one-year fit's end point close to its largest

@@ -58,6 +58,7 @@ def test_plot_default_name(runner, tmp_path, monkeypatch):
     ("map.pdf", lambda b: b.startswith(b"%PDF") and b"/Type3" not in b),
     ("MAP.SVG", lambda b: b.lstrip().startswith(b"<?xml")),
 ])
+@pytest.mark.deep
 def test_plot_format_from_suffix(runner, tmp_path, name, check):
     out = tmp_path / name
     _ok(runner.invoke(cli, ["plot", "--gamma", "3", "--kprime", "0.4", "-o", str(out)]))

@@ -170,6 +170,7 @@ def test_write_figures_reports_each_figure_from_the_workers(tmp_path):
 
 
 @pytest.mark.slow
+@pytest.mark.deep
 def test_min_rotation_in_the_categories_title_key_and_json(tmp_path):
     out = tmp_path / "map.json"
     sweep = ["--k-peak", "0.3:1.5:5", "--duration", "0.25,0.5"]
