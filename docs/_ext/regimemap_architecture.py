@@ -4,9 +4,10 @@ The house as ``tests/test_layers.py`` declares and enforces it: one column per p
 ``PRODUCTS``), one row per role (its ``ROLE`` table, and the computation at ``COMPUTE``), each
 cell listing the product's modules of that role, read from ``src/regimemap``; the shared
 packages (its ``LAYER`` table: the physics core, io, the index of the runs, drawing, the
-command line) as bands across the columns at their layers.  Under each product's name, the
-products it imports (read from the source as the layer tests read it: imports inside functions
-count, ``if TYPE_CHECKING:`` imports do not).  Imports point down the picture only.
+command line; and its ``RUNTIME``, the process's own modules) as bands across the columns at
+their layers.  Under each product's name, the products it imports (read from the source as the
+layer tests read it: imports inside functions count, ``if TYPE_CHECKING:`` imports do not).
+Imports point down the picture only.
 
 Written to ``docs/_generated/architecture.svg`` (``docs/guide/architecture.md`` shows it) at
 ``builder-inited``, rewritten only when its bytes change: text as SVG text, no date, a fixed
@@ -41,20 +42,23 @@ SHARED_WORDS = {"mechanics": "the physics: closed forms, the independent solver 
                 "io": "files in and out, by format: atomic writes, the format registry, numbers, verdicts",
                 "workflows": "the index of the runs: one call per command",
                 "drawing": "what every figure shares: style, figure files, the tidy pass, label placement",
-                "cli": "the command line: options and one call per command"}
+                "cli": "the command line: options and one call per command",
+                "process.py workers.py": "the process: its exit on Ctrl-C and SIGTERM; the one pool of "
+                                         "worker processes (standard library only)"}
 
 
 def read_declarations(test_file: Path) -> dict[str, Any]:
-    """The ``LAYER``, ``PRODUCTS``, ``ROLE`` and ``COMPUTE`` literals of ``tests/test_layers.py``."""
+    """The ``LAYER``, ``PRODUCTS``, ``ROLE``, ``COMPUTE`` and ``RUNTIME`` literals of
+    ``tests/test_layers.py``."""
     out: dict[str, Any] = {}
     for node in ast.parse(test_file.read_text(encoding="utf-8")).body:
         if not isinstance(node, (ast.Assign, ast.AnnAssign)) or node.value is None:
             continue
         targets = [node.target] if isinstance(node, ast.AnnAssign) else node.targets
         for t in targets:
-            if isinstance(t, ast.Name) and t.id in ("LAYER", "PRODUCTS", "ROLE", "COMPUTE"):
+            if isinstance(t, ast.Name) and t.id in ("LAYER", "PRODUCTS", "ROLE", "COMPUTE", "RUNTIME"):
                 out[t.id] = ast.literal_eval(node.value)
-    missing = {"LAYER", "PRODUCTS", "ROLE", "COMPUTE"} - set(out)
+    missing = {"LAYER", "PRODUCTS", "ROLE", "COMPUTE", "RUNTIME"} - set(out)
     if missing:
         raise ValueError(f"{test_file}: no {', '.join(sorted(missing))}")
     return out
@@ -113,6 +117,8 @@ def product_imports(src: Path, products: tuple[str, ...]) -> set[tuple[str, str]
 #: A column's width and the gap between columns; a module's line and a band's height;
 #: the characters of a cell's line.
 COL_W, GAP, LINE_H, BAND_H, CELL_CHARS = 2.3, 0.15, 0.2, 0.42, 24
+#: The width of a character of a band's name (9.5 pt bold), in the picture's units: its words follow.
+CHAR_W = 0.12
 #: Where the words of the rows end, left of the first column.
 LEFT = -2.3
 
@@ -120,6 +126,8 @@ LEFT = -2.3
 def _rows(decl: dict[str, Any]) -> list[tuple[float, str, str]]:
     """(layer, kind, name) from the bottom up: a band per shared package, a row per role."""
     rows = [(float(layer), "band", name) for name, layer in decl["LAYER"].items()]
+    # the process's own modules, below every layer (the layer tests give them -0.5)
+    rows.append((-0.5, "band", " ".join(m.rpartition(".")[2] + ".py" for m in decl["RUNTIME"])))
     roles = {"compute": float(decl["COMPUTE"])} | {r: float(v) for r, v in decl["ROLE"].items()}
     merged: dict[float, list[str]] = {}
     for role, layer in roles.items():
@@ -164,9 +172,10 @@ def draw(decl: dict[str, Any], modules: dict[str, dict[str, list[str]]],
         if kind == "band":
             ax.add_patch(FancyBboxPatch((0, y), width - GAP, h, boxstyle="round,pad=0,rounding_size=0.06",
                                         facecolor=SHARED[1], edgecolor=SHARED[0], linewidth=1.0))
-            ax.text(0.12, y + h / 2, f"{name}/", ha="left", va="center", fontsize=9.5, fontweight="bold")
-            ax.text(1.7, y + h / 2, SHARED_WORDS.get(name, ""), ha="left", va="center", fontsize=8.5,
-                    color="#333333")
+            label = name if name.endswith(".py") else f"{name}/"
+            ax.text(0.12, y + h / 2, label, ha="left", va="center", fontsize=9.5, fontweight="bold")
+            ax.text(max(1.7, 0.42 + CHAR_W * len(label)), y + h / 2, SHARED_WORDS.get(name, ""),
+                    ha="left", va="center", fontsize=8.5, color="#333333")
         else:
             roles = name.split("+")
             ax.text(LEFT, y + h / 2, "\n".join(ROLE_WORDS[r] for r in roles), ha="left", va="center",
