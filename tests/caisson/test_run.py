@@ -127,7 +127,7 @@ def test_the_html_display_reads_the_field_table() -> None:
         assert f">{f.label.replace(chr(39), '&#x27;')}</th>" in html
     assert "warning: implausible-value" in html
     rows = dict((label, value) for label, value, _, _ in r.field_rows())
-    assert rows["mode"] == "RE" and rows["kprime"] == r.numbers.kprime
+    assert rows["mode"] == "RE" and rows["k'"] == r.numbers.kprime
 
 
 @pytest.mark.render
@@ -167,3 +167,31 @@ def test_cli_strict_names_the_first_and_counts_the_rest(run_cli, tmp_path: Path)
     assert "(and 1 more); --strict refuses implausible values" in run.stderr
     warned = run_cli(["caisson", path, "--json"])
     assert warned.code == 0 and warned.stderr.count("regimemap: warning: ") == 2
+
+
+def test_each_number_is_declared_once_and_every_output_reads_the_declaration() -> None:
+    """The text's rows, the JSON's numbers and units, and the notebook's table come from the fields
+    of CaissonNumbers: a row the text prints between its first heading and the mode is a declared
+    number, in the declared order, with its declared unit and words."""
+    from dataclasses import fields
+
+    from regimemap.caisson.record import NUMBERS, UNITS, CaissonNumbers, caisson_json, format_caisson
+    from regimemap.caisson.report import caisson_report as report_of
+
+    report = report_of(parse_design(NO_LIFE).analysis_inputs())
+    assert list(caisson_numbers(report)) == [f.name for f in fields(CaissonNumbers)] == list(NUMBERS)
+    assert UNITS == {name: s.unit for name, s in NUMBERS.items() if s.unit} and UNITS["Mp"] == "kN*m/m"
+    out = caisson_json(report)
+    assert all(name in out for name in NUMBERS) and out["units"] == UNITS
+    text = format_caisson(report).splitlines()
+    body = text[text.index("design wave at the wall (Goda 2000)"):
+                next(i for i, line in enumerate(text) if line.startswith("mode on the loaded map"))]
+    rows = [line for line in body if line.startswith("  ") and not line.startswith("  alpha1")]
+    shown = [s for s in NUMBERS.values() if s.label]
+    assert [r[2:16].rstrip() for r in rows] == [s.label for s in shown]
+    assert all(r[27:35].rstrip() == s.unit.replace("*", " ") for r, s in zip(rows, shown, strict=True))
+    assert "  k'            -0.0180155          (Mp/P - H_C)/H_C: P acts 0.0946 m below the centre of mass" in text
+    record = run_caisson(parse_design(NO_LIFE))
+    table = [row[0] for row in record.field_rows()]
+    assert table == [s.label for s in shown] + ["mode", "verdict"]
+    assert record.field_rows()[2][3] == "wave length of T1/3 at h = 10.1 m"

@@ -7,7 +7,9 @@ breakwater), lengths in m; the loaded block's numbers are dimensionless.
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field, fields
 from typing import Any
 
 import numpy as np
@@ -19,8 +21,9 @@ from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
 from ..mechanics.checks import Check
 from .report import REQUIRED_SF, CaissonReport, caisson_checks
 
-__all__ = ["CONSISTENCY_NOTE", "REQUIRED_SF", "UNITS", "caisson_json", "caisson_numbers", "design_check",
-           "design_check_lines", "format_caisson", "impulsive_words", "round_sig"]
+__all__ = ["CONSISTENCY_NOTE", "NUMBERS", "REQUIRED_SF", "UNITS", "CaissonNumbers", "Number", "caisson_json",
+           "caisson_numbers", "design_check", "design_check_lines", "format_caisson", "impulsive_words",
+           "number", "number_rows", "round_sig", "text_context"]
 
 #: Why Goda's safety factors and the map agree (docs/waves.md, Sect. 7).
 CONSISTENCY_NOTE = (
@@ -47,34 +50,159 @@ def _margin_dict(m: Margin) -> dict[str, Any]:
             "nearest": None if n is None else n.direction}
 
 
+@dataclass(frozen=True)
+class Number:
+    """One number of the caisson report, declared once (a field of :class:`CaissonNumbers`).
+
+    Attributes
+    ----------
+    path : str
+        Where it is in the :class:`~regimemap.caisson.report.CaissonReport`, dotted.
+    kilo : bool
+        The report gives it in thousands of its SI unit (kPa, kN/m, kN m/m, t/m).
+    unit : str
+        Its unit in the JSON's ``units`` (``""``: dimensionless, not listed).
+    label : str
+        Its row's name in the text report and the notebook's table (``""``: no row).
+    words : str
+        What it is, in the row; it may name ``{depth}``, ``{arm}`` and ``{side}``
+        (:func:`text_context`).
+    digits : int
+        Its significant digits in the row.
+    heading : str
+        The lines before its row (a section of the report), which may name the values of
+        :func:`text_context`.
+    """
+
+    path: str
+    kilo: bool = False
+    unit: str = ""
+    label: str = ""
+    words: str = ""
+    digits: int = 4
+    heading: str = ""
+
+    def value(self, r: CaissonReport) -> float:
+        """The number in ``r``, in the report's unit (unrounded)."""
+        x = _f(operator.attrgetter(self.path)(r))
+        return x / 1e3 if self.kilo else x
+
+    @property
+    def text_unit(self) -> str:
+        """Its unit as the text writes it (``kN m/m`` for JSON's ``kN*m/m``)."""
+        return self.unit.replace("*", " ") if self.label else ""
+
+
+def number(path: str, unit: str = "", label: str = "", words: str = "", *, kilo: bool = False,
+           digits: int = 4, heading: str = "") -> Any:
+    """A field of :class:`CaissonNumbers`, declared once (:class:`Number`)."""
+    return field(metadata={"number": Number(path, kilo, unit, label, words, digits, heading)})
+
+
+_A = "analysis."
+_PRESSURES = ("pressures (Goda 1974, {impulsive})\n"
+              "  alpha1 = {alpha1}   alpha2 = {alpha2}   alpha3 = {alpha3}   alpha_I = {alpha_I}"
+              "   (alpha* = {which})")
+
+
+@dataclass(frozen=True)
+class CaissonNumbers:
+    """The numbers of a caisson report in engineering units, as its text, JSON and table print them.
+
+    Lengths in m, ``beta`` in degrees, pressures in kPa, forces in kN/m, moments in
+    kN m/m, ``mass`` in t/m; the loaded block's numbers are dimensionless (docs/waves.md
+    for the equations).  Each field is declared once with :func:`number`: where the
+    report holds it, its unit, and its row in the text (:func:`format_caisson`) and the
+    notebook's table; :func:`caisson_numbers`, :data:`UNITS` and the rows are read from
+    these fields.
+    """
+
+    H13: float = number(_A + "heights.H13", "m", "H1/3", "significant height",
+                        heading="design wave at the wall (Goda 2000)")
+    Hmax: float = number(_A + "heights.Hmax", "m", "Hmax", "design (maximum) height")
+    hb: float = number(_A + "heights.hb", "m")
+    L: float = number(_A + "pressures.L", "m", "L", "wave length of T1/3 at h = {depth} m")
+    beta: float = number(_A + "pressures.beta", "degree")
+    eta_star: float = number(_A + "pressures.eta_star", "m", "eta*",
+                             "elevation where the wave pressure vanishes")
+    hc_star: float = number(_A + "pressures.hc_star", "m")
+    alpha1: float = number(_A + "pressures.alpha1")
+    alpha2: float = number(_A + "pressures.alpha2")
+    alpha3: float = number(_A + "pressures.alpha3")
+    alpha_I: float = number(_A + "pressures.alpha_I")
+    alpha_star: float = number(_A + "pressures.alpha_star")
+    p1: float = number(_A + "pressures.p1", "kPa", "p1", "at the still-water level", kilo=True,
+                       heading=_PRESSURES)
+    p2: float = number(_A + "pressures.p2", "kPa", kilo=True)
+    p3: float = number(_A + "pressures.p3", "kPa", "p3", "at the base of the upright section", kilo=True)
+    p4: float = number(_A + "pressures.p4", "kPa", "p4", "at the crest", kilo=True)
+    pu: float = number(_A + "pressures.pu", "kPa", "pu", "uplift at the seaward toe", kilo=True)
+    P: float = number(_A + "loads.P", "kN/m", "P", "horizontal wave force", kilo=True,
+                      heading="loads per metre of breakwater")
+    Mp: float = number(_A + "loads.Mp", "kN*m/m", "Mp", "its moment about the base", kilo=True)
+    U: float = number(_A + "loads.U", "kN/m", "U", "uplift force", kilo=True)
+    Mu: float = number(_A + "loads.Mu", "kN*m/m", "Mu", "its moment about the leeward heel", kilo=True)
+    W: float = number(_A + "section.buoyant_weight", "kN/m", "W'", "buoyant weight (weight in still water)",
+                      kilo=True)
+    mass: float = number(_A + "section.mass", "t/m", kilo=True)
+    SF_sliding: float = number(_A + "stability.sliding", "", "sliding", "mu (W' - U) / P",
+                               heading="safety factors (Goda)")
+    SF_overturning: float = number(_A + "stability.overturning", "", "overturning", "(W' t - Mu) / Mp, t = B")
+    heel_pressure: float = number(_A + "stability.heel_pressure", "kPa", "heel pressure",
+                                  "bearing pressure at the heel", kilo=True)
+    te: float = number(_A + "stability.te", "m")
+    B: float = number(_A + "block.B", "m", "B", "half the width of the upright section",
+                      heading="equivalent loaded block (docs/waves.md, Sect. 7)")
+    H_C: float = number(_A + "block.H", "m", "H_C", "height of the centre of mass above the base")
+    gamma: float = number(_A + "block.gamma", "", "gamma", "H_C / B")
+    k: float = number(_A + "block.k", "", "k", "P / (m g), m g the dry weight", digits=6)
+    kprime: float = number(_A + "block.kprime", "", "k'",
+                           "(Mp/P - H_C)/H_C: P acts {arm} m {side} the centre of mass", digits=6)
+    buoyancy: float = number(_A + "block.beta_b", "", "buoyancy", "rho_w g V_submerged / (m g)", digits=6)
+    uplift_ratio: float = number(_A + "block.nu", "", "uplift ratio", "U / P", digits=6)
+    uplift_arm: float = number(_A + "block.e_u", "", "uplift arm",
+                               "U acts this many B from C toward the seaward corner", digits=6)
+    gyration: float = number(_A + "block.i", "", "gyration", "radius of gyration / B", digits=6)
+    crest: float = number("map.crest")
+    mu: float = number(_A + "block.mu", "", "mu", "friction coefficient", digits=6)
+
+    @classmethod
+    def of(cls, numbers: Mapping[str, float]) -> CaissonNumbers:
+        """The fields of ``numbers`` (:func:`caisson_numbers`)."""
+        return cls(**{f.name: numbers[f.name] for f in fields(cls)})
+
+
+#: The declaration of each number, by name, in the report's order.
+NUMBERS: dict[str, Number] = {f.name: f.metadata["number"] for f in fields(CaissonNumbers)}
+
+
 def caisson_numbers(r: CaissonReport) -> dict[str, float]:
     """The report's numbers in engineering units (kPa, kN/m, kN m/m), unrounded."""
-    a = r.analysis
-    h, p, ld, sec, st, b = a.heights, a.pressures, a.loads, a.section, a.stability, a.block
-    return {
-        "H13": _f(h.H13), "Hmax": _f(h.Hmax), "hb": _f(h.hb), "L": _f(p.L),
-        "beta": _f(p.beta), "eta_star": _f(p.eta_star), "hc_star": _f(p.hc_star),
-        "alpha1": _f(p.alpha1), "alpha2": _f(p.alpha2), "alpha3": _f(p.alpha3),
-        "alpha_I": _f(p.alpha_I), "alpha_star": _f(p.alpha_star),
-        "p1": _f(p.p1) / 1e3, "p2": _f(p.p2) / 1e3, "p3": _f(p.p3) / 1e3, "p4": _f(p.p4) / 1e3,
-        "pu": _f(p.pu) / 1e3,
-        "P": _f(ld.P) / 1e3, "Mp": _f(ld.Mp) / 1e3, "U": _f(ld.U) / 1e3, "Mu": _f(ld.Mu) / 1e3,
-        "W": _f(sec.buoyant_weight) / 1e3, "mass": _f(sec.mass) / 1e3,
-        "SF_sliding": _f(st.sliding), "SF_overturning": _f(st.overturning),
-        "heel_pressure": _f(st.heel_pressure) / 1e3, "te": _f(st.te),
-        "B": _f(b.B), "H_C": _f(b.H), "gamma": _f(b.gamma), "k": _f(b.k), "kprime": _f(b.kprime),
-        "buoyancy": _f(b.beta_b), "uplift_ratio": _f(b.nu), "uplift_arm": _f(b.e_u),
-        "gyration": _f(b.i), "crest": r.map.crest, "mu": _f(b.mu),
-    }
+    return {name: spec.value(r) for name, spec in NUMBERS.items()}
 
 
 #: Units of the numbers of :func:`caisson_json` (the others are dimensionless).
-UNITS = {
-    "H13": "m", "Hmax": "m", "hb": "m", "L": "m", "beta": "degree", "eta_star": "m",
-    "hc_star": "m", "p1": "kPa", "p2": "kPa", "p3": "kPa", "p4": "kPa", "pu": "kPa",
-    "P": "kN/m", "Mp": "kN*m/m", "U": "kN/m", "Mu": "kN*m/m", "W": "kN/m", "mass": "t/m",
-    "heel_pressure": "kPa", "te": "m", "B": "m", "H_C": "m",
-}
+UNITS = {name: spec.unit for name, spec in NUMBERS.items() if spec.unit}
+
+
+def text_context(r: CaissonReport, n: Mapping[str, float],
+                 written: Mapping[str, str] | None = None) -> dict[str, str]:
+    """The values the rows' words and headings name: the depth as written, where P acts, the
+    choice of Goda's coefficients (the alphas, to 4 digits)."""
+    depth = (written or {}).get("site.depth") or f"{float(r.inputs['depth']):g}"
+    side = "above" if n["kprime"] > 0 else ("below" if n["kprime"] < 0 else "at")
+    which = "alpha_I" if n["alpha_I"] > n["alpha2"] and n["alpha_star"] == n["alpha_I"] else "alpha2"
+    return {"depth": depth, "arm": _sig(abs(n["kprime"]) * n["H_C"], 3), "side": side, "which": which,
+            "impulsive": impulsive_words(r),
+            **{a: _sig(n[a]) for a in ("alpha1", "alpha2", "alpha3", "alpha_I")}}
+
+
+def number_rows(n: Mapping[str, float],
+                context: Mapping[str, str]) -> list[tuple[str, float, str, str, int, str]]:
+    """``(label, value, unit, words, digits, heading)`` of every number with a row, in order, its words and
+    heading filled from ``context`` (:func:`text_context`)."""
+    return [(s.label, n[name], s.text_unit, s.words.format_map(context), s.digits,
+             s.heading.format_map(context)) for name, s in NUMBERS.items() if s.label]
 
 
 def impulsive_words(r: CaissonReport) -> str:
@@ -220,46 +348,10 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     if written:
         lines.extend(_inputs_lines(written))
 
-    def row(name: str, value: float, unit: str, what: str, digits: int = 4) -> None:
-        lines.append(f"  {name:<14}{_sig(value, digits):>10} {unit:<8} {what}")
-
-    lines.append("design wave at the wall (Goda 2000)")
-    row("H1/3", n["H13"], "m", "significant height")
-    row("Hmax", n["Hmax"], "m", "design (maximum) height")
-    depth = (written or {}).get("site.depth") or f"{float(r.inputs['depth']):g}"
-    row("L", n["L"], "m", f"wave length of T1/3 at h = {depth} m")
-    row("eta*", n["eta_star"], "m", "elevation where the wave pressure vanishes")
-    lines.append(f"pressures (Goda 1974, {impulsive_words(r)})")
-    which = "alpha_I" if n["alpha_I"] > n["alpha2"] and n["alpha_star"] == n["alpha_I"] else "alpha2"
-    lines.append(f"  alpha1 = {_sig(n['alpha1'])}   alpha2 = {_sig(n['alpha2'])}   "
-                 f"alpha3 = {_sig(n['alpha3'])}   alpha_I = {_sig(n['alpha_I'])}   (alpha* = {which})")
-    row("p1", n["p1"], "kPa", "at the still-water level")
-    row("p3", n["p3"], "kPa", "at the base of the upright section")
-    row("p4", n["p4"], "kPa", "at the crest")
-    row("pu", n["pu"], "kPa", "uplift at the seaward toe")
-    lines.append("loads per metre of breakwater")
-    row("P", n["P"], "kN/m", "horizontal wave force")
-    row("Mp", n["Mp"], "kN m/m", "its moment about the base")
-    row("U", n["U"], "kN/m", "uplift force")
-    row("Mu", n["Mu"], "kN m/m", "its moment about the leeward heel")
-    row("W'", n["W"], "kN/m", "buoyant weight (weight in still water)")
-    lines.append("safety factors (Goda)")
-    row("sliding", n["SF_sliding"], "", "mu (W' - U) / P")
-    row("overturning", n["SF_overturning"], "", "(W' t - Mu) / Mp, t = B")
-    row("heel pressure", n["heel_pressure"], "kPa", "bearing pressure at the heel")
-    lines.append("equivalent loaded block (docs/waves.md, Sect. 7)")
-    row("B", n["B"], "m", "half the width of the upright section")
-    row("H_C", n["H_C"], "m", "height of the centre of mass above the base")
-    row("gamma", n["gamma"], "", "H_C / B")
-    row("k", n["k"], "", "P / (m g), m g the dry weight", 6)
-    side = "above" if n["kprime"] > 0 else ("below" if n["kprime"] < 0 else "at")
-    row("k'", n["kprime"], "", f"(Mp/P - H_C)/H_C: P acts {_sig(abs(n['kprime']) * n['H_C'], 3)} m "
-        f"{side} the centre of mass", 6)
-    row("buoyancy", n["buoyancy"], "", "rho_w g V_submerged / (m g)", 6)
-    row("uplift ratio", n["uplift_ratio"], "", "U / P", 6)
-    row("uplift arm", n["uplift_arm"], "", "U acts this many B from C toward the seaward corner", 6)
-    row("gyration", n["gyration"], "", "radius of gyration / B", 6)
-    row("mu", n["mu"], "", "friction coefficient", 6)
+    for label, value, unit, words, digits, heading in number_rows(n, text_context(r, n, written)):
+        if heading:
+            lines.extend(heading.split("\n"))
+        lines.append(f"  {label:<14}{_sig(value, digits):>10} {unit:<8} {words}")
     lines.append(f"mode on the loaded map: {mode_label(r.mode)} ({mode_description(r.mode)})")
     lines.append("  margin (smallest change that changes the mode, the other variable fixed):")
     lines.append(_margin_line(r.margin_k))

@@ -15,10 +15,9 @@ design sheet, the map of panel (d).
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from pathlib import Path
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from ..maps.loadedmap import mode_label
 from ..maps.points import DesignPoint
@@ -27,7 +26,7 @@ from ..mechanics.notices import Notice
 from ..mechanics.records import Field, Record
 from .file import Design, read_design
 from .file_plausibility import implausible_notices
-from .record import caisson_numbers
+from .record import NUMBERS, CaissonNumbers, caisson_numbers, text_context
 from .report import CaissonReport, MapView, caisson_checks, caisson_report, sheet_map
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -57,60 +56,6 @@ class CaissonError(ValueError):
 
 class ImplausibleDesignError(CaissonError):
     """``strict=True`` and the design has implausible values (likely unit slips): its notices."""
-
-
-@dataclass(frozen=True)
-class CaissonNumbers:
-    """The numbers of a caisson report in engineering units, as its text and JSON print them.
-
-    Lengths in m, ``beta`` in degrees, pressures in kPa, forces in kN/m, moments in
-    kN m/m, ``mass`` in t/m; the loaded block's numbers are dimensionless
-    (:func:`regimemap.caisson.record.caisson_numbers`; docs/waves.md for the equations).
-    """
-
-    H13: float
-    Hmax: float
-    hb: float
-    L: float
-    beta: float
-    eta_star: float
-    hc_star: float
-    alpha1: float
-    alpha2: float
-    alpha3: float
-    alpha_I: float
-    alpha_star: float
-    p1: float
-    p2: float
-    p3: float
-    p4: float
-    pu: float
-    P: float
-    Mp: float
-    U: float
-    Mu: float
-    W: float
-    mass: float
-    SF_sliding: float
-    SF_overturning: float
-    heel_pressure: float
-    te: float
-    B: float
-    H_C: float
-    gamma: float
-    k: float
-    kprime: float
-    buoyancy: float
-    uplift_ratio: float
-    uplift_arm: float
-    gyration: float
-    crest: float
-    mu: float
-
-    @classmethod
-    def of(cls, numbers: Mapping[str, float]) -> CaissonNumbers:
-        """The fields of ``numbers`` (:func:`~regimemap.caisson.record.caisson_numbers`)."""
-        return cls(**{f.name: numbers[f.name] for f in fields(cls)})
 
 
 @dataclass(frozen=True)
@@ -157,24 +102,19 @@ class CaissonRecord(Record):
     lifetime_run: LifetimeRecord | None = None
 
     CAPTION: ClassVar[str] = "Caisson under its design wave (Goda 2000) on the loaded regime map"
+    #: The report's numbers with a row, as the text report words them; the mode; the verdict.
     FIELDS: ClassVar[tuple[Field, ...]] = (
-        Field("numbers.H13", "H1/3", "m", "significant wave height at the wall"),
-        Field("numbers.Hmax", "Hmax", "m", "design (maximum) wave height"),
-        Field("numbers.p1", "p1", "kPa", "Goda's pressure at the still-water level"),
-        Field("numbers.p3", "p3", "kPa", "at the base of the upright section"),
-        Field("numbers.pu", "pu", "kPa", "uplift pressure at the seaward toe"),
-        Field("numbers.P", "P", "kN/m", "horizontal wave force"),
-        Field("numbers.U", "U", "kN/m", "uplift force"),
-        Field("numbers.W", "W'", "kN/m", "buoyant weight"),
-        Field("numbers.SF_sliding", "SF sliding", "", "mu (W' - U) / P"),
-        Field("numbers.SF_overturning", "SF overturning", "", "(W' t - Mu) / Mp, t = B"),
-        Field("numbers.gamma", "gamma", "", "H_C / B of the equivalent block"),
-        Field("numbers.kprime", "kprime", "", "height of P above C over H_C"),
-        Field("numbers.k", "k", "", "P / (m g)"),
-        Field("numbers.mu", "mu", "", "friction coefficient"),
+        *(Field(f"numbers.{name}", s.label, s.text_unit, s.words) for name, s in NUMBERS.items() if s.label),
         Field("mode", "mode", "", "the design point's mode on the loaded map"),
         Field("verdict", "verdict", "", "the design check: PASS when every requirement is met"),
     )
+
+    def field_rows(self) -> list[tuple[str, Any, str, str]]:
+        """``(label, value, unit, description)`` of :data:`FIELDS`, the descriptions filled in as the
+        text report fills them (the depth as written, where P acts)."""
+        context = text_context(self.report, vars(self.numbers), self.design.written)
+        return [(label, value, unit, text.format_map(context))
+                for label, value, unit, text in super().field_rows()]
 
     @property
     def analysis(self) -> CaissonAnalysis:
