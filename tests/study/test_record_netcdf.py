@@ -169,3 +169,25 @@ def test_a_large_seed_is_kept_whole() -> None:
     ds = study_dataset(dataclasses.replace(hand_record(), seed=2**40 + 1))
     assert ds.attrs["seed"] == str(2**40 + 1)
     assert not math.isnan(float(ds["expected_sliding"].values[0]))
+
+
+def test_every_file_writes_the_declared_fields_of_a_row_in_their_order() -> None:
+    """A study row's fields are declared once (COLUMNS): the CSV's columns, the JSON's keys and the
+    NetCDF's variables are those names, in that order, and carry its units and words."""
+    import csv
+    import io
+
+    from regimemap.study.record import COLUMNS, LIMITS
+    from regimemap.study.record_table import STUDY_COLUMNS, study_csv_text, study_json
+
+    rec = hand_record(band=True)
+    header = next(csv.reader(io.StringIO(study_csv_text(rec))))
+    assert tuple(header) == STUDY_COLUMNS == tuple(n for c in COLUMNS for n in c.csv_columns)
+    assert header[6:8] == [f"p_exceed_{x:g}" for x in LIMITS] and "by_year" not in header
+    assert [list(row) for row in study_json(rec)["rows"]] == [[c.name for c in COLUMNS]] * len(rec.rows)
+    ds = study_dataset(rec)
+    names = [n for c in COLUMNS if c.kind != "coord" for n in (c.csv if c.kind == "pair" else (c.name,))]
+    assert list(ds.data_vars) == names
+    for c in COLUMNS:
+        for name, words in ((zip(c.csv, c.long_name, strict=True)) if c.kind == "pair" else ((c.name, c.long_name),)):
+            assert ds[name].attrs["long_name"] == words and ds[name].attrs.get("units", "") == c.unit

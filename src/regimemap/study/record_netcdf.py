@@ -26,11 +26,15 @@ from typing import TYPE_CHECKING, Any, Literal
 import numpy as np
 
 from ..io.atomic import atomic_path
+from .record import COLUMNS
 
 if TYPE_CHECKING:
-    import xarray
+    from collections.abc import Sequence
 
-    from .record import StudyRecord
+    import xarray
+    from numpy.typing import NDArray
+
+    from .record import StudyRecord, StudyRow
 
 __all__ = ["NO_XARRAY", "check_netcdf", "netcdf_engine", "study_dataset", "write_study_netcdf"]
 
@@ -64,6 +68,36 @@ def _nan(x: float | None) -> float:
 
 def _pair(p: tuple[float, float] | None, k: int) -> float:
     return math.nan if p is None else float(p[k])
+
+
+def _variables(rows: Sequence[StudyRow], limits: list[float], years: NDArray[np.int32]
+               ) -> tuple[dict[str, Any], dict[str, Any]]:
+    """The variables and the ``row`` coordinates of :data:`~regimemap.study.record.COLUMNS`, in its order."""
+    data: dict[str, Any] = {}
+    coords: dict[str, Any] = {"row": ("row", np.arange(len(rows), dtype=np.int32),
+                               {"long_name": "section x scenario x width"})}
+    for column in COLUMNS:
+        values = [column.of(r) for r in rows]
+        meta = {"units": column.unit, "long_name": column.long_name}
+        if column.kind == "coord":
+            coords[column.name] = ("row", np.array(values, dtype=np.float64 if column.unit else str),
+                                   meta if column.unit else {"long_name": column.long_name})
+        elif column.kind == "value":
+            data[column.name] = ("row", np.asarray([_nan(v) for v in values], dtype=np.float64), meta)
+        elif column.kind == "limits":  # (row, limit): NaN for None or a limit not given
+            data[column.name] = (("row", "limit"), np.array(
+                [[_nan(dict(pairs).get(x)) for x in limits] for pairs in values],
+                dtype=np.float64).reshape(-1, len(limits)), meta)
+        elif column.kind == "years":
+            by_year = np.full((len(rows), years.size), np.nan)
+            for i, v in enumerate(values):
+                by_year[i, :len(v)] = v
+            data[column.name] = (("row", "year"), by_year, meta)
+        else:
+            for k, (name, long_name) in enumerate(zip(column.csv, column.long_name, strict=True)):
+                data[name] = ("row", np.asarray([_pair(v, k) for v in values], dtype=np.float64),
+                              {"units": column.unit, "long_name": long_name})
+    return data, coords
 
 
 def study_dataset(record: StudyRecord) -> xarray.Dataset:
@@ -102,57 +136,12 @@ def study_dataset(record: StudyRecord) -> xarray.Dataset:
     limits = sorted({x for r in rows for x, _ in r.exceedance}) or [0.1, 0.3]
     years = np.arange(1, record.years + 1, dtype=np.int32)
 
-    def by_limit(each: list[tuple[tuple[float, Any], ...]]) -> Any:
-        """(row, limit) values of ``(limit, value)`` pairs; NaN for None or a limit not given."""
-        return np.array([[_nan(dict(pairs).get(x)) for x in limits] for pairs in each],
-                        dtype=np.float64).reshape(-1, len(limits))
-
-    def row_var(values: list[float], unit: str, long_name: str) -> Any:
-        return ("row", np.asarray(values, dtype=np.float64), {"units": unit, "long_name": long_name})
-
-    by_year = np.full((len(rows), years.size), np.nan)
-    for i, r in enumerate(rows):
-        by_year[i, :len(r.by_year)] = r.by_year
-    data = {
-        "expected_sliding": row_var([r.expected_sliding for r in rows], "m",
-                                    "expected sliding distance over the design life (ESD)"),
-        "std_error": row_var([r.std_error for r in rows], "m", "Monte Carlo standard error of the ESD"),
-        "exceedance": (("row", "limit"), by_limit([r.exceedance for r in rows]),
-                       {"units": "1",
-                        "long_name": "probability that the lifetime's sliding exceeds the limit"}),
-        "year_over": (("row", "limit"), by_limit([r.passes for r in rows]),
-                      {"units": "year",
-                       "long_name": "first service year whose expected cumulative sliding exceeds "
-                                    "the limit (NaN: never within the design life)"}),
-        "by_year": (("row", "year"), by_year,
-                    {"units": "m",
-                     "long_name": "expected cumulative sliding at the end of the service year"}),
-        "band_low": row_var([_pair(r.band, 0) for r in rows], "m",
-                            "lower end of the ESD's climate band (NaN: no record climate)"),
-        "band_high": row_var([_pair(r.band, 1) for r in rows], "m",
-                             "upper end of the ESD's climate band (NaN: no record climate)"),
-        "required_width": row_var([_nan(r.required_width) for r in rows], "m",
-                                  "width for the target ESD (NaN: the section has no target)"),
-        "required_width_low": row_var([_pair(r.required_width_interval, 0) for r in rows], "m",
-                                      "lower end of the required width's Monte Carlo interval"),
-        "required_width_high": row_var([_pair(r.required_width_interval, 1) for r in rows], "m",
-                                       "upper end of the required width's Monte Carlo interval"),
-        "required_width_upper": row_var([_nan(r.required_width_upper) for r in rows], "m",
-                                        "width for the target ESD at the climate band's upper level"),
-    }
-    coords = {
-        "row": ("row", np.arange(len(rows), dtype=np.int32), {"long_name": "section x scenario x width"}),
-        "section": ("row", np.array([r.section for r in rows], dtype=str), {"long_name": "section"}),
-        "chainage": ("row", np.array([r.chainage for r in rows], dtype=np.float64),
-                     {"units": "m", "long_name": "chainage of the section along the breakwater"}),
-        "scenario": ("row", np.array([r.scenario for r in rows], dtype=str),
-                     {"long_name": "climate scenario"}),
-        "width": ("row", np.array([r.width for r in rows], dtype=np.float64),
-                  {"units": "m", "long_name": "caisson width"}),
+    data, coords = _variables(rows, limits, years)
+    coords.update({
         "limit": ("limit", np.asarray(limits, dtype=np.float64),
                   {"units": "m", "long_name": "tolerable sliding distance"}),
         "year": ("year", years, {"units": "year", "long_name": "service year"}),
-    }
+    })
     attrs: dict[str, str | int | float] = {
         "title": "regimemap study: expected sliding of a breakwater's sections under climate scenarios",
         "study_hash": record.study_hash,

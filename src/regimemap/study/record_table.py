@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..io.atomic import atomic_open
 from ..io.numbers import json_number
+from .record import COLUMNS, LIMITS
 
 if TYPE_CHECKING:
     from collections.abc import Sequence
@@ -24,10 +25,8 @@ if TYPE_CHECKING:
 __all__ = ["STUDY_COLUMNS", "study_check_lines", "study_checks_json", "study_csv_text", "study_json",
            "study_lines", "write_study_csv"]
 
-#: The CSV table's columns (units: m, years; probabilities).
-STUDY_COLUMNS = ("section", "chainage", "scenario", "width", "expected_sliding", "std_error",
-                 "p_exceed_0.1", "p_exceed_0.3", "band_low", "band_high", "year_over_0.1", "year_over_0.3",
-                 "required_width", "required_width_low", "required_width_high", "required_width_upper")
+#: The CSV table's columns (units: m, years; probabilities), from :data:`~regimemap.study.record.COLUMNS`.
+STUDY_COLUMNS = tuple(name for column in COLUMNS for name in column.csv_columns)
 
 
 def _cell(x: Any) -> str:
@@ -38,18 +37,34 @@ def _cell(x: Any) -> str:
     return str(x)
 
 
-def _json_number(x: float | None) -> float | None:
-    return None if x is None or math.isnan(x) else x
+def _json_number(x: Any) -> Any:
+    return None if isinstance(x, float) and math.isnan(x) else x
 
 
 def _row_cells(r: StudyRow) -> list[str]:
-    p = dict(r.exceedance)
-    year = dict(r.passes)
-    low, high = r.band if r.band is not None else (None, None)
-    wl, wh = r.required_width_interval if r.required_width_interval is not None else (None, None)
-    return [_cell(v) for v in (r.section, r.chainage, r.scenario, r.width, r.expected_sliding, r.std_error,
-                               p.get(0.1), p.get(0.3), low, high, year.get(0.1), year.get(0.3),
-                               r.required_width, wl, wh, r.required_width_upper)]
+    cells = []
+    for column in COLUMNS:
+        v = column.of(r)
+        if column.kind == "limits":
+            cells += [_cell(dict(v).get(x)) for x in LIMITS]
+        elif column.kind == "pair":
+            cells += [_cell(None if v is None else v[k]) for k in (0, 1)]
+        elif column.kind != "years":
+            cells.append(_cell(v))
+    return cells
+
+
+def _row_json(r: StudyRow) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for column in COLUMNS:
+        v = column.of(r)
+        if column.kind == "limits":
+            out[column.name] = {f"{x:g}": y for x, y in v}
+        elif column.kind in ("pair", "years"):
+            out[column.name] = None if v is None else list(v)
+        else:
+            out[column.name] = _json_number(v)
+    return out
 
 
 def study_csv_text(record: StudyRecord) -> str:
@@ -70,20 +85,7 @@ def write_study_csv(path: str | Path, record: StudyRecord) -> None:
 
 def study_json(record: StudyRecord) -> dict[str, Any]:
     """The JSON summary: the study, its sections and scenarios, ``rows`` and ``notices``."""
-    rows = []
-    for r in record.rows:
-        rows.append({
-            "section": r.section, "chainage": r.chainage, "scenario": r.scenario, "width": r.width,
-            "expected_sliding": r.expected_sliding, "std_error": _json_number(r.std_error),
-            "exceedance": {f"{x:g}": p for x, p in r.exceedance},
-            "by_year": list(r.by_year),
-            "year_over": {f"{x:g}": y for x, y in r.passes},
-            "band": None if r.band is None else list(r.band),
-            "required_width": r.required_width,
-            "required_width_interval": (None if r.required_width_interval is None
-                                        else list(r.required_width_interval)),
-            "required_width_upper": r.required_width_upper,
-        })
+    rows = [_row_json(r) for r in record.rows]
     return {"study": record.source, "study_hash": record.study_hash, "seed": record.seed,
             "trials": record.trials, "years": record.years,
             "sections": [{"name": n, "chainage": c} for n, c in record.sections],
