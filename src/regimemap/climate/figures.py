@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..drawing.save import DEFAULT_DPI
-from ..drawing.style import style_context
+from ..drawing.style import agg_figure, style_context
 from .analysis import ClimateResult, Curves, Diagnostics, Sensitivity
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -118,13 +118,10 @@ def climate_figure(result: ClimateResult, curves: Curves, title: str | None = No
     Figure
         Axes labelled ``record``, ``return levels`` and ``qq`` (Agg canvas, no pyplot).
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     c = curves
     with style_context():
-        fig = Figure(figsize=(7.0, 6.0), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(7.0, 6.0), dpi=dpi)
         top = 0.06 if title else 0.0
         ax_r = fig.add_axes((0.08, 0.64 - top, 0.89, 0.30), label="record")
         ax_l = fig.add_axes((0.08, 0.08, 0.52, 0.44 - top), label="return levels")
@@ -204,13 +201,10 @@ def diagnostics_figure(d: Diagnostics, used: float | None = None, title: str | N
     Figure
         Axes labelled ``mean residual life``, ``shape``, ``modified scale`` (and ``sensitivity``).
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     with style_context():
         two = sensitivity is not None
-        fig = Figure(figsize=(7.0, 5.2 if two else 2.6), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(7.0, 5.2 if two else 2.6), dpi=dpi)
         top = (0.04 if two else 0.08) if title else 0.0
         if two:
             y0, h = 0.585, 0.36 - top

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 from ..mechanics.modes import Mode
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.figure import Figure
     from matplotlib.typing import RcKeyType
 
 __all__ = [
@@ -31,6 +32,7 @@ __all__ = [
     "LINE_LW",
     "MODE_STYLE",
     "ModeStyle",
+    "agg_figure",
     "mode_symbol",
     "phase_style",
     "share_mathtext_parses",
@@ -153,6 +155,19 @@ def style_context() -> Iterator[None]:
 
 
 _shared = {"mathtext": False}
+
+
+def agg_figure(figsize: tuple[float, float], dpi: float | None = None, **kwargs: Any) -> Figure:
+    """A :class:`~matplotlib.figure.Figure` on an Agg canvas (no pyplot, no window).
+
+    ``kwargs`` go to the figure (``facecolor`` ...); ``dpi`` None is matplotlib's default.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize, dpi=dpi, **kwargs)
+    FigureCanvasAgg(fig)
+    return fig
 
 
 def share_mathtext_parses(maxsize: int = 512) -> bool:

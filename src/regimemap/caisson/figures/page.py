@@ -32,7 +32,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ...drawing.save import DEFAULT_DPI, figure_version
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, style_context
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ...maps.mapdata import MapData
 from ...mechanics.checks import Check
@@ -241,8 +241,6 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
     Figure
         Axes labelled as :data:`PANELS`, then :data:`LIFETIME_PANEL` when ``lifetime`` is given.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     W, H = SHEET_SIZE
     by_name = {c.name: c for c in checks}
@@ -251,8 +249,7 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
         return (x / W, y / H, w / W, h / H)
 
     with style_context():
-        fig = Figure(figsize=SHEET_SIZE, dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=SHEET_SIZE, dpi=dpi)
         head = "caisson design sheet" + (f": {title}" if title else "")
         fig.text(0.6 / W, 1.0 - 0.38 / H, head, fontsize=13, fontweight="bold", va="top")
         draw_verdict_badge(fig, checks, x=1.0 - 0.37 / W, y=1.0 - 0.36 / H, fontsize=12.0)

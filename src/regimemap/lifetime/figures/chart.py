@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, style_context
 from ...drawing.text.labelplacer import (
     LabelPlacer,
     Placed,
@@ -128,8 +128,6 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     vertical line labelled in the fail colour when it is narrower than the width for the
     target, and a PASS or FAIL badge at the top right.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     widths = np.asarray(chart.widths, dtype=np.float64)
     esd = np.asarray(chart.expected_sliding, dtype=np.float64)
@@ -148,8 +146,7 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     bottom = 0.5 + 0.08 + 0.17 * rows
     h = top + ah + bottom
     with style_context():
-        fig = Figure(figsize=(w, h), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(w, h), dpi=dpi)
         ax = fig.add_axes((left / w, bottom / h, (w - left - right) / w, ah / h), label="chart")
         ax.set_yscale("log")
         ax.set_xlim(lo_w - pad, hi_w + pad)

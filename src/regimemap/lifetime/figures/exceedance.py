@@ -31,7 +31,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, style_context
 from ...drawing.text.labelplacer import (
     Candidate,
     LabelPlacer,
@@ -422,8 +422,6 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     sliding limit, the zone off the mound is shaded and hatched and the key gives the
     probability of failure.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     handles = _legend_handles(result, band=band)
     rows = (len(handles) + 1) // 2
@@ -433,8 +431,7 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     bottom, left, gap, right, ah = 0.45 + key, 0.62, 0.72, 0.25, 2.25
     h = top + ah + bottom
     with style_context():
-        fig = Figure(figsize=(w, h), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(w, h), dpi=dpi)
         aw = (w - left - gap - right) / 2.0
         ax_a = fig.add_axes((left / w, bottom / h, aw / w, ah / h), label="exceedance")
         ax_b = fig.add_axes(((left + aw + gap) / w, bottom / h, aw / w, ah / h), label="histogram")
