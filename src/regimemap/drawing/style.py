@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 from ..mechanics.modes import Mode
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
     from matplotlib.figure import Figure
     from matplotlib.typing import RcKeyType
 
@@ -33,6 +34,7 @@ __all__ = [
     "MODE_STYLE",
     "ModeStyle",
     "agg_figure",
+    "label_axes",
     "mode_symbol",
     "phase_style",
     "share_mathtext_parses",
@@ -168,6 +170,19 @@ def agg_figure(figsize: tuple[float, float], dpi: float | None = None, **kwargs:
     fig = Figure(figsize=figsize, dpi=dpi, **kwargs)
     FigureCanvasAgg(fig)
     return fig
+
+
+def label_axes(ax: Axes, xlabel: str | None, ylabel: str, fontsize: float, title: str | None = None,
+               *, title_larger: float = 1.0) -> None:
+    """Name the axes in ``fontsize`` points (the x axis unless ``xlabel`` is None), their tick
+    labels half a point smaller and, when given, the ``title`` at the left, ``title_larger``
+    points larger."""
+    if xlabel is not None:
+        ax.set_xlabel(xlabel, fontsize=fontsize)
+    ax.set_ylabel(ylabel, fontsize=fontsize)
+    ax.tick_params(labelsize=fontsize - 0.5)
+    if title is not None:
+        ax.set_title(title, fontsize=fontsize + title_larger, loc="left")
 
 
 def share_mathtext_parses(maxsize: int = 512) -> bool:

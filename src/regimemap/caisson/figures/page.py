@@ -32,7 +32,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ...drawing.save import DEFAULT_DPI, figure_version
-from ...drawing.style import agg_figure, style_context
+from ...drawing.style import agg_figure, label_axes, style_context
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ...maps.mapdata import MapData
 from ...mechanics.checks import Check
@@ -124,11 +124,8 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
     ax_l = fig.add_axes(rect(5.55, 3.33, 2.35, 1.05) if record is None else rect(5.55, 3.55, 2.35, 0.93),
                         label=LIFETIME_PANEL)
     placed = draw_exceedance(ax_l, lifetime, storm=False, fontsize=FS, band=band)
-    ax_l.set_ylabel("$P(S > x)$", fontsize=FS)
-    ax_l.set_xlabel(f"$x$ (m); $S$ = sliding in {lifetime.years} years", fontsize=FS)
-    ax_l.tick_params(labelsize=FS - 0.5)
-    ax_l.set_title(f"(g) {lifetime.trials} lifetimes{_impulsive_words(impulsive)}", fontsize=FS + 1,
-                   loc="left")
+    label_axes(ax_l, f"$x$ (m); $S$ = sliding in {lifetime.years} years", "$P(S > x)$", FS,
+               f"(g) {lifetime.trials} lifetimes{_impulsive_words(impulsive)}")
     if esd is not None:  # the ESD's label: the failing number in the fail colour
         for t, _, _ in placed:
             if t.get_text().startswith("ESD"):
@@ -144,13 +141,9 @@ def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
     """Place the labels of (g) clear of every text of the sheet and of (g)'s lines."""
     from ...drawing.text.labelplacer import LabelPlacer
 
-    placer = LabelPlacer(fig)
-    try:
+    with LabelPlacer(fig) as placer:
         placer.avoid_lines_of(ax)
-        for t, cands, texts in placed:
-            placer.place(ax, t, cands, texts=texts)
-    finally:
-        placer.close()
+        placer.place_all(ax, placed)
 
 # -- the sheet -----------------------------------------------------------------------------
 

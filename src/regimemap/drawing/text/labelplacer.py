@@ -128,8 +128,8 @@ class LabelPlacer(Placer):
     (:func:`figure_texts`) are taken.  :meth:`avoid_line` and :meth:`avoid_lines_of` add
     curves; :meth:`place` moves an annotation (offset in points from a point ``xy``) to the
     first free one of its candidates.  Measured at
-    :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call :meth:`close` to restore the
-    figure's resolution.
+    :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call :meth:`close` (or use it as a
+    context manager) to restore the figure's resolution.
     """
 
     def __init__(self, fig: Figure) -> None:
@@ -142,6 +142,17 @@ class LabelPlacer(Placer):
 
     def close(self) -> None:
         self.fig.set_dpi(self._dpi)
+
+    def __enter__(self) -> LabelPlacer:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def place_all(self, ax: Axes, labels: Placed) -> None:
+        """:meth:`place` each label of ``labels`` (label, candidates, shorter texts) in order."""
+        for t, cands, texts in labels:
+            self.place(ax, t, cands, texts=texts)
 
     def avoid_line(self, ax: Axes, x: Sequence[float] | FloatArray, y: Sequence[float] | FloatArray,
                    transform: Any = None) -> None:

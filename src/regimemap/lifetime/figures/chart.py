@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import agg_figure, style_context
+from ...drawing.style import agg_figure, label_axes, style_context
 from ...drawing.text.labelplacer import (
     LabelPlacer,
     Placed,
@@ -166,9 +166,7 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
         vertical, notes = _draw_widths(ax, chart, lo_w, hi_w)
         vertical += _draw_band(ax, band)
         format_log_axis(ax, "y")
-        ax.set_xlabel("caisson width $b$ (m)", fontsize=FS)
-        ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
-        ax.tick_params(labelsize=FS - 0.5)
+        label_axes(ax, "caisson width $b$ (m)", "expected sliding distance (m)", FS)
         if title:
             draw_title_block(fig, title, h)
         draw_verdict_badge(fig, chart.checks, x=1.0 - 0.1 / w, y=1.0 - 0.1 / h, fontsize=FS + 1.0)
@@ -316,8 +314,7 @@ def _place_labels(fig: Figure, ax: Axes, widths: FloatArray, band: tuple[FloatAr
     """Place the note (a corner first), then the lines' labels in order, clear of the lines and of
     the band (its lower and upper edges, NaN where not drawn)."""
     lb, ub = band
-    placer = LabelPlacer(fig)
-    try:
+    with LabelPlacer(fig) as placer:
         placer.avoid_lines_of(ax)
         placer.avoid_line(ax, widths, ub)
         placer.avoid_line(ax, widths, lb)
@@ -326,7 +323,4 @@ def _place_labels(fig: Figure, ax: Axes, widths: FloatArray, band: tuple[FloatAr
                 placer.avoid_line(ax, [x, x], [a, b])
         if note is not None:  # a corner first; then the lines' labels, the vertical ones first
             placer.place(ax, note, corner_candidates())
-        for t, cands, texts in labels:
-            placer.place(ax, t, cands, texts=texts)
-    finally:
-        placer.close()
+        placer.place_all(ax, labels)

@@ -31,7 +31,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import agg_figure, style_context
+from ...drawing.style import agg_figure, label_axes, style_context
 from ...drawing.text.labelplacer import (
     Candidate,
     LabelPlacer,
@@ -264,9 +264,7 @@ def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
                               *corner_candidates()], []))
     format_log_axis(ax, "x")
     format_log_axis(ax, "y")
-    ax.set_xlabel("sliding $x$ (m)", fontsize=fontsize)
-    ax.set_ylabel(f"$P(S > x)$ in {result.years} years", fontsize=fontsize)
-    ax.tick_params(labelsize=fontsize - 0.5)
+    label_axes(ax, "sliding $x$ (m)", f"$P(S > x)$ in {result.years} years", fontsize)
     return placed
 
 
@@ -305,9 +303,7 @@ def _draw_histogram(ax: Axes, result: LifetimeResult, xlim: tuple[float, float],
     ax.set_xlim(*xlim)
     _reference_lines(ax, result, zorder=1.0)
     format_log_axis(ax, "x")
-    ax.set_xlabel("lifetime sliding $S$ (m)", fontsize=fontsize)
-    ax.set_ylabel("lifetimes", fontsize=fontsize)
-    ax.tick_params(labelsize=fontsize - 0.5)
+    label_axes(ax, "lifetime sliding $S$ (m)", "lifetimes", fontsize)
     return bars, below
 
 
@@ -449,15 +445,11 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         if not bars:
             never.set_multialignment("center")
             never_at = [Candidate((0.5, 0.5), (0.0, 0.0), "center", "center"), *never_at]
-        placer = LabelPlacer(fig)
-        try:
+        with LabelPlacer(fig) as placer:
             for ax in (ax_a, ax_b):
                 placer.avoid_lines_of(ax)
             for x_lo, x_hi, c in bars:  # the bars' outlines
                 placer.avoid_line(ax_b, [x_lo, x_lo, x_hi, x_hi], [0.0, c, c, 0.0])
             placer.place(ax_b, never, never_at, texts=never_texts[1:])
-            for t, cands, texts in placed:
-                placer.place(ax_a, t, cands, texts=texts)
-        finally:
-            placer.close()
+            placer.place_all(ax_a, placed)
     return fig
