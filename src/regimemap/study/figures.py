@@ -19,7 +19,7 @@ import numpy as np
 
 from ..drawing.save import DEFAULT_DPI
 from ..drawing.style import label_axes, style_context
-from ..drawing.text.labelplacer import LabelPlacer, Placed, hline_candidates, make_label
+from ..drawing.text.labelplacer import LabelPlacer, Placed, hline_label
 from ..lifetime.figures.style import (
     FS,
     LIMIT,
@@ -155,8 +155,7 @@ def _limits(ax: Axes) -> Placed:
     out: Placed = []
     for (lim, _), dashes in zip(TOLERABLE, LIMIT_DASHES):
         ax.axhline(lim, color=LIMIT, lw=0.8, dashes=dashes, zorder=2)
-        t = make_label(ax, f"{lim:g} m", xycoords=ax.get_yaxis_transform(), fontsize=FS - 0.5, color="0.15")
-        out.append((t, hline_candidates(lim), []))
+        out.append(hline_label(ax, lim, f"{lim:g} m", fontsize=FS - 0.5, color="0.15"))
     return out
 
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ..drawing.style import agg_figure
+from ..drawing.style import agg_figure, key_below
 from ..lifetime.figures.style import FS, draw_title_block, title_height
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -95,6 +95,4 @@ def key_columns(key: list[tuple[Any, str]]) -> tuple[int, int]:
 
 def draw_key(fig: Figure, key: list[tuple[Any, str]], h: float) -> None:
     """The key below the axes, in :func:`key_columns`' columns."""
-    fig.legend([k for k, _ in key], [v for _, v in key], loc="lower center", bbox_to_anchor=(0.5, 0.06 / h),
-               ncols=key_columns(key)[0], fontsize=FS - 0.5, frameon=False, handlelength=2.8,
-               columnspacing=1.2, borderaxespad=0.0)
+    key_below(fig, key, 0.06 / h, FS - 0.5, ncols=key_columns(key)[0], handlelength=2.8)

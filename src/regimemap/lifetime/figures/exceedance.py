@@ -31,14 +31,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import agg_figure, label_axes, style_context
+from ...drawing.style import agg_figure, key_below, label_axes, style_context
 from ...drawing.text.labelplacer import (
     Candidate,
     LabelPlacer,
     Placed,
     corner_candidates,
     make_label,
-    vline_candidates,
+    vline_label,
 )
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ...mechanics.checks import Check
@@ -237,23 +237,19 @@ def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
         if result.expected_sliding > 0.0:
             text = ("fitted climate: " if band is not None else "") + _esd_text(result)
             check = _esd_check(result)
-            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                           fontsize=fontsize - 0.5,
-                           color="black" if check is None else verdict_colour(check))
-            placed.append((t, vline_candidates(result.expected_sliding, side_first=1),
-                           [text.replace(" \u00b1", "\n\u00b1", 1)] if "\u00b1" in text else []))
+            placed.append(vline_label(
+                ax, result.expected_sliding, text, fontsize=fontsize - 0.5,
+                color="black" if check is None else verdict_colour(check),
+                texts=[text.replace(" \u00b1", "\n\u00b1", 1)] if "\u00b1" in text else []))
         if band is not None and band.expected_sliding > 0.0:
             text = _band_esd_text(band)
             check = _band_check(result)
-            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                           fontsize=fontsize - 0.5,
-                           color=CLIMATE_LINE if check is None or check.passed else verdict_colour(check))
-            placed.append((t, vline_candidates(band.expected_sliding, side_first=1),
-                           [text.replace(": ", ":\n", 1)]))
-        for lim, _ in TOLERABLE:
-            t = make_label(ax, limit_text(lim), xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                       fontsize=fontsize - 0.5, color="0.15")
-            placed.append((t, vline_candidates(lim, side_first=-1), []))
+            placed.append(vline_label(
+                ax, band.expected_sliding, text, fontsize=fontsize - 0.5,
+                color=CLIMATE_LINE if check is None or check.passed else verdict_colour(check),
+                texts=[text.replace(": ", ":\n", 1)]))
+        placed += [vline_label(ax, lim, limit_text(lim), fontsize=fontsize - 0.5, color="0.15", side_first=-1)
+                   for lim, _ in TOLERABLE]
     if life is None:
         t = make_label(ax, f"no lifetime slid\n(0 of {n}): ESD = 0 m", xycoords="axes fraction",
                    fontsize=fontsize)
@@ -368,20 +364,6 @@ def _legend_handles(result: LifetimeResult, storm: bool = True, band: ClimateBan
     return h
 
 
-def _add_legend(fig: Figure, handles: list[Any], y: float, fontsize: float) -> Any:
-    arts, names = [], []
-    for h in handles:
-        if isinstance(h, tuple):
-            arts.append(h[0])
-            names.append(h[1])
-        else:
-            arts.append(h)
-            names.append(h.get_label())
-    return fig.legend(arts, names, loc="lower center", bbox_to_anchor=(0.5, y), ncols=2,
-                      fontsize=fontsize, frameon=False, handlelength=2.6, columnspacing=1.6,
-                      borderaxespad=0.0)
-
-
 def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: float = DEFAULT_DPI,
                     band: ClimateBand | None = None) -> Figure:
     """The sliding of one caisson over its design life: exceedance curve and histogram.
@@ -435,7 +417,8 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         ax_a.set_title("(a) probability of exceedance", fontsize=FS + 0.5, loc="left")
         bars, below = _draw_histogram(ax_b, result, ax_a.get_xlim())
         ax_b.set_title("(b) the lifetimes that slid", fontsize=FS + 0.5, loc="left")
-        _add_legend(fig, handles, 0.06 / h, FS - 0.5)
+        key_below(fig, [k if isinstance(k, tuple) else (k, k.get_label()) for k in handles], 0.06 / h,
+                  FS - 0.5, columnspacing=1.6)
         if title:
             draw_title_block(fig, title, h)
         draw_verdict_badge(fig, result.checks, x=1.0 - 0.1 / w, y=1.0 - 0.1 / h, fontsize=FS + 1.0)
