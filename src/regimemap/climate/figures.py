@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..drawing.save import DEFAULT_DPI
-from ..drawing.style import style_context
+from ..drawing.style import agg_figure, label_axes, style_context
 from .analysis import ClimateResult, Curves, Diagnostics, Sensitivity
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -55,11 +55,10 @@ def _draw_record(ax: Axes, result: ClimateResult) -> None:
     if spikes:
         ax.plot(np.array([np.datetime64(t[:-1]) for t, _ in spikes]).astype("O"), [h for _, h in spikes],
                 "x", color="k", ms=4, ls="none", label=f"{len(spikes)} spikes flagged")
-    ax.set_ylabel("$H_s$ [m]", fontsize=FS)
     ax.set_ylim(0.0, 1.3 * float(np.nanmax(r.hs)))  # head room for the key
     ax.legend(fontsize=FS - 1, loc="upper left", ncols=4, frameon=False)
-    ax.set_title(f"(a) the record: {r.years:.1f} years observed, step {r.step_hours:g} h",
-                 fontsize=FS + 0.5, loc="left")
+    label_axes(ax, None, "$H_s$ [m]", FS, f"(a) the record: {r.years:.1f} years observed, step "
+               f"{r.step_hours:g} h", title_larger=0.5)
 
 
 def _draw_return_levels(ax: Axes, result: ClimateResult, c: Curves) -> None:
@@ -79,10 +78,9 @@ def _draw_return_levels(ax: Axes, result: ClimateResult, c: Curves) -> None:
             ax.annotate(f"$H_{{50}}$ = {rv['value']:.2f} m{band}", (50.0, rv["value"]), xytext=(-6, 10),
                         textcoords="offset points", ha="right", va="bottom", fontsize=FS - 1)
     ax.set_xscale("log")
-    ax.set_xlabel("return period $R$ [years]", fontsize=FS)
-    ax.set_ylabel("return level $H_R$ [m]", fontsize=FS)
     ax.legend(fontsize=FS - 1, loc="lower right", frameon=False)
-    ax.set_title("(b) return levels", fontsize=FS + 0.5, loc="left")
+    label_axes(ax, "return period $R$ [years]", "return level $H_R$ [m]", FS, "(b) return levels",
+               title_larger=0.5)
 
 
 def _draw_qq(ax: Axes, c: Curves) -> None:
@@ -94,9 +92,7 @@ def _draw_qq(ax: Axes, c: Curves) -> None:
     ax.set_xlim(lo - pad, hi + pad)
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel("fitted quantile [m]", fontsize=FS)
-    ax.set_ylabel("observed [m]", fontsize=FS)
-    ax.set_title("(c) QQ plot", fontsize=FS + 0.5, loc="left")
+    label_axes(ax, "fitted quantile [m]", "observed [m]", FS, "(c) QQ plot", title_larger=0.5)
 
 
 def climate_figure(result: ClimateResult, curves: Curves, title: str | None = None, *,
@@ -118,13 +114,10 @@ def climate_figure(result: ClimateResult, curves: Curves, title: str | None = No
     Figure
         Axes labelled ``record``, ``return levels`` and ``qq`` (Agg canvas, no pyplot).
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     c = curves
     with style_context():
-        fig = Figure(figsize=(7.0, 6.0), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(7.0, 6.0), dpi=dpi)
         top = 0.06 if title else 0.0
         ax_r = fig.add_axes((0.08, 0.64 - top, 0.89, 0.30), label="record")
         ax_l = fig.add_axes((0.08, 0.08, 0.52, 0.44 - top), label="return levels")
@@ -132,8 +125,6 @@ def climate_figure(result: ClimateResult, curves: Curves, title: str | None = No
         _draw_record(ax_r, result)
         _draw_return_levels(ax_l, result, c)
         _draw_qq(ax_q, c)
-        for ax in (ax_r, ax_l, ax_q):
-            ax.tick_params(labelsize=FS - 0.5)
         if title:
             fig.suptitle(title, fontsize=FS + 1.5, y=0.985)
     return fig
@@ -145,10 +136,9 @@ def _draw_mrl(ax: Axes, d: Diagnostics, used: float | None) -> None:
     ax.plot(d.thresholds, d.mean_excess, color=FIT, lw=1.3, label="mean excess")
     if used is not None:
         ax.axvline(used, color=THRESHOLD, lw=1.0, dashes=(5.0, 2.5), label="threshold used")
-    ax.set_xlabel("threshold $u$ [m]", fontsize=FS)
-    ax.set_ylabel("mean of peak $-$ $u$ [m]", fontsize=FS)
     ax.legend(fontsize=FS - 1.5, frameon=False, loc="lower left")
-    ax.set_title("(a) mean residual life", fontsize=FS + 0.5, loc="left")
+    label_axes(ax, "threshold $u$ [m]", "mean of peak $-$ $u$ [m]", FS, "(a) mean residual life",
+               title_larger=0.5)
 
 
 def _draw_stability(ax: Axes, d: Diagnostics, used: float | None, which: str) -> None:
@@ -164,9 +154,7 @@ def _draw_stability(ax: Axes, d: Diagnostics, used: float | None, which: str) ->
         ax.axhline(0.0, color="0.5", lw=0.6)
     if used is not None:
         ax.axvline(used, color=THRESHOLD, lw=1.0, dashes=(5.0, 2.5))
-    ax.set_xlabel("threshold $u$ [m]", fontsize=FS)
-    ax.set_ylabel(label, fontsize=FS)
-    ax.set_title(title, fontsize=FS + 0.5, loc="left")
+    label_axes(ax, "threshold $u$ [m]", label, FS, title, title_larger=0.5)
 
 
 def _draw_sensitivity(ax: Axes, s: Sensitivity, used: float | None) -> None:
@@ -186,10 +174,9 @@ def _draw_sensitivity(ax: Axes, s: Sensitivity, used: float | None) -> None:
         lo, hi = float(np.min(s.lower[ok])), float(np.max(s.upper[ok]))
         pad = 0.1 * (hi - lo)
         ax.set_ylim(lo - 2.5 * pad, hi + 2.5 * pad)  # room for the quantiles below, the key above
-    ax.set_xlabel("threshold $u$ [m] (quantile of $H_s$; storms)", fontsize=FS)
-    ax.set_ylabel(f"$H_{{{s.period:g}}}$ [m]", fontsize=FS)
     ax.legend(fontsize=FS - 1.5, frameon=False, loc="upper left")
-    ax.set_title(f"(d) the {s.period:g}-year value across thresholds", fontsize=FS + 0.5, loc="left")
+    label_axes(ax, "threshold $u$ [m] (quantile of $H_s$; storms)", f"$H_{{{s.period:g}}}$ [m]", FS,
+               f"(d) the {s.period:g}-year value across thresholds", title_larger=0.5)
 
 
 def diagnostics_figure(d: Diagnostics, used: float | None = None, title: str | None = None, *,
@@ -204,13 +191,10 @@ def diagnostics_figure(d: Diagnostics, used: float | None = None, title: str | N
     Figure
         Axes labelled ``mean residual life``, ``shape``, ``modified scale`` (and ``sensitivity``).
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     with style_context():
         two = sensitivity is not None
-        fig = Figure(figsize=(7.0, 5.2 if two else 2.6), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(7.0, 5.2 if two else 2.6), dpi=dpi)
         top = (0.04 if two else 0.08) if title else 0.0
         if two:
             y0, h = 0.585, 0.36 - top
@@ -222,13 +206,9 @@ def diagnostics_figure(d: Diagnostics, used: float | None = None, title: str | N
         _draw_mrl(ax_a, d, used)
         _draw_stability(ax_b, d, used, "xi")
         _draw_stability(ax_c, d, used, "sigma")
-        axes = [ax_a, ax_b, ax_c]
         if sensitivity is not None:
             ax_d = fig.add_axes((0.075, 0.085, 0.915, 0.36), label="sensitivity")
             _draw_sensitivity(ax_d, sensitivity, used)
-            axes.append(ax_d)
-        for ax in axes:
-            ax.tick_params(labelsize=FS - 0.5)
         if title:
             fig.suptitle(title, fontsize=FS + 1.5, y=0.985)
     return fig

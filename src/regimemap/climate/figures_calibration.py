@@ -14,7 +14,7 @@ from collections.abc import Mapping, Sequence
 from typing import TYPE_CHECKING, Any
 
 from ..drawing.save import DEFAULT_DPI
-from ..drawing.style import style_context
+from ..drawing.style import agg_figure, style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -89,8 +89,6 @@ def calibration_figure(coverage: Mapping[str, Mapping[str, Any]], methods: Seque
     ValueError
         No method to draw, or one not in ``coverage``.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     names = list(coverage) if methods is None else list(methods)
     if not names:
@@ -101,8 +99,7 @@ def calibration_figure(coverage: Mapping[str, Mapping[str, Any]], methods: Seque
     rows = len(names)
     with style_context():
         inches = 0.5 + 2.15 * rows
-        fig = Figure(figsize=(7.0, inches), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(7.0, inches), dpi=dpi)
         height = 1.0 / inches
         for r, m in enumerate(names):
             for j, level in enumerate(("90", "95")):

@@ -6,6 +6,9 @@ later kinds of map (outcomes after initiation) add registries of their own
 beside it.  :func:`style_context` applies regimemap's rcParams (byte-stable SVG
 and PDF, TrueType fonts in PDF) without touching matplotlib's global rcParams; the
 one process-wide change it makes is a cache: :func:`share_mathtext_parses`.
+What every figure draws the same way is here once too: :func:`agg_figure` (a figure
+on an Agg canvas, no pyplot), :func:`label_axes` (axis labels, tick labels and a
+panel's title) and :func:`key_below` (a figure's key under its axes).
 """
 
 from __future__ import annotations
@@ -13,13 +16,16 @@ from __future__ import annotations
 import contextlib
 import functools
 import os
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from ..mechanics.modes import Mode
 
 if TYPE_CHECKING:  # pragma: no cover
+    from matplotlib.axes import Axes
+    from matplotlib.figure import Figure
+    from matplotlib.legend import Legend
     from matplotlib.typing import RcKeyType
 
 __all__ = [
@@ -31,6 +37,9 @@ __all__ = [
     "LINE_LW",
     "MODE_STYLE",
     "ModeStyle",
+    "agg_figure",
+    "key_below",
+    "label_axes",
     "mode_symbol",
     "phase_style",
     "share_mathtext_parses",
@@ -153,6 +162,41 @@ def style_context() -> Iterator[None]:
 
 
 _shared = {"mathtext": False}
+
+
+def agg_figure(figsize: tuple[float, float], dpi: float | None = None, **kwargs: Any) -> Figure:
+    """A :class:`~matplotlib.figure.Figure` on an Agg canvas (no pyplot, no window).
+
+    ``kwargs`` go to the figure (``facecolor`` ...); ``dpi`` None is matplotlib's default.
+    """
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=figsize, dpi=dpi, **kwargs)
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def key_below(fig: Figure, key: Sequence[tuple[Any, str]], y: float, fontsize: float, *,
+              ncols: int = 2, handlelength: float = 2.6, columnspacing: float = 1.2) -> Legend:
+    """A figure's key centred below its axes, without a frame: the (handle, text) pairs of
+    ``key`` in ``ncols`` columns, its bottom at ``y`` (figure fraction)."""
+    return fig.legend([k for k, _ in key], [v for _, v in key], loc="lower center",
+                      bbox_to_anchor=(0.5, y), ncols=ncols, fontsize=fontsize, frameon=False,
+                      handlelength=handlelength, columnspacing=columnspacing, borderaxespad=0.0)
+
+
+def label_axes(ax: Axes, xlabel: str | None, ylabel: str, fontsize: float, title: str | None = None,
+               *, title_larger: float = 1.0) -> None:
+    """Name the axes in ``fontsize`` points (the x axis unless ``xlabel`` is None), their tick
+    labels half a point smaller and, when given, the ``title`` at the left, ``title_larger``
+    points larger."""
+    if xlabel is not None:
+        ax.set_xlabel(xlabel, fontsize=fontsize)
+    ax.set_ylabel(ylabel, fontsize=fontsize)
+    ax.tick_params(labelsize=fontsize - 0.5)
+    if title is not None:
+        ax.set_title(title, fontsize=fontsize + title_larger, loc="left")
 
 
 def share_mathtext_parses(maxsize: int = 512) -> bool:

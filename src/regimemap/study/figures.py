@@ -18,8 +18,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..drawing.save import DEFAULT_DPI
-from ..drawing.style import style_context
-from ..drawing.text.labelplacer import LabelPlacer, Placed, hline_candidates, make_label
+from ..drawing.style import label_axes, style_context
+from ..drawing.text.labelplacer import LabelPlacer, Placed, hline_label
 from ..lifetime.figures.style import (
     FS,
     LIMIT,
@@ -155,8 +155,7 @@ def _limits(ax: Axes) -> Placed:
     out: Placed = []
     for (lim, _), dashes in zip(TOLERABLE, LIMIT_DASHES):
         ax.axhline(lim, color=LIMIT, lw=0.8, dashes=dashes, zorder=2)
-        t = make_label(ax, f"{lim:g} m", xycoords=ax.get_yaxis_transform(), fontsize=FS - 0.5, color="0.15")
-        out.append((t, hline_candidates(lim), []))
+        out.append(hline_label(ax, lim, f"{lim:g} m", fontsize=FS - 0.5, color="0.15"))
     return out
 
 
@@ -168,15 +167,11 @@ def _limit_key() -> list[tuple[Any, str]]:
 
 
 def _place(fig: Figure, ax: Axes, labels: Placed, lines: list[tuple[Any, Any]]) -> None:
-    placer = LabelPlacer(fig)
-    try:
+    with LabelPlacer(fig) as placer:
         placer.avoid_lines_of(ax)
         for x, y in lines:
             placer.avoid_line(ax, x, y)
-        for t, cands, texts in labels:
-            placer.place(ax, t, cands, texts=texts)
-    finally:
-        placer.close()
+        placer.place_all(ax, labels)
 
 
 def _log_range(values: list[float]) -> tuple[float, float]:
@@ -253,9 +248,7 @@ def _chainage(record: StudyRecord, dpi: float) -> Figure:
                 ax.plot([xr], [r.expected_sliding], ls="none", marker=s.marker, markersize=4.0,
                         markerfacecolor="white", markeredgecolor=s.color, zorder=5)
     format_log_axis(ax, "y")
-    ax.set_xlabel("chainage (m)", fontsize=FS)
-    ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
+    label_axes(ax, "chainage (m)", "expected sliding distance (m)", FS)
     _section_names(fig, ax, list(record.sections), rotate)
     draw_key(fig, key, fig.get_figheight())
     _place(fig, ax, _limits(ax), lines)
@@ -310,9 +303,7 @@ def _years(record: StudyRecord, section: str, dpi: float) -> Figure:
                 ax.plot([year], [v[year - 1]], ls="none", marker=marker, markersize=5.0,
                         markerfacecolor=s.color, markeredgecolor="white", markeredgewidth=0.6, zorder=5)
     format_log_axis(ax, "y")
-    ax.set_xlabel("service year", fontsize=FS)
-    ax.set_ylabel("expected cumulative sliding (m)", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
+    label_axes(ax, "service year", "expected cumulative sliding (m)", FS)
     draw_key(fig, key, fig.get_figheight())
     _place(fig, ax, _limits(ax), lines)
     return fig
@@ -372,9 +363,7 @@ def _width(record: StudyRecord, dpi: float) -> Figure:
     lo_w, hi_w = min(values), max(values)
     pad = 0.12 * ((hi_w - lo_w) or max(1.0, hi_w))
     ax.set_ylim(lo_w - pad, hi_w + pad)
-    ax.set_xlabel("chainage (m)", fontsize=FS)
-    ax.set_ylabel("caisson width $b$ (m)", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
+    label_axes(ax, "chainage (m)", "caisson width $b$ (m)", FS)
     _section_names(fig, ax, targets, rotate)
     draw_key(fig, key, fig.get_figheight())
     return fig

@@ -12,6 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from ..drawing.style import agg_figure, key_below
 from ..lifetime.figures.style import FS, draw_title_block, title_height
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -71,15 +72,12 @@ def new_frame(title: str, key_rows: int, *, dpi: float, top_extra: float = 0.0) 
     ``top_extra`` inches are kept between the title and the axes (for section names above
     them).  Returns the figure, the axes and the figure's height in inches.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     top = 0.15 + title_height(title) + 0.05 + top_extra
     width, left, ah = FIG_WIDTH, _LEFT, 2.9
     bottom = 0.5 + 0.08 + 0.17 * key_rows
     h = top + ah + bottom
-    fig = Figure(figsize=(width, h), dpi=dpi)
-    FigureCanvasAgg(fig)
+    fig = agg_figure(figsize=(width, h), dpi=dpi)
     ax = fig.add_axes((left / width, bottom / h, AXES_WIDTH / width, ah / h), label="study")
     draw_title_block(fig, title, h)
     return fig, ax, h
@@ -97,6 +95,4 @@ def key_columns(key: list[tuple[Any, str]]) -> tuple[int, int]:
 
 def draw_key(fig: Figure, key: list[tuple[Any, str]], h: float) -> None:
     """The key below the axes, in :func:`key_columns`' columns."""
-    fig.legend([k for k, _ in key], [v for _, v in key], loc="lower center", bbox_to_anchor=(0.5, 0.06 / h),
-               ncols=key_columns(key)[0], fontsize=FS - 0.5, frameon=False, handlelength=2.8,
-               columnspacing=1.2, borderaxespad=0.0)
+    key_below(fig, key, 0.06 / h, FS - 0.5, ncols=key_columns(key)[0], handlelength=2.8)

@@ -32,7 +32,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from ...drawing.save import DEFAULT_DPI, figure_version
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, label_axes, style_context
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ...maps.mapdata import MapData
 from ...mechanics.checks import Check
@@ -124,11 +124,8 @@ def _lifetime_panels(fig: Figure, r: CaissonReport, lifetime: LifetimeResult,
     ax_l = fig.add_axes(rect(5.55, 3.33, 2.35, 1.05) if record is None else rect(5.55, 3.55, 2.35, 0.93),
                         label=LIFETIME_PANEL)
     placed = draw_exceedance(ax_l, lifetime, storm=False, fontsize=FS, band=band)
-    ax_l.set_ylabel("$P(S > x)$", fontsize=FS)
-    ax_l.set_xlabel(f"$x$ (m); $S$ = sliding in {lifetime.years} years", fontsize=FS)
-    ax_l.tick_params(labelsize=FS - 0.5)
-    ax_l.set_title(f"(g) {lifetime.trials} lifetimes{_impulsive_words(impulsive)}", fontsize=FS + 1,
-                   loc="left")
+    label_axes(ax_l, f"$x$ (m); $S$ = sliding in {lifetime.years} years", "$P(S > x)$", FS,
+               f"(g) {lifetime.trials} lifetimes{_impulsive_words(impulsive)}")
     if esd is not None:  # the ESD's label: the failing number in the fail colour
         for t, _, _ in placed:
             if t.get_text().startswith("ESD"):
@@ -144,13 +141,9 @@ def _place_lifetime_labels(fig: Figure, ax: Axes, placed: Placed) -> None:
     """Place the labels of (g) clear of every text of the sheet and of (g)'s lines."""
     from ...drawing.text.labelplacer import LabelPlacer
 
-    placer = LabelPlacer(fig)
-    try:
+    with LabelPlacer(fig) as placer:
         placer.avoid_lines_of(ax)
-        for t, cands, texts in placed:
-            placer.place(ax, t, cands, texts=texts)
-    finally:
-        placer.close()
+        placer.place_all(ax, placed)
 
 # -- the sheet -----------------------------------------------------------------------------
 
@@ -241,8 +234,6 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
     Figure
         Axes labelled as :data:`PANELS`, then :data:`LIFETIME_PANEL` when ``lifetime`` is given.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     W, H = SHEET_SIZE
     by_name = {c.name: c for c in checks}
@@ -251,8 +242,7 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
         return (x / W, y / H, w / W, h / H)
 
     with style_context():
-        fig = Figure(figsize=SHEET_SIZE, dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=SHEET_SIZE, dpi=dpi)
         head = "caisson design sheet" + (f": {title}" if title else "")
         fig.text(0.6 / W, 1.0 - 0.38 / H, head, fontsize=13, fontweight="bold", va="top")
         draw_verdict_badge(fig, checks, x=1.0 - 0.37 / W, y=1.0 - 0.36 / H, fontsize=12.0)

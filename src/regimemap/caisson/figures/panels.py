@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ...drawing.style import MODE_STYLE, ModeStyle
+from ...drawing.style import MODE_STYLE, ModeStyle, label_axes
 from ...drawing.verdict import FAIL_COLOUR
 from ...maps.describe import format_significant
 from ...maps.loadedmap import Margin, mode_label
@@ -133,10 +133,8 @@ def draw_section(ax: Axes, r: CaissonReport) -> None:
     ax.set_ylim(-h - 0.06 * (h + hc), top)
     ax.set_aspect("equal", adjustable="box")
     ax.set_anchor("NW")
-    ax.set_ylabel("elevation (m)", fontsize=FS)
-    ax.set_xlabel("distance from the seaward face (m); mound slopes schematic", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
-    ax.set_title("(a) cross-section to scale, waves from the left", fontsize=FS + 1, loc="left")
+    label_axes(ax, "distance from the seaward face (m); mound slopes schematic", "elevation (m)", FS,
+               "(a) cross-section to scale, waves from the left")
 
 
 # -- (b, c) pressures ------------------------------------------------------------------------
@@ -171,10 +169,8 @@ def draw_pressure(ax: Axes, r: CaissonReport) -> None:
     ax.plot([0.0], [eta], marker="_", color="#1f4e99", markersize=8)
     ax.set_xlim(pmax, 0.0)
     ax.set_ylim(-hp - 0.08 * (hp + top), top)
-    ax.set_xlabel("pressure (kPa), on the seaward face", fontsize=FS)
-    ax.set_ylabel("elevation (m)", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
-    ax.set_title("(b) Goda pressures on the wall", fontsize=FS + 1, loc="left")
+    label_axes(ax, "pressure (kPa), on the seaward face", "elevation (m)", FS,
+               "(b) Goda pressures on the wall")
 
 
 def draw_uplift(ax: Axes, r: CaissonReport) -> None:
@@ -189,10 +185,7 @@ def draw_uplift(ax: Axes, r: CaissonReport) -> None:
     ax.text(0.97 * w, 0.72 * pu, f"U = {fmt(u)} kN/m", ha="right", va="center", fontsize=FS)
     ax.set_xlim(-0.05 * w, 1.05 * w)
     ax.set_ylim(1.3 * pu, -0.15 * pu)  # pressure downward: the triangle hangs under the base
-    ax.set_xlabel("from the seaward toe (m)", fontsize=FS)
-    ax.set_ylabel("uplift (kPa)", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
-    ax.set_title("(c) uplift under the base", fontsize=FS + 1, loc="left")
+    label_axes(ax, "from the seaward toe (m)", "uplift (kPa)", FS, "(c) uplift under the base")
 
 
 
@@ -235,10 +228,8 @@ def draw_path(ax: Axes, r: CaissonReport, required: tuple[float, float] = (1.2, 
                 color="#b0001c", va="bottom", ha="left" if right else "right")
     ax.set_xlim(float(s[0]), float(s[-1]))
     ax.set_ylim(0.0, ymax)
-    ax.set_xlabel("wave-height factor s (H$_{1/3}$, H$_{max}$ \u00d7 s)", fontsize=FS)
-    ax.set_ylabel("safety factor", fontsize=FS)
-    ax.tick_params(labelsize=FS - 0.5)
-    ax.set_title("(e) as the wave grows", fontsize=FS + 1, loc="left")
+    label_axes(ax, "wave-height factor s (H$_{1/3}$, H$_{max}$ \u00d7 s)", "safety factor", FS,
+               "(e) as the wave grows")
 
 
 def _curve_label(ax: Axes, s: np.ndarray, sf: np.ndarray, name: str, color: str, ymax: float

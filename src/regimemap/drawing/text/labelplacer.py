@@ -31,7 +31,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.text import Text
 
 __all__ = ["Candidate", "LabelPlacer", "Placed", "corner_candidates", "figure_texts",
-           "hline_candidates", "make_label", "vline_candidates"]
+           "hline_candidates", "hline_label", "make_label", "vline_candidates", "vline_label"]
 
 FloatArray = NDArray[np.float64]
 #: Font size (points) of a label by default.
@@ -128,8 +128,8 @@ class LabelPlacer(Placer):
     (:func:`figure_texts`) are taken.  :meth:`avoid_line` and :meth:`avoid_lines_of` add
     curves; :meth:`place` moves an annotation (offset in points from a point ``xy``) to the
     first free one of its candidates.  Measured at
-    :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call :meth:`close` to restore the
-    figure's resolution.
+    :data:`~regimemap.drawing.text.tidy.MEASURE_DPI`: call :meth:`close` (or use it as a
+    context manager) to restore the figure's resolution.
     """
 
     def __init__(self, fig: Figure) -> None:
@@ -142,6 +142,17 @@ class LabelPlacer(Placer):
 
     def close(self) -> None:
         self.fig.set_dpi(self._dpi)
+
+    def __enter__(self) -> LabelPlacer:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def place_all(self, ax: Axes, labels: Placed) -> None:
+        """:meth:`place` each label of ``labels`` (label, candidates, shorter texts) in order."""
+        for t, cands, texts in labels:
+            self.place(ax, t, cands, texts=texts)
 
     def avoid_line(self, ax: Axes, x: Sequence[float] | FloatArray, y: Sequence[float] | FloatArray,
                    transform: Any = None) -> None:
@@ -285,3 +296,20 @@ def make_label(ax: Axes, text: str, *, xycoords: Any = "data", rotation: float =
 
 #: Labels to place: (annotation, its candidate places, other wordings of it).
 Placed = list[tuple[Any, list[Candidate], list[str]]]
+
+
+def vline_label(ax: Axes, x: float, text: str, *, fontsize: float, color: str = "black",
+                side_first: int = 1, texts: Sequence[str] = ()) -> tuple[Any, list[Candidate], list[str]]:
+    """The turned label of a vertical line at ``x`` (data), its places
+    (:func:`vline_candidates`) and its other wordings ``texts``: an item of :data:`Placed`."""
+    t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0, fontsize=fontsize,
+                   color=color)
+    return t, vline_candidates(x, side_first=side_first), list(texts)
+
+
+def hline_label(ax: Axes, y: float, text: str, *, fontsize: float, color: str = "black"
+                ) -> tuple[Any, list[Candidate], list[str]]:
+    """The label of a horizontal line at ``y`` (data) and its places (:func:`hline_candidates`):
+    an item of :data:`Placed`."""
+    t = make_label(ax, text, xycoords=ax.get_yaxis_transform(), fontsize=fontsize, color=color)
+    return t, hline_candidates(y), []

@@ -11,9 +11,11 @@ from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
+    from matplotlib.axes import Axes
     from matplotlib.backend_bases import RendererBase
+    from matplotlib.text import Text
 
-__all__ = ["GAP", "Box", "box_of", "box_within", "boxes_hit", "visible_text"]
+__all__ = ["GAP", "Box", "box_of", "box_within", "boxes_hit", "major_tick_labels", "visible_text"]
 
 #: A box (x0, y0, x1, y1), in pixels.
 Box = tuple[float, float, float, float]
@@ -42,3 +44,15 @@ def visible_text(t: Any) -> bool:
     """Whether ``t`` is a text that is drawn: visible, not blank, on a figure."""
     return bool(t is not None and t.get_visible() and t.get_text().strip()
                 and t.figure is not None)
+
+
+def major_tick_labels(ax: Axes) -> list[Text]:
+    """The labels of the major ticks that are drawn (in view, visible, not empty)."""
+    out = []
+    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+        lo, hi = min(lo, hi), max(lo, hi)
+        eps = 1e-9 * (hi - lo)
+        for tick in axis.get_major_ticks():
+            if lo - eps <= tick.get_loc() <= hi + eps:
+                out += [lab for lab in (tick.label1, tick.label2) if visible_text(lab)]
+    return out

@@ -44,7 +44,7 @@ from .relabel import (
     polygon_of,
     replace_label,
 )
-from .textboxes import GAP, Box, box_of, visible_text
+from .textboxes import GAP, Box, box_of, major_tick_labels, visible_text
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.artist import Artist
@@ -71,21 +71,6 @@ class TidyReport:
 
 
 # -- boxes -------------------------------------------------------------------------------------
-
-
-def _tick_labels(ax: Axes) -> list[Text]:
-    """The tick labels that are drawn (in view, visible, not empty)."""
-    out = []
-    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
-        lo, hi = min(lo, hi), max(lo, hi)
-        eps = 1e-9 * (hi - lo)
-        for tick in axis.get_major_ticks():
-            if not (lo - eps <= tick.get_loc() <= hi + eps):
-                continue
-            for lab in (tick.label1, tick.label2):
-                if visible_text(lab):
-                    out.append(lab)
-    return out
 
 
 def _marker_boxes(ax: Axes, line: Any, renderer: RendererBase) -> list[Box]:
@@ -134,7 +119,7 @@ def text_boxes(fig: Figure, maps: Sequence[MapArtists], extra: Iterable[Artist] 
 
 def _axes_boxes(ax: Axes, renderer: RendererBase) -> list[tuple[str, Box]]:
     """The boxes of the texts of one Axes that stay: tick and axis labels, titles, key."""
-    out = [(f"tick {t.get_text()}", box_of(t, renderer)) for t in _tick_labels(ax)]
+    out = [(f"tick {t.get_text()}", box_of(t, renderer)) for t in major_tick_labels(ax)]
     titles: list[Any] = [getattr(ax, n, None) for n in ("title", "_left_title", "_right_title")]
     out += [(f"axis text {t.get_text()!r}", box_of(t, renderer))
             for t in [ax.xaxis.label, ax.yaxis.label, *titles] if visible_text(t)]

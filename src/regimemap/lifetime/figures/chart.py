@@ -16,14 +16,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, key_below, label_axes, style_context
 from ...drawing.text.labelplacer import (
     LabelPlacer,
     Placed,
     corner_candidates,
-    hline_candidates,
+    hline_label,
     make_label,
-    vline_candidates,
+    vline_label,
 )
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ..chart import DesignChart
@@ -128,8 +128,6 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     vertical line labelled in the fail colour when it is narrower than the width for the
     target, and a PASS or FAIL badge at the top right.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     widths = np.asarray(chart.widths, dtype=np.float64)
     esd = np.asarray(chart.expected_sliding, dtype=np.float64)
@@ -148,8 +146,7 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
     bottom = 0.5 + 0.08 + 0.17 * rows
     h = top + ah + bottom
     with style_context():
-        fig = Figure(figsize=(w, h), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(w, h), dpi=dpi)
         ax = fig.add_axes((left / w, bottom / h, (w - left - right) / w, ah / h), label="chart")
         ax.set_yscale("log")
         ax.set_xlim(lo_w - pad, hi_w + pad)
@@ -169,15 +166,11 @@ def chart_figure(chart: DesignChart, title: str | None = None, *, dpi: float = D
         vertical, notes = _draw_widths(ax, chart, lo_w, hi_w)
         vertical += _draw_band(ax, band)
         format_log_axis(ax, "y")
-        ax.set_xlabel("caisson width $b$ (m)", fontsize=FS)
-        ax.set_ylabel("expected sliding distance (m)", fontsize=FS)
-        ax.tick_params(labelsize=FS - 0.5)
+        label_axes(ax, "caisson width $b$ (m)", "expected sliding distance (m)", FS)
         if title:
             draw_title_block(fig, title, h)
         draw_verdict_badge(fig, chart.checks, x=1.0 - 0.1 / w, y=1.0 - 0.1 / h, fontsize=FS + 1.0)
-        fig.legend([k for k, _ in key], [v for _, v in key], loc="lower center",
-                   bbox_to_anchor=(0.5, 0.06 / h), ncols=2, fontsize=FS - 0.5, frameon=False,
-                   handlelength=2.6, columnspacing=1.2, borderaxespad=0.0)
+        key_below(fig, key, 0.06 / h, FS - 0.5)
         note = None
         if notes:
             note = make_label(ax, "\n".join(notes), xycoords="axes fraction", fontsize=FS - 0.5)
@@ -212,10 +205,7 @@ def _draw_band(ax: Axes, band: ChartBand | None) -> Placed:
     if wb is None:
         return []
     ax.axvline(wb, color=BAND_LINE, lw=1.0, zorder=3)
-    text = f"b = {metres(wb)} m (band)"
-    t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0, fontsize=FS - 0.5,
-                   color=BAND_LINE)
-    return [(t, vline_candidates(wb, side_first=1), [])]
+    return [vline_label(ax, wb, f"b = {metres(wb)} m (band)", fontsize=FS - 0.5, color=BAND_LINE)]
 
 
 def _chart_key(chart: DesignChart, all_slid: bool, on_limit: list[bool]) -> list[tuple[Any, str]]:
@@ -260,15 +250,12 @@ def _draw_limits(ax: Axes, chart: DesignChart, on_limit: list[bool]) -> Placed:
     for (lim, _), dashes, is_target in zip(TOLERABLE, LIMIT_DASHES, on_limit):
         ax.axhline(lim, color=TARGET if is_target else LIMIT, lw=1.0 if is_target else 0.8,
                    dashes=dashes, zorder=2)
-        t = make_label(ax, f"{lim:g} m" + (": target" if is_target else ""),
-                       xycoords=ax.get_yaxis_transform(), fontsize=FS - 0.5,
-                       color=TARGET_TEXT if is_target else "0.15")
-        horizontal.append((t, hline_candidates(lim), []))
+        horizontal.append(hline_label(ax, lim, f"{lim:g} m" + (": target" if is_target else ""),
+                                      fontsize=FS - 0.5, color=TARGET_TEXT if is_target else "0.15"))
     if not any(on_limit):
         ax.axhline(chart.target, color=TARGET, lw=1.0, zorder=2)
-        t = make_label(ax, f"target {chart.target:g} m", xycoords=ax.get_yaxis_transform(),
-                       fontsize=FS - 0.5, color=TARGET_TEXT)
-        horizontal.append((t, hline_candidates(chart.target), []))
+        horizontal.append(hline_label(ax, chart.target, f"target {chart.target:g} m", fontsize=FS - 0.5,
+                                      color=TARGET_TEXT))
     return horizontal
 
 
@@ -285,10 +272,8 @@ def _draw_widths(ax: Axes, chart: DesignChart, lo_w: float, hi_w: float) -> tupl
                  and bool(np.asarray(chart.expected_sliding, dtype=np.float64)[0] <= chart.target))
         text = (f"b = {metres(wt)} m: every width meets it" if every
                 else f"b = {metres(wt)} m")
-        t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                       fontsize=FS - 0.5, color=TARGET_TEXT)
-        vertical.append((t, vline_candidates(wt, side_first=1),
-                         [text.replace(": ", ":\n")] if every else []))
+        vertical.append(vline_label(ax, wt, text, fontsize=FS - 0.5, color=TARGET_TEXT,
+                                    texts=[text.replace(": ", ":\n")] if every else []))
         iv = chart.width_interval
         if iv is not None:
             ax.plot([iv.lower, iv.upper], [chart.target, chart.target], color=TARGET, lw=2.2,
@@ -299,14 +284,11 @@ def _draw_widths(ax: Axes, chart: DesignChart, lo_w: float, hi_w: float) -> tupl
     dw = chart.design_width
     if dw is not None and chart.checks and lo_w <= dw <= hi_w:
         ax.axvline(dw, color="black", lw=1.0, dashes=DESIGN_DASHES, zorder=3)
-        t = make_label(ax, f"design b = {metres(dw)} m", xycoords=ax.get_xaxis_transform(),
-                       rotation=90.0, fontsize=FS - 0.5, color=verdict_colour(chart.checks[0]))
-        vertical.append((t, vline_candidates(dw, side_first=-1), []))
+        vertical.append(vline_label(ax, dw, f"design b = {metres(dw)} m", fontsize=FS - 0.5,
+                                    color=verdict_colour(chart.checks[0]), side_first=-1))
     if math.isfinite(sfw) and lo_w <= sfw <= hi_w:
         ax.axvline(sfw, color="black", lw=1.0, dashes=SF_DASHES, zorder=3)
-        t = make_label(ax, f"b = {metres(sfw)} m", xycoords=ax.get_xaxis_transform(),
-                       rotation=90.0, fontsize=FS - 0.5)
-        vertical.append((t, vline_candidates(sfw, side_first=-1), []))
+        vertical.append(vline_label(ax, sfw, f"b = {metres(sfw)} m", fontsize=FS - 0.5, side_first=-1))
     elif math.isfinite(sfw):
         notes.append(f"{sf} under the 50-year wave:\nb = {metres(sfw)} m, off the chart")
     else:
@@ -319,8 +301,7 @@ def _place_labels(fig: Figure, ax: Axes, widths: FloatArray, band: tuple[FloatAr
     """Place the note (a corner first), then the lines' labels in order, clear of the lines and of
     the band (its lower and upper edges, NaN where not drawn)."""
     lb, ub = band
-    placer = LabelPlacer(fig)
-    try:
+    with LabelPlacer(fig) as placer:
         placer.avoid_lines_of(ax)
         placer.avoid_line(ax, widths, ub)
         placer.avoid_line(ax, widths, lb)
@@ -329,7 +310,4 @@ def _place_labels(fig: Figure, ax: Axes, widths: FloatArray, band: tuple[FloatAr
                 placer.avoid_line(ax, [x, x], [a, b])
         if note is not None:  # a corner first; then the lines' labels, the vertical ones first
             placer.place(ax, note, corner_candidates())
-        for t, cands, texts in labels:
-            placer.place(ax, t, cands, texts=texts)
-    finally:
-        placer.close()
+        placer.place_all(ax, labels)

@@ -31,14 +31,14 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, key_below, label_axes, style_context
 from ...drawing.text.labelplacer import (
     Candidate,
     LabelPlacer,
     Placed,
     corner_candidates,
     make_label,
-    vline_candidates,
+    vline_label,
 )
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ...mechanics.checks import Check
@@ -237,23 +237,19 @@ def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
         if result.expected_sliding > 0.0:
             text = ("fitted climate: " if band is not None else "") + _esd_text(result)
             check = _esd_check(result)
-            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                           fontsize=fontsize - 0.5,
-                           color="black" if check is None else verdict_colour(check))
-            placed.append((t, vline_candidates(result.expected_sliding, side_first=1),
-                           [text.replace(" \u00b1", "\n\u00b1", 1)] if "\u00b1" in text else []))
+            placed.append(vline_label(
+                ax, result.expected_sliding, text, fontsize=fontsize - 0.5,
+                color="black" if check is None else verdict_colour(check),
+                texts=[text.replace(" \u00b1", "\n\u00b1", 1)] if "\u00b1" in text else []))
         if band is not None and band.expected_sliding > 0.0:
             text = _band_esd_text(band)
             check = _band_check(result)
-            t = make_label(ax, text, xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                           fontsize=fontsize - 0.5,
-                           color=CLIMATE_LINE if check is None or check.passed else verdict_colour(check))
-            placed.append((t, vline_candidates(band.expected_sliding, side_first=1),
-                           [text.replace(": ", ":\n", 1)]))
-        for lim, _ in TOLERABLE:
-            t = make_label(ax, limit_text(lim), xycoords=ax.get_xaxis_transform(), rotation=90.0,
-                       fontsize=fontsize - 0.5, color="0.15")
-            placed.append((t, vline_candidates(lim, side_first=-1), []))
+            placed.append(vline_label(
+                ax, band.expected_sliding, text, fontsize=fontsize - 0.5,
+                color=CLIMATE_LINE if check is None or check.passed else verdict_colour(check),
+                texts=[text.replace(": ", ":\n", 1)]))
+        placed += [vline_label(ax, lim, limit_text(lim), fontsize=fontsize - 0.5, color="0.15", side_first=-1)
+                   for lim, _ in TOLERABLE]
     if life is None:
         t = make_label(ax, f"no lifetime slid\n(0 of {n}): ESD = 0 m", xycoords="axes fraction",
                    fontsize=fontsize)
@@ -264,9 +260,7 @@ def draw_exceedance(ax: Axes, result: LifetimeResult, *, storm: bool = True,
                               *corner_candidates()], []))
     format_log_axis(ax, "x")
     format_log_axis(ax, "y")
-    ax.set_xlabel("sliding $x$ (m)", fontsize=fontsize)
-    ax.set_ylabel(f"$P(S > x)$ in {result.years} years", fontsize=fontsize)
-    ax.tick_params(labelsize=fontsize - 0.5)
+    label_axes(ax, "sliding $x$ (m)", f"$P(S > x)$ in {result.years} years", fontsize)
     return placed
 
 
@@ -305,9 +299,7 @@ def _draw_histogram(ax: Axes, result: LifetimeResult, xlim: tuple[float, float],
     ax.set_xlim(*xlim)
     _reference_lines(ax, result, zorder=1.0)
     format_log_axis(ax, "x")
-    ax.set_xlabel("lifetime sliding $S$ (m)", fontsize=fontsize)
-    ax.set_ylabel("lifetimes", fontsize=fontsize)
-    ax.tick_params(labelsize=fontsize - 0.5)
+    label_axes(ax, "lifetime sliding $S$ (m)", "lifetimes", fontsize)
     return bars, below
 
 
@@ -372,20 +364,6 @@ def _legend_handles(result: LifetimeResult, storm: bool = True, band: ClimateBan
     return h
 
 
-def _add_legend(fig: Figure, handles: list[Any], y: float, fontsize: float) -> Any:
-    arts, names = [], []
-    for h in handles:
-        if isinstance(h, tuple):
-            arts.append(h[0])
-            names.append(h[1])
-        else:
-            arts.append(h)
-            names.append(h.get_label())
-    return fig.legend(arts, names, loc="lower center", bbox_to_anchor=(0.5, y), ncols=2,
-                      fontsize=fontsize, frameon=False, handlelength=2.6, columnspacing=1.6,
-                      borderaxespad=0.0)
-
-
 def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: float = DEFAULT_DPI,
                     band: ClimateBand | None = None) -> Figure:
     """The sliding of one caisson over its design life: exceedance curve and histogram.
@@ -422,8 +400,6 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     sliding limit, the zone off the mound is shaded and hatched and the key gives the
     probability of failure.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     handles = _legend_handles(result, band=band)
     rows = (len(handles) + 1) // 2
@@ -433,8 +409,7 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
     bottom, left, gap, right, ah = 0.45 + key, 0.62, 0.72, 0.25, 2.25
     h = top + ah + bottom
     with style_context():
-        fig = Figure(figsize=(w, h), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(w, h), dpi=dpi)
         aw = (w - left - gap - right) / 2.0
         ax_a = fig.add_axes((left / w, bottom / h, aw / w, ah / h), label="exceedance")
         ax_b = fig.add_axes(((left + aw + gap) / w, bottom / h, aw / w, ah / h), label="histogram")
@@ -442,7 +417,8 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         ax_a.set_title("(a) probability of exceedance", fontsize=FS + 0.5, loc="left")
         bars, below = _draw_histogram(ax_b, result, ax_a.get_xlim())
         ax_b.set_title("(b) the lifetimes that slid", fontsize=FS + 0.5, loc="left")
-        _add_legend(fig, handles, 0.06 / h, FS - 0.5)
+        key_below(fig, [k if isinstance(k, tuple) else (k, k.get_label()) for k in handles], 0.06 / h,
+                  FS - 0.5, columnspacing=1.6)
         if title:
             draw_title_block(fig, title, h)
         draw_verdict_badge(fig, result.checks, x=1.0 - 0.1 / w, y=1.0 - 0.1 / h, fontsize=FS + 1.0)
@@ -452,15 +428,11 @@ def lifetime_figure(result: LifetimeResult, title: str | None = None, *, dpi: fl
         if not bars:
             never.set_multialignment("center")
             never_at = [Candidate((0.5, 0.5), (0.0, 0.0), "center", "center"), *never_at]
-        placer = LabelPlacer(fig)
-        try:
+        with LabelPlacer(fig) as placer:
             for ax in (ax_a, ax_b):
                 placer.avoid_lines_of(ax)
             for x_lo, x_hi, c in bars:  # the bars' outlines
                 placer.avoid_line(ax_b, [x_lo, x_lo, x_hi, x_hi], [0.0, c, c, 0.0])
             placer.place(ax_b, never, never_at, texts=never_texts[1:])
-            for t, cands, texts in placed:
-                placer.place(ax_a, t, cands, texts=texts)
-        finally:
-            placer.close()
+            placer.place_all(ax_a, placed)
     return fig

@@ -119,15 +119,11 @@ def _frame_handles(modes: Sequence[Mode]) -> list[Any]:
 def frame_figure(figsize: tuple[float, float] | None = None, dpi: float = ANIMATION_DPI
                  ) -> tuple[Figure, Axes]:
     """The figure of an animation frame: a map, its key below, its caption above."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    from ...drawing.style import style_context
+    from ...drawing.style import agg_figure, style_context
 
     w, h = figsize or FRAME_SIZE
     with style_context():
-        fig = Figure(figsize=(w, h), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(w, h), dpi=dpi)
         ax = fig.add_axes((_F_LEFT / w, _F_BOTTOM / h, 1.0 - (_F_LEFT + _F_RIGHT) / w,
                            1.0 - (_F_TOP + _F_BOTTOM) / h))
     return fig, ax

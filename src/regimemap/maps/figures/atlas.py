@@ -236,10 +236,7 @@ def atlas_figure(record: AtlasRecord, *, dpi: float = ATLAS_DPI, style: MapStyle
         order, each with the title ``gamma = ..., k' = ...``, and one legend.
         When a shared view would cram panels, each has its own and the title says so.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    from ...drawing.style import style_context
+    from ...drawing.style import agg_figure, style_context
     from .key import key_legend
     from .mapplot import MapStyle
 
@@ -258,8 +255,7 @@ def atlas_figure(record: AtlasRecord, *, dpi: float = ATLAS_DPI, style: MapStyle
                    -(-len(handles) // key_cols))
     titles = [[_panel_title(g, kp, sweep) for kp in kprimes] for g in gammas]
     with style_context():
-        fig = Figure(figsize=(frame.fw, frame.fh), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(frame.fw, frame.fh), dpi=dpi)
         arts = _draw_panels(fig, frame, datas, titles, style, share)
         key_legend(fig, handles, loc="lower center", ncols=key_cols,
                    bbox_to_anchor=(0.5, 0.1 / frame.fh), fontsize=8, frameon=False,

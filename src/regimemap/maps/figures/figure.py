@@ -16,7 +16,7 @@ import numpy as np
 
 from ...drawing.artists import MapArtists
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, style_context
 from ...drawing.text.tidy import tidy_figure
 from ..mapdata import MapData
 from .mapplot import MapStyle, draw_design_points, draw_map
@@ -81,14 +81,11 @@ def new_figure(figsize: tuple[float, float] | None = None, dpi: float = DEFAULT_
         A figure to clear and reuse (keeps its canvas, renderer and their
         text caches: much faster when drawing many maps).
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     with style_context():
         reuse = None
         if fig is None:
-            fig = Figure(figsize=figsize or FIGSIZE, dpi=dpi)
-            FigureCanvasAgg(fig)
+            fig = agg_figure(figsize=figsize or FIGSIZE, dpi=dpi)
         else:
             if len(fig.axes) == 1 and not fig.texts and not fig.legends:
                 reuse = fig.axes[0]  # clearing an Axes is cheaper than making one

@@ -15,7 +15,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import style_context
+from ...drawing.style import agg_figure, style_context
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -117,13 +117,10 @@ def draw_model(ax: Axes) -> None:
 
 def model_figure(dpi: float = DEFAULT_DPI, fig: Figure | None = None) -> Figure:
     """Fig. 2.1 on a Figure of its own (Agg canvas, no pyplot)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
 
     with style_context():
         if fig is None:
-            fig = Figure(figsize=(6.4, 5.6), dpi=dpi)
-            FigureCanvasAgg(fig)
+            fig = agg_figure(figsize=(6.4, 5.6), dpi=dpi)
         else:
             fig.clear()
             fig.set_size_inches(6.4, 5.6)

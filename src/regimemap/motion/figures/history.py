@@ -24,7 +24,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...drawing.save import DEFAULT_DPI
-from ...drawing.style import phase_style, style_context
+from ...drawing.style import agg_figure, phase_style, style_context
 from ...dynamics.stepper import History, Phase
 from ...io.formats import format_for
 from ...mechanics.modes import Mode
@@ -104,14 +104,11 @@ def motion_figure(history: History, *, H: float, alpha: float, duration: float, 
     fig : Figure, optional
         A figure to clear and reuse.
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
     from matplotlib.patches import Patch
 
     with style_context():
         if fig is None:
-            fig = Figure(figsize=MOTION_FIGSIZE, dpi=dpi)
-            FigureCanvasAgg(fig)
+            fig = agg_figure(figsize=MOTION_FIGSIZE, dpi=dpi)
         else:
             fig.clear()
         t = history.t
@@ -194,8 +191,6 @@ def render_block_animation(path: str | os.PathLike[str] | IO[bytes], history: Hi
     -------
     (frames, (width, height), speed)
     """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
     from matplotlib.patches import FancyArrow, Polygon
     from PIL import Image
 
@@ -231,8 +226,7 @@ def render_block_animation(path: str | os.PathLike[str] | IO[bytes], history: Hi
         x0 -= 0.5 * grow
         x1 += 0.5 * grow
     with style_context():
-        fig = Figure(figsize=(6.4, 3.6), dpi=dpi)
-        FigureCanvasAgg(fig)
+        fig = agg_figure(figsize=(6.4, 3.6), dpi=dpi)
         ax = fig.add_axes((0.02, 0.02, 0.96, 0.86))
         ax.set_xlim(x0, x1)
         ax.set_ylim(y0, y1)

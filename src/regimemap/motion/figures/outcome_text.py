@@ -31,6 +31,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ...drawing.style import OUTCOME_STYLE
+from ...drawing.text.textboxes import GAP, Box, box_of, box_within, boxes_hit, major_tick_labels, visible_text
 from ...drawing.text.tidy import MEASURE_DPI, fit_title
 from .outcome_artists import CategoryLookup, OutcomeArtists, TextReport
 
@@ -38,16 +39,12 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.backend_bases import RendererBase
     from matplotlib.figure import Figure
-    from matplotlib.text import Text
 
 
 __all__ = ["CategoryLookup", "TextReport", "outcome_text_boxes", "place_outcome_text"]
 
-Box = tuple[float, float, float, float]
 FloatArray = NDArray[np.float64]
 
-#: Gap (pixels) kept between two texts, and between a text and the edge of the axes.
-_GAP = 2.0
 #: Spacing (pixels) of the points along a line that a label must keep off.
 _STEP = 2.0
 #: Most places tried for a region's name (nodes of its region, evenly thinned).
@@ -59,23 +56,6 @@ _CONTOUR_PATCH: dict[str, Any] = {"boxstyle": "round,pad=0.3", "fc": "white", "e
 _WHERE = {"residual_slide": (1, 3), "max_rotation": (2, 3)}
 
 
-def _box(t: Any, renderer: RendererBase, pad: float = 0.0) -> Box:
-    bb = t.get_window_extent(renderer)
-    return (bb.x0 - pad, bb.y0 - pad, bb.x1 + pad, bb.y1 + pad)
-
-
-def _hit(a: Box, b: Box) -> bool:
-    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
-
-
-def _inside(a: Box, b: Box) -> bool:
-    return a[0] >= b[0] and a[1] >= b[1] and a[2] <= b[2] and a[3] <= b[3]
-
-
-def _visible(t: Any) -> bool:
-    return bool(t is not None and t.get_visible() and t.get_text().strip() and t.figure is not None)
-
-
 def _axes(art: OutcomeArtists) -> Axes | None:
     for a in [*art.regions.values(), *art.labels, art.title, art.legend]:
         ax = getattr(a, "axes", None) if a is not None else None
@@ -83,17 +63,6 @@ def _axes(art: OutcomeArtists) -> Axes | None:
             found: Axes = ax
             return found
     return None
-
-
-def _tick_labels(ax: Axes) -> list[Text]:
-    out = []
-    for axis, (lo, hi) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
-        lo, hi = min(lo, hi), max(lo, hi)
-        eps = 1e-9 * (hi - lo)
-        for tick in axis.get_major_ticks():
-            if lo - eps <= tick.get_loc() <= hi + eps:
-                out += [lab for lab in (tick.label1, tick.label2) if _visible(lab)]
-    return out
 
 
 def outcome_text_boxes(fig: Figure, art: OutcomeArtists) -> dict[str, list[tuple[str, Box]]]:
@@ -107,14 +76,14 @@ def outcome_text_boxes(fig: Figure, art: OutcomeArtists) -> dict[str, list[tuple
     labels: list[tuple[str, Box]] = []
     ax = _axes(art)
     if ax is not None:
-        fixed += [(f"tick {t.get_text()}", _box(t, renderer)) for t in _tick_labels(ax)]
+        fixed += [(f"tick {t.get_text()}", box_of(t, renderer)) for t in major_tick_labels(ax)]
         for t in (ax.xaxis.label, ax.yaxis.label, ax.title):
-            if _visible(t):
-                fixed.append((f"axis text {t.get_text()!r}", _box(t, renderer)))
+            if visible_text(t):
+                fixed.append((f"axis text {t.get_text()!r}", box_of(t, renderer)))
     if art.legend is not None and art.legend.get_visible():
-        fixed.append(("key", _box(art.legend, renderer)))
+        fixed.append(("key", box_of(art.legend, renderer)))
     for kind, texts in (("region", art.labels), ("contour", art.contour_labels)):
-        labels += [(f"{kind} {t.get_text()!r}", _box(t, renderer)) for t in texts if _visible(t)]
+        labels += [(f"{kind} {t.get_text()!r}", box_of(t, renderer)) for t in texts if visible_text(t)]
     return {"fixed": fixed, "markers": [], "labels": labels}
 
 
@@ -168,13 +137,13 @@ def _place(fig: Figure, ax: Axes, art: OutcomeArtists, cat: NDArray[Any], xs: Fl
     fig.draw_without_rendering()  # ticks, labels and key in their final places
     fb = fig.bbox
     # within the axes' width (a centred title then stays clear of the tick labels beside them)
-    right = min(fb.x1 - _GAP, ax.bbox.x1)
-    if art.title is not None and fit_title(art.title, renderer, right, fb.y1 - _GAP):
+    right = min(fb.x1 - GAP, ax.bbox.x1)
+    if art.title is not None and fit_title(art.title, renderer, right, fb.y1 - GAP):
         report.placed.append(f"title {art.title.get_text()!r}")
-    taken = [(b[0] - _GAP / 2, b[1] - _GAP / 2, b[2] + _GAP / 2, b[3] + _GAP / 2)
+    taken = [(b[0] - GAP / 2, b[1] - GAP / 2, b[2] + GAP / 2, b[3] + GAP / 2)
              for _, b in outcome_text_boxes(fig, _fixed_only(art))["fixed"]]
     bb = ax.bbox
-    frame = (bb.x0 + _GAP, bb.y0 + _GAP, bb.x1 - _GAP, bb.y1 - _GAP)
+    frame = (bb.x0 + GAP, bb.y0 + GAP, bb.x1 - GAP, bb.y1 - GAP)
     to_px = ax.transData.transform
     to_data = ax.transData.inverted().transform
     lookup = art.category_at
@@ -190,7 +159,7 @@ def _place(fig: Figure, ax: Axes, art: OutcomeArtists, cat: NDArray[Any], xs: Fl
     lines = np.vstack([*boundary, *contour_px.values(), np.zeros((0, 2))])
     for t in list(art.labels):
         if _place_region(t, renderer, cat, xs, ys, frame, taken, lines, to_px, to_data, lookup):
-            taken.append(_box(t, renderer, _pad(t, fig)))
+            taken.append(box_of(t, renderer, _pad(t, fig)))
             report.placed.append(f"region {t.get_text()!r}")
         else:
             t.remove()
@@ -209,7 +178,7 @@ def _place(fig: Figure, ax: Axes, art: OutcomeArtists, cat: NDArray[Any], xs: Fl
             segs = [np.asarray(to_px(s)) for s in cs.allsegs[li] if len(s) > 1]
             if _place_contour(t, renderer, fig, segs, key, frame, taken, others, np.vstack([*boundary,
                               np.zeros((0, 2))]), to_data, lookup):
-                taken.append(_box(t, renderer, _pad(t, fig)))
+                taken.append(box_of(t, renderer, _pad(t, fig)))
                 art.contour_labels.append(t)
                 report.placed.append(f"contour {text!r}")
             else:  # a line that cannot be labelled is left out: it could not be read
@@ -239,13 +208,13 @@ def _pad(t: Any, fig: Figure) -> float:
     """Pixels the patch behind a text reaches beyond its letters."""
     patch = t.get_bbox_patch()
     if patch is None:
-        return _GAP / 2
+        return GAP / 2
     pad = float(getattr(patch.get_boxstyle(), "pad", 0.0))
-    return pad * float(t.get_fontsize()) * fig.dpi / 72.0 + _GAP / 2
+    return pad * float(t.get_fontsize()) * fig.dpi / 72.0 + GAP / 2
 
 
 def _free(b: Box, frame: Box, taken: list[Box]) -> bool:
-    return _inside(b, frame) and not any(_hit(b, o) for o in taken)
+    return box_within(b, frame) and not any(boxes_hit(b, o) for o in taken)
 
 
 def _place_region(t: Any, renderer: RendererBase, cat: NDArray[Any], xs: FloatArray, ys: FloatArray,
@@ -261,7 +230,7 @@ def _place_region(t: Any, renderer: RendererBase, cat: NDArray[Any], xs: FloatAr
         ii, jj = ii[pick], jj[pick]
     centre = np.asarray(to_px(np.column_stack([xs[jj], ys[ii]])))
     pad = _pad(t, t.figure)
-    b0 = _box(t, renderer, pad)
+    b0 = box_of(t, renderer, pad)
     w, h = b0[2] - b0[0], b0[3] - b0[1]
     x0, y0 = centre[:, 0] - w / 2, centre[:, 1] - h / 2
     ok = (x0 >= frame[0]) & (y0 >= frame[1]) & (x0 + w <= frame[2]) & (y0 + h <= frame[3])
@@ -292,7 +261,7 @@ def _place_region(t: Any, renderer: RendererBase, cat: NDArray[Any], xs: FloatAr
     score = np.minimum(clearance, edge + 20.0) - np.where(crossed, 1e6, 0.0)
     for k in np.argsort(-score, kind="stable")[:20].tolist():
         t.set_position(tuple(to_data(centre[idx[k]][None, :])[0]))
-        if _free(_box(t, renderer, pad), frame, taken):
+        if _free(box_of(t, renderer, pad), frame, taken):
             return True
     return False
 
@@ -315,7 +284,7 @@ def _place_contour(t: Any, renderer: RendererBase, fig: Figure, segs: list[Float
     allowed = _WHERE.get(key, ())
     t.set_rotation(0.0)
     pad = _pad(t, fig)
-    b0 = _box(t, renderer)
+    b0 = box_of(t, renderer)
     w, h = b0[2] - b0[0] + 2 * pad, b0[3] - b0[1] + 2 * pad
     stretches: list[FloatArray] = []
     for px in segs:
@@ -332,12 +301,12 @@ def _place_contour(t: Any, renderer: RendererBase, fig: Figure, segs: list[Float
         for r in stretches:
             s = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(r, axis=0).T))])
             length = float(s[-1])
-            if length < w + 2 * _GAP:
+            if length < w + 2 * GAP:
                 continue
             half = 0.5 * w
             step = max(half / 2, 6.0)
             mid = 0.5 * length
-            offsets = sorted(np.arange(-mid + half + _GAP, mid - half - _GAP + 1e-9, step).tolist(), key=abs)
+            offsets = sorted(np.arange(-mid + half + GAP, mid - half - GAP + 1e-9, step).tolist(), key=abs)
             for off in offsets:
                 at = mid + off
                 if _try_contour(t, search, r, s, at, (w, h), near, clear):
@@ -399,4 +368,4 @@ def _try_contour(t: Any, search: _ContourSearch, r: FloatArray, s: FloatArray, a
     code = int(lookup(to_data(p[None, :]))[0]) if lookup is not None else -1
     colour = OUTCOME_STYLE[code].color if code in OUTCOME_STYLE else "white"
     t.set_bbox({**_CONTOUR_PATCH, "fc": colour})
-    return _free(_box(t, renderer, pad), frame, taken)
+    return _free(box_of(t, renderer, pad), frame, taken)

@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
-from ....drawing.style import style_context
+from ....drawing.style import agg_figure, style_context
 from ....drawing.text.tidy import tidy_figure
 from .images import KeyImage, TextPanel, WidgetsImage
 
@@ -68,12 +68,8 @@ def new_figure(fig: Figure | None, window: bool) -> Figure:
         fig.set_size_inches(EXPLORER_FIGSIZE)
         return fig
     if not window:  # off screen: a figure with an Agg canvas, no pyplot
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-
         with style_context():
-            off = Figure(figsize=EXPLORER_FIGSIZE)
-        FigureCanvasAgg(off)
+            off = agg_figure(EXPLORER_FIGSIZE)
         return off
     import matplotlib.pyplot as plt
 
