@@ -72,6 +72,7 @@ __all__ = [
     "finite_or_none",
     "margin",
     "margin_arrays",
+    "margin_at",
     "negligible",
 ]
 
@@ -170,14 +171,11 @@ class Margin:
 
     def as_dict(self) -> dict[str, Any]:
         n = self.nearest
+        near = {} if n is None else n.as_dict()
         return {
             "variable": self.variable,
             "value": finite_or_none(self.value),
-            "relative": None if n is None else finite_or_none(n.relative),
-            "delta": None if n is None else finite_or_none(n.delta),
-            "direction": None if n is None else n.direction,
-            "at": None if n is None else finite_or_none(n.at),
-            "to": None if n is None else n.to.label,
+            **{key: near.get(key) for key in ("relative", "delta", "direction", "at", "to")},
             "up": None if self.up is None else self.up.as_dict(),
             "down": None if self.down is None else self.down.as_dict(),
         }
@@ -360,6 +358,14 @@ def crossing(direction: str, x: float, found: bool, at: float, to: int) -> Cross
     return Crossing(direction, float(at), delta, rel, Mode(int(to)))
 
 
+def margin_at(var: str, x: float, arrays: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]],
+              i: int) -> Margin:
+    """The margin of point ``i`` along ``var`` (its value ``x``) from its :func:`margin_arrays`."""
+    up, down = (crossing(d, x, bool(arrays[d][0][i]), arrays[d][1][i], arrays[d][2][i])
+                for d in ("up", "down"))
+    return Margin(var, x, up, down)
+
+
 def margin(k: float, mu: float, gamma: float, kprime: float, *, buoyancy: float = 0.0,
            uplift: float = 0.0, uplift_ratio: float = 0.0, uplift_arm: float = 1.0 / 3.0,
            gyration: float | None = None, crest: float = 1.0) -> tuple[Margin, Margin]:
@@ -394,10 +400,5 @@ def margin(k: float, mu: float, gamma: float, kprime: float, *, buoyancy: float 
     g = np.array([check_gamma(gamma)])
     kp = np.array([check_kprime(kprime, loads["crest"])])
     m0 = classify(k_arr, mu_arr, g, kp, **loads)
-    out = []
-    for var, x in (("k", float(k_arr[0])), ("mu", float(mu_arr[0]))):
-        arr = margin_arrays(var, k_arr, mu_arr, g, kp, m0, loads)
-        up = crossing("up", x, bool(arr["up"][0][0]), arr["up"][1][0], arr["up"][2][0])
-        down = crossing("down", x, bool(arr["down"][0][0]), arr["down"][1][0], arr["down"][2][0])
-        out.append(Margin(var, x, up, down))
-    return out[0], out[1]
+    return (margin_at("k", float(k_arr[0]), margin_arrays("k", k_arr, mu_arr, g, kp, m0, loads), 0),
+            margin_at("mu", float(mu_arr[0]), margin_arrays("mu", k_arr, mu_arr, g, kp, m0, loads), 0))

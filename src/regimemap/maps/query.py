@@ -54,9 +54,9 @@ from .margins import (
     Margin,
     carries_loads,
     checked_loads,
-    crossing,
     margin,
     margin_arrays,
+    margin_at,
 )
 from .point_result import PointResult
 from .points import DesignPoint
@@ -95,9 +95,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
     for h, r in responses.items():
         adm_mode[h.mode] = adm_mode[h.mode] | r.ok if h.mode in adm_mode else r.ok
     margins = {var: margin_arrays(var, k, mu, g, kp, m0, loads) for var in ("k", "mu")}
-    cst = block_constants(g, kp, loads["buoyancy"], loads["uplift"], loads["uplift_ratio"],
-                          loads["uplift_arm"], loads["gyration"])
-    t = C.thresholds(k, cst)
+    t = C.thresholds(k, block_constants(g, kp, *_load_args(loads)))
     lower, upper, mu_s = t.lower, t.upper, t.mu_star
     shown = dict(loads) if carries_loads(loads) else {}
     out: list[PointResult] = []
@@ -114,13 +112,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
         slip = None if hyp.sigma == 0 or not solvable else float(r.slip[i])
         lift = None if hyp.contact == "full" or not solvable else float(r.lift[i])
         adm = tuple(m for m in SELECTION_ORDER if m in adm_mode and adm_mode[m][i])
-        mrg = []
-        for var, x in (("k", float(k[i])), ("mu", float(mu[i]))):
-            arr = margins[var]
-            up = crossing("up", x, bool(arr["up"][0][i]), arr["up"][1][i], arr["up"][2][i])
-            down = crossing("down", x, bool(arr["down"][0][i]), arr["down"][1][i],
-                             arr["down"][2][i])
-            mrg.append(Margin(var, x, up, down))
+        point = block_constants(float(g[i]), float(kp[i]), *_load_args(loads))
         out.append(PointResult(
             k=float(k[i]), mu=float(mu[i]), gamma=float(g[i]), kprime=float(kp[i]),
             mode=mode, hypothesis=hyp,
@@ -128,13 +120,14 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
             xdd=val(r.xdd), ydd=val(r.ydd), thdd=val(r.thdd),
             slip=slip, lift=lift, case=cases[i], admissible=adm,
             hypothesis_admissible=bool(r.ok[i]), solvable=solvable,
-            margin_k=mrg[0], margin_mu=mrg[1],
+            margin_k=margin_at("k", float(k[i]), margins["k"], i),
+            margin_mu=margin_at("mu", float(mu[i]), margins["mu"], i),
             thresholds={
                 "mu_star": float(mu_s[i]),
                 "upper_line": float(upper[i]),
                 "lower_line": float(lower[i]),
-                "k_A": C.k_A(block_constants(float(g[i]), float(kp[i]), *_load_args(loads))),
-                "mu_Bprime": C.mu_Bprime(block_constants(float(g[i]), float(kp[i]), *_load_args(loads))),
+                "k_A": C.k_A(point),
+                "mu_Bprime": C.mu_Bprime(point),
             },
             name=names[i], loads=shown,
         ))
