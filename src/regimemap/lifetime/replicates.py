@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .chart import crossing_width
+from .chart import crossing_width, target_bracket_problem
 from .climate import Climate
 from .model import Caisson, LifetimeModel
 from .parallel import DEFAULT_CHUNK, make_chunks, run_chunks, submit_all, worker_pool
@@ -283,16 +283,8 @@ class ChartBand:
 def band_bracket_problem(band: ChartBand) -> str | None:
     """Why the chart's widths do not bracket the target at the band's upper level (its upper curve
     at both ends); None when they do."""
-    upper = band.upper
-    e0, e1 = float(upper[0]), float(upper[-1])
-    if e0 > band.target >= e1:
-        return None
-    w0, w1 = float(band.widths[0]), float(band.widths[-1])
-    where = ("every width meets it: give narrower widths" if e0 <= band.target
-             else "no width meets it: give wider widths")
-    return (f"the target ESD {band.target:g} m is not between the upper end of the "
-            f"{100 * band.level:g} % climate band at the ends of the widths, {e0:.4g} m at {w0:g} m "
-            f"and {e1:.4g} m at {w1:g} m ({where})")
+    return target_bracket_problem(band.widths, band.upper, band.target,
+                                  f"the upper end of the {100 * band.level:g} % climate band")
 
 
 def climate_band_chart(caisson: Caisson, model: LifetimeModel, climates: Sequence[Climate],
