@@ -70,6 +70,7 @@ __all__ = [
     "checked_loads",
     "crossing",
     "finite_or_none",
+    "loads_constants",
     "margin",
     "margin_arrays",
     "margin_at",
@@ -181,7 +182,9 @@ class Margin:
         }
 
 
-def _constants(g: np.ndarray, kp: np.ndarray, loads: dict[str, Any]) -> BlockConstants:
+def loads_constants(g: Any, kp: Any, loads: dict[str, Any]) -> BlockConstants:
+    """The block constants of ``g``, ``kp`` (numbers or arrays) and the load keywords ``loads``
+    (those absent: the report's block)."""
     return block_constants(g, kp, loads.get("buoyancy", 0.0), loads.get("uplift", 0.0),
                            loads.get("uplift_ratio", 0.0), loads.get("uplift_arm", 1.0 / 3.0),
                            loads.get("gyration"))
@@ -210,7 +213,7 @@ def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
     """Every k where the rule of classify may change along the line of constant mu; shape (n, m)."""
     if not loads or not carries_loads(loads):
         return C.k_roots_at_mu(mu, g, kp)
-    cst = _constants(g, kp, loads)
+    cst = loads_constants(g, kp, loads)
     e0 = _expressions(affine_terms(np.zeros_like(mu), cst), mu, g, cst.i2, 0.0)
     e1 = _expressions(affine_terms(np.ones_like(mu), cst), mu, g, cst.i2, 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -221,7 +224,7 @@ def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
 def _roots_along_mu(k: np.ndarray, g: np.ndarray, kp: np.ndarray,
                     loads: dict[str, Any] | None = None) -> np.ndarray:
     """Every mu where the rule of classify may change along the line of constant k; shape (n, m)."""
-    cst = _constants(g, kp, loads or {})
+    cst = loads_constants(g, kp, loads or {})
     t = C.thresholds(k, cst)
     cols = [t.mu_rest, t.upper, t.lower, t.mu_star]
     if loads and carries_loads(loads):

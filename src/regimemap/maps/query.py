@@ -44,7 +44,6 @@ import numpy as np
 
 from ..mechanics import constants as C
 from ..mechanics.block import Case, Parameters
-from ..mechanics.loads import block_constants
 from ..mechanics.modes import SELECTION_ORDER, Mode
 from ..mechanics.solver import Hypothesis, solve
 from ..mechanics.validation import check_gamma, check_kprime, check_nonnegative_array
@@ -54,6 +53,7 @@ from .margins import (
     Margin,
     carries_loads,
     checked_loads,
+    loads_constants,
     margin,
     margin_arrays,
     margin_at,
@@ -95,7 +95,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
     for h, r in responses.items():
         adm_mode[h.mode] = adm_mode[h.mode] | r.ok if h.mode in adm_mode else r.ok
     margins = {var: margin_arrays(var, k, mu, g, kp, m0, loads) for var in ("k", "mu")}
-    t = C.thresholds(k, block_constants(g, kp, *_load_args(loads)))
+    t = C.thresholds(k, loads_constants(g, kp, loads))
     lower, upper, mu_s = t.lower, t.upper, t.mu_star
     shown = dict(loads) if carries_loads(loads) else {}
     out: list[PointResult] = []
@@ -112,7 +112,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
         slip = None if hyp.sigma == 0 or not solvable else float(r.slip[i])
         lift = None if hyp.contact == "full" or not solvable else float(r.lift[i])
         adm = tuple(m for m in SELECTION_ORDER if m in adm_mode and adm_mode[m][i])
-        point = block_constants(float(g[i]), float(kp[i]), *_load_args(loads))
+        point = loads_constants(float(g[i]), float(kp[i]), loads)
         out.append(PointResult(
             k=float(k[i]), mu=float(mu[i]), gamma=float(g[i]), kprime=float(kp[i]),
             mode=mode, hypothesis=hyp,
@@ -132,10 +132,6 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
             name=names[i], loads=shown,
         ))
     return out
-
-
-def _load_args(loads: dict[str, Any]) -> tuple[Any, ...]:
-    return tuple(loads[key] for key in ("buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration"))
 
 
 def query_point(k: float, mu: float, gamma: float, kprime: float, name: str = "", *,
@@ -283,13 +279,9 @@ def _query_shared(points: Sequence[DesignPoint | tuple[float, float]], gamma: fl
     mu = np.asarray(mus, dtype=np.float64)
     g_arr = np.asarray(gs, dtype=np.float64)
     kp_arr = np.asarray(kps, dtype=np.float64)
-    case_cache: dict[tuple[float, float], Case] = {}
-    cases = []
-    for gi, kpi in zip(gs, kps):
-        key = (gi, kpi)
-        if key not in case_cache:
-            case_cache[key] = Parameters(gi, kpi, crest=loads["crest"]).case
-        cases.append(case_cache[key])
+    # the case of each distinct (gamma, k') once, in the order the points first give it
+    case_of = {key: Parameters(*key, crest=loads["crest"]).case for key in dict.fromkeys(zip(gs, kps))}
+    cases = [case_of[key] for key in zip(gs, kps)]
     out: list[PointResult] = []
     for s in range(0, k.size, _BLOCK):
         sl = slice(s, s + _BLOCK)
