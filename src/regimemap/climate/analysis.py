@@ -335,9 +335,10 @@ def diagnostics(record: Record, gap_hours: float = DEFAULT_GAP, points: int = 30
     is fitted only where at least that many storms remain, and the shape and modified scale get
     their ``confidence`` posterior intervals (flat prior, :mod:`regimemap.climate.intervals`)."""
     hs = record.hs[np.isfinite(record.hs)]
-    top = storms(record, float(np.quantile(hs, 0.90)), gap_hours).peak
+    q90 = float(np.quantile(hs, 0.90))
+    top = storms(record, q90, gap_hours).peak
     last = float(np.sort(top)[-DIAGNOSTIC_STORMS]) if top.size > DIAGNOSTIC_STORMS else float(top.max())
-    us = np.linspace(float(np.quantile(hs, 0.90)), max(last - 1e-9, float(np.quantile(hs, 0.90))), points)
+    us = np.linspace(q90, max(last - 1e-9, q90), points)
     n, me, ci, xi, ss, xi_iv, ss_iv = [], [], [], [], [], [], []
     a = 0.5 * (1.0 - confidence)
     nan2 = [np.nan, np.nan]

@@ -344,8 +344,7 @@ def likelihood_grid(values: ArrayLike, estimate: Fit, years: float | None = None
     n = max(x.size, 1)
     scale = float(np.exp(centre[names.index("ln_sigma")] if "ln_sigma" in names else
                          centre[names.index("ln_A")]))
-    half = np.array([5.0 * scale / math.sqrt(n) if nm in ("mu", "B") else
-                     (6.0 / math.sqrt(n) if nm.startswith("ln_") else 6.0 / math.sqrt(n)) for nm in names])
+    half = np.array([5.0 * scale / math.sqrt(n) if nm in ("mu", "B") else 6.0 / math.sqrt(n) for nm in names])
     lo = np.maximum(centre - half, low)
     hi = np.minimum(centre + half, high)
     for _ in range(12):

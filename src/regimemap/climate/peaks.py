@@ -53,14 +53,13 @@ def parse_threshold(text: str) -> tuple[str, float]:
             raise ValueError(f"threshold must be a percentage in (0, 100) or a height in metres > 0, "
                              f"got {text!r}")
         return "quantile", q
+    wrong = f"threshold must be a height in metres > 0 or a percentage such as 99.5%, got {text!r}"
     try:
         v = float(text)
     except ValueError:
-        raise ValueError(f"threshold must be a height in metres > 0 or a percentage such as 99.5%, "
-                         f"got {text!r}") from None
+        raise ValueError(wrong) from None
     if not (v > 0.0 and np.isfinite(v)):
-        raise ValueError(f"threshold must be a height in metres > 0 or a percentage such as 99.5%, "
-                         f"got {text!r}")
+        raise ValueError(wrong)
     return "value", v
 
 

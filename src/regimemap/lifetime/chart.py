@@ -17,12 +17,13 @@ from numpy.typing import ArrayLike, NDArray
 from regimemap.mechanics.checks import Check
 from regimemap.waves import analyse_caisson
 
-from .model import PERIOD_COEFFICIENT, PERIOD_EXPONENT, Caisson, LifetimeModel
+from .model import Caisson, LifetimeModel
 from .parallel import DEFAULT_CHUNK, make_chunks, root_seed, run_chunks
 
 __all__ = ["BOOTSTRAP_RESAMPLES", "BOOTSTRAP_STREAM", "DEFAULT_TOLERANCE", "INTERVAL_LEVEL", "DesignChart",
            "crossing_width",
-           "WidthInterval", "bisection_steps", "design_chart", "sf_width", "width_interval"]
+           "WidthInterval", "bisection_steps", "design_chart", "sf_width", "target_bracket_problem",
+           "width_interval"]
 
 FloatArray = NDArray[np.float64]
 
@@ -132,19 +133,26 @@ class DesignChart:
 
     def bracket_problem(self) -> str | None:
         """Why the chart's widths do not bracket the target (its ESD at both ends); None when they do."""
-        e0, e1 = float(self.expected_sliding[0]), float(self.expected_sliding[-1])
-        w0, w1 = float(self.widths[0]), float(self.widths[-1])
-        if e0 > self.target >= e1:
-            return None
-        where = ("every width meets it: give narrower widths" if e0 <= self.target
-                 else "no width meets it: give wider widths")
-        return (f"the target ESD {self.target:g} m is not between the ESD at the ends of the widths, "
-                f"{e0:.4g} m at {w0:g} m and {e1:.4g} m at {w1:g} m ({where})")
+        return target_bracket_problem(self.widths, self.expected_sliding, self.target)
 
     def rows(self) -> list[dict[str, float]]:
         """One dict per width: ``width``, ``expected_sliding``, ``std_error``."""
         return [{"width": float(w), "expected_sliding": float(e), "std_error": float(s)}
                 for w, e, s in zip(self.widths, self.expected_sliding, self.std_error)]
+
+
+def target_bracket_problem(widths: FloatArray, esd: FloatArray, target: float,
+                           curve: str = "the ESD") -> str | None:
+    """Why the ESD ``esd`` at the increasing ``widths`` (``curve`` says which ESD) does not bracket
+    ``target`` at the ends of the widths; None when it does."""
+    e0, e1 = float(esd[0]), float(esd[-1])
+    w0, w1 = float(widths[0]), float(widths[-1])
+    if e0 > target >= e1:
+        return None
+    where = ("every width meets it: give narrower widths" if e0 <= target
+             else "no width meets it: give wider widths")
+    return (f"the target ESD {target:g} m is not between {curve} at the ends of the widths, "
+            f"{e0:.4g} m at {w0:g} m and {e1:.4g} m at {w1:g} m ({where})")
 
 
 def bisection_steps(step: float, tolerance: float) -> int:
@@ -253,13 +261,7 @@ def sf_width(caisson: Caisson, model: LifetimeModel, required_sf: float = 1.2,
     such sections; it is solved by bisection anyway.
     """
     H0 = model.climate.return_value(return_period)
-    if model.period is not None:
-        T = model.period
-    elif model.steepness is not None:
-        T = math.sqrt(2.0 * math.pi * H0 / (caisson.g * model.steepness))
-    else:
-        a, b = model.period_law or (PERIOD_COEFFICIENT, PERIOD_EXPONENT)
-        T = a * H0**b
+    T = float(model.storm_period(H0, caisson.g))
 
     def sf(width: float) -> float:
         c = caisson.with_width(width)

@@ -132,6 +132,16 @@ class BlockResult:
     sliding_waves: int
     years: YearStats
 
+    @classmethod
+    def join(cls, parts: Sequence[BlockResult], keep: int | None = None) -> BlockResult:
+        """The lifetimes of ``parts``, in order: the first ``keep`` of them (None: all)."""
+        cut = slice(None, keep)
+        return cls(sliding=np.concatenate([p.sliding for p in parts], axis=1)[:, cut],
+                   max_storm=np.concatenate([p.max_storm for p in parts], axis=1)[:, cut],
+                   storms=np.concatenate([p.storms for p in parts])[cut],
+                   sliding_waves=sum(p.sliding_waves for p in parts),
+                   years=YearStats.join([p.years for p in parts]))
+
 
 def _factor(f: ErrorFactor, u: FloatArray, truncate: float | None) -> FloatArray:
     """``ratio max(1 + cov z, 0)``: a factor never turns a load or a height negative."""

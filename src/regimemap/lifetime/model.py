@@ -12,6 +12,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field, replace
 
+import numpy as np
+from numpy.typing import NDArray
+
 from regimemap.waves import CaissonSection, Densities, section_from_densities, section_from_weight
 
 from .climate import Climate
@@ -334,6 +337,16 @@ class LifetimeModel:
                 f"(z = -{1.0 / cov:.3g}), and a caisson without friction slides without end; "
                 f"accepted: cov * n < 1 with n = truncate, or n = {FRICTION_SIGMAS:g} untruncated "
                 f"(cov < {1.0 / reach:.4g})")
+
+    def storm_period(self, H0: float | NDArray[np.float64], g: float) -> float | NDArray[np.float64]:
+        """``T1/3`` [s] of storms of peak ``H0'`` [m] (a number or an array): the fixed ``period``,
+        ``sqrt(2 pi H0'/(g s))`` of the ``steepness``, or ``a H0'^b`` of the period law (Goda's)."""
+        if self.period is not None:
+            return self.period
+        if self.steepness is not None:
+            return np.sqrt(2.0 * np.pi * H0 / (g * self.steepness))
+        a, b = self.period_law or (PERIOD_COEFFICIENT, PERIOD_EXPONENT)
+        return a * H0**b
 
     def with_(self, **changes: object) -> LifetimeModel:
         """A copy with some options changed."""

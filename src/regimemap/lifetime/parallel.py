@@ -23,7 +23,7 @@ from typing import Any, TypeVar
 import numpy as np
 
 from ..workers import WorkerPool, worker_pool
-from .engine import BLOCK, BlockResult, YearStats, simulate_blocks
+from .engine import BLOCK, BlockResult, simulate_blocks
 from .finite import quiet_arithmetic
 from .model import Caisson, LifetimeModel
 
@@ -89,12 +89,7 @@ def run_chunk(caissons: tuple[Caisson, ...], model: LifetimeModel, chunk: Chunk,
     numpy's warnings silenced, the results are checked (:mod:`regimemap.lifetime.finite`)."""
     with quiet_arithmetic():
         parts = simulate_blocks(caissons, model, chunk.streams, guides=guides, keep=chunk.keep)
-    sliding = np.concatenate([p.sliding for p in parts], axis=1)[:, :chunk.keep]
-    max_storm = np.concatenate([p.max_storm for p in parts], axis=1)[:, :chunk.keep]
-    storms = np.concatenate([p.storms for p in parts])[:chunk.keep]
-    return BlockResult(sliding=sliding, max_storm=max_storm, storms=storms,
-                       sliding_waves=sum(p.sliding_waves for p in parts),
-                       years=YearStats.join([p.years for p in parts]))
+    return BlockResult.join(parts, chunk.keep)
 
 
 def _serial(caissons: tuple[Caisson, ...], model: LifetimeModel,
@@ -201,8 +196,4 @@ def run_chunks(caissons: tuple[Caisson, ...], model: LifetimeModel, chunks: Sequ
     seconds = time.perf_counter() - t0
     _log.info("%d chunks done in %.2f s (%.0f lifetimes/s)", len(chunks), seconds,
               total / seconds if seconds > 0 else float("inf"))
-    return BlockResult(sliding=np.concatenate([p.sliding for p in parts], axis=1),
-                       max_storm=np.concatenate([p.max_storm for p in parts], axis=1),
-                       storms=np.concatenate([p.storms for p in parts]),
-                       sliding_waves=sum(p.sliding_waves for p in parts),
-                       years=YearStats.join([p.years for p in parts]))
+    return BlockResult.join(parts)

@@ -24,7 +24,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .chart import crossing_width
+from .chart import crossing_width, target_bracket_problem
 from .climate import Climate
 from .model import Caisson, LifetimeModel
 from .parallel import DEFAULT_CHUNK, make_chunks, run_chunks, submit_all, worker_pool
@@ -134,6 +134,32 @@ class ClimateBand:
                 dtype=np.float64), np.asarray(hi, dtype=np.float64))
 
 
+def _check_band(climates: Sequence[Climate], level: float) -> None:
+    """A band's replicate climates (at least two) and level (in (0, 1)), else a ValueError."""
+    if len(climates) < 2:
+        raise ValueError(f"a climate band needs at least two replicate climates, got {len(climates)}")
+    if not 0.0 < level < 1.0:
+        raise ValueError(f"level must be in (0, 1), got {level!r}")
+
+
+def _child_seeds(seed: int, n: int) -> list[int]:
+    """The seed of each of ``n`` replicates: of child ``i`` of ``SeedSequence(seed).spawn(n)``."""
+    return [int(s.generate_state(1, np.uint32)[0]) for s in np.random.SeedSequence(seed).spawn(n)]
+
+
+def _pooled(jobs: int, task: Callable[..., NDArray[np.float64]], arguments: Sequence[tuple[Any, ...]],
+            out: NDArray[np.float64], trials: int, progress: Callable[[int], None] | None) -> None:
+    """``task(*arguments[i])`` into ``out[i]`` for each replicate ``i``, in a pool of up to ``jobs``
+    workers (one replicate each); ``progress`` counts a replicate's ``trials`` as it finishes."""
+    with worker_pool(min(jobs, len(arguments))) as pool:
+        futures = submit_all(pool, task, arguments)
+        index = {f: i for i, f in enumerate(futures)}
+        for future in as_completed(futures):
+            out[index[future]] = future.result()
+            if progress is not None:
+                progress(trials)
+
+
 def _stats(result: LifetimeResult, thresholds: Sequence[float]) -> NDArray[np.float64]:
     """A replicate's numbers from its lifetimes: ``[ESD, P(S > x) at thresholds, P(S > x) at
     CURVE_X]``."""
@@ -173,27 +199,17 @@ def climate_band(caisson: Caisson, model: LifetimeModel, climates: Sequence[Clim
     -------
     ClimateBand
     """
-    if len(climates) < 2:
-        raise ValueError(f"a climate band needs at least two replicate climates, got {len(climates)}")
-    if not 0.0 < level < 1.0:
-        raise ValueError(f"level must be in (0, 1), got {level!r}")
+    _check_band(climates, level)
     xs = tuple(sorted({float(x) for x in thresholds}))
-    children = np.random.SeedSequence(seed).spawn(len(climates))
-    seeds = [int(s.generate_state(1, np.uint32)[0]) for s in children]
+    seeds = _child_seeds(seed, len(climates))
     stats = np.empty((len(climates), 1 + len(xs) + CURVE_X.size))
     jobs = int(run.get("jobs", 1) or 1)
     chunk = int(run.get("chunk", DEFAULT_CHUNK))
-    if jobs > 1 and run.get("scheduler") is None and len(climates) > 1:
+    if jobs > 1 and run.get("scheduler") is None:
         # one pool for all the replicates, each run whole in a worker (as with jobs = 1: its numbers
         # depend only on its seed)
-        with worker_pool(min(jobs, len(climates))) as pool:
-            futures = submit_all(pool, _one, ((caisson, model.with_(climate=c), trials, s, chunk, xs)
-                                              for c, s in zip(climates, seeds)))
-            index = {f: i for i, f in enumerate(futures)}
-            for future in as_completed(futures):
-                stats[index[future]] = future.result()
-                if progress is not None:
-                    progress(trials)
+        _pooled(jobs, _one, [(caisson, model.with_(climate=c), trials, s, chunk, xs)
+                             for c, s in zip(climates, seeds)], stats, trials, progress)
     else:
         for i, (c, s) in enumerate(zip(climates, seeds)):
             stats[i] = _stats(lifetime_sliding(caisson, model.with_(climate=c), trials, s, progress=progress,
@@ -267,16 +283,8 @@ class ChartBand:
 def band_bracket_problem(band: ChartBand) -> str | None:
     """Why the chart's widths do not bracket the target at the band's upper level (its upper curve
     at both ends); None when they do."""
-    upper = band.upper
-    e0, e1 = float(upper[0]), float(upper[-1])
-    if e0 > band.target >= e1:
-        return None
-    w0, w1 = float(band.widths[0]), float(band.widths[-1])
-    where = ("every width meets it: give narrower widths" if e0 <= band.target
-             else "no width meets it: give wider widths")
-    return (f"the target ESD {band.target:g} m is not between the upper end of the "
-            f"{100 * band.level:g} % climate band at the ends of the widths, {e0:.4g} m at {w0:g} m "
-            f"and {e1:.4g} m at {w1:g} m ({where})")
+    return target_bracket_problem(band.widths, band.upper, band.target,
+                                  f"the upper end of the {100 * band.level:g} % climate band")
 
 
 def climate_band_chart(caisson: Caisson, model: LifetimeModel, climates: Sequence[Climate],
@@ -290,25 +298,15 @@ def climate_band_chart(caisson: Caisson, model: LifetimeModel, climates: Sequenc
     (as :func:`climate_band`); ``run``: ``chunk``, ``jobs`` (one climate per worker) or
     ``scheduler`` (each climate's chunks on the cluster).  ``progress`` counts lifetimes.
     """
-    if len(climates) < 2:
-        raise ValueError(f"a climate band needs at least two replicate climates, got {len(climates)}")
-    if not 0.0 < level < 1.0:
-        raise ValueError(f"level must be in (0, 1), got {level!r}")
+    _check_band(climates, level)
     w = np.sort(np.asarray(widths, dtype=np.float64).ravel())
-    children = np.random.SeedSequence(seed).spawn(len(climates))
-    seeds = [int(s.generate_state(1, np.uint32)[0]) for s in children]
+    seeds = _child_seeds(seed, len(climates))
     esd = np.empty((len(climates), w.size))
     jobs = int(run.get("jobs", 1) or 1)
     chunk = int(run.get("chunk", DEFAULT_CHUNK))
     if jobs > 1 and run.get("scheduler") is None:
-        with worker_pool(min(jobs, len(climates))) as pool:
-            futures = submit_all(pool, _one_chart, ((caisson, model.with_(climate=c), w, trials, s, chunk)
-                                                    for c, s in zip(climates, seeds)))
-            index = {f: i for i, f in enumerate(futures)}
-            for future in as_completed(futures):
-                esd[index[future]] = future.result()
-                if progress is not None:
-                    progress(trials)
+        _pooled(jobs, _one_chart, [(caisson, model.with_(climate=c), w, trials, s, chunk)
+                                   for c, s in zip(climates, seeds)], esd, trials, progress)
     else:
         scheduler = run.get("scheduler")
         for i, (c, s) in enumerate(zip(climates, seeds)):

@@ -83,13 +83,11 @@ def lifetime_checks(result: LifetimeResult, req: Requirements,
     band of a record, on the results with the climate's uncertainty (``ESD including the climate's
     uncertainty``, ``P(S > x m) including ...``: the means over the replicate climates).
     """
-    if band is None:
-        checks = [Check.at_most("expected sliding distance", result.expected_sliding, req.target, "m")]
-        checks += [Check.at_most(exceedance_name(x), result.exceedance(x), p)
-                   for x, p in sorted(req.allowed.items())]
-        return tuple(checks)
-    checks = [Check.at_most(f"ESD {WITH_CLIMATE}", band.expected_sliding, req.target, "m")]
-    checks += [Check.at_most(f"{exceedance_name(x)} {WITH_CLIMATE}", band.exceedance(x), p)
+    judged: LifetimeResult | ClimateBand = result if band is None else band
+    esd_name = "expected sliding distance" if band is None else f"ESD {WITH_CLIMATE}"
+    suffix = "" if band is None else f" {WITH_CLIMATE}"
+    checks = [Check.at_most(esd_name, judged.expected_sliding, req.target, "m")]
+    checks += [Check.at_most(exceedance_name(x) + suffix, judged.exceedance(x), p)
                for x, p in sorted(req.allowed.items())]
     return tuple(checks)
 
@@ -113,17 +111,13 @@ def chart_checks(chart: DesignChart, design_width: float, band: ChartBand | None
     (:attr:`ChartBand.width_for_target`).  None when the chart (or band) found no width (it has no
     check then).
     """
-    if band is not None:
-        if band.width_for_target is None:
-            return ()
+    if band is None:
+        width, name = chart.width_for_target, f"width for ESD <= {chart.target:g} m"
+    else:
         top = f"{100 * (0.5 + 0.5 * band.level):g} %"
-        return (Check.at_least(f"width for ESD <= {band.target:g} m at the upper end of the climate band "
-                               f"({top} quantile of {band.replicates} climates)", design_width,
-                               band.width_for_target, "m"),)
-    if chart.width_for_target is None:
-        return ()
-    return (Check.at_least(f"width for ESD <= {chart.target:g} m", design_width, chart.width_for_target,
-                           "m"),)
+        width, name = band.width_for_target, (f"width for ESD <= {band.target:g} m at the upper end of the "
+                                              f"climate band ({top} quantile of {band.replicates} climates)")
+    return () if width is None else (Check.at_least(name, design_width, width, "m"),)
 
 
 def judge_chart(chart: DesignChart, design_width: float, band: ChartBand | None = None) -> DesignChart:

@@ -16,7 +16,7 @@ from numpy.typing import NDArray
 from regimemap.waves import breaker_height, caisson_loads, design_heights, wavelength
 from regimemap.waves.pressure import GodaSeaState, goda_pressures_for, goda_sea_state
 
-from .model import PERIOD_COEFFICIENT, PERIOD_EXPONENT, Caisson, LifetimeModel
+from .model import Caisson, LifetimeModel
 from .sliding import added_mass
 
 __all__ = ["SeaStates", "StormLoads", "sea_states", "sliding_threshold", "storm_loads", "wave_forces"]
@@ -78,13 +78,7 @@ def sea_states(caissons: tuple[Caisson, ...], model: LifetimeModel, H0: FloatArr
     c = caissons[0]
     calm = ~(H0 > 0.0)
     h0 = np.where(calm, 1.0, H0)  # placeholder height for calm storms (no waves below)
-    if model.period is not None:
-        T = np.full_like(h0, model.period)
-    elif model.steepness is not None:
-        T = np.sqrt(2.0 * np.pi * h0 / (c.g * model.steepness))
-    else:
-        a, b = model.period_law or (PERIOD_COEFFICIENT, PERIOD_EXPONENT)
-        T = a * h0**b
+    T = np.full_like(h0, model.storm_period(h0, c.g))
     h = c.depth + tide
     hp = c.base_depth + tide
     d = c.armour_depth + tide

@@ -40,7 +40,7 @@ from ..mechanics.block import Parameters
 from ..mechanics.modes import MAP_MODES, PRIORITY, SELECTION_ORDER, Mode
 from ..mechanics.regions import column_intervals
 from .bisection import bisect_edge
-from .geometry import DEFAULT_SAMPLES, raw_intervals, sample_k
+from .geometry import DEFAULT_SAMPLES, extend_run, raw_intervals, run_outline, sample_k
 
 __all__ = [
     "AmbiguousRegion",
@@ -249,6 +249,17 @@ def _refine(p: Parameters, mask: int, track: int, k_in: float, k_out: float, mu_
     return bisect_edge(has, k_in, k_out)
 
 
+def _end(p: Parameters, mask: int, track: int, k_in: float, k_out: float, mu_cap: float
+         ) -> tuple[float, float, float] | None:
+    """The column ``(k, lo, hi)`` where the part's run ends between k_in (in it) and k_out; None
+    when the end is k_in itself or the part has no piece there."""
+    ke = _refine(p, mask, track, k_in, k_out, mu_cap)
+    if ke == k_in:
+        return None
+    pieces = [pc for pc in _pieces_at(p, ke, mu_cap) if pc[0] == mask]
+    return (ke, pieces[track][1], pieces[track][2]) if len(pieces) > track else None
+
+
 def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
                       samples: int = DEFAULT_SAMPLES) -> list[AmbiguousRegion]:
     """The parts of [0, k_max] x [0, mu_max] where several modes are admissible.
@@ -306,33 +317,15 @@ def ambiguous_regions(p: Parameters, k_max: float, mu_max: float,
         chosen = next(m for m in SELECTION_ORDER if m in modes)
         rule = RULE_LEAST_CONSTRAINT if p.loaded else RULE_SECTION_4_7
         for run in runs:
-            ks = list(k[run])
-            los = list(lo[run])
-            his = list(hi[run])
             i0, i1 = run[0], run[-1]
-            if i0 > 0:
-                ke = _refine(p, mask, t, k[i0], k[i0 - 1], float(mu_max))
-                if ke < ks[0]:
-                    pc = [pc for pc in _pieces_at(p, ke, float(mu_max)) if pc[0] == mask]
-                    if len(pc) > t:
-                        ks.insert(0, ke)
-                        los.insert(0, pc[t][1])
-                        his.insert(0, pc[t][2])
-            if i1 < k.size - 1:
-                ke = _refine(p, mask, t, k[i1], k[i1 + 1], float(mu_max))
-                if ke > ks[-1]:
-                    pc = [pc for pc in _pieces_at(p, ke, float(mu_max)) if pc[0] == mask]
-                    if len(pc) > t:
-                        ks.append(ke)
-                        los.append(pc[t][1])
-                        his.append(pc[t][2])
-            kk, ll, hh = np.asarray(ks), np.asarray(los), np.asarray(his)
+            front = _end(p, mask, t, k[i0], k[i0 - 1], float(mu_max)) if i0 > 0 else None
+            back = _end(p, mask, t, k[i1], k[i1 + 1], float(mu_max)) if i1 < k.size - 1 else None
+            kk, ll, hh = extend_run(k[run], lo[run], hi[run], front, back)
             if kk[-1] - kk[0] <= 1e-12 * max(1.0, float(k_max)):
                 # a single column, e.g. k = k_A where the RE and RO regions share
                 # their boundary: a line, not an area
                 continue
-            poly = np.concatenate([np.column_stack([kk, ll]), np.column_stack([kk[::-1], hh[::-1]])])
-            out.append(AmbiguousRegion(modes, chosen, poly, kk, ll, hh, rule))
+            out.append(AmbiguousRegion(modes, chosen, run_outline(kk, ll, hh), kk, ll, hh, rule))
     order = {m: i for i, m in enumerate(SELECTION_ORDER)}
     out.sort(key=lambda r: (order[r.chosen], tuple(int(m) for m in r.modes), float(r.k[0])))
     return out

@@ -43,7 +43,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
 from ..mechanics.constants import thresholds
 from ..mechanics.loads import BlockConstants, block_constants, subset
@@ -63,9 +63,6 @@ __all__ = ["classify", "classify_constants", "label_grid", "PRIORITY", "column_s
 
 _RE, _SL, _RO, _SM, _SP, _SPM = (np.uint8(m) for m in (
     Mode.RE, Mode.SL, Mode.RO, Mode.SRO_MINUS, Mode.SRO_PLUS, Mode.SRO_PRIME_MINUS))
-
-U8 = NDArray[np.uint8]
-
 
 def _check_param_arrays(gamma: ArrayLike, kprime: ArrayLike, crest: float = 1.0) -> tuple[Any, Any]:
     """gamma and kprime as floats (scalars) or float arrays, each value checked."""

@@ -55,20 +55,10 @@ def format_significant(x: float, digits: int = 4) -> str:
 
 def load_items(p: Parameters) -> list[tuple[str, float]]:
     """The loads ``p`` carries, as (name, value), in the order of :data:`LOAD_SYMBOLS`."""
-    out: list[tuple[str, float]] = []
-    if p.buoyancy != 0.0:
-        out.append(("buoyancy", p.buoyancy))
-    if p.uplift != 0.0:
-        out.append(("uplift", p.uplift))
-    if p.uplift_ratio != 0.0:
-        out.append(("uplift_ratio", p.uplift_ratio))
-    if p.uplift != 0.0 or p.uplift_ratio != 0.0:
-        out.append(("uplift_arm", p.uplift_arm))
-    if p.gyration is not None:
-        out.append(("gyration", p.gyration))
-    if p.crest != 1.0:
-        out.append(("crest", p.crest))
-    return out
+    uplifted = p.uplift != 0.0 or p.uplift_ratio != 0.0
+    shown = {"buoyancy": p.buoyancy != 0.0, "uplift": p.uplift != 0.0, "uplift_ratio": p.uplift_ratio != 0.0,
+             "uplift_arm": uplifted, "gyration": p.gyration is not None, "crest": p.crest != 1.0}
+    return [(name, getattr(p, name)) for name in LOAD_SYMBOLS if shown[name]]
 
 
 def loads_text(p: Parameters, tex: bool = False) -> str:

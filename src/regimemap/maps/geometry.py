@@ -44,6 +44,8 @@ __all__ = [
     "bisect_edges",
     "region_polygons",
     "area_in_view",
+    "extend_run",
+    "run_outline",
 ]
 
 #: Samples of k across the view for polygons and curves (breakpoints are added).
@@ -221,10 +223,25 @@ def region_polygons(p: Parameters, k_max: float, mu_max: float,
         if i1 < k.size - 1:
             ks.append(found[(i, i1, i1 + 1)])
         kk = np.asarray(ks)
-        lo_k, hi_k = intervals(kk)[mode]
-        out[mode].append(np.concatenate([np.column_stack([kk, lo_k]),
-                                         np.column_stack([kk[::-1], hi_k[::-1]])]))
+        out[mode].append(run_outline(kk, *intervals(kk)[mode]))
     return out
+
+
+def extend_run(k: np.ndarray, lo: np.ndarray, hi: np.ndarray, front: tuple[float, float, float] | None,
+               back: tuple[float, float, float] | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A run of columns ``(k, lo, hi)`` with the column ``front`` (a ``(k, lo, hi)``) before it and
+    ``back`` after it, where they are not None (the ends found beyond its first and last column)."""
+    if front is not None:
+        k, lo, hi = (np.concatenate([[v], arr]) for v, arr in zip(front, (k, lo, hi)))
+    if back is not None:
+        k, lo, hi = (np.concatenate([arr, [v]]) for v, arr in zip(back, (k, lo, hi)))
+    return k, lo, hi
+
+
+def run_outline(k: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """The closed polygon of a run of columns ``lo <= mu <= hi`` at ``k``: its lower edge left to
+    right, then its upper edge right to left."""
+    return np.concatenate([np.column_stack([k, lo]), np.column_stack([k[::-1], hi[::-1]])])
 
 
 # -- loaded blocks: several pieces of a mode per column --------------------------------------
@@ -433,15 +450,10 @@ def _track_polygons(p: Parameters, k: np.ndarray, mu_cap: float, modes: tuple[Mo
              for i, edge in enumerate(edges)
              if np.isfinite(at_edge.lo[edge[0], edge[1], i]) and ke[i] != k[edge[2]]}
     for m, t, run in runs:
-        kk, ll, hh = k[run], tr.lo[m, t, run], tr.hi[m, t, run]
         i0, i1 = int(run[0]), int(run[-1])
-        front, back = found.get((m, t, i0, i0 - 1)), found.get((m, t, i1, i1 + 1))
-        if front is not None:
-            kk, ll, hh = (np.concatenate([[v], arr]) for v, arr in zip(front, (kk, ll, hh)))
-        if back is not None:
-            kk, ll, hh = (np.concatenate([arr, [v]]) for v, arr in zip(back, (kk, ll, hh)))
-        out[Mode(m)].append(np.concatenate([np.column_stack([kk, ll]),
-                                            np.column_stack([kk[::-1], hh[::-1]])]))
+        out[Mode(m)].append(run_outline(*extend_run(k[run], tr.lo[m, t, run], tr.hi[m, t, run],
+                                                    found.get((m, t, i0, i0 - 1)),
+                                                    found.get((m, t, i1, i1 + 1)))))
     return out
 
 

@@ -61,16 +61,19 @@ class CurveData:
         """Consecutive pieces ``(vertices, is_boundary)`` of the curve."""
         if len(self.points) < 2:
             return []
-        b = self.boundary
-        cuts = np.flatnonzero(b[1:] != b[:-1]) + 1
-        starts = np.concatenate([[0], cuts])
-        ends = np.concatenate([cuts, [b.size]])
-        return [(self.points[s:e + 1], bool(b[s])) for s, e in zip(starts, ends)]
+        starts, ends = _runs(self.boundary)
+        return [(self.points[s:e + 1], bool(self.boundary[s])) for s, e in zip(starts, ends)]
 
     @property
     def is_boundary(self) -> bool:
         """True when some part of the curve bounds a region."""
         return bool(self.boundary.any())
+
+
+def _runs(flags: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The runs of equal ``flags``: their starts and their ends (exclusive)."""
+    cuts = np.flatnonzero(flags[1:] != flags[:-1]) + 1
+    return np.concatenate([[0], cuts]), np.concatenate([cuts, [flags.size]])
 
 
 def _side_key(p: Parameters, k: np.ndarray, mu: np.ndarray, raw: bool,
@@ -128,9 +131,7 @@ def _drop_short_runs(flags: np.ndarray, pts: np.ndarray, scale: tuple[float, flo
     seg = np.hypot(*np.diff(q, axis=0).T)
     flags = flags.copy()
     for _ in range(3):
-        cuts = np.flatnonzero(flags[1:] != flags[:-1]) + 1
-        starts = np.concatenate([[0], cuts])
-        ends = np.concatenate([cuts, [flags.size]])
+        starts, ends = _runs(flags)
         lengths = np.array([seg[s:e].sum() for s, e in zip(starts, ends)])
         changed = False
         for s, e, L in sorted(zip(starts, ends, lengths), key=lambda r: r[2]):
@@ -298,13 +299,10 @@ def curve_data(p: Parameters, k_max: float, mu_max: float, n_curve: int, raw: bo
 def _keep_curve(p: Parameters, name: str, flags: np.ndarray, raw: bool, raw_mode: Mode | None) -> bool:
     """Whether the map draws the curve: every curve that bounds something on the final map; on
     a raw figure the curves of its mode's region and their context (all of them for every mode)."""
-    keep = (not raw) or bool(flags.any()) or name == "OA" or (
-        raw_mode is not None and name in _CONTEXT.get((raw_mode, p.above), ()))
-    if raw and raw_mode is None:
-        keep = True
-    if not raw and name == "dotted" and p.above:
-        keep = False  # (3.44) bounds nothing on the final map
-    return keep
+    if not raw:
+        return not (name == "dotted" and p.above)  # (3.44) bounds nothing on the final map
+    return (raw_mode is None or bool(flags.any()) or name == "OA"
+            or name in _CONTEXT.get((raw_mode, p.above), ()))
 
 
 def _simplify_runs(pts: np.ndarray, flags: np.ndarray, tolerance: float, scale: tuple[float, float]
@@ -344,14 +342,10 @@ def line_ends(p: Parameters, curves: dict[str, CurveData], points: dict[str, Nam
               ) -> dict[str, tuple[float, float]]:
     """Names at the far ends of lines (as in the report's sketches)."""
     ends: dict[str, tuple[float, float]] = {}
-    if p.above:
-        if "AB" in curves:
-            ends["B"] = _point(curves["AB"].points[-1])
-    else:
-        if "AB" in curves and len(curves["AB"].points):
-            ends["B"] = _point(curves["AB"].points[-1])
-        if "DC" in curves and len(curves["DC"].points):
-            ends["C"] = _point(curves["DC"].points[-1])
-        if "C'" in points and "mu_star" in curves:
-            ends["C''"] = _point(curves["mu_star"].points[-1])
+    if "AB" in curves and len(curves["AB"].points):
+        ends["B"] = _point(curves["AB"].points[-1])
+    if not p.above and "DC" in curves and len(curves["DC"].points):
+        ends["C"] = _point(curves["DC"].points[-1])
+    if not p.above and "C'" in points and "mu_star" in curves:
+        ends["C''"] = _point(curves["mu_star"].points[-1])
     return ends

@@ -70,8 +70,10 @@ __all__ = [
     "checked_loads",
     "crossing",
     "finite_or_none",
+    "loads_constants",
     "margin",
     "margin_arrays",
+    "margin_at",
     "negligible",
 ]
 
@@ -170,20 +172,19 @@ class Margin:
 
     def as_dict(self) -> dict[str, Any]:
         n = self.nearest
+        near = {} if n is None else n.as_dict()
         return {
             "variable": self.variable,
             "value": finite_or_none(self.value),
-            "relative": None if n is None else finite_or_none(n.relative),
-            "delta": None if n is None else finite_or_none(n.delta),
-            "direction": None if n is None else n.direction,
-            "at": None if n is None else finite_or_none(n.at),
-            "to": None if n is None else n.to.label,
+            **{key: near.get(key) for key in ("relative", "delta", "direction", "at", "to")},
             "up": None if self.up is None else self.up.as_dict(),
             "down": None if self.down is None else self.down.as_dict(),
         }
 
 
-def _constants(g: np.ndarray, kp: np.ndarray, loads: dict[str, Any]) -> BlockConstants:
+def loads_constants(g: Any, kp: Any, loads: dict[str, Any]) -> BlockConstants:
+    """The block constants of ``g``, ``kp`` (numbers or arrays) and the load keywords ``loads``
+    (those absent: the report's block)."""
     return block_constants(g, kp, loads.get("buoyancy", 0.0), loads.get("uplift", 0.0),
                            loads.get("uplift_ratio", 0.0), loads.get("uplift_arm", 1.0 / 3.0),
                            loads.get("gyration"))
@@ -212,7 +213,7 @@ def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
     """Every k where the rule of classify may change along the line of constant mu; shape (n, m)."""
     if not loads or not carries_loads(loads):
         return C.k_roots_at_mu(mu, g, kp)
-    cst = _constants(g, kp, loads)
+    cst = loads_constants(g, kp, loads)
     e0 = _expressions(affine_terms(np.zeros_like(mu), cst), mu, g, cst.i2, 0.0)
     e1 = _expressions(affine_terms(np.ones_like(mu), cst), mu, g, cst.i2, 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -223,7 +224,7 @@ def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
 def _roots_along_mu(k: np.ndarray, g: np.ndarray, kp: np.ndarray,
                     loads: dict[str, Any] | None = None) -> np.ndarray:
     """Every mu where the rule of classify may change along the line of constant k; shape (n, m)."""
-    cst = _constants(g, kp, loads or {})
+    cst = loads_constants(g, kp, loads or {})
     t = C.thresholds(k, cst)
     cols = [t.mu_rest, t.upper, t.lower, t.mu_star]
     if loads and carries_loads(loads):
@@ -360,6 +361,14 @@ def crossing(direction: str, x: float, found: bool, at: float, to: int) -> Cross
     return Crossing(direction, float(at), delta, rel, Mode(int(to)))
 
 
+def margin_at(var: str, x: float, arrays: dict[str, tuple[np.ndarray, np.ndarray, np.ndarray]],
+              i: int) -> Margin:
+    """The margin of point ``i`` along ``var`` (its value ``x``) from its :func:`margin_arrays`."""
+    up, down = (crossing(d, x, bool(arrays[d][0][i]), arrays[d][1][i], arrays[d][2][i])
+                for d in ("up", "down"))
+    return Margin(var, x, up, down)
+
+
 def margin(k: float, mu: float, gamma: float, kprime: float, *, buoyancy: float = 0.0,
            uplift: float = 0.0, uplift_ratio: float = 0.0, uplift_arm: float = 1.0 / 3.0,
            gyration: float | None = None, crest: float = 1.0) -> tuple[Margin, Margin]:
@@ -394,10 +403,5 @@ def margin(k: float, mu: float, gamma: float, kprime: float, *, buoyancy: float 
     g = np.array([check_gamma(gamma)])
     kp = np.array([check_kprime(kprime, loads["crest"])])
     m0 = classify(k_arr, mu_arr, g, kp, **loads)
-    out = []
-    for var, x in (("k", float(k_arr[0])), ("mu", float(mu_arr[0]))):
-        arr = margin_arrays(var, k_arr, mu_arr, g, kp, m0, loads)
-        up = crossing("up", x, bool(arr["up"][0][0]), arr["up"][1][0], arr["up"][2][0])
-        down = crossing("down", x, bool(arr["down"][0][0]), arr["down"][1][0], arr["down"][2][0])
-        out.append(Margin(var, x, up, down))
-    return out[0], out[1]
+    return (margin_at("k", float(k_arr[0]), margin_arrays("k", k_arr, mu_arr, g, kp, m0, loads), 0),
+            margin_at("mu", float(mu_arr[0]), margin_arrays("mu", k_arr, mu_arr, g, kp, m0, loads), 0))

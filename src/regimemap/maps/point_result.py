@@ -122,11 +122,8 @@ class PointResult:
     @property
     def on_boundary(self) -> bool:
         """True when the point lies on a boundary of the map (a margin of 0 in some direction)."""
-        for m in (self.margin_k, self.margin_mu):
-            for c in (m.up, m.down):
-                if c is not None and negligible(c.delta, m.value):
-                    return True
-        return False
+        return any(c is not None and negligible(c.delta, m.value)
+                   for m in (self.margin_k, self.margin_mu) for c in (m.up, m.down))
 
     @property
     def nonunique(self) -> bool:
@@ -163,14 +160,8 @@ class PointResult:
             "description": self.mode.description,
             "hypothesis": self.hypothesis.name,
             "contact": self.hypothesis.contact,
-            "fx": finite_or_none(self.fx),
-            "fy": finite_or_none(self.fy),
-            "xi": finite_or_none(self.xi),
-            "xdd": finite_or_none(self.xdd),
-            "ydd": finite_or_none(self.ydd),
-            "thdd": finite_or_none(self.thdd),
-            "slip": finite_or_none(self.slip),
-            "lift": finite_or_none(self.lift),
+            **{key: finite_or_none(getattr(self, key))
+               for key in (*(key for key, _ in INITIATION_FIELDS), "slip", "lift")},
             "case": self.case.value,
             "case_description": self.case.description,
             "admissible": [m.label for m in self.admissible],

@@ -44,7 +44,6 @@ import numpy as np
 
 from ..mechanics import constants as C
 from ..mechanics.block import Case, Parameters
-from ..mechanics.loads import block_constants
 from ..mechanics.modes import SELECTION_ORDER, Mode
 from ..mechanics.solver import Hypothesis, solve
 from ..mechanics.validation import check_gamma, check_kprime, check_nonnegative_array
@@ -54,9 +53,10 @@ from .margins import (
     Margin,
     carries_loads,
     checked_loads,
-    crossing,
+    loads_constants,
     margin,
     margin_arrays,
+    margin_at,
 )
 from .point_result import PointResult
 from .points import DesignPoint
@@ -95,9 +95,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
     for h, r in responses.items():
         adm_mode[h.mode] = adm_mode[h.mode] | r.ok if h.mode in adm_mode else r.ok
     margins = {var: margin_arrays(var, k, mu, g, kp, m0, loads) for var in ("k", "mu")}
-    cst = block_constants(g, kp, loads["buoyancy"], loads["uplift"], loads["uplift_ratio"],
-                          loads["uplift_arm"], loads["gyration"])
-    t = C.thresholds(k, cst)
+    t = C.thresholds(k, loads_constants(g, kp, loads))
     lower, upper, mu_s = t.lower, t.upper, t.mu_star
     shown = dict(loads) if carries_loads(loads) else {}
     out: list[PointResult] = []
@@ -114,13 +112,7 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
         slip = None if hyp.sigma == 0 or not solvable else float(r.slip[i])
         lift = None if hyp.contact == "full" or not solvable else float(r.lift[i])
         adm = tuple(m for m in SELECTION_ORDER if m in adm_mode and adm_mode[m][i])
-        mrg = []
-        for var, x in (("k", float(k[i])), ("mu", float(mu[i]))):
-            arr = margins[var]
-            up = crossing("up", x, bool(arr["up"][0][i]), arr["up"][1][i], arr["up"][2][i])
-            down = crossing("down", x, bool(arr["down"][0][i]), arr["down"][1][i],
-                             arr["down"][2][i])
-            mrg.append(Margin(var, x, up, down))
+        point = loads_constants(float(g[i]), float(kp[i]), loads)
         out.append(PointResult(
             k=float(k[i]), mu=float(mu[i]), gamma=float(g[i]), kprime=float(kp[i]),
             mode=mode, hypothesis=hyp,
@@ -128,21 +120,18 @@ def _query_block(k: np.ndarray, mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
             xdd=val(r.xdd), ydd=val(r.ydd), thdd=val(r.thdd),
             slip=slip, lift=lift, case=cases[i], admissible=adm,
             hypothesis_admissible=bool(r.ok[i]), solvable=solvable,
-            margin_k=mrg[0], margin_mu=mrg[1],
+            margin_k=margin_at("k", float(k[i]), margins["k"], i),
+            margin_mu=margin_at("mu", float(mu[i]), margins["mu"], i),
             thresholds={
                 "mu_star": float(mu_s[i]),
                 "upper_line": float(upper[i]),
                 "lower_line": float(lower[i]),
-                "k_A": C.k_A(block_constants(float(g[i]), float(kp[i]), *_load_args(loads))),
-                "mu_Bprime": C.mu_Bprime(block_constants(float(g[i]), float(kp[i]), *_load_args(loads))),
+                "k_A": C.k_A(point),
+                "mu_Bprime": C.mu_Bprime(point),
             },
             name=names[i], loads=shown,
         ))
     return out
-
-
-def _load_args(loads: dict[str, Any]) -> tuple[Any, ...]:
-    return tuple(loads[key] for key in ("buoyancy", "uplift", "uplift_ratio", "uplift_arm", "gyration"))
 
 
 def query_point(k: float, mu: float, gamma: float, kprime: float, name: str = "", *,
@@ -290,13 +279,9 @@ def _query_shared(points: Sequence[DesignPoint | tuple[float, float]], gamma: fl
     mu = np.asarray(mus, dtype=np.float64)
     g_arr = np.asarray(gs, dtype=np.float64)
     kp_arr = np.asarray(kps, dtype=np.float64)
-    case_cache: dict[tuple[float, float], Case] = {}
-    cases = []
-    for gi, kpi in zip(gs, kps):
-        key = (gi, kpi)
-        if key not in case_cache:
-            case_cache[key] = Parameters(gi, kpi, crest=loads["crest"]).case
-        cases.append(case_cache[key])
+    # the case of each distinct (gamma, k') once, in the order the points first give it
+    case_of = {key: Parameters(*key, crest=loads["crest"]).case for key in dict.fromkeys(zip(gs, kps))}
+    cases = [case_of[key] for key in zip(gs, kps)]
     out: list[PointResult] = []
     for s in range(0, k.size, _BLOCK):
         sl = slice(s, s + _BLOCK)

@@ -116,10 +116,7 @@ def parse_values(text: str, name: str, check: Callable[[float], float],
     if not s:
         raise ValueError(f"{name}: empty; give {_SYNTAX}")
     values = _parse_range(text, name, check, max_count) if ":" in s else _parse_list(text, name, max_count)
-    out = []
-    for v in values:
-        out.append(check(v))
-    return out
+    return [check(v) for v in values]
 
 
 _SYNTAX = "a list like 1,2,3 or a range start:stop:count like -1:1:41"
@@ -199,12 +196,12 @@ def resolve_share(gammas: Sequence[float], kprimes: Sequence[float], share: str 
     -------
     (share, extents, crammed)
     """
-    own = atlas_extents(gammas, kprimes, "none", k_max, mu_max, sweep=sweep, fixed=fixed,
-                        view=view)
     ext = atlas_extents(gammas, kprimes, share, k_max, mu_max, sweep=sweep, fixed=fixed,
                         view=view)
     if share == "none" or (k_max is not None and mu_max is not None):
         return share, ext, []
+    own = atlas_extents(gammas, kprimes, "none", k_max, mu_max, sweep=sweep, fixed=fixed,
+                        view=view)
     crammed = [(g, kp) for i, g in enumerate(gammas) for j, kp in enumerate(kprimes)
                if ext[i][j][0] > CRAMMED * own[i][j][0] or ext[i][j][1] > CRAMMED * own[i][j][1]]
     if crammed:
