@@ -21,7 +21,7 @@ if sys.version_info >= (3, 11):
 else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
-from ..caisson.file_keys import DESIGN_KEYS, KeySpec
+from ..caisson.file_keys import DESIGN_KEYS
 from ..io.toml_errors import DesignFileError, did_you_mean
 from ..lifetime.file_keys import LIFETIME_KEYS, MAX_TRIALS
 
@@ -227,10 +227,6 @@ def check_override(where: Where, index: int, table: str, key: str, written: str 
         raise where.fail(line, f"[[section]] lifetime.{key}: the same for every section; accepted: {place}")
 
 
-def _why(spec: KeySpec, x: float) -> str:
-    return spec.why(x) if spec.why is not None else "out of range"
-
-
 def section_widths(where: Where, index: int, sec: Mapping[str, Any]
                    ) -> tuple[tuple[float, ...] | None, float | None, float]:
     """A section's ``width`` or ``widths`` (None: neither), ``target`` and ``tolerance``, checked."""
@@ -248,8 +244,8 @@ def section_widths(where: Where, index: int, sec: Mapping[str, Any]
             raise where.fail(line("width"), f"[[section]] width = {sec['width']!r}: accepted: "
                              f"{SECTION_KEYS['width']}, {spec.accepted}")
         if not spec.check(w):
-            raise where.fail(line("width"), f"[[section]] width = {sec['width']!r}: out of range, "
-                             f"{_why(spec, w)}; accepted: {spec.accepted}")
+            raise where.fail(line("width"), f"[[section]] width = {sec['width']!r}: "
+                             f"{spec.reason(w)}; accepted: {spec.accepted}")
         widths = (w,)
     if "widths" in sec:
         v = sec["widths"]
@@ -259,8 +255,8 @@ def section_widths(where: Where, index: int, sec: Mapping[str, Any]
                              f"{SECTION_KEYS['widths']}, each {spec.accepted}")
         bad = [x for x in ws if x is not None and not spec.check(x)]
         if bad:
-            raise where.fail(line("widths"), f"[[section]] widths = {v!r}: {bad[0]:g} m is out of range, "
-                             f"{_why(spec, bad[0])}; accepted: each {spec.accepted}")
+            raise where.fail(line("widths"), f"[[section]] widths = {v!r}: {bad[0]:g} m is "
+                             f"{spec.reason(bad[0])}; accepted: each {spec.accepted}")
         got = [float(x) for x in ws if x is not None]
         if any(b <= a for a, b in zip(got, got[1:])):
             raise where.fail(line("widths"), f"[[section]] widths = {v!r}: not increasing; accepted: "
