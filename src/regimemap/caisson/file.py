@@ -33,23 +33,16 @@ inputs of Goda's procedure, :meth:`Design.lifetime_caisson` and
 
 from __future__ import annotations
 
-import re
-import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
-
 # the keys, the example, the [lifetime] table (their own modules) and the line finder,
 # re-exported: one front door
 from ..io.inputs import read_design_text
 from ..io.toml_errors import DesignFileError, did_you_mean
-from ..io.toml_keys import KeyReader
+from ..io.toml_keys import KeyReader, load_toml
 from ..io.toml_lines import key_line, key_text
 from ..lifetime.file import LifetimeSpec, read_lifetime
 from ..lifetime.file import lifetime_model as _lifetime_model
@@ -179,7 +172,8 @@ def parse_design(text: str, source: str = "<design>") -> Design:
         and the value as the file writes it.
     """
     r = design_reader(source, text)
-    data = _load_toml(text, r)
+    data = load_toml(text, lambda msg, line, column: r.fail(
+        f"TOML syntax error{'' if line is None else f' at line {line}, column {column}'}: {msg}"))
     _check_tables(data, r)
     site = r.table("site", data["site"], SiteSpec)
     wave = _read_wave(data, r)
@@ -190,21 +184,6 @@ def parse_design(text: str, source: str = "<design>") -> Design:
                for section in DESIGN_KEYS for key in DESIGN_KEYS[section] if key in data[section]}
     return Design(site=site, wave=wave, caisson=caisson, source=source, lifetime=lifetime,
                   written=written)
-
-
-def _load_toml(text: str, r: KeyReader) -> dict[str, Any]:
-    """The TOML text as a dict; a syntax error names its line and column."""
-    try:
-        data: dict[str, Any] = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        m = re.search(r"\s*\(at line (\d+), column (\d+)\)", msg)
-        where = ""
-        if m:
-            where = f" at line {m.group(1)}, column {m.group(2)}"
-            msg = msg[:m.start()] + msg[m.end():]
-        raise r.fail(f"TOML syntax error{where}: {msg}") from None
-    return data
 
 
 def _check_tables(data: Mapping[str, Any], r: KeyReader) -> None:

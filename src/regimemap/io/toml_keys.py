@@ -15,14 +15,22 @@ design file's tables (:mod:`regimemap.caisson.file_keys`, :mod:`regimemap.lifeti
 from __future__ import annotations
 
 import math
+import re
+import sys
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import MISSING, Field, dataclass, field, fields
 from typing import Any, TypeVar
 
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
 from .toml_errors import DesignFileError, did_you_mean
 from .toml_lines import key_line, key_text
 
-__all__ = ["KINDS", "Key", "KeyReader", "default_of", "example_table", "key", "keys_of", "toml_type"]
+__all__ = ["KINDS", "Key", "KeyReader", "default_of", "example_table", "key", "keys_of", "load_toml",
+           "number_of", "toml_type"]
 
 #: The TOML kinds of a key's value, as the documentation's tables name them.
 KINDS = ("number", "int", "text", "bool", "numbers", "pair", "limits", "table")
@@ -108,6 +116,25 @@ def toml_type(v: Any) -> str:
     return names.get(type(v), type(v).__name__)
 
 
+def number_of(v: Any) -> float | None:
+    """A parsed TOML number as a float; None for anything else (a boolean included)."""
+    return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else None
+
+
+def load_toml(text: str, error: Callable[[str, int | None, int | None], Exception]) -> dict[str, Any]:
+    """The TOML ``text`` as a dict; a syntax error raises ``error(message, line, column)`` (the
+    position cut from tomllib's message; None when it gives none)."""
+    try:
+        data: dict[str, Any] = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        msg = str(exc)
+        m = re.search(r"\s*\(at line (\d+), column (\d+)\)", msg)
+        if m is None:
+            raise error(msg, None, None) from None
+        raise error(msg[:m.start()] + msg[m.end():], int(m.group(1)), int(m.group(2))) from None
+    return data
+
+
 def _flatten(table: Mapping[str, Any], prefix: str = "") -> list[tuple[str, Any]]:
     """The items of a table, nested tables joined by ``.`` (``{"0": {"1": p}}`` -> ``("0.1", p)``)."""
     out: list[tuple[str, Any]] = []
@@ -150,10 +177,13 @@ class KeyReader:
         self.tables = tables
         self.python_types = python_types
 
+    def at(self, line: int | None) -> str:
+        """``source, line N`` (``source`` when the line is not known)."""
+        return self.source if line is None else f"{self.source}, line {line}"
+
     def where(self, table: str | None = None, key: str | None = None) -> str:
         """``source, line N`` of ``[table] key`` (of the table's header without ``key``)."""
-        line = None if table is None else key_line(self.text, table, key)
-        return self.source if line is None else f"{self.source}, line {line}"
+        return self.at(None if table is None else key_line(self.text, table, key))
 
     def fail(self, what: str, table: str | None = None, key: str | None = None) -> DesignFileError:
         """The error ``what``, at the line of ``[table] key``."""

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 from regimemap.climate.wave_record import HS_MAX
 
-from ..io.toml_keys import Key, KeyReader, key, keys_of
+from ..io.toml_keys import Key, KeyReader, key, keys_of, number_of
 
 if TYPE_CHECKING:
     from regimemap.climate import ClimateResult
@@ -87,17 +87,13 @@ RECORD_KEYS: dict[str, Key] = keys_of(RecordSpec)
 _DISTRIBUTIONS = {"pot": ("gpd", "weibull"), "annual-maxima": ("gumbel", "gev")}
 
 
-def _number(v: Any) -> float | None:
-    return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else None
-
-
 def _threshold(v: Any, bad: Callable[[str, str], DesignFileError]) -> tuple[str, float]:
     """``threshold``: a height in metres (a number; at most :data:`HS_MAX`, so ``99.5`` is the
     quantile ``"99.5%"`` mistyped) or a quantile (a string such as ``"99.5%"``)."""
     from regimemap.climate.peaks import parse_threshold
 
     try:
-        kind, u = parse_threshold(v if isinstance(v, str) else repr(_number(v)))
+        kind, u = parse_threshold(v if isinstance(v, str) else repr(number_of(v)))
     except ValueError:
         raise bad("threshold", "neither a height > 0 nor a percentage") from None
     if kind == "value" and u > HS_MAX:
@@ -133,7 +129,7 @@ def read_record_table(r: KeyReader, table: Mapping[str, Any]) -> RecordSpec:
         got["threshold"] = _threshold(table["threshold"], bad)
     for name in ("gap_hours", "shape", "coverage", "period_ratio"):
         if name in table:
-            x = _number(table[name])
+            x = number_of(table[name])
             if x is None or not math.isfinite(x) or not RECORD_KEYS[name].check(x):
                 raise bad(name, "out of range" if x is not None else "expected a number")
             got[name] = x
