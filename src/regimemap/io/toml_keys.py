@@ -149,6 +149,13 @@ def _finite(x: Any) -> bool:
 
 
 _Table = TypeVar("_Table")
+#: The scalar kinds of a key: the type test of a value, what the messages say is expected, and why a
+#: value its check refuses is wrong.
+_SCALARS: dict[str, tuple[Callable[[Any], bool], str, str]] = {
+    "int": (lambda v: isinstance(v, int) and not isinstance(v, bool), "a whole number", "out of range"),
+    "text": (lambda v: isinstance(v, str), "a string", "not one of the accepted values"),
+    "bool": (lambda v: isinstance(v, bool), "true or false", "out of range"),
+}
 
 
 class KeyReader:
@@ -230,7 +237,7 @@ class KeyReader:
         """The checked value of ``data[key]``, read as its declared kind (None when absent)."""
         if key not in data:
             return None
-        read = {"number": self._number, "int": self._int, "text": self._text, "bool": self._bool,
+        read = {"number": self._number, "int": self._scalar, "text": self._scalar, "bool": self._scalar,
                 "numbers": self._numbers, "pair": self._pair, "limits": self._limits,
                 "table": self._table}[self.tables[table][key].kind]
         return read(table, data, key)
@@ -253,26 +260,14 @@ class KeyReader:
     def _number(self, table: str, data: Mapping[str, Any], key: str) -> float:
         return self.number(table, data, key, data[key])
 
-    def _int(self, table: str, data: Mapping[str, Any], key: str) -> int:
+    def _scalar(self, table: str, data: Mapping[str, Any], key: str) -> Any:
+        """A whole number, a text or a boolean (:data:`_SCALARS`), of its type and passing its check."""
         v = data[key]
-        if isinstance(v, bool) or not isinstance(v, int):
-            raise self.bad(table, key, v, f"expected a whole number, found {self.type_name(table, v)}")
+        is_kind, expected, refused = _SCALARS[self.tables[table][key].kind]
+        if not is_kind(v):
+            raise self.bad(table, key, v, f"expected {expected}, found {self.type_name(table, v)}")
         if not self.tables[table][key].check(v):
-            raise self.bad(table, key, v, "out of range")
-        return v
-
-    def _text(self, table: str, data: Mapping[str, Any], key: str) -> str:
-        v = data[key]
-        if not isinstance(v, str):
-            raise self.bad(table, key, v, f"expected a string, found {self.type_name(table, v)}")
-        if not self.tables[table][key].check(v):
-            raise self.bad(table, key, v, "not one of the accepted values")
-        return v
-
-    def _bool(self, table: str, data: Mapping[str, Any], key: str) -> bool:
-        v = data[key]
-        if not isinstance(v, bool):
-            raise self.bad(table, key, v, f"expected true or false, found {self.type_name(table, v)}")
+            raise self.bad(table, key, v, refused)
         return v
 
     def _numbers(self, table: str, data: Mapping[str, Any], key: str) -> tuple[float, ...]:

@@ -1,7 +1,9 @@
 """The readers of a study file's parts: its keys, ``[[section]]`` and ``[[scenario]]``, the lines.
 
 :mod:`regimemap.study.file` reads a study file with these: the keys each part
-accepts, the line of a key inside the n-th ``[[section]]``, a section's design
+accepts, declared as the fields of :class:`StudyKeys`, :class:`SectionKeys` and
+:class:`ScenarioKeys` (:func:`regimemap.io.toml_keys.key`), the line of a key inside
+the n-th ``[[section]]`` (:class:`Where`), a section's design
 tables merged and written back as TOML (:class:`Merged`) with where each line came
 from, so the design reader's messages name the study file's (or the base's) line.
 """
