@@ -18,6 +18,10 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+# the largest significant height H0' a climate may give (30 m: the largest measured are about 20 m,
+# 19 m at a North Atlantic buoy in February 2013, the WMO record; above, a unit slip) and the
+# significant periods of sea waves, 1-30 s: the design file's limits of the physics of sea waves
+from ..caisson.file_keys import MAX_HEIGHT, PERIOD_RANGE
 from ..io.toml_keys import Key, key, keys_of
 
 if TYPE_CHECKING:
@@ -31,13 +35,6 @@ __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_HEIGHT", "M
 MAX_TRIALS = 10_000_000
 #: Longest design life [years].
 MAX_YEARS = 1000
-#: Largest deep-water significant height H0' a climate may give [m].  The largest significant
-#: heights measured are about 20 m (19 m, a North Atlantic buoy, February 2013: the WMO record);
-#: above 30 m no sea has been seen, and the value is a unit slip (centimetres for metres).
-MAX_HEIGHT = 30.0
-#: Significant periods of wind seas and swell [s]: outside, not a sea state (tenths of a second,
-#: a frequency for a period).
-PERIOD_RANGE = (1.0, 30.0)
 #: Largest tidal range [m]: the largest on Earth is about 16 m (Bay of Fundy).
 MAX_TIDE_RANGE = 20.0
 #: Most storms a year: more than one a day are not separate storms.

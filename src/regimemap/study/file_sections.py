@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..caisson.file_keys import DESIGN_KEYS
 from ..io.toml_errors import DesignFileError, did_you_mean
-from ..io.toml_keys import Key, KeyReader, key, keys_of, number_of
+from ..io.toml_keys import Key, KeyReader, default_of, key, keys_of, number_of
 from ..io.toml_keys import load_toml as toml_data
 from ..lifetime.file_keys import LIFETIME_KEYS, MAX_TRIALS
 
@@ -91,6 +91,8 @@ SCENARIO_KEYS: dict[str, Key] = keys_of(ScenarioKeys)
 OVERRIDABLE = ("site", "caisson", "lifetime")
 STUDY_WIDE = ("years", "trials", "seed", "record", "climate_replicates")
 DESIGN_TABLES = ("site", "wave", "caisson", "lifetime")
+#: The keys of each design table.
+_KEYS = {**DESIGN_KEYS, "lifetime": LIFETIME_KEYS}
 
 
 class Where(KeyReader):
@@ -223,7 +225,7 @@ class Merged:
 
 def section_key(where: Where, index: int, key: str) -> tuple[str, str]:
     """The design table of a section's flat key (``depth`` -> ``site``); refused when unknown."""
-    tables = [t for t in OVERRIDABLE if key in (LIFETIME_KEYS if t == "lifetime" else DESIGN_KEYS[t])]
+    tables = [t for t in OVERRIDABLE if key in _KEYS[t]]
     line = where.item("section", index, key)
     if not tables:
         known = {**SECTION_KEYS, **{k: 0 for t in ("site", "caisson") for k in DESIGN_KEYS[t]},
@@ -238,7 +240,7 @@ def section_key(where: Where, index: int, key: str) -> tuple[str, str]:
 
 
 def check_override(where: Where, index: int, table: str, key: str, written: str | None = None) -> None:
-    keys = LIFETIME_KEYS if table == "lifetime" else DESIGN_KEYS[table]
+    keys = _KEYS[table]
     line = where.item("section", index, written or f"{table}.{key}")
     if key not in keys:
         raise where.fail_at(line, f"[[section]] {table}.{key}: unknown key{did_you_mean(key, keys)}; "
@@ -287,16 +289,16 @@ def section_widths(where: Where, index: int, sec: Mapping[str, Any]
     target = None
     if "target" in sec:
         target = number_of(sec["target"])
-        if target is None or not (math.isfinite(target) and target > 0.0):
+        if target is None or not (math.isfinite(target) and SECTION_KEYS["target"].check(target)):
             raise where.fail_at(line("target"), f"[[section]] target = {sec['target']!r}: accepted: "
                                 f"{SECTION_KEYS['target'].accepted}")
         if widths is None or len(widths) < 2:
             raise where.fail_at(line("target"), "[[section]] target needs widths = [..] (at least two, the "
                                 "bracket of the width for the target)")
-    tolerance = 0.05
+    tolerance: float = default_of(SectionKeys, "tolerance")
     if "tolerance" in sec:
         t = number_of(sec["tolerance"])
-        if target is None or t is None or not (math.isfinite(t) and t > 0.0):
+        if target is None or t is None or not (math.isfinite(t) and SECTION_KEYS["tolerance"].check(t)):
             raise where.fail_at(line("tolerance"), f"[[section]] tolerance = {sec['tolerance']!r}: accepted: "
                                 f"{SECTION_KEYS['tolerance'].accepted}, with target")
         tolerance = t
