@@ -53,7 +53,7 @@ def study_keys_rst() -> str:
     )
 
     tables = ", ".join(f"``[{t}]``" for t in DESIGN_TABLES)
-    lines = _table("The top level", [(k, v) for k, v in STUDY_KEYS.items()] +
+    lines = _table("The top level", [(k, v.accepted) for k, v in STUDY_KEYS.items()] +
                    [(f"[{t}]", f"the design file's [{t}] table, inline: the base design (over base's)")
                     for t in DESIGN_TABLES],
                    f"The study's own keys, and the design file's tables {tables} "
@@ -64,7 +64,7 @@ def study_keys_rst() -> str:
         keys = LIFETIME_KEYS if table == "lifetime" else DESIGN_KEYS[table]
         names = [k for k in keys if not (table == "lifetime" and k in STUDY_WIDE)]
         changed.append(f"``[{table}]``: " + ", ".join(f"``{k}``" for k in names))
-    lines += _table("[[section]]", list(SECTION_KEYS.items()),
+    lines += _table("[[section]]", [(k, v.accepted) for k, v in SECTION_KEYS.items()],
                     "One table per section along the breakwater.  Besides these keys, a section changes "
                     "the base design's keys of " + "; ".join(changed) + " -- written bare "
                     "(``depth = 8.0``) or with their table when two tables share the name "
@@ -72,7 +72,7 @@ def study_keys_rst() -> str:
                     "``width`` being the width simulated); every check of the design file applies.  The "
                     "study fixes " + ", ".join(f"``{k}``" for k in shared) + " of ``[lifetime]`` for "
                     "every section.")
-    lines += _table("[[scenario]]", list(SCENARIO_KEYS.items()),
+    lines += _table("[[scenario]]", [(k, v.accepted) for k, v in SCENARIO_KEYS.items()],
                     "One table per climate scenario over the service years 1 to ``[lifetime] years``.  "
                     "A table ``{year = value}`` is linear between its years, from today's value at year 0 "
                     "(0 m, a factor 1), and constant after its last year; a scenario with none of the keys "

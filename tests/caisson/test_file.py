@@ -124,7 +124,7 @@ def test_each_key_is_declared_once_as_a_field_of_its_table():
     import dataclasses
     import re
 
-    from regimemap.caisson.file_keys import DESIGN_KEYS, DESIGN_TABLES, DesignReader, example_tables
+    from regimemap.caisson.file_keys import DESIGN_KEYS, DESIGN_TABLES, design_reader, example_tables
 
     text = example_tables()
     assert text in example_design_text()
@@ -142,10 +142,9 @@ def test_each_key_is_declared_once_as_a_field_of_its_table():
             else:
                 assert not spec.required, f"required [{table}] {f.name} has no example line"
     # the reader fills a table from its fields: given keys, defaults for the others, in order
-    r = DesignReader("x.toml", "")
-    site = r.table({"site": {"depth": 10.0, "armour_depth": 5.0, "seabed_slope": 0.01}}, "site",
-                   DESIGN_TABLES["site"])
+    r = design_reader("x.toml", "")
+    site = r.table("site", {"depth": 10.0, "armour_depth": 5.0, "seabed_slope": 0.01}, DESIGN_TABLES["site"])
     assert site == DESIGN_TABLES["site"](depth=10.0, armour_depth=5.0, seabed_slope=0.01)
     assert site.water_density == 1030.0
     with pytest.raises(DesignFileError, match=r"x.toml: \[site\] armour_depth is missing; accepted: a depth"):
-        r.table({"site": {"depth": 10.0}}, "site", DESIGN_TABLES["site"])
+        r.table("site", {"depth": 10.0}, DESIGN_TABLES["site"])

@@ -362,23 +362,24 @@ def test_each_lifetime_key_is_declared_once_as_a_field():
     import dataclasses
     import re
 
-    from regimemap.lifetime.file_keys import LifetimeSpec, default_of
+    from regimemap.io.toml_keys import default_of
+    from regimemap.lifetime.file_keys import LifetimeSpec
 
     names = [f.name for f in dataclasses.fields(LifetimeSpec)]
     assert names == [*LIFETIME_KEYS, "written"]
     plain = LifetimeSpec()
     said = 0
     for key, spec in LIFETIME_KEYS.items():
-        assert default_of(key) == getattr(plain, key), key
+        assert default_of(LifetimeSpec, key) == getattr(plain, key), key
         m = re.search(r"default ([0-9.]+)\b", spec.accepted)
         if m and key != "climate_replicates":
-            assert float(m.group(1)) == default_of(key), key
+            assert float(m.group(1)) == default_of(LifetimeSpec, key), key
             said += 1
     assert said >= 6  # years, trials, shape, storm_hours, tide_range, target
     # the example's [lifetime] is the keys' lines, each naming its key, in the order declared
-    from regimemap.lifetime.file_keys import example_lifetime
+    from regimemap.io.toml_keys import example_table
 
-    text = example_lifetime()
+    text = example_table("lifetime", LifetimeSpec)
     assert text in example_design_text()
     shown = [key for key, spec in LIFETIME_KEYS.items() if spec.example]
     assert [re.match(r"(?:# )?([A-Za-z0-9_]+) = ", line).group(1)

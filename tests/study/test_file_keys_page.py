@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from regimemap.caisson.file_keys import DESIGN_KEYS, WIDTH_RANGE
+from regimemap.io.toml_keys import Key
 from regimemap.lifetime.file_keys import LIFETIME_KEYS
 from regimemap.study import file_sections as study_sections
 
@@ -30,13 +31,17 @@ def _rows(rst: str, title: str) -> dict[str, str]:
     return dict(re.findall(r"   \* - ``(.+?)``\n     - (.+)", part))
 
 
+def _accepted(keys: dict) -> dict[str, str]:
+    return {k: spec.accepted for k, spec in keys.items()}
+
+
 def test_every_key_of_every_part_is_on_the_page_with_what_it_accepts(page_module):
     rst = page_module.study_keys_rst()
     top = _rows(rst, "The top level")
-    assert {k: top[k] for k in study_sections.STUDY_KEYS} == dict(study_sections.STUDY_KEYS)
+    assert {k: top[k] for k in study_sections.STUDY_KEYS} == _accepted(study_sections.STUDY_KEYS)
     assert {f"[{t}]" for t in study_sections.DESIGN_TABLES} <= set(top)
-    assert _rows(rst, "[[section]]") == dict(study_sections.SECTION_KEYS)
-    assert _rows(rst, "[[scenario]]") == dict(study_sections.SCENARIO_KEYS)
+    assert _rows(rst, "[[section]]") == _accepted(study_sections.SECTION_KEYS)
+    assert _rows(rst, "[[scenario]]") == _accepted(study_sections.SCENARIO_KEYS)
     section_intro = rst.split("\n[[section]]\n", 1)[1].split(".. list-table::")[0]
     changed = section_intro.split("``[lifetime]``: ")[1].split(" -- ")[0].split(", ")
     fixed = section_intro.split("The study fixes ")[1].split(" of ``[lifetime]``")[0].split(", ")
@@ -51,7 +56,8 @@ def test_every_key_of_every_part_is_on_the_page_with_what_it_accepts(page_module
 
 
 def test_a_new_declared_key_appears_on_the_page(page_module, monkeypatch):
-    monkeypatch.setitem(study_sections.SCENARIO_KEYS, "surge_factor", "a table {year = factor > 0} on surges")
+    monkeypatch.setitem(study_sections.SCENARIO_KEYS, "surge_factor",
+                        Key("a table {year = factor > 0} on surges", kind="table"))
     assert _rows(page_module.study_keys_rst(), "[[scenario]]")["surge_factor"] == (
         "a table {year = factor > 0} on surges")
 

@@ -33,28 +33,22 @@ inputs of Goda's procedure, :meth:`Design.lifetime_caisson` and
 
 from __future__ import annotations
 
-import re
-import sys
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
-
 # the keys, the example, the [lifetime] table (their own modules) and the line finder,
 # re-exported: one front door
 from ..io.inputs import read_design_text
-from ..io.toml_errors import DesignFileError
+from ..io.toml_errors import DesignFileError, did_you_mean
+from ..io.toml_keys import KeyReader, load_toml
 from ..io.toml_lines import key_line, key_text
 from ..lifetime.file import LifetimeSpec, read_lifetime
 from ..lifetime.file import lifetime_model as _lifetime_model
 from ..lifetime.file_keys import ERROR_FACTORS, LIFETIME_KEYS, MAX_TRIALS, MAX_YEARS, check_lifetime_option
 from .file_example import example_design_text
-from .file_keys import DESIGN_KEYS, CaissonSpec, DesignReader, SiteSpec, WaveSpec
+from .file_keys import DESIGN_KEYS, CaissonSpec, SiteSpec, WaveSpec, design_reader
 
 if TYPE_CHECKING:
     from regimemap.lifetime import Caisson, LifetimeModel
@@ -177,10 +171,11 @@ def parse_design(text: str, source: str = "<design>") -> Design:
         the key (:func:`key_line`; of the table's header for a missing key)
         and the value as the file writes it.
     """
-    r = DesignReader(source, text)
-    data = _load_toml(text, r)
-    r.check_names(data)
-    site = _read_site(data, r)
+    r = design_reader(source, text)
+    data = load_toml(text, lambda msg, line, column: r.fail(
+        f"TOML syntax error{'' if line is None else f' at line {line}, column {column}'}: {msg}"))
+    _check_tables(data, r)
+    site = r.table("site", data["site"], SiteSpec)
     wave = _read_wave(data, r)
     caisson = _read_caisson(data, r)
     _check_depths(site, caisson, r)
@@ -191,31 +186,27 @@ def parse_design(text: str, source: str = "<design>") -> Design:
                   written=written)
 
 
-def _load_toml(text: str, r: DesignReader) -> dict[str, Any]:
-    """The TOML text as a dict; a syntax error names its line and column."""
-    try:
-        data: dict[str, Any] = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        msg = str(exc)
-        m = re.search(r"\s*\(at line (\d+), column (\d+)\)", msg)
-        where = ""
-        if m:
-            where = f" at line {m.group(1)}, column {m.group(2)}"
-            msg = msg[:m.start()] + msg[m.end():]
-        raise r.fail(f"TOML syntax error{where}: {msg}") from None
-    return data
+def _check_tables(data: Mapping[str, Any], r: KeyReader) -> None:
+    """The tables ``[site]``, ``[wave]``, ``[caisson]`` (their keys known) and ``[lifetime]`` (its keys
+    are checked with it, :func:`~regimemap.lifetime.file.read_lifetime`), none other."""
+    tables = [*DESIGN_KEYS, "lifetime"]
+    for section, table in data.items():
+        if section not in tables:
+            raise r.fail(f"unknown table [{section}]{did_you_mean(section, dict.fromkeys(tables))}; "
+                         f"accepted tables: {', '.join(f'[{s}]' for s in tables)}", section)
+        if not isinstance(table, dict):
+            raise r.fail(f"[{section}] must be a table, found {table!r}", section)
+        if section != "lifetime":
+            r.check_keys(section, table)
+    for section in DESIGN_KEYS:
+        if section not in data:
+            raise r.fail(f"missing table [{section}]; required keys: "
+                         + ", ".join(k for k, v in DESIGN_KEYS[section].items() if v.required))
 
 
-def _read_site(data: Mapping[str, Any], r: DesignReader) -> SiteSpec:
-    """``[site]``."""
-    return r.table(data, "site", SiteSpec)
-
-
-def _read_wave(data: Mapping[str, Any], r: DesignReader) -> WaveSpec:
+def _read_wave(data: Mapping[str, Any], r: KeyReader) -> WaveSpec:
     """``[wave]``: either ``H0`` or both ``H13`` and ``Hmax`` (``Hmax >= H13``)."""
-    H0 = r.number(data, "wave", "H0")
-    H13 = r.number(data, "wave", "H13")
-    Hmax = r.number(data, "wave", "Hmax")
+    H0, H13, Hmax = (r.value("wave", data["wave"], k) for k in ("H0", "H13", "Hmax"))
     if H0 is not None and (H13 is not None or Hmax is not None):
         raise r.fail(f"[wave] H0 = {r.written('wave', 'H0', H0)} together with [wave] H13/Hmax; "
                      "accepted: either H0 (equivalent deep-water height) or both H13 and Hmax "
@@ -227,17 +218,17 @@ def _read_wave(data: Mapping[str, Any], r: DesignReader) -> WaveSpec:
             raise r.fail(f"[wave] {missing} is missing; accepted: either H0 (equivalent deep-water "
                          "height, m) or both H13 and Hmax (heights at the wall, m)", "wave")
         if Hmax < H13:
-            raise r.key_error("wave", "Hmax", Hmax,
-                              f"smaller than [wave] H13 = {r.written('wave', 'H13', H13)}")
-    return r.table(data, "wave", WaveSpec, H0=H0, H13=H13, Hmax=Hmax)
+            raise r.bad("wave", "Hmax", Hmax,
+                        f"smaller than [wave] H13 = {r.written('wave', 'H13', H13)}")
+    return r.table("wave", data["wave"], WaveSpec, H0=H0, H13=H13, Hmax=Hmax)
 
 
-def _read_caisson(data: Mapping[str, Any], r: DesignReader) -> CaissonSpec:
+def _read_caisson(data: Mapping[str, Any], r: KeyReader) -> CaissonSpec:
     """``[caisson]``: either ``buoyant_weight`` or the three densities."""
     c = "caisson"
-    weight = r.number(data, c, "buoyant_weight")
-    dens = {k: r.number(data, c, k) for k in ("concrete_fraction", "concrete_density", "fill_density")}
-    above = r.number(data, c, "fill_density_above")
+    weight = r.value(c, data[c], "buoyant_weight")
+    dens = {k: r.value(c, data[c], k) for k in ("concrete_fraction", "concrete_density", "fill_density")}
+    above = r.value(c, data[c], "fill_density_above")
     given = [k for k, v in dens.items() if v is not None]
     if weight is not None and (given or above is not None):
         raise r.fail(f"[caisson] buoyant_weight = {r.written(c, 'buoyant_weight', weight)} together with "
@@ -248,10 +239,10 @@ def _read_caisson(data: Mapping[str, Any], r: DesignReader) -> CaissonSpec:
         absent = [k for k, v in dens.items() if v is None]
         raise r.fail(f"[caisson] {' and '.join(absent)} missing; accepted: either buoyant_weight "
                      "(kN/m) or all of concrete_fraction, concrete_density, fill_density (kg/m^3)", c)
-    return r.table(data, c, CaissonSpec, buoyant_weight=weight, fill_density_above=above, **dens)
+    return r.table(c, data[c], CaissonSpec, buoyant_weight=weight, fill_density_above=above, **dens)
 
 
-def _check_depths(site: SiteSpec, caisson: CaissonSpec, r: DesignReader) -> None:
+def _check_depths(site: SiteSpec, caisson: CaissonSpec, r: KeyReader) -> None:
     """The armour layer no lower than the caisson's base, the base no deeper than the water."""
     depth = r.written("site", "depth", site.depth)
     base = r.written("caisson", "base_depth", caisson.base_depth)

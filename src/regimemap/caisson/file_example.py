@@ -23,31 +23,24 @@ _EXAMPLE = """\
 [lifetime.errors]
 {errors}"""
 
-#: What each uncertainty factor multiplies, for the comments of the example.
-_ERROR_COMMENTS = {
-    "deepwater": "on the storm's H0' (drawn once per lifetime)",
-    "transformation": "on H1/3 at the wall (once per storm)",
-    "force": "on the wave force P and the uplift U (once per storm)",
-    "friction": "on the friction coefficient (once per storm)",
-}
-
-
 def example_design_text() -> str:
     """The commented example design file (Goda's worked upright breakwater, with a life of 50 years).
 
     Its ``[site]``, ``[wave]``, ``[caisson]`` and ``[lifetime]`` are the example lines of their
     keys (:func:`~regimemap.caisson.file_keys.example_tables`,
-    :func:`~regimemap.lifetime.file_keys.example_lifetime`); its ``[lifetime.errors]`` are the
-    defaults of :data:`regimemap.lifetime.DEFAULT_ERRORS`.
+    :func:`~regimemap.io.toml_keys.example_table`); its ``[lifetime.errors]`` are the defaults of
+    :data:`regimemap.lifetime.DEFAULT_ERRORS`, each with its key's comment.
     """
     from regimemap.lifetime import DEFAULT_ERRORS
 
-    from ..lifetime.file_keys import example_lifetime
+    from ..io.toml_keys import example_table
+    from ..lifetime.file_keys import ERROR_FACTORS, LifetimeSpec
     from .file_keys import example_tables
 
     lines = []
-    for name, comment in _ERROR_COMMENTS.items():
+    for name, spec in ERROR_FACTORS.items():
         f = getattr(DEFAULT_ERRORS, name)
-        lines.append(f"{f'{name} = [{f.ratio!r}, {f.cov!r}]':<30} # {comment}\n")
-    return (_EXAMPLE.replace("{tables}", example_tables()).replace("{lifetime}", example_lifetime())
+        lines.append(f"{f'{name} = [{f.ratio!r}, {f.cov!r}]':<30} # {spec.example}\n")
+    return (_EXAMPLE.replace("{tables}", example_tables())
+            .replace("{lifetime}", example_table("lifetime", LifetimeSpec))
             .replace("{errors}", "".join(lines)))

@@ -1,66 +1,27 @@
 """The keys of a design file's ``[site]``, ``[wave]`` and ``[caisson]`` tables, declared once; their reader.
 
 Each key is one field of its table's dataclass (:class:`SiteSpec`, :class:`WaveSpec`,
-:class:`CaissonSpec`), declared with :func:`key`: its name and type, its default (none:
-required), what it accepts in words, its range test, why a value out of range is refused, and
+:class:`CaissonSpec`), declared with :func:`~regimemap.io.toml_keys.key`: its name and type, its
+default (none: required), what it accepts in words, its range test, why a value out of range is refused, and
 its lines in the commented example.  From those fields come :data:`DESIGN_KEYS` (the words of
 the error messages, the "did you mean" of an unknown key, the documentation's table of the
 keys, the study file's overrides), the reading and checking of a table
-(:meth:`DesignReader.table`) and the example's tables (:func:`example_tables`).
+(:meth:`~regimemap.io.toml_keys.KeyReader.table`, :func:`design_reader`) and the example's tables
+(:func:`example_tables`).
 :func:`regimemap.caisson.file.parse_design` reads a file with them.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Mapping
-from dataclasses import MISSING, dataclass, field, fields
-from typing import Any, TypeVar
+from collections.abc import Callable
+from dataclasses import dataclass
 
-from ..io.toml_errors import DesignFileError, did_you_mean
-from ..io.toml_lines import key_line, key_text
+from ..io.toml_keys import Key, KeyReader, example_table, key, keys_of
 
 __all__ = ["DEPTH_RANGE", "DESIGN_KEYS", "DESIGN_TABLES", "MAX_BERM", "MAX_CREST", "MAX_HEIGHT", "MAX_WEIGHT",
-           "MIN_LENGTH", "PERIOD_RANGE", "WIDTH_RANGE", "CaissonSpec", "DesignReader", "KeySpec", "SiteSpec",
-           "WaveSpec", "example_tables", "key"]
-
-
-# -- the accepted keys ----------------------------------------------------------------------------
-
-@dataclass(frozen=True)
-class KeySpec:
-    """One key of a table: what it accepts in words, its range test, whether it is required, and
-    why a value out of range is refused (``why(value)``: the physics, and the likely slip)."""
-
-    accepted: str                      # what is accepted, in words
-    check: Callable[[float], bool]     # range test of a number
-    required: bool = True
-    boolean: bool = False
-    why: Callable[[float], str] | None = None
-    example: str = ""                  # its lines in the commented example (none: not shown)
-
-
-def key(accepted: str, check: Callable[[float], bool], *, default: Any = MISSING, boolean: bool = False,
-        why: Callable[[float], str] | None = None, example: str = "") -> Any:
-    """One key of a design-file table, declared once: the dataclass field of its value.
-
-    Parameters
-    ----------
-    accepted : str
-        What the key accepts, in words (the error messages and the docs say it).
-    check : callable
-        The range test of a number.
-    default : optional
-        The value when the file does not give the key; without one the key is required.
-    boolean : bool
-        A ``true``/``false`` key (``check`` is not used).
-    why : callable, optional
-        ``why(value)``: why a value out of range is refused (the physics, the likely unit slip).
-    example : str
-        Its lines in the commented example file, as written there.
-    """
-    spec = KeySpec(accepted, check, required=default is MISSING, boolean=boolean, why=why, example=example)
-    return field(default=default, metadata={"key": spec})
+           "MIN_LENGTH", "PERIOD_RANGE", "WIDTH_RANGE", "CaissonSpec", "SiteSpec", "WaveSpec",
+           "design_reader", "example_tables"]
 
 
 def _positive(x: float) -> bool:
@@ -93,12 +54,17 @@ def _length(lo: float, hi: float) -> Callable[[float], bool]:
     return lambda x: lo <= x <= hi
 
 
+def _out_of_range(why: Callable[[float], str]) -> Callable[[float], str]:
+    """The reason of a refused value as the design file's messages give it: ``out of range, WHY``."""
+    return lambda x: f"out of range, {why(x)}"
+
+
 def _beyond(lo: float, hi: float, unit: str, what: str) -> Callable[[float], str]:
     """The reason of a length or weight outside ``[lo, hi]``: ``what`` it would be."""
     def why(x: float) -> str:
         side = f"below {lo:g} {unit}" if x < lo else f"above {hi:g} {unit}"
         return f"{side}, {what}"
-    return why
+    return _out_of_range(why)
 
 
 def _slip(x: float, scale: float, hi: float, unit: str, what: str) -> str:
@@ -106,6 +72,7 @@ def _slip(x: float, scale: float, hi: float, unit: str, what: str) -> str:
     return f"; {x / scale:.4g} {unit} in {what}?" if x / scale <= hi else ""
 
 
+@_out_of_range
 def _height_why(x: float) -> str:
     if x < MIN_LENGTH:
         return f"below {MIN_LENGTH:g} m, less than any wave of a laboratory flume"
@@ -113,6 +80,7 @@ def _height_why(x: float) -> str:
             + _slip(x, 100.0, MAX_HEIGHT, "m", "centimetres for metres"))
 
 
+@_out_of_range
 def _hmax_why(x: float) -> str:
     if x < MIN_LENGTH:
         return f"below {MIN_LENGTH:g} m, less than any wave of a laboratory flume"
@@ -120,6 +88,7 @@ def _hmax_why(x: float) -> str:
             f"({MAX_HEIGHT:g} m)" + _slip(x, 100.0, 2 * MAX_HEIGHT, "m", "centimetres for metres"))
 
 
+@_out_of_range
 def _period_why(x: float) -> str:
     lo, hi = PERIOD_RANGE
     if x > hi:
@@ -130,6 +99,7 @@ def _period_why(x: float) -> str:
             "frequency for a period?")
 
 
+@_out_of_range
 def _depth_why(x: float) -> str:
     lo, hi = DEPTH_RANGE
     if x > hi:
@@ -236,8 +206,7 @@ class CaissonSpec:
                                       default=1.2,
                                       example="# required_overturning = 1.2 #   for both, Goda 2000); "
                                               "`regimemap caisson` says when one fails")
-    impulsive: bool = key("true or false (Takahashi's impulsive coefficient)", lambda x: True, default=True,
-                          boolean=True,
+    impulsive: bool = key("true or false (Takahashi's impulsive coefficient)", kind="bool", default=True,
                           example="# impulsive = true           # optional: Takahashi's impulsive "
                                   "coefficient (default true)")
 
@@ -246,108 +215,17 @@ class CaissonSpec:
 #: :mod:`regimemap.lifetime.file`'s).
 DESIGN_TABLES: dict[str, type] = {"site": SiteSpec, "wave": WaveSpec, "caisson": CaissonSpec}
 #: The keys of each table, as their fields declare them.
-DESIGN_KEYS: dict[str, dict[str, KeySpec]] = {
-    table: {f.name: f.metadata["key"] for f in fields(cls)} for table, cls in DESIGN_TABLES.items()}
+DESIGN_KEYS: dict[str, dict[str, Key]] = {table: keys_of(cls) for table, cls in DESIGN_TABLES.items()}
 
 
 def example_tables() -> str:
     """The tables ``[site]``, ``[wave]`` and ``[caisson]`` of the commented example, from the keys' lines."""
-    return "".join(f"[{table}]\n" + "".join(f"{k.example}\n" for k in keys.values() if k.example) + "\n"
-                   for table, keys in DESIGN_KEYS.items())
+    return "".join(example_table(table, cls) + "\n" for table, cls in DESIGN_TABLES.items())
 
 
-_Table = TypeVar("_Table")
+def design_reader(source: str, text: str = "") -> KeyReader:
+    """The reader of a design file's ``[site]``, ``[wave]`` and ``[caisson]`` (their messages name a
+    wrong value by its Python type, ``found str``)."""
+    return KeyReader(source, text, DESIGN_KEYS, python_types=DESIGN_KEYS)
 
 
-class DesignReader:
-    """Reads the values of a parsed design file, checked against :data:`DESIGN_KEYS`; every
-    error is a :class:`DesignFileError` that names the file, the line of the key (found in
-    ``text``, :func:`~regimemap.io.toml_lines.key_line`), the key and what is accepted."""
-
-    def __init__(self, source: str, text: str = "") -> None:
-        self.source = source
-        self.text = text
-
-    def where(self, section: str | None = None, key: str | None = None) -> str:
-        """``source, line N`` of ``[section] key`` (of the table's header without ``key``)."""
-        line = None if section is None else key_line(self.text, section, key)
-        return self.source if line is None else f"{self.source}, line {line}"
-
-    def fail(self, what: str, section: str | None = None, key: str | None = None) -> DesignFileError:
-        return DesignFileError(f"{self.where(section, key)}: {what}")
-
-    def written(self, section: str, key: str, value: object) -> str:
-        """``value`` as the file writes it (``10.10``, ``1e300``), else its repr."""
-        return key_text(self.text, section, key) or repr(value)
-
-    def key_error(self, section: str, key: str, value: object, why: str) -> DesignFileError:
-        accepted = DESIGN_KEYS[section][key].accepted
-        return self.fail(f"[{section}] {key} = {self.written(section, key, value)}: {why}; "
-                         f"accepted: {accepted}", section, key)
-
-    def check_names(self, data: Mapping[str, Any]) -> None:
-        tables = [*DESIGN_KEYS, "lifetime"]
-        for section, table in data.items():
-            if section not in tables:
-                raise self.fail(f"unknown table [{section}]{did_you_mean(section, dict.fromkeys(tables))}; "
-                                f"accepted tables: {', '.join(f'[{s}]' for s in tables)}", section)
-            if not isinstance(table, dict):
-                raise self.fail(f"[{section}] must be a table, found {table!r}", section)
-            if section == "lifetime":  # its keys are checked with their lines (_LifetimeReader)
-                continue
-            keys = DESIGN_KEYS[section]
-            for key in table:
-                if key not in keys:
-                    raise self.fail(f"unknown key [{section}] {key}{did_you_mean(key, keys)}; "
-                                    f"accepted keys in [{section}]: {', '.join(keys)}", section, key)
-        for section in DESIGN_KEYS:
-            if section not in data:
-                raise self.fail(f"missing table [{section}]; required keys: "
-                                + ", ".join(k for k, v in DESIGN_KEYS[section].items() if v.required))
-
-    def number(self, data: Mapping[str, Any], section: str, key: str) -> float | None:
-        spec = DESIGN_KEYS[section][key]
-        table = data[section]
-        if key not in table:
-            if spec.required:
-                raise self.fail(f"[{section}] {key} is missing; accepted: {spec.accepted}", section)
-            return None
-        value = table[key]
-        if isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise self.key_error(section, key, value, f"expected a number, found {type(value).__name__}")
-        x = float(value)
-        if not math.isfinite(x):
-            raise self.key_error(section, key, value, "not a finite number")
-        if not spec.check(x):
-            raise self.key_error(section, key, value, "out of range" if spec.why is None
-                                 else f"out of range, {spec.why(x)}")
-        return x
-
-    def table(self, data: Mapping[str, Any], section: str, cls: type[_Table], **given: Any) -> _Table:
-        """``[section]`` as its dataclass ``cls``: each key read and checked in the order declared
-        (its default when the file leaves an optional key out), but those ``given`` (read already,
-        for a check across keys)."""
-        values = dict(given)
-        for f in fields(cls):  # type: ignore[arg-type]
-            if f.name in values:
-                continue
-            if f.metadata["key"].boolean:
-                values[f.name] = self.boolean(data, section, f.name, bool(f.default))
-            else:
-                x = self.number(data, section, f.name)
-                values[f.name] = f.default if x is None else x
-        return cls(**values)
-
-    def required(self, data: Mapping[str, Any], section: str, key: str) -> float:
-        x = self.number(data, section, key)
-        assert x is not None
-        return x
-
-    def boolean(self, data: Mapping[str, Any], section: str, key: str, default: bool) -> bool:
-        table = data[section]
-        if key not in table:
-            return default
-        value = table[key]
-        if not isinstance(value, bool):
-            raise self.key_error(section, key, value, f"expected true or false, found {type(value).__name__}")
-        return value

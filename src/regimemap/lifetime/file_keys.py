@@ -1,7 +1,7 @@
 """The keys of the ``[lifetime]`` and ``[lifetime.errors]`` tables, declared once: what each accepts and why.
 
 Each key of ``[lifetime]`` is one field of :class:`LifetimeSpec`, declared with
-:func:`lifetime_key`: its type, its default, what it accepts in words (the
+:func:`~regimemap.io.toml_keys.key`: its type, its default, what it accepts in words (the
 messages and the design-file reference read them), its TOML kind and the check of
 its value, with the physical limits (heights up to 30 m, periods 1-30 s ...) and
 the reason a value beyond them is refused; :data:`LIFETIME_KEYS` is read from those
@@ -15,28 +15,26 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Mapping
-from dataclasses import MISSING, dataclass, field, fields
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
+
+# the largest significant height H0' a climate may give (30 m: the largest measured are about 20 m,
+# 19 m at a North Atlantic buoy in February 2013, the WMO record; above, a unit slip) and the
+# significant periods of sea waves, 1-30 s: the design file's limits of the physics of sea waves
+from ..caisson.file_keys import MAX_HEIGHT, PERIOD_RANGE
+from ..io.toml_keys import Key, key, keys_of
 
 if TYPE_CHECKING:
     from .file_record import RecordSpec
 
 __all__ = ["ERROR_FACTORS", "LIFETIME_KEYS", "LIFETIME_TABLES", "MAX_HEIGHT", "MAX_STORM_HOURS",
            "MAX_STORMS_PER_YEAR", "MAX_TIDE_RANGE", "MAX_TRIALS", "MAX_YEARS", "PERIOD_RANGE",
-           "LifetimeKey", "LifetimeSpec", "check_lifetime_option", "default_of", "example_lifetime",
-           "lifetime_key"]
+           "ErrorsSpec", "LifetimeSpec", "check_lifetime_option"]
 
 #: Most lifetimes a run may simulate (its arrays take ~24 bytes a lifetime).
 MAX_TRIALS = 10_000_000
 #: Longest design life [years].
 MAX_YEARS = 1000
-#: Largest deep-water significant height H0' a climate may give [m].  The largest significant
-#: heights measured are about 20 m (19 m, a North Atlantic buoy, February 2013: the WMO record);
-#: above 30 m no sea has been seen, and the value is a unit slip (centimetres for metres).
-MAX_HEIGHT = 30.0
-#: Significant periods of wind seas and swell [s]: outside, not a sea state (tenths of a second,
-#: a frequency for a period).
-PERIOD_RANGE = (1.0, 30.0)
 #: Largest tidal range [m]: the largest on Earth is about 16 m (Bay of Fundy).
 MAX_TIDE_RANGE = 20.0
 #: Most storms a year: more than one a day are not separate storms.
@@ -68,36 +66,8 @@ def _why_period(x: float) -> str:
     return f"below {lo:g} s, shorter than any sea wave that loads a breakwater; a frequency for a period?"
 
 
-@dataclass(frozen=True)
-class LifetimeKey:
-    """What one key of ``[lifetime]`` or ``[lifetime.errors]`` accepts: in words, its TOML kind,
-    the check of its value and why a refused value is wrong."""
-
-    accepted: str                      # what is accepted, in words
-    kind: str                          # "int", "number", "text", "bool", "numbers", "pair", "limits",
-    #                                    "table"
-    check: Callable[[Any], bool] = lambda x: True
-    why: Callable[[float], str] = lambda x: "out of range"   # why a value the check refuses is wrong
-    example: str = ""                  # its lines in the commented example (none: not shown)
-
-
 def _at_least(lo: float) -> Callable[[Any], bool]:
     return lambda x: x >= lo
-
-
-def lifetime_key(accepted: str, kind: str, check: Callable[[Any], bool] = lambda x: True,
-                 why: Callable[[float], str] = lambda x: "out of range", *, default: Any = MISSING,
-                 factory: Callable[[], Any] | None = None, example: str = "") -> Any:
-    """One key of ``[lifetime]``, declared once: the field of :class:`LifetimeSpec` that holds it.
-
-    ``accepted``, ``kind``, ``check``, ``why`` and ``example`` (its lines in the commented example)
-    are its :class:`LifetimeKey`; ``default`` (or ``factory``, for a table) is its value when the
-    file leaves it out.
-    """
-    spec = LifetimeKey(accepted, kind, check, why, example)
-    if factory is not None:
-        return field(default_factory=factory, metadata={"key": spec})
-    return field(default=default, metadata={"key": spec})
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -117,116 +87,116 @@ class LifetimeSpec:
     Each field but ``written`` is a key, in the order the messages list them.
     """
 
-    years: int = lifetime_key(
-        f"a design life in whole years, 1 <= years <= {MAX_YEARS} (default 50)", "int",
-        lambda x: 1 <= x <= MAX_YEARS, default=50,
+    years: int = key(
+        f"a design life in whole years, 1 <= years <= {MAX_YEARS} (default 50)",
+        lambda x: 1 <= x <= MAX_YEARS, kind="int", default=50,
         example="years = 50                # design life, years")
-    trials: int = lifetime_key(
-        f"a number of simulated lifetimes, 1 <= trials <= {MAX_TRIALS} (default 5000)", "int",
-        lambda x: 1 <= x <= MAX_TRIALS, default=5000,
+    trials: int = key(
+        f"a number of simulated lifetimes, 1 <= trials <= {MAX_TRIALS} (default 5000)",
+        lambda x: 1 <= x <= MAX_TRIALS, kind="int", default=5000,
         example="trials = 5000             # lifetimes simulated (the ESD's standard error falls as "
                 "1/sqrt(trials))")
-    seed: int | None = lifetime_key(
+    seed: int | None = key(
         "a whole number >= 0, the root seed of the random numbers (default: a fresh one, reported)",
-        "int", _at_least(0), default=None,
+        _at_least(0), kind="int", default=None,
         example="seed = 2026               # root seed: the same seed, the same numbers (omit: a fresh seed, "
                 "reported)")
-    distribution: str = lifetime_key(
-        '"weibull" or "gumbel", the distribution of the storm peaks H0\' (default "weibull")', "text",
-        lambda x: x in ("weibull", "gumbel"), default="weibull",
+    distribution: str = key(
+        '"weibull" or "gumbel", the distribution of the storm peaks H0\' (default "weibull")',
+        lambda x: x in ("weibull", "gumbel"), kind="text", default="weibull",
         example="distribution = \"weibull\"  # storm peaks H0': \"weibull\" or \"gumbel\"")
-    shape: float = lifetime_key(
-        "a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", "number", _positive,
+    shape: float = key(
+        "a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", _positive,
         default=2.0,
         example="shape = 2.0               # Weibull shape k (> 0)")
-    H0_10: float | None = lifetime_key(
+    H0_10: float | None = key(
         f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
-        "significant heights measured are about 20 m)", "number", _height, _why_height, default=None,
+        "significant heights measured are about 20 m)", _height, why=_why_height, default=None,
         example="H0_10 = 5.0               # 10-year return value of H0', m")
-    H0_50: float | None = lifetime_key(
-        f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", "number", _height,
-        _why_height, default=None,
+    H0_50: float | None = key(
+        f"the 50-year return value of H0', H0_10 < H0_50 <= {MAX_HEIGHT:g} m", _height,
+        why=_why_height, default=None,
         example="H0_50 = 6.3               # 50-year return value of H0', m (the design wave above)")
-    annual_maxima: tuple[float, ...] | None = lifetime_key(
+    annual_maxima: tuple[float, ...] | None = key(
         f"a list of at least three annual maxima of H0', each 0 < H0' <= "
-        f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", "numbers", _height,
-        _why_height, default=None,
+        f"{MAX_HEIGHT:g} m and not all equal (instead of H0_10 and H0_50)", _height,
+        why=_why_height, kind="numbers", default=None,
         example="# annual_maxima = [4.1, 3.6, 5.2, 4.4, 3.9]  # instead of H0_10 and H0_50: observed annual\n"
                 "                          # maxima of H0', m (at least three; Weibull needs shape > 1)")
-    storms_per_year: float | None = lifetime_key(
+    storms_per_year: float | None = key(
         f"a mean number of storms a year, 0.1 < storms_per_year <= "
         f"{MAX_STORMS_PER_YEAR:g} (a Poisson number of storms, peaks over a "
         "threshold; not with annual_maxima; default: one storm a year, its peak the annual maximum)",
-        "number", lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR, default=None,
+        lambda x: 0.1 < x <= MAX_STORMS_PER_YEAR, default=None,
         example="# storms_per_year = 4     # a Poisson number of storms a year (peaks over a threshold;\n"
                 "                          # not with annual_maxima); default: one storm a year, the annual "
                 "maximum")
-    record: RecordSpec | None = lifetime_key(
+    record: RecordSpec | None = key(
         "the table [lifetime.record] of a measured wave record (path and the options of "
-        "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", "table", default=None,
+        "regimemap climate), instead of H0_10 and H0_50 or annual_maxima", kind="table", default=None,
         example='# record = { path = "buoy.txt", threshold = "99.5%" }  # instead of the climate above: a\n'
                 "                          # measured offshore record and the options of `regimemap climate`")
-    climate_replicates: int = lifetime_key(
+    climate_replicates: int = key(
         "a number of replicate climates of [lifetime.record]'s fit, 2 to "
         "10000, each run for the ESD's climate band, on which the requirements are "
-        "judged (default 50), or 0: the fitted climate alone, its uncertainty not counted", "int",
-        lambda x: x == 0 or 2 <= x <= 10_000, default=0,
+        "judged (default 50), or 0: the fitted climate alone, its uncertainty not counted",
+        lambda x: x == 0 or 2 <= x <= 10_000, kind="int", default=0,
         example="# climate_replicates = 200  # with record: the ESD under 200 bootstrap climates, and its "
                 "band")
-    storm_hours: float = lifetime_key(
+    storm_hours: float = key(
         f"a duration 0 < storm_hours <= {MAX_STORM_HOURS:g} in hours of each storm's "
-        "peak sea state (default 2)", "number", lambda x: 0.0 < x <= MAX_STORM_HOURS, default=2.0,
+        "peak sea state (default 2)", lambda x: 0.0 < x <= MAX_STORM_HOURS, default=2.0,
         example="storm_hours = 2.0         # duration of each storm's peak sea state, hours")
-    period: float | None = lifetime_key(
+    period: float | None = key(
         f"a significant period {PERIOD_RANGE[0]:g} <= T1/3 <= {PERIOD_RANGE[1]:g} s of "
-        "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness", "number",
-        lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], _why_period, default=None,
+        "sea waves for every storm (default: Goda's 3.3 H0'^0.63); not with steepness",
+        lambda x: PERIOD_RANGE[0] <= x <= PERIOD_RANGE[1], why=_why_period, default=None,
         example="# period = 11.4           # a fixed T1/3 for every storm, s (default: Goda's 3.3 H0'^0.63)")
-    steepness: float | None = lifetime_key(
-        "a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period", "number",
+    steepness: float | None = key(
+        "a deep-water steepness 0 < H0'/L0 <= 0.142 for every storm; not with period",
         lambda x: 0.0 < x <= 0.142, default=None,
         example="# steepness = 0.035       # or a fixed deep-water steepness H0'/L0 (not with period)")
-    tide_range: float = lifetime_key(
+    tide_range: float = key(
         f"a tidal range 0 <= tide_range <= {MAX_TIDE_RANGE:g} m (the largest, Bay of "
-        "Fundy, is about 16 m; default 0)", "number", lambda x: 0.0 <= x <= MAX_TIDE_RANGE, default=0.0,
+        "Fundy, is about 16 m; default 0)", lambda x: 0.0 <= x <= MAX_TIDE_RANGE, default=0.0,
         example="tide_range = 0.0          # tidal range, m: each storm's water level is (range/2) sin(2 pi "
                 "phase)")
-    thresholds: tuple[float, ...] | None = lifetime_key(
+    thresholds: tuple[float, ...] | None = key(
         "a list of lifetime slides, each > 0 in metres, whose exceedance probability "
-        "is reported (default [0.03, 0.1, 0.3, 1, 3])", "numbers", _positive, default=None,
+        "is reported (default [0.03, 0.1, 0.3, 1, 3])", _positive, kind="numbers", default=None,
         example="thresholds = [0.03, 0.1, 0.3, 1.0, 3.0]  # lifetime slides whose exceedance is reported, m")
-    truncate: float | None = lifetime_key(
-        "a cut-off > 0 of the normal error factors, in standard deviations (default: none)", "number",
+    truncate: float | None = key(
+        "a cut-off > 0 of the normal error factors, in standard deviations (default: none)",
         _positive, default=None,
         example="# truncate = 3.0          # cut the normal error factors at +-3 standard deviations "
                 "(default: none)")
-    impulsive: bool = lifetime_key(
+    impulsive: bool = key(
         "true or false: Takahashi's impulsive coefficient in each wave's force (default false)",
-        "bool", default=False,
+        kind="bool", default=False,
         example="impulsive = false         # Takahashi's impulsive coefficient in each wave's force (default "
                 "false)")
-    target: float = lifetime_key(
+    target: float = key(
         "the tolerable expected sliding distance, > 0 in metres: the requirement "
-        "ESD <= target (default 0.1, Goda & Takagi 2000)", "number", _positive, default=0.1,
+        "ESD <= target (default 0.1, Goda & Takagi 2000)", _positive, default=0.1,
         example="target = 0.1              # the requirement ESD <= target, m (Goda & Takagi 2000; default "
                 "0.1)")
-    allowed: Mapping[float, float] = lifetime_key(
+    allowed: Mapping[float, float] = key(
         'a table of lifetime slides (m) and the largest allowed probability of '
         'exceeding each, 0 <= p <= 1, e.g. {"0.1" = 0.2, "0.3" = 0.05} (Kim & Suh 2013; '
-        "default: none)", "limits", factory=dict,
+        "default: none)", kind="limits", factory=dict,
         example='# allowed = {"0.1" = 0.2, "0.3" = 0.05}  # the largest allowed P(lifetime sliding > x m)\n'
                 "                          # (Kim & Suh 2013; default: none)")
-    failure_sliding: float | None = lifetime_key(
+    failure_sliding: float | None = key(
         "the sliding in metres at which the caisson is off its mound (the "
         "harbour-side crest width of the mound), > 0: P(S > failure_sliding) is "
-        "the probability of failure over the life (default: none)", "number", _positive, default=None,
+        "the probability of failure over the life (default: none)", _positive, default=None,
         example="# failure_sliding = 5.0   # m the caisson may slide before it is off its mound (the "
                 "harbour-side\n"
                 "                          # crest width of the mound): P(S > it) is the probability of "
                 "failure")
-    errors: Mapping[str, tuple[float, float]] = lifetime_key(
+    errors: Mapping[str, tuple[float, float]] = key(
         "the table [lifetime.errors] of the uncertainty factors (deepwater, "
-        "transformation, force, friction)", "table", factory=dict)
+        "transformation, force, friction)", kind="table", factory=dict)
     written: Mapping[str, str] = field(default_factory=dict)
 
     def climate_as_written(self) -> str:
@@ -237,33 +207,34 @@ class LifetimeSpec:
         return ", ".join(f"{key} = {self.written.get(key, '?')} m" for key in keys)
 
 
-def default_of(name: str) -> Any:
-    """The value of ``[lifetime] name`` when the file leaves it out."""
-    f = _FIELDS[name]
-    if f.default is MISSING:
-        return f.default_factory()  # type: ignore[operator]
-    return f.default
-
-
-_FIELDS = {f.name: f for f in fields(LifetimeSpec) if "key" in f.metadata}
-
-
-def example_lifetime() -> str:
-    """The ``[lifetime]`` table of the commented example, from the keys' lines."""
-    return "[lifetime]\n" + "".join(f"{f.metadata['key'].example}\n" for f in _FIELDS.values()
-                                    if f.metadata["key"].example)
 #: The keys of ``[lifetime]``, in the order the messages list them (the fields of :class:`LifetimeSpec`).
-LIFETIME_KEYS: dict[str, LifetimeKey] = {name: f.metadata["key"] for name, f in _FIELDS.items()}
+LIFETIME_KEYS: dict[str, Key] = keys_of(LifetimeSpec)
 
 _PAIR = "a pair [ratio, cov] with ratio > 0 and cov >= 0, the factor ratio (1 + cov z) "
 _DEFAULT = "; absent: its default in regimemap.lifetime.DEFAULT_ERRORS"
+
+
+def _factor(on: str, comment: str | None = None) -> Any:
+    """A factor of ``[lifetime.errors]``: what it multiplies (``on``, also the comment of its line in
+    the example unless ``comment`` is given; the line's value is its default,
+    :data:`regimemap.lifetime.DEFAULT_ERRORS`)."""
+    return key(_PAIR + on + _DEFAULT, kind="pair", default=None, example=comment or on)
+
+
+@dataclass(frozen=True, kw_only=True)
+class ErrorsSpec:
+    """``[lifetime.errors]``: the uncertainty factors of :class:`regimemap.lifetime.Errors` the file
+    gives, each ``(ratio, cov)`` (None: its default)."""
+
+    deepwater: tuple[float, float] | None = _factor("on the storm's H0' (once per lifetime)",
+                                                    "on the storm's H0' (drawn once per lifetime)")
+    transformation: tuple[float, float] | None = _factor("on H1/3 at the wall (once per storm)")
+    force: tuple[float, float] | None = _factor("on the wave force P and the uplift U (once per storm)")
+    friction: tuple[float, float] | None = _factor("on the friction coefficient (once per storm)")
+
+
 #: The keys of ``[lifetime.errors]`` (the factors of :class:`regimemap.lifetime.Errors`).
-ERROR_FACTORS: dict[str, LifetimeKey] = {
-    "deepwater": LifetimeKey(_PAIR + "on the storm's H0' (once per lifetime)" + _DEFAULT, "pair"),
-    "transformation": LifetimeKey(_PAIR + "on H1/3 at the wall (once per storm)" + _DEFAULT, "pair"),
-    "force": LifetimeKey(_PAIR + "on the wave force P and the uplift U (once per storm)" + _DEFAULT, "pair"),
-    "friction": LifetimeKey(_PAIR + "on the friction coefficient (once per storm)" + _DEFAULT, "pair"),
-}
+ERROR_FACTORS: dict[str, Key] = keys_of(ErrorsSpec)
 
 #: The key tables of ``[lifetime]`` and ``[lifetime.errors]``.
 LIFETIME_TABLES = {"lifetime": LIFETIME_KEYS, "lifetime.errors": ERROR_FACTORS}

@@ -20,36 +20,19 @@ from typing import TYPE_CHECKING, Any
 
 from regimemap.climate.wave_record import HS_MAX
 
-from ..io.toml_errors import DesignFileError, did_you_mean
-from ..io.toml_lines import key_line, key_text
+from ..io.toml_keys import Key, KeyReader, key, keys_of, number_of
 
 if TYPE_CHECKING:
     from regimemap.climate import ClimateResult
     from regimemap.lifetime import Climate
+
+    from ..io.toml_errors import DesignFileError
 
 __all__ = ["MAX_REPLICATES", "RECORD_KEYS", "RecordSpec", "analysis_fault", "read_record_table",
            "record_analysis", "record_climate", "record_period_law"]
 
 #: Most replicate climates of ``climate_replicates``.
 MAX_REPLICATES = 10_000
-
-#: The keys of ``[lifetime.record]`` and what each accepts.
-RECORD_KEYS: dict[str, str] = {
-    "path": "the record's file, relative to the design file (CSV, the semicolon text, NDBC "
-            "standard meteorological, NetCDF)",
-    "method": '"pot" (peaks over a threshold, the default) or "annual-maxima"',
-    "threshold": 'a height > 0 in metres or a quantile such as "99.5%" (the default)',
-    "gap_hours": "a declustering gap > 0 in hours (default 48)",
-    "distribution": '"gpd" or "weibull" (pot; default gpd), "gumbel" or "gev" (annual-maxima; '
-                    "default gumbel)",
-    "shape": "the fixed Weibull shape k, 0.5 to 5 (default 2)",
-    "coverage": "the least share of a calendar year observed for its annual maximum, in (0, 1] "
-                "(default 0.8)",
-    "period_ratio": "T1/3 over the record's period, 0.5 to 2 (about 0.95 for a peak period Tp, 1.2 to "
-                    "1.35 for a zero-crossing Tz): T1/3 = a H0'^b is then fitted on the storm peaks "
-                    "(default: none, Goda's T1/3 = 3.3 H0'^0.63)",
-}
-
 
 #: The option of the analysis (a field of :class:`regimemap.climate.ClimateOptions`) that a
 #: ValueError of :func:`regimemap.climate.analyse` blames, told by its message.
@@ -78,24 +61,30 @@ def analysis_fault(message: str) -> str | None:
 class RecordSpec:
     """``[lifetime.record]`` as the file gives it, ``path`` resolved against the design file."""
 
-    path: str
-    method: str = "pot"
-    threshold: tuple[str, float] = ("quantile", 0.995)
-    gap_hours: float = 48.0
-    distribution: str | None = None
-    shape: float = 2.0
-    coverage: float = 0.8
-    period_ratio: float | None = None
+    path: str = key("the record's file, relative to the design file (CSV, the semicolon text, NDBC "
+                    "standard meteorological, NetCDF)", kind="text")
+    method: str = key('"pot" (peaks over a threshold, the default) or "annual-maxima"',
+                      lambda x: x in ("pot", "annual-maxima"), kind="text", default="pot")
+    threshold: tuple[str, float] = key('a height > 0 in metres or a quantile such as "99.5%" (the default)',
+                                       kind="text", default=("quantile", 0.995))
+    gap_hours: float = key("a declustering gap > 0 in hours (default 48)", lambda x: 0.0 < x <= 8760.0,
+                           default=48.0)
+    distribution: str | None = key('"gpd" or "weibull" (pot; default gpd), "gumbel" or "gev" '
+                                   "(annual-maxima; default gumbel)", kind="text", default=None)
+    shape: float = key("the fixed Weibull shape k, 0.5 to 5 (default 2)", lambda x: 0.5 <= x <= 5.0,
+                       default=2.0)
+    coverage: float = key("the least share of a calendar year observed for its annual maximum, in (0, 1] "
+                          "(default 0.8)", lambda x: 0.0 < x <= 1.0, default=0.8)
+    period_ratio: float | None = key(
+        "T1/3 over the record's period, 0.5 to 2 (about 0.95 for a peak period Tp, 1.2 to 1.35 for a "
+        "zero-crossing Tz): T1/3 = a H0'^b is then fitted on the storm peaks (default: none, Goda's "
+        "T1/3 = 3.3 H0'^0.63)", lambda x: 0.5 <= x <= 2.0, default=None)
 
 
-def _fail(text: str, source: str, key: str | None, what: str) -> DesignFileError:
-    line = key_line(text, "lifetime.record", key)
-    where = source if line is None else f"{source}, line {line}"
-    return DesignFileError(f"{where}: {what}")
-
-
-def _number(v: Any) -> float | None:
-    return float(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else None
+#: The keys of ``[lifetime.record]`` and what each accepts.
+RECORD_KEYS: dict[str, Key] = keys_of(RecordSpec)
+#: The distributions of each method of ``[lifetime.record]``.
+_DISTRIBUTIONS = {"pot": ("gpd", "weibull"), "annual-maxima": ("gumbel", "gev")}
 
 
 def _threshold(v: Any, bad: Callable[[str, str], DesignFileError]) -> tuple[str, float]:
@@ -104,7 +93,7 @@ def _threshold(v: Any, bad: Callable[[str, str], DesignFileError]) -> tuple[str,
     from regimemap.climate.peaks import parse_threshold
 
     try:
-        kind, u = parse_threshold(v if isinstance(v, str) else repr(_number(v)))
+        kind, u = parse_threshold(v if isinstance(v, str) else repr(number_of(v)))
     except ValueError:
         raise bad("threshold", "neither a height > 0 nor a percentage") from None
     if kind == "value" and u > HS_MAX:
@@ -113,53 +102,48 @@ def _threshold(v: Any, bad: Callable[[str, str], DesignFileError]) -> tuple[str,
     return kind, u
 
 
-def read_record_table(text: str, source: str, table: Mapping[str, Any]) -> RecordSpec:
-    """The checked ``[lifetime.record]`` table.
+def read_record_table(r: KeyReader, table: Mapping[str, Any]) -> RecordSpec:
+    """The checked ``[lifetime.record]`` table (``r`` the design file's reader).
 
     Raises
     ------
     DesignFileError
         Naming the file, the line, the key, the value and what is accepted.
     """
-    def bad(key: str, why: str) -> DesignFileError:
-        return _fail(text, source, key, f"[lifetime.record] {key} = {table[key]!r}: {why}; "
-                     f"accepted: {RECORD_KEYS[key]}")
+    t = "lifetime.record"
 
-    for key in table:
-        if key not in RECORD_KEYS:
-            hint = did_you_mean(key, RECORD_KEYS)
-            raise _fail(text, source, key, f"unknown key [lifetime.record] {key}{hint}; "
-                        f"accepted keys in [lifetime.record]: {', '.join(RECORD_KEYS)}")
+    def bad(key: str, why: str) -> DesignFileError:
+        return r.fail(f"[{t}] {key} = {table[key]!r}: {why}; accepted: {RECORD_KEYS[key].accepted}", t, key)
+
+    r.check_keys(t, table)
     if "path" not in table:
-        raise _fail(text, source, None, f"[lifetime.record] has no path; accepted: {RECORD_KEYS['path']}")
+        raise r.fail(f"[{t}] has no path; accepted: {RECORD_KEYS['path'].accepted}", t)
     if not isinstance(table["path"], str) or not table["path"].strip():
         raise bad("path", "expected a file name")
-    got: dict[str, Any] = {"path": str(Path(source).parent / table["path"])}
+    got: dict[str, Any] = {"path": str(Path(r.source).parent / table["path"])}
     if "method" in table:
-        if table["method"] not in ("pot", "annual-maxima"):
+        if not RECORD_KEYS["method"].check(table["method"]):
             raise bad("method", "not one of the accepted values")
         got["method"] = table["method"]
     if "threshold" in table:
         got["threshold"] = _threshold(table["threshold"], bad)
-    for key, lo, hi, open_lo in (("gap_hours", 0.0, 8760.0, True), ("shape", 0.5, 5.0, False),
-                                 ("coverage", 0.0, 1.0, True), ("period_ratio", 0.5, 2.0, False)):
-        if key in table:
-            x = _number(table[key])
-            if x is None or not math.isfinite(x) or not (lo < x if open_lo else lo <= x) or not x <= hi:
-                raise bad(key, "out of range" if x is not None else "expected a number")
-            got[key] = x
+    for name in ("gap_hours", "shape", "coverage", "period_ratio"):
+        if name in table:
+            x = number_of(table[name])
+            if x is None or not math.isfinite(x) or not RECORD_KEYS[name].check(x):
+                raise bad(name, "out of range" if x is not None else "expected a number")
+            got[name] = x
     if "distribution" in table:
         method = got.get("method", "pot")
-        allowed = ("gpd", "weibull") if method == "pot" else ("gumbel", "gev")
-        if table["distribution"] not in allowed:
+        if table["distribution"] not in _DISTRIBUTIONS[method]:
             raise bad("distribution", f"not a distribution of {method}")
         got["distribution"] = table["distribution"]
     spec = RecordSpec(**got)
-    _check_analysis(text, source, table, spec)
+    _check_analysis(r, table, spec)
     return spec
 
 
-def _check_analysis(text: str, source: str, table: Mapping[str, Any], spec: RecordSpec) -> None:
+def _check_analysis(r: KeyReader, table: Mapping[str, Any], spec: RecordSpec) -> None:
     """The record read and fitted (once: :func:`record_analysis` keeps it), and ``period_ratio``'s
     law; an error names the line of the key it blames -- ``path`` for a record that cannot be
     read, ``threshold``, ``coverage``, ``period_ratio`` -- or of ``[lifetime.record]``."""
@@ -169,19 +153,19 @@ def _check_analysis(text: str, source: str, table: Mapping[str, Any], spec: Reco
         record_analysis(spec)
         record_period_law(spec)
     except RecordError as exc:
-        shown = key_text(text, "lifetime.record", "path") or repr(table["path"])
-        raise _fail(text, source, "path", f"[lifetime.record] path = {shown}: {exc}") from None
+        raise r.fail(f"[lifetime.record] path = {r.written('lifetime.record', 'path', table['path'])}: {exc}",
+                     "lifetime.record", "path") from None
     except ValueError as exc:
         message = str(exc)
         law = message.startswith("[lifetime.record] period_ratio")
         key = "period_ratio" if law else analysis_fault(message)
         if key is None or key not in table:
-            raise _fail(text, source, None, message if message.startswith("[lifetime.record]")
-                        else f"[lifetime.record]: {message}") from None
-        shown = key_text(text, "lifetime.record", key) or repr(table[key])
+            raise r.fail(message if message.startswith("[lifetime.record]")
+                         else f"[lifetime.record]: {message}", "lifetime.record") from None
+        shown = r.written("lifetime.record", key, table[key])
         message = message.removeprefix(f"[lifetime.record] {key}: ")
         message = message.replace("lower --coverage", "lower coverage")  # the key, not the option
-        raise _fail(text, source, key, f"[lifetime.record] {key} = {shown}: {message}") from None
+        raise r.fail(f"[lifetime.record] {key} = {shown}: {message}", "lifetime.record", key) from None
 
 
 @functools.lru_cache(maxsize=8)

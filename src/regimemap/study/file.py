@@ -35,8 +35,8 @@ from typing import TYPE_CHECKING, Any
 
 from ..io.inputs import read_design_text
 from ..io.toml_errors import did_you_mean
+from ..io.toml_keys import number_of
 from ..io.toml_lines import key_line
-from ..lifetime.file_keys import MAX_TRIALS
 from ..mechanics.notices import Notice
 from .file_limits import check_scenario_limits, check_wave_heights, falling_sea_level
 from .file_sections import (
@@ -53,7 +53,6 @@ from .file_sections import (
     check_override,
     design_of,
     load_toml,
-    number,
     scenario_values,
     section_key,
     section_widths,
@@ -216,26 +215,28 @@ def parse_study(text: str, source: str = "<study>") -> Study:
     known = {**STUDY_KEYS, **dict.fromkeys(DESIGN_TABLES)}
     for key in data:
         if key not in known:
-            raise where.fail(key_line(text, key) if isinstance(data[key], dict) else top_line(text, key),
-                             f"unknown key {key}{did_you_mean(key, known)}; accepted: "
-                             f"{', '.join(STUDY_KEYS)} and the tables {', '.join(DESIGN_TABLES)}")
+            raise where.fail_at(key_line(text, key) if isinstance(data[key], dict) else top_line(text, key),
+                                f"unknown key {key}{did_you_mean(key, known)}; accepted: "
+                                f"{', '.join(STUDY_KEYS)} and the tables {', '.join(DESIGN_TABLES)}")
     base, base_text = _base_tables(data, text, source, where)
     life = base.tables["lifetime"]
     sections_raw, scenarios_raw = data.get("section", []), data.get("scenario", [])
     if not isinstance(sections_raw, list) or not sections_raw:
-        raise where.fail(None, "no [[section]]; accepted: at least one [[section]] with name and chainage")
+        raise where.fail_at(None, "no [[section]]; accepted: at least one [[section]] with name and chainage")
     if not isinstance(scenarios_raw, list) or not scenarios_raw:
-        raise where.fail(None, "no [[scenario]]; accepted: at least one [[scenario]] (name = \"today\" "
-                         "alone is today's climate)")
+        raise where.fail_at(None, "no [[scenario]]; accepted: at least one [[scenario]] (name = \"today\" "
+                            "alone is today's climate)")
     check_names(where, "section", sections_raw)
     check_names(where, "scenario", scenarios_raw)
     seed = data.get("seed", life.get("seed"))
-    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-        raise where.fail(top_line(text, "seed"), f"seed = {seed!r}: accepted: {STUDY_KEYS['seed']}; a "
-                         "study needs one (its tasks are resumed on the same random numbers)")
+    if isinstance(seed, bool) or not isinstance(seed, int) or not STUDY_KEYS["seed"].check(seed):
+        raise where.fail_at(top_line(text, "seed"), f"seed = {seed!r}: accepted: "
+                            f"{STUDY_KEYS['seed'].accepted}; a study needs one (its tasks are resumed on the "
+                            "same random numbers)")
     trials = data.get("trials", life.get("trials", 5000))
-    if isinstance(trials, bool) or not isinstance(trials, int) or not 1 <= trials <= MAX_TRIALS:
-        raise where.fail(top_line(text, "trials"), f"trials = {trials!r}: accepted: {STUDY_KEYS['trials']}")
+    if isinstance(trials, bool) or not isinstance(trials, int) or not STUDY_KEYS["trials"].check(trials):
+        raise where.fail_at(top_line(text, "trials"),
+                            f"trials = {trials!r}: accepted: {STUDY_KEYS['trials'].accepted}")
     sections: list[SectionSpec] = []
     for i, sec in enumerate(sections_raw):
         sections.append(_section(where, i, sec, base, sections[-1] if sections else None))
@@ -264,12 +265,13 @@ def _base_tables(data: Mapping[str, Any], text: str, source: str, where: Where) 
     if "base" in data:
         line = top_line(text, "base")
         if not isinstance(data["base"], str) or not data["base"].strip():
-            raise where.fail(line, f"base = {data['base']!r}: accepted: {STUDY_KEYS['base']}")
+            raise where.fail_at(line, f"base = {data['base']!r}: accepted: {STUDY_KEYS['base'].accepted}")
         base_path = Path(source).parent / data["base"]
         try:
             base_text = read_design_text(base_path)
         except (OSError, UnicodeDecodeError, ValueError) as exc:
-            raise where.fail(line, f"base = {data['base']!r}: cannot read the design file: {exc}") from None
+            raise where.fail_at(line,
+                                f"base = {data['base']!r}: cannot read the design file: {exc}") from None
         base_data = load_toml(base_text, str(base_path))
         for table, body in base_data.items():
             merged.set(table, None, None, Origin(str(base_path), key_line(base_text, table)))
@@ -281,14 +283,14 @@ def _base_tables(data: Mapping[str, Any], text: str, source: str, where: Where) 
     for table in DESIGN_TABLES:
         if table in data:
             if not isinstance(data[table], dict):
-                raise where.fail(top_line(text, table), f"{table} must be a table [{table}]")
+                raise where.fail_at(top_line(text, table), f"{table} must be a table [{table}]")
             merged.set(table, None, None, Origin(source, key_line(text, table)))
             for key, value in data[table].items():
                 merged.set(table, key, value, Origin(source, key_line(text, table, key)))
                 _sub_origins(merged, table, key, value, source, text)
     if "lifetime" not in merged.tables:
-        raise where.fail(None, "no [lifetime] table (the wave climate and the options of the lifetime "
-                         "simulation), inline or in the base design file")
+        raise where.fail_at(None, "no [lifetime] table (the wave climate and the options of the lifetime "
+                            "simulation), inline or in the base design file")
     return merged, base_text
 
 
@@ -306,15 +308,15 @@ def _section(where: Where, i: int, sec: Mapping[str, Any], base: Merged,
     """The ``i``-th ``[[section]]``: its chainage (not below ``before``'s), its overrides merged into
     ``base`` and read by the design reader, its widths or target."""
     name = sec["name"]
-    chain = number(sec.get("chainage"))
+    chain = number_of(sec.get("chainage"))
     line = where.item("section", i, "chainage")
     if chain is None or not math.isfinite(chain):
-        raise where.fail(line, f"[[section]] {name!r}: chainage = {sec.get('chainage')!r}; accepted: "
-                         f"{SECTION_KEYS['chainage']}")
+        raise where.fail_at(line, f"[[section]] {name!r}: chainage = {sec.get('chainage')!r}; accepted: "
+                            f"{SECTION_KEYS['chainage'].accepted}")
     if before is not None and chain < before.chainage:
-        raise where.fail(line, f"[[section]] {name!r}: chainage = {sec['chainage']!r} goes back (section "
-                         f"{before.name!r} is at {before.chainage:g} m); accepted: "
-                         f"{SECTION_KEYS['chainage']}")
+        raise where.fail_at(line, f"[[section]] {name!r}: chainage = {sec['chainage']!r} goes back (section "
+                            f"{before.name!r} is at {before.chainage:g} m); accepted: "
+                            f"{SECTION_KEYS['chainage'].accepted}")
     merged = base.copy()
     for key, value in sec.items():
         if key in SECTION_KEYS:

@@ -111,11 +111,11 @@ def check_scenario_limits(where: Where, index: int, sc: Mapping[str, Any], sea: 
                         hint = f"; {unit} for metres?"
                         break
             rule = "hc - rise > 0, " if symbol == "hc" else ""
-            raise where.fail(where.item("scenario", index, key),
-                             f"[[scenario]] {sc['name']!r} {key}: service year {year} = {eta:g} m "
-                             f"{what.format(repr(name))} ({symbol} = {today:g} {op} {abs(eta):g} = "
-                             f"{round(moved, 9) + 0.0:g} m; accepted in every service year: {rule}{accepted})"
-                             f"{hint}")
+            raise where.fail_at(where.item("scenario", index, key),
+                                f"[[scenario]] {sc['name']!r} {key}: service year {year} = {eta:g} m "
+                                f"{what.format(repr(name))} ({symbol} = {today:g} {op} {abs(eta):g} = "
+                                f"{round(moved, 9) + 0.0:g} m; accepted in every service year: "
+                                f"{rule}{accepted}){hint}")
 
 
 def falling_sea_level(where: Where, index: int, sc: Mapping[str, Any], sea: Sequence[float]) -> Notice | None:
@@ -170,6 +170,6 @@ def check_wave_heights(where: Where, index: int, sc: Mapping[str, Any], factors:
                 continue
             hint = "; a per cent for a factor (1.1 for 10 % higher)?" if f >= 2.0 else ""
             line = where.item("scenario", index, "wave_height_factor")
-            raise where.fail(line, f"[[scenario]] {sc['name']!r} wave_height_factor: service year {year} = "
-                             f"{f:g} makes the 50-year H0' of section {name!r} {h * f:.4g} m "
-                             f"({h:g} m x {f:g}; accepted in every service year: {spec.accepted}){hint}")
+            raise where.fail_at(line, f"[[scenario]] {sc['name']!r} wave_height_factor: service year "
+                                f"{year} = {f:g} makes the 50-year H0' of section {name!r} {h * f:.4g} m "
+                                f"({h:g} m x {f:g}; accepted in every service year: {spec.accepted}){hint}")
