@@ -38,6 +38,7 @@ __all__ = [
     "CONTEXT_SETTINGS",
     "LOAD_OPTIONS",
     "ParamType",
+    "Values",
     "check_kprime_crest",
     "check_load_value",
     "gamma_option",
@@ -197,22 +198,23 @@ def _load_type(name: str) -> ParamType:
     return _Checked(name, lambda v: check_load_value(name, v), load_range(name))
 
 
-class _LoadValues(ParamType):
-    """A list ``a,b,c`` or a range ``start:stop:count`` of one load (atlas, animate)."""
+class Values(ParamType):
+    """A list ``a,b,c`` or a range ``start:stop:count`` of at most ``max_count`` numbers, each
+    checked by ``check`` (atlas, animate, outcome: :func:`regimemap.maps.sweeps.parse_values`)."""
 
-    def __init__(self, name: str, max_count: int):
+    def __init__(self, name: str, check: Callable[[float], float], max_count: int):
         self.name = f"{name}-list"
         self._what = name
+        self._check = check
         self._max = max_count
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
         if isinstance(value, list):
             return value
         from ..maps.sweeps import parse_values
 
         try:
-            return parse_values(str(value), self._what, lambda v: check_load_value(self._what, v),
-                                self._max)
+            return parse_values(str(value), self._what, self._check, self._max)
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
 
@@ -255,9 +257,73 @@ def load_options(f: Callable[..., Any] | None = None, *, sweep: int | None = Non
 
     out: Callable[..., Any] = wrapper
     for name, option, metavar, text in reversed(LOAD_OPTIONS):
-        kind: ParamType = _load_type(name) if sweep is None else _LoadValues(name, sweep)
+        check = functools.partial(check_load_value, name)
+        kind = _load_type(name) if sweep is None else Values(name, check, sweep)
         if sweep is not None:
             metavar, text = "LIST", text + " A list a,b,c or a range start:stop:count sweeps it."
         out = click.option(option, name, type=kind, default=None, metavar=metavar,
                            help=text)(out)
     return out
+
+
+# -- the options several commands take, each declared once -------------------------------------
+
+#: ``--json`` of the commands that print one report.
+JSON_HELP = "Print one JSON object instead of text."
+#: ``--quiet`` of the commands with a progress bar and notes.
+QUIET_HELP = "No progress bar and no notes on standard error."
+
+
+def option_group(*options: Callable[[FC], FC]) -> Callable[[FC], FC]:
+    """The options as one decorator, listed in ``--help`` in the order given."""
+    def decorate(f: FC) -> FC:
+        for option in reversed(options):
+            f = option(f)
+        return f
+
+    return decorate
+
+
+def json_option(help: str = JSON_HELP) -> Callable[[FC], FC]:
+    """``--json``, passed to the command as ``as_json``."""
+    return click.option("--json", "as_json", is_flag=True, help=help)
+
+
+def quiet_option(help: str = QUIET_HELP) -> Callable[[FC], FC]:
+    """``--quiet`` / ``-q``: no progress bar (and, as ``help`` says, no notes)."""
+    return click.option("--quiet", "-q", is_flag=True, help=help)
+
+
+def jobs_option(help: str) -> Callable[[FC], FC]:
+    """``--jobs`` / ``-j N``: worker processes, 1 to 256 (default None: one per core)."""
+    return click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N", help=help)
+
+
+def outputs_option(help: str, **kwargs: Any) -> Callable[[FC], FC]:
+    """``-o`` / ``--output FILE``, repeatable, passed to the command as ``outputs``."""
+    return click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE",
+                        multiple=True, help=help, **kwargs)
+
+
+def output_option(help: str, metavar: str = "FILE", **kwargs: Any) -> Callable[[FC], FC]:
+    """``-o`` / ``--output FILE``: one file (not a folder), passed to the command as ``output``."""
+    return click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar=metavar,
+                        help=help, **kwargs)
+
+
+def view_option(help: str) -> Callable[[FC], FC]:
+    """``--view designer|report`` (default designer): the map's automatic view."""
+    return click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
+                        show_default=True, help=help)
+
+
+def axis_options(k_help: str, mu_help: str, *, metavars: bool = True) -> Callable[[FC], FC]:
+    """``--k-max K`` and ``--mu-max MU``: the ends of the map's axes (default None: automatic).
+
+    Without ``metavars`` (``plot``) the values are shown and named as the options are
+    (``K-MAX``, ``k-max must be ...``).
+    """
+    return option_group(*(
+        click.option(f"--{axis}-max", type=positive_float(f"{axis}{'_' if metavars else '-'}max"),
+                     default=None, metavar=axis.upper() if metavars else None, help=text)
+        for axis, text in (("k", k_help), ("mu", mu_help))))

@@ -13,9 +13,8 @@ import click
 from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
 from ..dynamics.pulses import SHAPES
 from ..motion.file import OptionError
-from ._common import ParamType, gamma_option, kprime_option
+from ._common import ParamType, Values, gamma_option, kprime_option
 from ._writing import checked_format, echo_notices, output_path
-from .atlas import Values
 
 __all__ = [
     "InputNumber",

@@ -16,12 +16,9 @@ from typing import Any
 import click
 
 from ..io.formats import FIGURES
-from ._common import ParamType
+from ._common import ParamType, jobs_option, json_option, option_group, outputs_option, quiet_option
 
 __all__ = ["chart_options", "lifetime_options", "report_options", "run_options"]
-
-Decorator = Callable[[Callable[..., Any]], Callable[..., Any]]
-
 
 class _Checked(ParamType):
     """A value checked by a function of :mod:`regimemap.io` (its ValueError is the message)."""
@@ -58,17 +55,7 @@ def _option_check(name: str) -> Callable[[str], Any]:
     return check
 
 
-def _group(*options: Decorator) -> Decorator:
-    """The options as one decorator, listed in ``--help`` in the order given."""
-    def decorate(f: Callable[..., Any]) -> Callable[..., Any]:
-        for option in reversed(options):
-            f = option(f)
-        return f
-
-    return decorate
-
-
-lifetime_options = _group(
+lifetime_options = option_group(
     click.option("--trials", type=_Checked("integer", _file_key("trials")), default=None, metavar="N",
                  help="Lifetimes to simulate, 1 to 10000000 (default: [lifetime] trials, or 5000)."),
     click.option("--seed", type=_Checked("integer", _file_key("seed")), default=None, metavar="S",
@@ -78,7 +65,7 @@ lifetime_options = _group(
     click.option("--years", type=_Checked("integer", _file_key("years")), default=None, metavar="Y",
                  help="Design life in years, 1 to 1000 (default: [lifetime] years, or 50)."))
 
-chart_options = _group(
+chart_options = option_group(
     click.option("--width", "widths", type=_Checked("text", _option_check("parse_widths")), default=None,
                  metavar="A:B:N",
                  help="A design chart instead: the expected sliding distance at N widths from A to B "
@@ -93,16 +80,14 @@ chart_options = _group(
                  help="With --width: bisect the width for --target to M metres, 0.001 to 10 "
                       "(default 0.05); its Monte Carlo interval is printed beside it."))
 
-report_options = _group(
-    click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text."),
-    click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-                 help=f"Output file (repeatable), written atomically: {FIGURES} draws the "
-                      "figure (with --width: the design chart), .csv or .npz writes every lifetime "
-                      "(with --width: .csv writes the chart's table)."))
+report_options = option_group(
+    json_option(),
+    outputs_option(f"Output file (repeatable), written atomically: {FIGURES} draws the figure (with "
+                   "--width: the design chart), .csv or .npz writes every lifetime (with --width: .csv "
+                   "writes the chart's table)."))
 
-run_options = _group(
-    click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
-                 help="Worker processes on this machine (default: one per core; 1: this process)."),
+run_options = option_group(
+    jobs_option("Worker processes on this machine (default: one per core; 1: this process)."),
     click.option("--chunk", type=_Checked("integer", _option_check("check_chunk")), default=None, metavar="N",
                  help="Lifetimes per unit of work (default 500); the numbers do not depend on it."),
     click.option("--scheduler", type=_Checked("text", _option_check("check_scheduler")), default=None,
@@ -110,4 +95,4 @@ run_options = _group(
                  help="Run on an existing Dask cluster, e.g. tcp://host:8786 (needs the 'cluster' extra: "
                       "pip install 'regimemap[cluster]'); the numbers are those of this machine, bit for "
                       "bit when the workers' CPUs have its feature level (else to 1e-12)."),
-    click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error."))
+    quiet_option())

@@ -10,18 +10,20 @@ when an option needs them.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import click
 
-from ..drawing.save import DPI_RANGE
-from ..io.formats import FIGURE_FORMATS, kind_of, suffix_error, suffix_of
-from ._common import ParamType
+from ..drawing.save import DEFAULT_DPI, DPI_RANGE
+from ..io.formats import FIGURE_FORMATS, FIGURES, kind_of, suffix_error, suffix_of
+from ._common import ParamType, resolution_type
 from ._writing import output_path
 
 if TYPE_CHECKING:  # pragma: no cover
+    from click.decorators import FC
+
     from ..maps.file_points import DesignPoint
 
 __all__ = [
@@ -36,12 +38,19 @@ __all__ = [
     "resolve_output",
     "read_points",
     "number_text",
+    "DEFAULT_SAMPLES",
+    "dpi_option",
+    "format_option",
+    "resolution_option",
 ]
 
 #: Output formats: the figure formats of the registry (:data:`regimemap.io.formats.FIGURE_FORMATS`).
 FORMATS = FIGURE_FORMATS
 
 _LO, _HI = DPI_RANGE
+
+#: Samples of k of a map drawn by ``plot`` and ``explore`` (``--resolution``).
+DEFAULT_SAMPLES = 801
 
 
 def number_text(x: float) -> str:
@@ -172,6 +181,24 @@ class PointSpec(ParamType):
             return parse_point_spec(str(value))
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
+
+
+def dpi_option() -> Callable[[FC], FC]:
+    """``--dpi`` of the commands that draw the maps (``plot``, ``figure``, ``figures``)."""
+    return click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
+                        help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
+
+
+def format_option() -> Callable[[FC], FC]:
+    """``--format`` of one figure (``plot``, ``figure``), passed to the command as ``fmt``."""
+    return click.option("--format", "fmt", type=Format(), default=None,
+                        help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
+
+
+def resolution_option() -> Callable[[FC], FC]:
+    """``--resolution`` of a drawn map (``plot``, ``explore``)."""
+    return click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
+                        help="Samples of k for the region polygons and curves (2-5000).")
 
 
 # -- from the options to what is drawn -------------------------------------------------------

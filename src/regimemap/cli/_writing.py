@@ -21,8 +21,8 @@ if TYPE_CHECKING:
 
     from ..mechanics.notices import Notice
 
-__all__ = ["checked_format", "distinct_files", "echo_notices", "file_suffix", "output_dir", "output_path",
-           "report_written", "write_files", "writing"]
+__all__ = ["checked_format", "distinct_files", "echo_notices", "figure_output", "file_suffix", "output_dir",
+           "output_path", "report_written", "write_figure", "write_files", "writing"]
 
 
 @contextlib.contextmanager
@@ -96,11 +96,19 @@ def write_files(paths: Sequence[str], draw: Callable[[], Figure], *,
                 if fig is None:
                     import_matplotlib()
                     fig = draw()
-                from ..drawing.save import save_figure
-
-                save_figure(fig, path)
+                write_figure(fig, path)
         written.append(path)
     return written
+
+
+def write_figure(fig: Figure, path: str | os.PathLike[str], fmt: str | None = None,
+                 dpi: float | None = None) -> None:
+    """Save ``fig`` to ``path`` atomically (:func:`regimemap.drawing.save.save_figure`: the format
+    ``fmt``, else the suffix's); a file that cannot be written is :func:`writing`'s error."""
+    from ..drawing.save import save_figure
+
+    with writing(path):
+        save_figure(fig, path, fmt, dpi=dpi)
 
 
 def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
@@ -111,6 +119,19 @@ def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
         return check_output_path(path, param)
     except ValueError as exc:
         raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'") from None
+
+
+def figure_output(path: str) -> tuple[Path, str]:
+    """``-o`` of a command that writes one figure: the file, its folder checked (:func:`output_path`),
+    and its format from the suffix (:func:`regimemap.drawing.save.format_from_path`); a suffix of
+    no figure is a usage error naming ``'-o' / '--output'``."""
+    from ..drawing.save import format_from_path
+
+    try:
+        fmt = format_from_path(path)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
+    return output_path(path, "--output"), fmt
 
 
 def report_written(path: str | os.PathLike[str], note: str | None = None) -> None:

@@ -9,10 +9,11 @@ import click
 
 from ..io.formats import FIGURES
 from ._check import check_option, exit_on_failure
+from ._common import json_option, output_option
 from ._inputs import DESIGN_FILE, read_design_file
 from ._main import import_matplotlib
 from ._plausible import STRICT_RECORD_HELP, caisson_record
-from ._writing import checked_format, output_path, report_written, writing
+from ._writing import checked_format, output_path, report_written, write_figure
 
 if TYPE_CHECKING:
     from ..caisson.run import CaissonRecord
@@ -27,9 +28,8 @@ __all__ = ["caisson_cmd"]
 @click.argument("design", required=False, type=DESIGN_FILE, metavar="DESIGN.toml")
 @click.option("--example", is_flag=True,
               help="Print the commented example design file (Goda's worked caisson) and exit.")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
-              help=f"Also write a one-page design sheet ({FIGURES}), atomically.")
+@json_option()
+@output_option(f"Also write a one-page design sheet ({FIGURES}), atomically.", metavar="SHEET.pdf")
 @click.option("--strict", is_flag=True, help=STRICT_RECORD_HELP)
 @check_option
 def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool,
@@ -86,10 +86,8 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     record = caisson_record(d, source, strict=strict, sheet=output is not None)
     if output is not None:  # the sheet first: a failure leaves no report half-printed
         from ..caisson.figures.page import caisson_sheet
-        from ..drawing.save import save_figure
 
-        with writing(output):
-            save_figure(caisson_sheet(record), output)
+        write_figure(caisson_sheet(record), output)
     from ..caisson.record import caisson_json, format_caisson
 
     if as_json:

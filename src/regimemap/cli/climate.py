@@ -15,7 +15,7 @@ import click
 
 from ..io.formats import FIGURES
 from ._check import refuse_notices
-from ._common import ParamType
+from ._common import ParamType, json_option, outputs_option
 from ._inputs import RECORD_FILE
 from ._writing import checked_format, distinct_files, echo_notices, output_path, report_written, write_files
 
@@ -120,10 +120,9 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--period", "period_col", default=None, metavar="NAME",
               help="The period column (NDBC: DPD, the default, or APD).")
 @click.option("--drop-spikes", is_flag=True, help="Remove the isolated spikes (else flagged and kept).")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-              help=f"Figure (repeatable; {FIGURES}): the record, the return levels with the "
-                   "band and the observations, the QQ plot.")
+@json_option()
+@outputs_option(f"Figure (repeatable; {FIGURES}): the record, the return levels with the band and the "
+                "observations, the QQ plot.")
 @click.option("--diagnostics", type=click.Path(dir_okay=False), default=None, metavar="FILE",
               help="Threshold diagnostics figure: mean residual life and parameter stability.")
 @click.option("--strict", is_flag=True, help="Quality-control and fit warnings are errors (exit 2).")

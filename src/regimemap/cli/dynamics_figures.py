@@ -15,11 +15,12 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURE_FORMATS
+from ._common import quiet_option
 from ._main import import_matplotlib
-from ._writing import output_dir, report_written, writing
+from ._writing import output_dir, report_written, write_figure, writing
 
 if TYPE_CHECKING:  # pragma: no cover
-    from matplotlib.figure import Figure
+    pass
 
 __all__ = ["dynamics_figures_cmd"]
 
@@ -33,7 +34,7 @@ __all__ = ["dynamics_figures_cmd"]
               help="Keep the computed maps in DIR (created if missing) and reuse them while the "
                    "figures' definitions and regimemap.dynamics are unchanged.")
 @click.option("--list", "list_only", is_flag=True, help="List the figures; draw nothing.")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
+@quiet_option()
 def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_only: bool, quiet: bool) -> None:
     """Draw the figures of regimemap.dynamics (D.1, D.2, D.3) into a folder.
 
@@ -70,7 +71,10 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
         t0 = time.perf_counter()
         with writing(cache, f"to the cache {cache}"):
             record = run_dynamics_figure(f, cache=cache, bars=_bars(f.id, quiet))
-        _save(dynamics_figure(f, record.data), [folder / f.filename(fmt) for fmt in fmts])
+        fig = dynamics_figure(f, record.data)
+        for path in [folder / f.filename(fmt) for fmt in fmts]:
+            write_figure(fig, path)
+            report_written(path)
         how = ("from the cache" if record.from_cache else
                f"grid {record.outcome.category.size} runs, boundaries {record.refine_runs} runs")
         if not quiet:
@@ -99,13 +103,3 @@ def _bars(fid: str, quiet: bool) -> Callable[[int, str], AbstractContextManager[
         return progress_bar(total, f"{fid} {what}", quiet, unit=" runs")
 
     return bars
-
-
-def _save(fig: Figure, paths: list[Path]) -> None:
-    """Save ``fig`` to each path, its format from the suffix, and say so."""
-    from ..drawing.save import save_figure
-
-    for path in paths:
-        with writing(path):
-            save_figure(fig, path)
-        report_written(path)

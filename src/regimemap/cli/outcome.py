@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURE_FORMATS, FIGURES, record_formats
+from ._common import outputs_option, quiet_option
 from ._dynamics_options import (
     block_options,
     check_output_file,
@@ -43,15 +44,13 @@ _DATA_FORMATS = record_formats("outcome data")
 @click.option("--dimensionless", is_flag=True,
               help="Draw (and export) the axes as omega_p/p and k_peak/tan(alpha) (Makris & Roussos "
                    "2000), for a k_peak, duration or omega_p sweep.")
-@click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE",
-              multiple=True, required=True,
-              help=f"Output file (repeatable): {FIGURES} draws the map, .npz, .csv or .json "
-                   "writes its data (atomically; .json with the refined boundaries).")
+@outputs_option(f"Output file (repeatable): {FIGURES} draws the map, .npz, .csv or .json writes its data "
+                "(atomically; .json with the refined boundaries).", required=True)
 @min_rotation_option()
 @click.option("--no-refine", "no_refine", is_flag=True,
               help="Do not refine the boundaries between categories: draw the cells of the grid as "
                    "computed (a staircase at the grid's pitch), with no boundaries in .json.")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
+@quiet_option()
 def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float] | None, mu: list[float],
                 pulse: str | None, k_peak: list[float] | None, duration: list[float] | None,
                 restitution: float | None, buoyancy: list[float] | None, uplift: list[float] | None,

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import suffix_of
-from ._common import ParamType, gamma_option, kprime_option, load_options
+from ._common import ParamType, gamma_option, json_option, kprime_option, load_options, output_option
 from ._inputs import POINTS_FILE
 from ._main import RunError
 from ._writing import output_path, report_written, writing
@@ -52,11 +52,9 @@ class _NonNegative(ParamType):
 @click.option("--points", "points_file", type=POINTS_FILE,
               metavar="FILE.csv",
               help="Classify every row of a CSV with columns k,mu and optionally gamma,kprime,name.")
-@click.option("--json", "as_json", is_flag=True,
-              help="Print JSON (one object per point) instead of text / CSV.")
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
-              help="With --points: write to FILE (atomically) instead of standard output; "
-                   "a .json suffix selects JSON.")
+@json_option("Print JSON (one object per point) instead of text / CSV.")
+@output_option("With --points: write to FILE (atomically) instead of standard output; a .json suffix "
+               "selects JSON.")
 @load_options
 def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
                  points_file: str | None, as_json: bool, output: str | None,

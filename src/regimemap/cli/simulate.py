@@ -15,7 +15,7 @@ import click
 
 from ..io.formats import FIGURE_FORMATS, FIGURES
 from ._check import CHECK_HELP, exit_on_failure
-from ._common import check_kprime_crest
+from ._common import check_kprime_crest, json_option, output_option
 from ._dynamics_options import (
     block_options,
     check_output_file,
@@ -25,7 +25,7 @@ from ._dynamics_options import (
 from ._inputs import DESIGN_FILE, PULSE_FILE
 from ._main import import_matplotlib
 from ._plausible import STRICT_HELP
-from ._writing import echo_notices, writing
+from ._writing import echo_notices, write_figure, writing
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..motion.run import SimulationRecord
@@ -51,9 +51,8 @@ __all__ = ["simulate_cmd"]
                    "factors of its design wave at least [caisson] required_* (1.2), one line each, PASS or "
                    "FAIL; " + CHECK_HELP[0].lower() + CHECK_HELP[1:])
 @min_rotation_option()
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
-              help="Write the time history: .csv or .npz (atomically).")
+@json_option()
+@output_option("Write the time history: .csv or .npz (atomically).")
 @click.option("--plot", "plot", type=click.Path(dir_okay=False), metavar="FILE",
               help=f"Draw k(t), the slide and theta(t) with the phases shaded: {FIGURES}.")
 @click.option("--animate", "animate", type=click.Path(dir_okay=False), metavar="FILE.gif",
@@ -196,11 +195,9 @@ def _write_outputs(record: SimulationRecord, output: str | None, plot: str | Non
         return written
     import_matplotlib()
     if plot is not None:
-        from ..drawing.save import save_figure
         from ..motion.figures.history import simulation_figure
 
-        with writing(plot):
-            save_figure(simulation_figure(record), plot)
+        write_figure(simulation_figure(record), plot)
         written.append(plot)
     if animate is not None:
         from ..motion.figures.history import simulation_animation

@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURES, record_formats, suffix_of
-from ._common import ParamType
+from ._common import ParamType, jobs_option, json_option, outputs_option, quiet_option
 from ._inputs import DESIGN_FILE
 from ._main import RunError
 from ._writing import checked_format, echo_notices, output_path, report_written, write_files
@@ -170,9 +170,8 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.argument("study", type=DESIGN_FILE, metavar="STUDY.toml", required=False)
 @click.option("--example", is_flag=True, help="Print the commented example study (three sections, two "
               "scenarios) and exit.")
-@click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
-              help="Worker processes on this machine (default: one per core; 1: this process); with "
-                   "--scheduler local, the LocalCluster's workers.")
+@jobs_option("Worker processes on this machine (default: one per core; 1: this process); with --scheduler "
+             "local, the LocalCluster's workers.")
 @click.option("--scheduler", type=_Scheduler(), default=None, metavar="local|ADDRESS",
               help="Run the tasks on Dask: 'local' starts a LocalCluster, else a scheduler's address "
                    "(tcp://host:8786); needs the 'cluster' extra.")
@@ -184,18 +183,15 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.option("--store", default=None, metavar="DIR",
               help="The results store, one file per finished task (default: STUDY.store beside the "
                    "study file).")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows; with --check, the "
-              "requirements) instead of text.")
-@click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-              help=f"Output file (repeatable), written atomically: .csv or .nc the table, {FIGURES} the "
-                   "figure (--figure).")
+@json_option("Print one JSON object (the rows; with --check, the requirements) instead of text.")
+@outputs_option(f"Output file (repeatable), written atomically: .csv or .nc the table, {FIGURES} the "
+                "figure (--figure).")
 @click.option("--figure", type=click.Choice(FIGURE_KINDS), default="chainage", show_default=True,
               help="The figure: ESD along the chainage, expected sliding by service year (of --section), "
                    "or the required width along the chainage.")
 @click.option("--section", default=None, metavar="NAME", help="The section of --figure years (default: "
               "the first).")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar; with -o, no table either (the files "
-              "hold it).")
+@quiet_option("No progress bar; with -o, no table either (the files hold it).")
 @click.option("--check", is_flag=True, help="Print one requirement line per section x scenario (PASS or "
               "FAIL: the section's [lifetime] target ESD, or its width against the width for its target) "
               "and exit with status 1 when any fails (the files are written first).")
