@@ -7,7 +7,7 @@ process starts and ends (every error one line, Ctrl-C) :mod:`._main`'s."""
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import click
@@ -42,6 +42,7 @@ __all__ = [
     "check_kprime_crest",
     "check_load_value",
     "gamma_option",
+    "given_options",
     "kprime_option",
     "load_options",
     "load_range",
@@ -327,3 +328,13 @@ def axis_options(k_help: str, mu_help: str, *, metavars: bool = True) -> Callabl
         click.option(f"--{axis}-max", type=positive_float(f"{axis}{'_' if metavars else '-'}max"),
                      default=None, metavar=axis.upper() if metavars else None, help=text)
         for axis, text in (("k", k_help), ("mu", mu_help))))
+
+
+def given_options(names: Iterable[str]) -> list[str]:
+    """The options among the parameters ``names`` of the running command that the command line
+    (or the environment) gave, as flags (``--half-width``), in the order of ``names``."""
+    from click.core import ParameterSource
+
+    ctx = click.get_current_context()
+    return [f"--{name.replace('_', '-')}" for name in names
+            if ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]

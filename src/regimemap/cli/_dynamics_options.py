@@ -5,7 +5,7 @@ and :class:`~regimemap.motion.file.OptionError` as click's usage errors."""
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import click
@@ -14,7 +14,7 @@ from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
 from ..dynamics.pulses import SHAPES
 from ..motion.file import OptionError
 from ._common import ParamType, Values, gamma_option, kprime_option
-from ._writing import checked_format, echo_notices, output_path
+from ._writing import echo_notices
 
 __all__ = [
     "InputNumber",
@@ -22,7 +22,6 @@ __all__ = [
     "input_option",
     "block_options",
     "min_rotation_option",
-    "check_output_file",
     "option_errors",
 ]
 
@@ -130,17 +129,6 @@ def min_rotation_option() -> Callable[[Any], Any]:
         help="Count rocking only if the largest |theta| exceeds ANGLE (degrees, 0 to 90): a run "
              "that rocked less is 'slide only' (if it slid) or 'rest'.  Default 0: every rocking "
              "phase counts, however small.")
-
-
-def check_output_file(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param: str) -> str:
-    """The format of output ``path`` for ``record`` (a key of :data:`regimemap.io.formats.RECORDS`,
-    or its parts: what the file holds and its suffixes), its folder writable.
-
-    A usage error naming ``param`` otherwise (:func:`~regimemap.cli._writing.checked_format`).
-    """
-    fmt = checked_format(path, record, f"'{param}'")
-    output_path(path, param)
-    return fmt
 
 
 @contextlib.contextmanager

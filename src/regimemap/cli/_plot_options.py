@@ -24,7 +24,7 @@ from ._writing import output_path
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
 
-    from ..maps.file_points import DesignPoint
+    from ..maps.file_points import DesignPoint, PointsTable
 
 __all__ = [
     "FORMATS",
@@ -37,7 +37,9 @@ __all__ = [
     "check_modes_on_map",
     "resolve_output",
     "read_points",
+    "read_points_file",
     "number_text",
+    "parse_formats",
     "DEFAULT_SAMPLES",
     "dpi_option",
     "format_option",
@@ -97,12 +99,21 @@ class FormatList(ParamType):
                 ) -> tuple[str, ...]:
         if isinstance(value, tuple):
             return value
-        items = [v.strip().lower().lstrip(".") for v in str(value).split(",") if v.strip()]
-        bad = [v for v in items if v not in FORMATS]
-        if not items or bad:
-            what = f"unknown format {bad[0]!r}" if bad else "no format given"
-            self.fail(f"{what}; use a comma-separated list of {', '.join(FORMATS)}", param, ctx)
-        return tuple(dict.fromkeys(items))
+        try:
+            return parse_formats(str(value))
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
+
+
+def parse_formats(text: str) -> tuple[str, ...]:
+    """The figure formats of a comma-separated list, each once, in the order given (case and a
+    leading dot ignored); ValueError for none or an unknown one."""
+    items = [v.strip().lower().lstrip(".") for v in text.split(",") if v.strip()]
+    bad = [v for v in items if v not in FORMATS]
+    if not items or bad:
+        what = f"unknown format {bad[0]!r}" if bad else "no format given"
+        raise ValueError(f"{what}; use a comma-separated list of {', '.join(FORMATS)}")
+    return tuple(dict.fromkeys(items))
 
 
 def valid_modes(loaded: bool | None = None) -> str:
@@ -258,14 +269,21 @@ def read_points(files: Sequence[str], specs: Sequence[DesignPoint]) -> list[Desi
         Every point; :func:`regimemap.maps.run.run_map` keeps those of its block.
     """
     points = list(specs)
-    if files:
-        from ..maps.file_points import read_points_table  # imports csv: only when needed
     for f in files:
-        try:
-            table = read_points_table(f)
-        except ValueError as exc:
-            raise click.BadParameter(str(exc), param_hint="'--points'") from None
-        if table.note:
-            click.echo(f"regimemap: note: {f} is {table.note}; read as such", err=True)
-        points.extend(table.points)
+        points.extend(read_points_file(f).points)
     return points
+
+
+def read_points_file(path: str) -> PointsTable:
+    """The table of a ``--points`` CSV file (:func:`regimemap.maps.file_points.read_points_table`):
+    a file it refuses is a usage error naming ``--points``; a file read in another dialect is noted
+    on standard error."""
+    from ..maps.file_points import read_points_table  # imports csv: only when needed
+
+    try:
+        table = read_points_table(path)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc), param_hint="'--points'") from None
+    if table.note:
+        click.echo(f"regimemap: note: {path} is {table.note}; read as such", err=True)
+    return table

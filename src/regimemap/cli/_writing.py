@@ -6,10 +6,11 @@ figure drawn once, the path of each file written, and the one printer of the not
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import click
 
@@ -21,8 +22,9 @@ if TYPE_CHECKING:
 
     from ..mechanics.notices import Notice
 
-__all__ = ["checked_format", "distinct_files", "echo_notices", "figure_output", "file_suffix", "output_dir",
-           "output_path", "report_written", "write_figure", "write_files", "writing"]
+__all__ = ["checked_format", "checked_output", "distinct_files", "echo_notes", "echo_notices",
+           "figure_output", "file_suffix", "output_dir", "output_path", "print_report", "report_written",
+           "write_figure", "write_files", "writing"]
 
 
 @contextlib.contextmanager
@@ -63,6 +65,15 @@ def checked_format(path: str, record: str | Sequence[tuple[str, Sequence[str]]],
         return format_for(path, record)
     except SuffixError as exc:
         raise click.BadParameter(str(exc), param_hint=param_hint) from None
+
+
+def checked_output(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param: str = "--output",
+                   hint: str | None = None) -> str:
+    """The format of output ``path`` for ``record`` (:func:`checked_format`, a usage error naming
+    ``hint``, by default ``param``), its folder checked (:func:`output_path`, naming ``param``)."""
+    fmt = checked_format(path, record, hint or f"'{param}'")
+    output_path(path, param)
+    return fmt
 
 
 def distinct_files(paths: Sequence[str], param_hint: str) -> None:
@@ -157,6 +168,27 @@ def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None
     where = f"{source}: " if source else ""
     for n in notices:
         click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{where}{n.message}", err=True)
+
+
+def print_report(as_json: bool, text: Callable[[], str | None], data: Callable[[], dict[str, Any]],
+                 written: Sequence[str] = (), indent: int = 2) -> None:
+    """A command's report on standard output, the one way every command prints it: with
+    ``as_json`` one JSON object, ``data()`` (``indent``: its indent), else the text, ``text()``
+    (None: none), then the path of each file ``written`` (:func:`report_written`)."""
+    if as_json:
+        click.echo(json.dumps(data(), indent=indent, allow_nan=False))
+        return
+    report = text()
+    if report is not None:
+        click.echo(report)
+    for path in written:
+        report_written(path)
+
+
+def echo_notes(notes: Iterable[str], prefix: str = "regimemap: ") -> None:
+    """Notes on standard error, one line each: ``regimemap: NOTE`` (or ``prefix`` + ``NOTE``)."""
+    for note in notes:
+        click.echo(f"{prefix}{note}", err=True)
 
 
 def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False) -> Path:

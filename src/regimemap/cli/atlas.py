@@ -16,6 +16,7 @@ from ..drawing.limits import (
     MAX_PANELS,
 )
 from ..io.formats import FIGURES
+from ..mechanics.validation import check_gamma
 from ._common import (
     LOAD_OPTIONS,
     Values,
@@ -27,15 +28,9 @@ from ._common import (
     view_option,
 )
 from ._main import import_matplotlib
-from ._writing import checked_format, echo_notices, figure_output, output_path, report_written, writing
+from ._writing import checked_output, echo_notices, figure_output, report_written, writing
 
 __all__ = ["atlas_cmd", "animate_cmd"]
-
-
-def _gamma_check(v: float) -> float:
-    from ..mechanics.validation import check_gamma
-
-    return check_gamma(v)
 
 
 def _kprime_check(v: float) -> float:
@@ -94,7 +89,7 @@ def _checked_blocks(gammas: list[float], sweep: str, values: list[float], fixed:
 
 @click.command("atlas", short_help="Small multiples of the map: rows gamma, columns k'.")
 @click.option("--gamma", "gammas", required=True, metavar="LIST",
-              type=Values("gamma", _gamma_check, MAX_PANELS),
+              type=Values("gamma", check_gamma, MAX_PANELS),
               help="Aspect ratios H/B (> 0), one row each: 1,2,3 or start:stop:count.")
 @click.option("--kprime", "kprimes", required=True, metavar="LIST",
               type=Values("kprime", _kprime_check, MAX_PANELS),
@@ -197,8 +192,7 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
       regimemap animate --gamma 1.5 --kprime -0.8:0:17 --fps 4 --k-max 5 --mu-max 3 -o below.gif
       regimemap animate --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0:1:21 -o nu.gif
     """
-    checked_format(output, "animation", "'-o' / '--output'")
-    output_path(output, "--output")
+    checked_output(output, "animation", hint="'-o' / '--output'")
     kprimes = _up_to_crest(kprimes, loads)
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
     _checked_blocks([gamma], sweep, values, fixed)

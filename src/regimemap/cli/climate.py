@@ -7,7 +7,6 @@ record: the report (:mod:`regimemap.climate.record`) and the figures
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -17,7 +16,7 @@ from ..io.formats import FIGURES
 from ._check import refuse_notices
 from ._common import ParamType, json_option, outputs_option
 from ._inputs import RECORD_FILE
-from ._writing import checked_format, distinct_files, echo_notices, output_path, report_written, write_files
+from ._writing import checked_output, distinct_files, echo_notices, print_report, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -27,11 +26,6 @@ if TYPE_CHECKING:
     from ..climate.run import ClimateRecord
 
 __all__ = ["climate_cmd"]
-
-#: The option of each field of ClimateOptions that an analysis's error may blame.
-_OPTIONS = {"threshold": "--threshold", "coverage": "--coverage", "return_periods": "--return-periods"}
-#: The option that names each column of a record.
-_COLUMNS = {"time": "--time", "significant wave height": "--hs", "period": "--period"}
 
 
 class _Threshold(ParamType):
@@ -78,8 +72,7 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
     every += [(diagnostics, "--diagnostics")] if diagnostics else []
     distinct_files([path for path, _ in every], "'-o' / '--diagnostics'")
     for path, option in every:
-        checked_format(path, "climate figures", f"'{option}'")
-        output_path(path, option)
+        checked_output(path, "climate figures", option)
 
 
 @click.command("climate", short_help="Return values of Hs with confidence bands from a wave record.")
@@ -179,35 +172,21 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
         found, threshold_used, moved = result.diagnostics, result.result.fit.threshold, result.sensitivity
         written += write_files([diagnostics],
                                lambda: _diagnostics_figure(found, threshold_used, title, moved))
-    if as_json:
-        click.echo(json.dumps(result.report_json(written), indent=2, allow_nan=False))
-        return
-    click.echo(result.report_text())
-    for path in written:
-        report_written(path)
+    print_report(as_json, result.report_text, lambda: result.report_json(written), written)
 
 
 def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,
          period_col: str | None, drop_spikes: bool, diagnostics: bool) -> ClimateRecord:
     """The workflow's call: an unreadable record or an impossible analysis is a usage error naming the
-    record and the option it blames (:func:`regimemap.lifetime.file_record.analysis_fault`), or RECORD."""
-    from ..climate.file import RecordError
+    record and the option it blames (:func:`regimemap.climate.run_blame.blamed_option`), or RECORD."""
     from ..climate.run import run_climate
-    from ..lifetime.file_record import analysis_fault
+    from ..climate.run_blame import blamed_option
 
     try:
         return run_climate(record, options, time=time_col, hs=hs_col, period=period_col,
                            drop_spikes=drop_spikes, diagnostics=diagnostics)
     except ValueError as exc:
-        message = str(exc)
-        if not message.startswith(record):
-            message = f"{record}: {message}"
-        if isinstance(exc, RecordError):  # a column named by --time, --hs or --period that is not there
-            given = {"time": time_col, "significant wave height": hs_col, "period": period_col}
-            option = next((_COLUMNS[what] for what, col in given.items()
-                           if col is not None and f" for the {what} (columns: " in message), "RECORD")
-        else:
-            option = _OPTIONS.get(analysis_fault(str(exc)) or "", "RECORD")
+        message, option = blamed_option(exc, record, time=time_col, hs=hs_col, period=period_col)
         raise click.BadParameter(message, param_hint=f"'{option}'") from None
 
 

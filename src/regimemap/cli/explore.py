@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import FIGURES
-from ._common import gamma_option, kprime_option, load_options
+from ._common import gamma_option, given_options, kprime_option, load_options
 from ._inputs import DESIGN_FILE, read_design_file
 from ._main import RunError, import_matplotlib
 from ._plot_options import DEFAULT_SAMPLES, resolution_option
@@ -173,14 +173,9 @@ def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, Desig
     reports it; implausible values are warnings on standard error
     (:func:`regimemap.caisson.run.run_caisson`, as ``regimemap caisson`` runs it).
     """
-    from click.core import ParameterSource
-
     from ._plausible import caisson_record
 
-    ctx = click.get_current_context()
-    given = [f"--{n.replace('_', '-')}" for n in ("gamma", "kprime")
-             if ctx.get_parameter_source(n) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
-    given += [f"--{n.replace('_', '-')}" for n in loads]
+    given = given_options(("gamma", "kprime")) + [f"--{n.replace('_', '-')}" for n in loads]
     if given:
         raise click.UsageError(f"{', '.join(given)} and --design exclude each other: the design file "
                                "gives the block (change the design file, or give the block without --design)")

@@ -12,6 +12,7 @@ from ..io.formats import suffix_of
 from ._common import ParamType, gamma_option, json_option, kprime_option, load_options, output_option
 from ._inputs import POINTS_FILE
 from ._main import RunError
+from ._plot_options import read_points_file
 from ._writing import output_path, report_written, writing
 
 if TYPE_CHECKING:
@@ -163,14 +164,7 @@ def _points_of_file(points_file: str, gamma: float | None, kprime: float | None
                     ) -> list[DesignPoint]:
     """The rows of ``--points``; a usage error for a bad file or a row without its gamma or
     k' when no ``--gamma``/``--kprime`` gives it."""
-    from ..maps.file_points import read_points_table
-
-    try:
-        table = read_points_table(points_file)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--points'") from None
-    if table.note:
-        click.echo(f"regimemap: note: {points_file} is {table.note}; read as such", err=True)
+    table = read_points_file(points_file)
     for line, pt in zip(table.lines, table.points):
         for opt, own, default in (("--gamma", pt.gamma, gamma), ("--kprime", pt.kprime, kprime)):
             if own is None and default is None:

@@ -10,7 +10,6 @@ processes or on Dask, each stored as it finishes -- and writes the table
 from __future__ import annotations
 
 import contextlib
-import json
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -21,7 +20,7 @@ from ..io.formats import FIGURES, record_formats, suffix_of
 from ._common import ParamType, jobs_option, json_option, outputs_option, quiet_option
 from ._inputs import DESIGN_FILE
 from ._main import RunError
-from ._writing import checked_format, echo_notices, output_path, report_written, write_files
+from ._writing import checked_output, echo_notices, print_report, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -81,8 +80,7 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
         raise click.UsageError("--resume and --overwrite exclude each other: --resume finishes the "
                                "store's run, --overwrite replaces the store with a new run", ctx=ctx)
     for path in outputs:
-        checked_format(path, "study", "'--output'")
-        output_path(path, "--output")
+        checked_output(path, "study")
     # the extras, before the store or any file is made and before a long run
     if scheduler is not None and _missing("distributed"):
         raise click.BadParameter(NO_DASK, param_hint="'--scheduler'")
@@ -223,8 +221,8 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
       regimemap study breakwater.toml --overwrite --check
       regimemap study breakwater.toml --scheduler local -o esd.svg
     """
-    from ..study.record_table import study_check_lines, study_checks_json, study_json, study_lines
     from ..study.run import study_checks
+    from ..study.run_report import study_report_json, study_report_text
 
     _check_call(study, example, outputs, scheduler, jobs, resume, overwrite)
     if example:
@@ -237,22 +235,9 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
     echo_notices(parsed.notices)  # before the run: the file's warnings
     record = _run(parsed, jobs, scheduler, resume, overwrite, store, quiet)
     echo_notices([n for n in record.notices if n not in parsed.notices])
-    checks = study_checks(parsed, record) if check else ()
+    checks = study_checks(parsed, record) if check else None
     written = _write(record, outputs, figure, section)
-    if as_json:
-        data = study_json(record)
-        if check:
-            data["checks"] = study_checks_json(checks)
-        if written:
-            data["written"] = written
-        click.echo(json.dumps(data, indent=1, allow_nan=False))
-    else:
-        if not (outputs and quiet):
-            click.echo("\n".join(study_lines(record)))
-        if check:
-            click.echo("requirements:")
-            click.echo("\n".join(f"  {line}" for line in study_check_lines(checks)))
-        for path in written:
-            report_written(path)
-    if check and not all(c.passed for c in checks):
+    print_report(as_json, lambda: study_report_text(record, checks, table=not (outputs and quiet)),
+                 lambda: study_report_json(record, checks, written), written, indent=1)
+    if checks is not None and not all(c.passed for c in checks):
         raise click.exceptions.Exit(1)
