@@ -174,16 +174,18 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
 
 
 
-def _preset_or_usage_error(fid: str) -> Any:
+def _figure_id(fid: str) -> str:
+    """The id of the report's figure ``fid`` as the report writes it; a usage error naming the
+    nearest ids when there is none."""
     from ..maps.figures.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
     from ..maps.figures.worked import WORKED
 
     if normalise_id(fid) == MODEL_ID:
-        return None
+        return MODEL_ID
     if fid.strip().upper() in WORKED:  # the worked figures of the loaded block: W.1, W.2 ...
-        return WORKED[fid.strip().upper()]
+        return WORKED[fid.strip().upper()].id
     try:
-        return get_preset(fid)
+        return get_preset(fid).id
     except KeyError:
         near = suggest_ids(fid)
         hint = f" Did you mean {' or '.join(near)}?" if near else ""
@@ -215,18 +217,13 @@ def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: flo
       regimemap figure 4.7a -o fig47a.pdf
       regimemap figure 3.11 --format svg --dpi 300
     """
-    preset = _preset_or_usage_error(figure_id)
-    path, fmt = resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
-
+    fid = _figure_id(figure_id)
+    path, fmt = resolve_output(output, fmt, f"fig-{fid}")
     import_matplotlib()
     from ..maps.figures.batch import render_figure
 
-    fid = MODEL_ID if preset is None else preset.id
-    fig = render_figure(fid, figure_maps(fid), dpi=dpi)
-    write_figure(fig, path, fmt, dpi)
+    write_figure(render_figure(fid, figure_maps(fid), dpi=dpi), path, fmt, dpi)
     report_written(path)
-
-
 
 
 @click.command("figures", short_help="Draw all 25 figures of the report.")
