@@ -36,6 +36,7 @@ else:
 
 __all__ = [
     "CONTEXT_SETTINGS",
+    "Checked",
     "LOAD_OPTIONS",
     "ParamType",
     "Values",
@@ -90,17 +91,26 @@ def positive_float(name: str, hi: float = MAX_AXIS) -> ParamType:
     return _Checked(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
 
 
-class _Resolution(ParamType):
-    name = "integer"
+class Checked(ParamType):
+    """A value as typed, checked and converted by ``check``, whose ValueError is the usage error's
+    message (exit 2, after ``Invalid value for '--option':``); a value that is not text (a
+    default, or a value already converted) is kept.  ``name``: the kind the help shows."""
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> int:
+    def __init__(self, name: str, check: Callable[[str], Any]):
+        self.name = name
+        self._check = check
+
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+        if not isinstance(value, str):
+            return value
         try:
-            return check_resolution("resolution", value)
+            return self._check(value)
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
 
 
-resolution_type = _Resolution()
+#: ``--resolution``: samples along an axis, a whole number in [2, 5000].
+resolution_type = Checked("integer", functools.partial(check_resolution, "resolution"))
 
 
 def gamma_option(**kwargs: Any) -> Callable[[FC], FC]:

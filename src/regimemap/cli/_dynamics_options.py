@@ -13,11 +13,11 @@ import click
 from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
 from ..dynamics.pulses import SHAPES
 from ..motion.file import OptionError
-from ._common import ParamType, Values, gamma_option, kprime_option
+from ._common import Checked, ParamType, Values, gamma_option, kprime_option
 from ._writing import echo_notices
 
 __all__ = [
-    "InputNumber",
+    "input_number",
     "values_type",
     "input_option",
     "block_options",
@@ -25,25 +25,20 @@ __all__ = [
     "option_errors",
 ]
 
-class InputNumber(ParamType):
-    """One number in the range of an input of :data:`regimemap.dynamics.limits.INPUT_LIMITS`."""
+def input_number(what: str) -> ParamType:
+    """One number in the range of input ``what`` of :data:`regimemap.dynamics.limits.INPUT_LIMITS`."""
+    lim = INPUT_LIMITS[what]
 
-    name = "number"
-
-    def __init__(self, what: str):
-        self.what = what
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        lim = INPUT_LIMITS[self.what]
+    def check(text: str) -> float:
         try:
-            v = float(str(value).strip())
+            v = float(text.strip())
         except ValueError:
-            self.fail(f"{self.what} must be {lim.text}, got {value!r} (not a number)", param, ctx)
+            raise ValueError(f"{what} must be {lim.text}, got {text!r} (not a number)") from None
         if not lim.contains(v):
-            self.fail(f"{self.what} must be {lim.text}, got {value!r}", param, ctx)
+            raise ValueError(f"{what} must be {lim.text}, got {text!r}")
         return v + 0.0
+
+    return Checked("number", check)
 
 
 def values_type(what: str) -> ParamType:
@@ -80,7 +75,7 @@ def input_option(name: str, swept: bool, metavar: str, default: Any = None, requ
                  extra: str = "") -> Callable[[Any], Any]:
     """``--name`` of input ``name``: one number, or (``swept``) a list or range of them."""
     flag = "--" + name.replace("_", "-")
-    typ = values_type(name) if swept else InputNumber(name)
+    typ = values_type(name) if swept else input_number(name)
     text = _HELP[name] + (extra if swept else "")
     return click.option(flag, name, type=typ, default=default, required=required,
                         metavar=("LIST" if swept else metavar), help=text)
@@ -124,7 +119,7 @@ def min_rotation_option() -> Callable[[Any], Any]:
     """``--min-rotation ANGLE`` (degrees, default 0): rocking counts only above it (``simulate``
     and ``outcome`` share this one definition; the library takes radians)."""
     return click.option(
-        "--min-rotation", "min_rotation", type=InputNumber("min_rotation"), default=0.0, show_default=True,
+        "--min-rotation", "min_rotation", type=input_number("min_rotation"), default=0.0, show_default=True,
         metavar="ANGLE",
         help="Count rocking only if the largest |theta| exceeds ANGLE (degrees, 0 to 90): a run "
              "that rocked less is 'slide only' (if it slid) or 'rest'.  Default 0: every rocking "

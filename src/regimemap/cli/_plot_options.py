@@ -18,7 +18,7 @@ import click
 
 from ..drawing.save import DEFAULT_DPI, DPI_RANGE
 from ..io.formats import FIGURE_FORMATS, FIGURES, kind_of, suffix_error, suffix_of
-from ._common import ParamType, resolution_type
+from ._common import Checked, ParamType, resolution_type
 from ._writing import output_path
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -32,7 +32,7 @@ __all__ = [
     "Format",
     "FormatList",
     "Modes",
-    "PointSpec",
+    "POINT_SPEC",
     "valid_modes",
     "check_modes_on_map",
     "resolve_output",
@@ -178,20 +178,14 @@ def check_modes_on_map(modes: tuple[Any, ...] | None, loaded: bool) -> tuple[Any
     return modes
 
 
-class PointSpec(ParamType):
-    """``--point K,MU[:NAME]``: one design point (:func:`regimemap.maps.file_points.parse_point_spec`)."""
+def _point(text: str) -> DesignPoint:
+    from ..maps.file_points import parse_point_spec
 
-    name = "K,MU[:NAME]"
+    return parse_point_spec(text)
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..maps.file_points import DesignPoint, parse_point_spec
 
-        if isinstance(value, DesignPoint):
-            return value
-        try:
-            return parse_point_spec(str(value))
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
+#: ``--point K,MU[:NAME]``: one design point (:func:`regimemap.maps.file_points.parse_point_spec`).
+POINT_SPEC = Checked("K,MU[:NAME]", _point)
 
 
 def dpi_option() -> Callable[[FC], FC]:

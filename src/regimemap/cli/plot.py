@@ -25,9 +25,9 @@ from ._main import RunError, import_matplotlib
 from ._plot_options import (
     DEFAULT_SAMPLES,
     FORMATS,
+    POINT_SPEC,
     FormatList,
     Modes,
-    PointSpec,
     check_modes_on_map,
     dpi_option,
     format_option,
@@ -108,7 +108,7 @@ def _plain(tex: str) -> str:
 @click.option("--raw", is_flag=True,
               help="Shade each mode's region as the report derives it, before Section 4.7 "
                    "resolves overlaps (regions may overlap; use with --modes).")
-@click.option("--point", "point_specs", type=PointSpec(), multiple=True,
+@click.option("--point", "point_specs", type=POINT_SPEC, multiple=True,
               help="Mark a design point K,MU or K,MU:NAME (repeatable).")
 @click.option("--points", "points_files", type=POINTS_FILE, multiple=True, metavar="FILE.csv",
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "

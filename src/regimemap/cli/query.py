@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import suffix_of
-from ._common import ParamType, gamma_option, json_option, kprime_option, load_options, output_option
+from ._common import Checked, gamma_option, json_option, kprime_option, load_options, output_option
 from ._inputs import POINTS_FILE
 from ._main import RunError
 from ._plot_options import read_points_file
@@ -22,22 +22,18 @@ if TYPE_CHECKING:
 __all__ = ["classify_cmd"]
 
 
-class _NonNegative(ParamType):
+def _non_negative(what: str) -> Checked:
     """A finite float >= 0 (k, mu)."""
-
-    name = "number"
-
-    def __init__(self, what: str):
-        self.what = what
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+    def check(text: str) -> float:
         try:
-            v = float(value)
-        except (TypeError, ValueError):
-            self.fail(f"{self.what} must be a finite number >= 0, got {value!r}", param, ctx)
+            v = float(text)
+        except ValueError:
+            v = math.nan
         if not math.isfinite(v) or v < 0.0:
-            self.fail(f"{self.what} must be a finite number >= 0, got {value!r}", param, ctx)
+            raise ValueError(f"{what} must be a finite number >= 0, got {text!r}")
         return v
+
+    return Checked("number", check)
 
 
 @click.command(
@@ -46,9 +42,9 @@ class _NonNegative(ParamType):
 )
 @gamma_option(required=False)
 @kprime_option(required=False)
-@click.option("--k", "k", type=_NonNegative("k"), metavar="K",
+@click.option("--k", "k", type=_non_negative("k"), metavar="K",
               help="Force F/(mg) >= 0 (one point).")
-@click.option("--mu", "mu", type=_NonNegative("mu"), metavar="MU",
+@click.option("--mu", "mu", type=_non_negative("mu"), metavar="MU",
               help="Friction coefficient >= 0 (one point).")
 @click.option("--points", "points_file", type=POINTS_FILE,
               metavar="FILE.csv",

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURES, record_formats, suffix_of
-from ._common import ParamType, jobs_option, json_option, outputs_option, quiet_option
+from ._common import Checked, jobs_option, json_option, outputs_option, quiet_option
 from ._inputs import DESIGN_FILE
 from ._main import RunError
 from ._writing import checked_output, echo_notices, print_report, write_files
@@ -33,21 +33,16 @@ __all__ = ["study_cmd"]
 FIGURE_KINDS = ("chainage", "years", "width")
 
 
-class _Scheduler(ParamType):
+def _scheduler(text: str) -> str:
     """``local``, or a Dask scheduler's address (:func:`regimemap.lifetime.file_options.check_scheduler`)."""
+    from ..lifetime.file_options import check_scheduler
 
-    name = "text"
-
-    def convert(self, value: object, param: click.Parameter | None, ctx: click.Context | None) -> str:
-        from ..lifetime.file_options import check_scheduler
-
-        text = str(value).strip()
-        if text == "local":
-            return text
-        try:
-            return check_scheduler(text)
-        except ValueError as exc:
-            self.fail(f"{exc} (or 'local', a Dask LocalCluster)", param, ctx)
+    if text.strip() == "local":
+        return "local"
+    try:
+        return check_scheduler(text.strip())
+    except ValueError as exc:
+        raise ValueError(f"{exc} (or 'local', a Dask LocalCluster)") from None
 
 
 #: The message when Dask's distributed is missing (found before anything is made).
@@ -170,7 +165,7 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
               "scenarios) and exit.")
 @jobs_option("Worker processes on this machine (default: one per core; 1: this process); with --scheduler "
              "local, the LocalCluster's workers.")
-@click.option("--scheduler", type=_Scheduler(), default=None, metavar="local|ADDRESS",
+@click.option("--scheduler", type=Checked("text", _scheduler), default=None, metavar="local|ADDRESS",
               help="Run the tasks on Dask: 'local' starts a LocalCluster, else a scheduler's address "
                    "(tcp://host:8786); needs the 'cluster' extra.")
 @click.option("--resume", is_flag=True, help="Run only the tasks missing from the store (the same numbers "
