@@ -19,6 +19,7 @@ import click
 from ..drawing.save import DEFAULT_DPI, DPI_RANGE
 from ..io.formats import FIGURE_FORMATS, FIGURES, kind_of, suffix_error, suffix_of
 from ._common import Checked, ParamType, resolution_type
+from ._main import refusing
 from ._writing import output_path
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -274,10 +275,8 @@ def read_points_file(path: str) -> PointsTable:
     on standard error."""
     from ..maps.file_points import read_points_table  # imports csv: only when needed
 
-    try:
+    with refusing("'--points'"):
         table = read_points_table(path)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--points'") from None
     if table.note:
         click.echo(f"regimemap: note: {path} is {table.note}; read as such", err=True)
     return table

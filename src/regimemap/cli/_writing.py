@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import SuffixError, format_for, suffix_of
-from ._main import RunError, import_matplotlib
+from ._main import RunError, import_matplotlib, refusing
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -61,10 +61,8 @@ def checked_format(path: str, record: str | Sequence[tuple[str, Sequence[str]]],
     """The format of output ``path`` for ``record`` (:func:`regimemap.io.formats.format_for`);
     a suffix it is not written in is a usage error (exit 2) naming ``param_hint``
     (``"'--output'"``), worded by :func:`regimemap.io.formats.suffix_error`."""
-    try:
+    with refusing(param_hint, SuffixError):
         return format_for(path, record)
-    except SuffixError as exc:
-        raise click.BadParameter(str(exc), param_hint=param_hint) from None
 
 
 def checked_output(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param: str = "--output",
@@ -138,10 +136,8 @@ def figure_output(path: str) -> tuple[Path, str]:
     no figure is a usage error naming ``'-o' / '--output'``."""
     from ..drawing.save import format_from_path
 
-    try:
+    with refusing("'-o' / '--output'"):
         fmt = format_from_path(path)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
     return output_path(path, "--output"), fmt
 
 

@@ -16,6 +16,7 @@ from ..io.formats import FIGURES
 from ._check import refuse_notices
 from ._common import ParamType, json_option, outputs_option
 from ._inputs import RECORD_FILE
+from ._main import refusing
 from ._writing import checked_output, distinct_files, echo_notices, print_report, write_files
 
 if TYPE_CHECKING:
@@ -157,10 +158,8 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
                              distribution=distribution, shape=shape, coverage=coverage,
                              return_periods=return_periods, confidence=confidence, interval=interval,
                              replicates=replicates, seed=seed)
-    try:
+    with refusing("'--distribution'"):
         options.check()
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--distribution'") from None
     result = _run(record, options, time_col, hs_col, period_col, drop_spikes, diagnostics is not None)
     if strict:
         refuse_notices(result.notices, ("record-quality", "fit"),

@@ -15,7 +15,7 @@ import click
 from ..io.formats import FIGURE_FORMATS
 from ..motion.run_notes import dynamics_figure_note, dynamics_files_note
 from ._common import quiet_option
-from ._main import import_matplotlib
+from ._main import import_matplotlib, refusing
 from ._plot_options import parse_formats
 from ._progress import progress_bars
 from ._writing import echo_notes, output_dir, report_written, write_figure, writing
@@ -61,10 +61,8 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     if list_only:
         click.echo("\n".join(f"{f.id:4s} {f.caption}" for f in DYNAMICS_FIGURES.values()))
         return
-    try:  # checked here, not by the option's type: --list lists whatever --format says
+    with refusing("'--format'"):  # checked here, not by the option's type: --list lists whatever it says
         fmts = parse_formats(formats)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--format'") from None
     folder = output_dir(out_dir, "--out")
     if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
         raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")

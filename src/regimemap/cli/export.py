@@ -16,6 +16,7 @@ from ._common import (
     resolution_type,
     view_option,
 )
+from ._main import refusing
 from ._writing import output_path, report_written, writing
 
 __all__ = ["export_cmd"]
@@ -66,10 +67,8 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
     from ..maps.record_export import export_map, format_of
     from ..mechanics.block import Parameters
 
-    try:
+    with refusing("'-o' / '--output'"):
         fmt = format_of(output, fmt)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
     output_path(output, "--output")
     p = Parameters(gamma, kprime, **loads)
     with writing(output):

@@ -18,7 +18,7 @@ from ..lifetime.run_notes import output_refusal, run_notes
 from ._check import check_option, exit_on_failure, refuse_notices
 from ._inputs import DESIGN_FILE
 from ._lifetime_options import chart_options, lifetime_options, report_options, run_options
-from ._main import RunError
+from ._main import RunError, refusing
 from ._plausible import STRICT_RECORD_HELP
 from ._writing import (
     checked_format,
@@ -161,10 +161,8 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
     from ..caisson.file import DesignFileError
     from ..lifetime.run import RECORD_WARNINGS, read_lifetime_design
 
-    try:
+    with refusing("'DESIGN.toml'", DesignFileError):
         inputs = read_lifetime_design(design, years)
-    except DesignFileError as exc:
-        raise click.BadParameter(str(exc), param_hint="'DESIGN.toml'") from None
     if strict:
         refuse_notices(inputs.notices, "implausible-value", "--strict refuses implausible values",
                        "'DESIGN.toml'")
