@@ -8,13 +8,14 @@ record: the report (:mod:`regimemap.climate.record`) and the figures
 from __future__ import annotations
 
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import click
 
+from ..climate.run_options import return_periods_option, threshold_option
 from ..io.formats import FIGURES
 from ._check import refuse_notices
-from ._common import ParamType, json_option, outputs_option
+from ._common import Checked, json_option, outputs_option
 from ._inputs import RECORD_FILE
 from ._main import refusing
 from ._writing import checked_output, distinct_files, echo_notices, print_report, write_files
@@ -27,43 +28,6 @@ if TYPE_CHECKING:
     from ..climate.run import ClimateRecord
 
 __all__ = ["climate_cmd"]
-
-
-class _Threshold(ParamType):
-    name = "threshold"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        if not isinstance(value, str):
-            return value
-        from ..climate.peaks import parse_threshold
-        from ..climate.wave_record import HS_MAX
-
-        try:
-            kind, u = parse_threshold(value)
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
-        if kind == "value" and u > HS_MAX:  # a bare number is metres: 99.5 is above any sea state
-            hint = (f"did you mean {value.strip()}%? (a quantile of the heights is written with %)"
-                    if u < 100.0 else "give a height in metres or a quantile such as 99.5%")
-            self.fail(f"threshold {u:g} m is above any sea state (Hs at most {HS_MAX:g} m); {hint}",
-                      param, ctx)
-        return kind, u
-
-
-class _Periods(ParamType):
-    name = "periods"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        if not isinstance(value, str):
-            return value
-        try:
-            out = tuple(float(v) for v in value.split(","))
-        except ValueError:
-            self.fail(f"return periods must be numbers of years > 1, comma-separated, got {value!r}",
-                      param, ctx)
-        if not out or any(not (1.0 < v <= 1e5) for v in out):
-            self.fail(f"return periods must be numbers of years in (1, 100000], got {value!r}", param, ctx)
-        return out
 
 
 def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
@@ -80,7 +44,8 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.argument("record", type=RECORD_FILE, metavar="RECORD")
 @click.option("--method", type=click.Choice(["pot", "annual-maxima"]), default="pot", show_default=True,
               help="Peaks over a threshold (storms) or the maxima of the calendar years.")
-@click.option("--threshold", type=_Threshold(), default="99.5%", show_default=True, metavar="U",
+@click.option("--threshold", type=Checked("threshold", threshold_option), default="99.5%", show_default=True,
+              metavar="U",
               help="Storm threshold: a height in metres, or a quantile of the heights such as 99.5%.")
 @click.option("--gap", "gap_hours", type=click.FloatRange(min=0.0, min_open=True, max=8760.0), default=48.0,
               show_default=True, metavar="HOURS",
@@ -93,7 +58,8 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--coverage", type=click.FloatRange(min=0.0, min_open=True, max=1.0), default=0.8,
               show_default=True, metavar="SHARE",
               help="Least share of a calendar year's hours observed for its annual maximum, (0, 1].")
-@click.option("--return-periods", type=_Periods(), default="10,50,100", show_default=True, metavar="R,R",
+@click.option("--return-periods", type=Checked("periods", return_periods_option), default="10,50,100",
+              show_default=True, metavar="R,R",
               help="Return periods in years (> 1), comma-separated.")
 @click.option("--confidence", type=click.FloatRange(min=0.5, max=0.999), default=0.9, show_default=True,
               metavar="LEVEL", help="Level of the intervals, 0.5 to 0.999.")
@@ -177,9 +143,9 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
 def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,
          period_col: str | None, drop_spikes: bool, diagnostics: bool) -> ClimateRecord:
     """The workflow's call: an unreadable record or an impossible analysis is a usage error naming the
-    record and the option it blames (:func:`regimemap.climate.run_blame.blamed_option`), or RECORD."""
+    record and the option it blames (:func:`regimemap.climate.run_options.blamed_option`), or RECORD."""
     from ..climate.run import run_climate
-    from ..climate.run_blame import blamed_option
+    from ..climate.run_options import blamed_option
 
     try:
         return run_climate(record, options, time=time_col, hs=hs_col, period=period_col,
