@@ -54,43 +54,6 @@ __all__ = [
 CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
 
-
-
-class _Checked(ParamType):
-    """A click type that validates with one of regimemap.validation's checks."""
-
-    def __init__(self, name: str, check: Callable[[Any], Any], allowed: str = "a number"):
-        self.name = name
-        self._check = check
-        self._allowed = allowed
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        number: Any = value
-        if isinstance(value, str):
-            try:
-                number = float(value)
-            except ValueError:
-                self.fail(f"{self.name} must be {self._allowed}, got {value!r} (not a number)",
-                          param, ctx)
-        try:
-            return self._check(number)
-        except ValueError as exc:
-            # the message names the parameter, the range and the value as typed;
-            # click prefixes the option name
-            if isinstance(value, str):
-                self.fail(f"{self.name} must be {self._allowed}, got {value!r}", param, ctx)
-            self.fail(str(exc), param, ctx)
-
-
-GAMMA = _Checked("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
-KPRIME = _Checked("kprime", check_kprime, "a number in [-1, 1]")
-
-
-def positive_float(name: str, hi: float = MAX_AXIS) -> ParamType:
-    """A click type for a finite float in (0, hi] (default: MAX_AXIS, for axis limits)."""
-    return _Checked(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
-
-
 class Checked(ParamType):
     """A value as typed, checked and converted by ``check``, whose ValueError is the usage error's
     message (exit 2, after ``Invalid value for '--option':``); a value that is not text (a
@@ -107,6 +70,31 @@ class Checked(ParamType):
             return self._check(value)
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
+
+
+def _number(name: str, check: Callable[[float], Any], allowed: str) -> Checked:
+    """A number as typed, checked by one of :mod:`regimemap.mechanics.validation`'s checks; the
+    message names the parameter, what it allows and the value as typed (click prefixes the
+    option's name)."""
+    def convert(text: str) -> Any:
+        try:
+            number = float(text)
+        except ValueError:
+            raise ValueError(f"{name} must be {allowed}, got {text!r} (not a number)") from None
+        try:
+            return check(number)
+        except ValueError:
+            raise ValueError(f"{name} must be {allowed}, got {text!r}") from None
+
+    return Checked(name, convert)
+
+
+GAMMA = _number("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
+
+
+def positive_float(name: str, hi: float = MAX_AXIS) -> ParamType:
+    """A click type for a finite float in (0, hi] (default: MAX_AXIS, for axis limits)."""
+    return _number(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
 
 
 #: ``--resolution``: samples along an axis, a whole number in [2, 5000].
@@ -206,7 +194,7 @@ def check_kprime_crest(kprime: float, crest: float, option: str = "--kprime") ->
 
 
 def _load_type(name: str) -> ParamType:
-    return _Checked(name, lambda v: check_load_value(name, v), load_range(name))
+    return _number(name, lambda v: check_load_value(name, v), load_range(name))
 
 
 class Values(ParamType):
