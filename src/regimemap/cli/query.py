@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import json
 import math
 from typing import TYPE_CHECKING, Any
 
@@ -13,11 +12,10 @@ from ._common import Checked, gamma_option, json_option, kprime_option, load_opt
 from ._inputs import POINTS_FILE
 from ._main import RunError
 from ._plot_options import read_points_file
-from ._writing import output_path, report_written, writing
+from ._writing import output_path, print_report, report_written, writing
 
 if TYPE_CHECKING:
     from ..maps.points import DesignPoint
-    from ..maps.query import PointResult
 
 __all__ = ["classify_cmd"]
 
@@ -96,7 +94,10 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     except ValueError as exc:
         raise RunError(str(exc)) from None
     if points_file is None:
-        _echo_point(record.results[0], as_json)
+        from ..maps.record_tables import format_result, result_json
+
+        point = record.results[0]
+        print_report(as_json, lambda: format_result(point), lambda: result_json(point))
         return
     from ..maps.record_tables import results_text
 
@@ -144,16 +145,6 @@ def _one_point(gamma: float | None, kprime: float | None, k: float | None, mu: f
             "--k (>= 0) and --mu (>= 0), or --points FILE.csv")
     assert k is not None and mu is not None
     return DesignPoint(k, mu)
-
-
-def _echo_point(result: PointResult, as_json: bool) -> None:
-    """One point's answer as text (or JSON) on standard output."""
-    from ..maps.record_tables import format_result, result_json
-
-    if as_json:
-        click.echo(json.dumps(result_json(result), indent=2, allow_nan=False))
-    else:
-        click.echo(format_result(result))
 
 
 def _points_of_file(points_file: str, gamma: float | None, kprime: float | None
