@@ -54,7 +54,7 @@ def cli() -> None:
 
 
 def _register(group: click.Group) -> None:
-    """Compose the group explicitly, one ``add_command`` per command (as pyhf does).
+    """Compose the group explicitly, each command added by name (as pyhf does).
 
     Importing a command module is cheap: matplotlib and the library's heavy
     parts are imported inside the commands that use them.
@@ -72,17 +72,10 @@ def _register(group: click.Group) -> None:
     from .simulate import simulate_cmd
     from .study import study_cmd
 
-    for command in (plot_command, figure_command, figures_command, classify_cmd, export_cmd,
-                    atlas_cmd, animate_cmd):
+    for command in (plot_command, figure_command, figures_command, classify_cmd, export_cmd, atlas_cmd,
+                    animate_cmd, caisson_cmd, lifetime_cmd, study_cmd, climate_cmd, simulate_cmd, outcome_cmd,
+                    dynamics_figures_cmd, explore_cmd):
         group.add_command(command)
-    group.add_command(caisson_cmd)
-    group.add_command(lifetime_cmd)
-    group.add_command(study_cmd)
-    group.add_command(climate_cmd)
-    group.add_command(simulate_cmd)
-    group.add_command(outcome_cmd)
-    group.add_command(dynamics_figures_cmd)
-    group.add_command(explore_cmd)
 
 
 _register(cli)

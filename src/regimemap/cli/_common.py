@@ -7,7 +7,7 @@ process starts and ends (every error one line, Ctrl-C) :mod:`._main`'s."""
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING, Any, TypeVar, overload
 
 import click
@@ -36,11 +36,14 @@ else:
 
 __all__ = [
     "CONTEXT_SETTINGS",
+    "Checked",
     "LOAD_OPTIONS",
     "ParamType",
+    "Values",
     "check_kprime_crest",
     "check_load_value",
     "gamma_option",
+    "given_options",
     "kprime_option",
     "load_options",
     "load_range",
@@ -51,54 +54,51 @@ __all__ = [
 CONTEXT_SETTINGS = {"help_option_names": ["-h", "--help"], "max_content_width": 100}
 
 
+class Checked(ParamType):
+    """A value as typed, checked and converted by ``check``, whose ValueError is the usage error's
+    message (exit 2, after ``Invalid value for '--option':``); a value that is not text (a
+    default, or a value already converted) is kept.  ``name``: the kind the help shows."""
 
-
-class _Checked(ParamType):
-    """A click type that validates with one of regimemap.validation's checks."""
-
-    def __init__(self, name: str, check: Callable[[Any], Any], allowed: str = "a number"):
+    def __init__(self, name: str, check: Callable[[str], Any]):
         self.name = name
         self._check = check
-        self._allowed = allowed
 
     def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        number: Any = value
-        if isinstance(value, str):
-            try:
-                number = float(value)
-            except ValueError:
-                self.fail(f"{self.name} must be {self._allowed}, got {value!r} (not a number)",
-                          param, ctx)
+        if not isinstance(value, str):
+            return value
         try:
-            return self._check(number)
+            return self._check(value)
         except ValueError as exc:
-            # the message names the parameter, the range and the value as typed;
-            # click prefixes the option name
-            if isinstance(value, str):
-                self.fail(f"{self.name} must be {self._allowed}, got {value!r}", param, ctx)
             self.fail(str(exc), param, ctx)
 
 
-GAMMA = _Checked("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
-KPRIME = _Checked("kprime", check_kprime, "a number in [-1, 1]")
+def _number(name: str, check: Callable[[float], Any], allowed: str) -> Checked:
+    """A number as typed, checked by one of :mod:`regimemap.mechanics.validation`'s checks; the
+    message names the parameter, what it allows and the value as typed (click prefixes the
+    option's name)."""
+    def convert(text: str) -> Any:
+        try:
+            number = float(text)
+        except ValueError:
+            raise ValueError(f"{name} must be {allowed}, got {text!r} (not a number)") from None
+        try:
+            return check(number)
+        except ValueError:
+            raise ValueError(f"{name} must be {allowed}, got {text!r}") from None
+
+    return Checked(name, convert)
+
+
+GAMMA = _number("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
 
 
 def positive_float(name: str, hi: float = MAX_AXIS) -> ParamType:
     """A click type for a finite float in (0, hi] (default: MAX_AXIS, for axis limits)."""
-    return _Checked(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
+    return _number(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
 
 
-class _Resolution(ParamType):
-    name = "integer"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> int:
-        try:
-            return check_resolution("resolution", value)
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
-
-
-resolution_type = _Resolution()
+#: ``--resolution``: samples along an axis, a whole number in [2, 5000].
+resolution_type = Checked("integer", functools.partial(check_resolution, "resolution"))
 
 
 def gamma_option(**kwargs: Any) -> Callable[[FC], FC]:
@@ -194,25 +194,26 @@ def check_kprime_crest(kprime: float, crest: float, option: str = "--kprime") ->
 
 
 def _load_type(name: str) -> ParamType:
-    return _Checked(name, lambda v: check_load_value(name, v), load_range(name))
+    return _number(name, lambda v: check_load_value(name, v), load_range(name))
 
 
-class _LoadValues(ParamType):
-    """A list ``a,b,c`` or a range ``start:stop:count`` of one load (atlas, animate)."""
+class Values(ParamType):
+    """A list ``a,b,c`` or a range ``start:stop:count`` of at most ``max_count`` numbers, each
+    checked by ``check`` (atlas, animate, outcome: :func:`regimemap.maps.sweeps.parse_values`)."""
 
-    def __init__(self, name: str, max_count: int):
+    def __init__(self, name: str, check: Callable[[float], float], max_count: int):
         self.name = f"{name}-list"
         self._what = name
+        self._check = check
         self._max = max_count
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
+    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
         if isinstance(value, list):
             return value
         from ..maps.sweeps import parse_values
 
         try:
-            return parse_values(str(value), self._what, lambda v: check_load_value(self._what, v),
-                                self._max)
+            return parse_values(str(value), self._what, self._check, self._max)
         except ValueError as exc:
             self.fail(str(exc), param, ctx)
 
@@ -255,9 +256,83 @@ def load_options(f: Callable[..., Any] | None = None, *, sweep: int | None = Non
 
     out: Callable[..., Any] = wrapper
     for name, option, metavar, text in reversed(LOAD_OPTIONS):
-        kind: ParamType = _load_type(name) if sweep is None else _LoadValues(name, sweep)
+        check = functools.partial(check_load_value, name)
+        kind = _load_type(name) if sweep is None else Values(name, check, sweep)
         if sweep is not None:
             metavar, text = "LIST", text + " A list a,b,c or a range start:stop:count sweeps it."
         out = click.option(option, name, type=kind, default=None, metavar=metavar,
                            help=text)(out)
     return out
+
+
+# -- the options several commands take, each declared once -------------------------------------
+
+#: ``--json`` of the commands that print one report.
+JSON_HELP = "Print one JSON object instead of text."
+#: ``--quiet`` of the commands with a progress bar and notes.
+QUIET_HELP = "No progress bar and no notes on standard error."
+
+
+def option_group(*options: Callable[[FC], FC]) -> Callable[[FC], FC]:
+    """The options as one decorator, listed in ``--help`` in the order given."""
+    def decorate(f: FC) -> FC:
+        for option in reversed(options):
+            f = option(f)
+        return f
+
+    return decorate
+
+
+def json_option(help: str = JSON_HELP) -> Callable[[FC], FC]:
+    """``--json``, passed to the command as ``as_json``."""
+    return click.option("--json", "as_json", is_flag=True, help=help)
+
+
+def quiet_option(help: str = QUIET_HELP) -> Callable[[FC], FC]:
+    """``--quiet`` / ``-q``: no progress bar (and, as ``help`` says, no notes)."""
+    return click.option("--quiet", "-q", is_flag=True, help=help)
+
+
+def jobs_option(help: str) -> Callable[[FC], FC]:
+    """``--jobs`` / ``-j N``: worker processes, 1 to 256 (default None: one per core)."""
+    return click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N", help=help)
+
+
+def outputs_option(help: str, **kwargs: Any) -> Callable[[FC], FC]:
+    """``-o`` / ``--output FILE``, repeatable, passed to the command as ``outputs``."""
+    return click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE",
+                        multiple=True, help=help, **kwargs)
+
+
+def output_option(help: str, metavar: str = "FILE", **kwargs: Any) -> Callable[[FC], FC]:
+    """``-o`` / ``--output FILE``: one file (not a folder), passed to the command as ``output``."""
+    return click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar=metavar,
+                        help=help, **kwargs)
+
+
+def view_option(help: str) -> Callable[[FC], FC]:
+    """``--view designer|report`` (default designer): the map's automatic view."""
+    return click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
+                        show_default=True, help=help)
+
+
+def axis_options(k_help: str, mu_help: str, *, metavars: bool = True) -> Callable[[FC], FC]:
+    """``--k-max K`` and ``--mu-max MU``: the ends of the map's axes (default None: automatic).
+
+    Without ``metavars`` (``plot``) the values are shown and named as the options are
+    (``K-MAX``, ``k-max must be ...``).
+    """
+    return option_group(*(
+        click.option(f"--{axis}-max", type=positive_float(f"{axis}{'_' if metavars else '-'}max"),
+                     default=None, metavar=axis.upper() if metavars else None, help=text)
+        for axis, text in (("k", k_help), ("mu", mu_help))))
+
+
+def given_options(names: Iterable[str]) -> list[str]:
+    """The options among the parameters ``names`` of the running command that the command line
+    (or the environment) gave, as flags (``--half-width``), in the order of ``names``."""
+    from click.core import ParameterSource
+
+    ctx = click.get_current_context()
+    return [f"--{name.replace('_', '-')}" for name in names
+            if ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]

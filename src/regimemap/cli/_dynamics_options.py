@@ -5,7 +5,7 @@ and :class:`~regimemap.motion.file.OptionError` as click's usage errors."""
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import click
@@ -13,39 +13,32 @@ import click
 from ..dynamics.limits import INPUT_LIMITS, MAX_AXIS_VALUES, check_input
 from ..dynamics.pulses import SHAPES
 from ..motion.file import OptionError
-from ._common import ParamType, gamma_option, kprime_option
-from ._writing import checked_format, echo_notices, output_path
-from .atlas import Values
+from ._common import Checked, ParamType, Values, gamma_option, kprime_option
+from ._writing import echo_notices
 
 __all__ = [
-    "InputNumber",
+    "input_number",
     "values_type",
     "input_option",
     "block_options",
     "min_rotation_option",
-    "check_output_file",
     "option_errors",
 ]
 
-class InputNumber(ParamType):
-    """One number in the range of an input of :data:`regimemap.dynamics.limits.INPUT_LIMITS`."""
+def input_number(what: str) -> ParamType:
+    """One number in the range of input ``what`` of :data:`regimemap.dynamics.limits.INPUT_LIMITS`."""
+    lim = INPUT_LIMITS[what]
 
-    name = "number"
-
-    def __init__(self, what: str):
-        self.what = what
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
-        if isinstance(value, float):
-            return value
-        lim = INPUT_LIMITS[self.what]
+    def check(text: str) -> float:
         try:
-            v = float(str(value).strip())
+            v = float(text.strip())
         except ValueError:
-            self.fail(f"{self.what} must be {lim.text}, got {value!r} (not a number)", param, ctx)
+            raise ValueError(f"{what} must be {lim.text}, got {text!r} (not a number)") from None
         if not lim.contains(v):
-            self.fail(f"{self.what} must be {lim.text}, got {value!r}", param, ctx)
+            raise ValueError(f"{what} must be {lim.text}, got {text!r}")
         return v + 0.0
+
+    return Checked("number", check)
 
 
 def values_type(what: str) -> ParamType:
@@ -82,7 +75,7 @@ def input_option(name: str, swept: bool, metavar: str, default: Any = None, requ
                  extra: str = "") -> Callable[[Any], Any]:
     """``--name`` of input ``name``: one number, or (``swept``) a list or range of them."""
     flag = "--" + name.replace("_", "-")
-    typ = values_type(name) if swept else InputNumber(name)
+    typ = values_type(name) if swept else input_number(name)
     text = _HELP[name] + (extra if swept else "")
     return click.option(flag, name, type=typ, default=default, required=required,
                         metavar=("LIST" if swept else metavar), help=text)
@@ -126,22 +119,11 @@ def min_rotation_option() -> Callable[[Any], Any]:
     """``--min-rotation ANGLE`` (degrees, default 0): rocking counts only above it (``simulate``
     and ``outcome`` share this one definition; the library takes radians)."""
     return click.option(
-        "--min-rotation", "min_rotation", type=InputNumber("min_rotation"), default=0.0, show_default=True,
+        "--min-rotation", "min_rotation", type=input_number("min_rotation"), default=0.0, show_default=True,
         metavar="ANGLE",
         help="Count rocking only if the largest |theta| exceeds ANGLE (degrees, 0 to 90): a run "
              "that rocked less is 'slide only' (if it slid) or 'rest'.  Default 0: every rocking "
              "phase counts, however small.")
-
-
-def check_output_file(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param: str) -> str:
-    """The format of output ``path`` for ``record`` (a key of :data:`regimemap.io.formats.RECORDS`,
-    or its parts: what the file holds and its suffixes), its folder writable.
-
-    A usage error naming ``param`` otherwise (:func:`~regimemap.cli._writing.checked_format`).
-    """
-    fmt = checked_format(path, record, f"'{param}'")
-    output_path(path, param)
-    return fmt
 
 
 @contextlib.contextmanager

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ._common import ParamType
+from ._main import refusing
 
 if TYPE_CHECKING:
     from ..caisson.file import Design
@@ -84,7 +85,5 @@ def read_design_file(path: str, param_hint: str) -> Design:
     naming the argument ``param_hint`` (``"'DESIGN.toml'"``, ``"'--design'"``)."""
     from ..caisson.file import DesignFileError, read_design
 
-    try:
+    with refusing(param_hint, DesignFileError):
         return read_design(path)
-    except DesignFileError as exc:
-        raise click.BadParameter(str(exc), param_hint=param_hint) from None

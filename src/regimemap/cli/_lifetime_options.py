@@ -16,28 +16,9 @@ from typing import Any
 import click
 
 from ..io.formats import FIGURES
-from ._common import ParamType
+from ._common import Checked, jobs_option, json_option, option_group, outputs_option, quiet_option
 
 __all__ = ["chart_options", "lifetime_options", "report_options", "run_options"]
-
-Decorator = Callable[[Callable[..., Any]], Callable[..., Any]]
-
-
-class _Checked(ParamType):
-    """A value checked by a function of :mod:`regimemap.io` (its ValueError is the message)."""
-
-    def __init__(self, name: str, check: Callable[[str], Any]):
-        self.name = name  # "integer", "number", "text": the kinds the tests know
-        self._check = check
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        if not isinstance(value, str):
-            return value
-        try:
-            return self._check(value)
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
-
 
 def _file_key(key: str) -> Callable[[str], Any]:
     def check(text: str) -> Any:
@@ -58,56 +39,44 @@ def _option_check(name: str) -> Callable[[str], Any]:
     return check
 
 
-def _group(*options: Decorator) -> Decorator:
-    """The options as one decorator, listed in ``--help`` in the order given."""
-    def decorate(f: Callable[..., Any]) -> Callable[..., Any]:
-        for option in reversed(options):
-            f = option(f)
-        return f
-
-    return decorate
-
-
-lifetime_options = _group(
-    click.option("--trials", type=_Checked("integer", _file_key("trials")), default=None, metavar="N",
+lifetime_options = option_group(
+    click.option("--trials", type=Checked("integer", _file_key("trials")), default=None, metavar="N",
                  help="Lifetimes to simulate, 1 to 10000000 (default: [lifetime] trials, or 5000)."),
-    click.option("--seed", type=_Checked("integer", _file_key("seed")), default=None, metavar="S",
+    click.option("--seed", type=Checked("integer", _file_key("seed")), default=None, metavar="S",
                  help="Root seed, a whole number >= 0: the same seed gives the same numbers, bit for "
                       "bit on one machine, to 1e-12 on another CPU (default: [lifetime] seed, or a "
                       "fresh one, reported)."),
-    click.option("--years", type=_Checked("integer", _file_key("years")), default=None, metavar="Y",
+    click.option("--years", type=Checked("integer", _file_key("years")), default=None, metavar="Y",
                  help="Design life in years, 1 to 1000 (default: [lifetime] years, or 50)."))
 
-chart_options = _group(
-    click.option("--width", "widths", type=_Checked("text", _option_check("parse_widths")), default=None,
+chart_options = option_group(
+    click.option("--width", "widths", type=Checked("text", _option_check("parse_widths")), default=None,
                  metavar="A:B:N",
                  help="A design chart instead: the expected sliding distance at N widths from A to B "
                       "metres (N >= 2), all on the same random numbers, with the width for --target and "
                       "the width of Goda's deterministic design (SF = 1.2 under the 50-year wave)."),
-    click.option("--target", type=_Checked("number", _option_check("check_target")), default=None,
+    click.option("--target", type=Checked("number", _option_check("check_target")), default=None,
                  metavar="ESD",
                  help="With --width: the tolerable expected sliding distance in metres, > 0 "
                       "(default: [lifetime] target, or 0.1, Goda & Takagi 2000)."),
-    click.option("--width-tolerance", "tolerance", type=_Checked("number", _option_check("check_tolerance")),
+    click.option("--width-tolerance", "tolerance", type=Checked("number", _option_check("check_tolerance")),
                  default=None, metavar="M",
                  help="With --width: bisect the width for --target to M metres, 0.001 to 10 "
                       "(default 0.05); its Monte Carlo interval is printed beside it."))
 
-report_options = _group(
-    click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text."),
-    click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-                 help=f"Output file (repeatable), written atomically: {FIGURES} draws the "
-                      "figure (with --width: the design chart), .csv or .npz writes every lifetime "
-                      "(with --width: .csv writes the chart's table)."))
+report_options = option_group(
+    json_option(),
+    outputs_option(f"Output file (repeatable), written atomically: {FIGURES} draws the figure (with "
+                   "--width: the design chart), .csv or .npz writes every lifetime (with --width: .csv "
+                   "writes the chart's table)."))
 
-run_options = _group(
-    click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
-                 help="Worker processes on this machine (default: one per core; 1: this process)."),
-    click.option("--chunk", type=_Checked("integer", _option_check("check_chunk")), default=None, metavar="N",
+run_options = option_group(
+    jobs_option("Worker processes on this machine (default: one per core; 1: this process)."),
+    click.option("--chunk", type=Checked("integer", _option_check("check_chunk")), default=None, metavar="N",
                  help="Lifetimes per unit of work (default 500); the numbers do not depend on it."),
-    click.option("--scheduler", type=_Checked("text", _option_check("check_scheduler")), default=None,
+    click.option("--scheduler", type=Checked("text", _option_check("check_scheduler")), default=None,
                  metavar="ADDRESS",
                  help="Run on an existing Dask cluster, e.g. tcp://host:8786 (needs the 'cluster' extra: "
                       "pip install 'regimemap[cluster]'); the numbers are those of this machine, bit for "
                       "bit when the workers' CPUs have its feature level (else to 1e-12)."),
-    click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error."))
+    quiet_option())

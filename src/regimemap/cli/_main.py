@@ -14,13 +14,24 @@ import click
 from ..process import INTERRUPTED, TERMINATED, exit_now, flush_on_exit
 from ._signals import EXIT_DEADLINE, Terminated, stop_signals
 
-__all__ = ["RunError", "gc_paused_at_start", "import_matplotlib", "run_main"]
+__all__ = ["RunError", "gc_paused_at_start", "import_matplotlib", "refusing", "run_main"]
 
 
 class RunError(click.ClickException):
     """A failure while running (exit code 1), printed as one line."""
 
     exit_code = 1
+
+
+@contextlib.contextmanager
+def refusing(param_hint: str, errors: type[Exception] | tuple[type[Exception], ...] = ValueError
+             ) -> Iterator[None]:
+    """An error of ``errors`` inside (a refused input) becomes a usage error (exit 2) naming
+    ``param_hint`` (``"'--points'"``), with the error's message."""
+    try:
+        yield
+    except errors as exc:
+        raise click.BadParameter(str(exc), param_hint=param_hint) from None
 
 
 def _one_line(text: str) -> str:

@@ -1,11 +1,10 @@
 """Warnings for valid but implausible design files (likely unit slips), and ``--strict``.
 
-The checks are :func:`regimemap.caisson.file_plausibility.implausible_notices`; here they
-become one warning line each on standard error, with the file's name
-(:func:`~regimemap.cli._writing.echo_notices`), or, with ``--strict``, a usage
-error (exit 2) naming the first.  :func:`caisson_record` is
-:func:`regimemap.caisson.run.run_caisson` with its warnings and failures
-turned into the command line's lines and exit statuses.
+The checks are :func:`regimemap.caisson.file_plausibility.implausible_notices` (run by
+:func:`regimemap.caisson.run.run_caisson`); :func:`caisson_record` turns them into one warning
+line each on standard error, with the file's name (:func:`~regimemap.cli._writing.echo_notices`),
+or, with ``--strict``, a usage error (exit 2) naming the first, and a caisson that cannot be
+analysed into the command line's one-line error.
 """
 
 from __future__ import annotations
@@ -22,9 +21,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from regimemap.caisson.file import Design
     from regimemap.caisson.run import CaissonRecord
     from regimemap.mechanics.notices import Notice
-    from regimemap.waves import CaissonAnalysis
 
-__all__ = ["STRICT_HELP", "STRICT_RECORD_HELP", "caisson_record", "check_plausible"]
+__all__ = ["STRICT_HELP", "STRICT_RECORD_HELP", "caisson_record"]
 
 STRICT_HELP = ("Refuse a design file whose values are valid but implausible for a breakwater "
                "(likely unit slips: a depth over 100 m, a section heavier than 30 kN/m^3 ...); "
@@ -40,21 +38,6 @@ def _refusal(notices: Sequence[Notice], source: str, param_hint: str) -> click.B
     what = "implausible values" if notices[0].code == "implausible-value" else "the record's warnings"
     return click.BadParameter(f"{source}: {notices[0].message}{more}; --strict refuses {what}",
                               param_hint=param_hint)
-
-
-def check_plausible(design: Design, analysis: CaissonAnalysis | None, strict: bool, source: str,
-                    param_hint: str = "'DESIGN.toml'") -> None:
-    """Warn about (or, with ``strict``, refuse) the implausible values of ``design``.
-
-    ``param_hint`` names the design file's argument or option in the usage error of
-    ``strict`` (``'DESIGN.toml'``, or ``'--design'`` for ``regimemap simulate``).
-    """
-    from ..caisson.file_plausibility import implausible_notices
-
-    found = implausible_notices(design, analysis)
-    if strict and found:
-        raise _refusal(found, source, param_hint)
-    echo_notices(found, source=source)
 
 
 def caisson_record(design: Design, source: str, *, strict: bool = False, sheet: bool = False,

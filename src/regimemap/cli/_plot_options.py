@@ -10,19 +10,22 @@ when an option needs them.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import click
 
-from ..drawing.save import DPI_RANGE
-from ..io.formats import FIGURE_FORMATS, kind_of, suffix_error, suffix_of
-from ._common import ParamType
+from ..drawing.save import DEFAULT_DPI, DPI_RANGE
+from ..io.formats import FIGURE_FORMATS, FIGURES, kind_of, suffix_error, suffix_of
+from ._common import Checked, ParamType, resolution_type
+from ._main import refusing
 from ._writing import output_path
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ..maps.file_points import DesignPoint
+    from click.decorators import FC
+
+    from ..maps.file_points import DesignPoint, PointsTable
 
 __all__ = [
     "FORMATS",
@@ -30,18 +33,27 @@ __all__ = [
     "Format",
     "FormatList",
     "Modes",
-    "PointSpec",
+    "POINT_SPEC",
     "valid_modes",
     "check_modes_on_map",
     "resolve_output",
     "read_points",
+    "read_points_file",
     "number_text",
+    "parse_formats",
+    "DEFAULT_SAMPLES",
+    "dpi_option",
+    "format_option",
+    "resolution_option",
 ]
 
 #: Output formats: the figure formats of the registry (:data:`regimemap.io.formats.FIGURE_FORMATS`).
 FORMATS = FIGURE_FORMATS
 
 _LO, _HI = DPI_RANGE
+
+#: Samples of k of a map drawn by ``plot`` and ``explore`` (``--resolution``).
+DEFAULT_SAMPLES = 801
 
 
 def number_text(x: float) -> str:
@@ -88,12 +100,21 @@ class FormatList(ParamType):
                 ) -> tuple[str, ...]:
         if isinstance(value, tuple):
             return value
-        items = [v.strip().lower().lstrip(".") for v in str(value).split(",") if v.strip()]
-        bad = [v for v in items if v not in FORMATS]
-        if not items or bad:
-            what = f"unknown format {bad[0]!r}" if bad else "no format given"
-            self.fail(f"{what}; use a comma-separated list of {', '.join(FORMATS)}", param, ctx)
-        return tuple(dict.fromkeys(items))
+        try:
+            return parse_formats(str(value))
+        except ValueError as exc:
+            self.fail(str(exc), param, ctx)
+
+
+def parse_formats(text: str) -> tuple[str, ...]:
+    """The figure formats of a comma-separated list, each once, in the order given (case and a
+    leading dot ignored); ValueError for none or an unknown one."""
+    items = [v.strip().lower().lstrip(".") for v in text.split(",") if v.strip()]
+    bad = [v for v in items if v not in FORMATS]
+    if not items or bad:
+        what = f"unknown format {bad[0]!r}" if bad else "no format given"
+        raise ValueError(f"{what}; use a comma-separated list of {', '.join(FORMATS)}")
+    return tuple(dict.fromkeys(items))
 
 
 def valid_modes(loaded: bool | None = None) -> str:
@@ -158,20 +179,32 @@ def check_modes_on_map(modes: tuple[Any, ...] | None, loaded: bool) -> tuple[Any
     return modes
 
 
-class PointSpec(ParamType):
-    """``--point K,MU[:NAME]``: one design point (:func:`regimemap.maps.file_points.parse_point_spec`)."""
+def _point(text: str) -> DesignPoint:
+    from ..maps.file_points import parse_point_spec
 
-    name = "K,MU[:NAME]"
+    return parse_point_spec(text)
 
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        from ..maps.file_points import DesignPoint, parse_point_spec
 
-        if isinstance(value, DesignPoint):
-            return value
-        try:
-            return parse_point_spec(str(value))
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
+#: ``--point K,MU[:NAME]``: one design point (:func:`regimemap.maps.file_points.parse_point_spec`).
+POINT_SPEC = Checked("K,MU[:NAME]", _point)
+
+
+def dpi_option() -> Callable[[FC], FC]:
+    """``--dpi`` of the commands that draw the maps (``plot``, ``figure``, ``figures``)."""
+    return click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
+                        help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
+
+
+def format_option() -> Callable[[FC], FC]:
+    """``--format`` of one figure (``plot``, ``figure``), passed to the command as ``fmt``."""
+    return click.option("--format", "fmt", type=Format(), default=None,
+                        help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
+
+
+def resolution_option() -> Callable[[FC], FC]:
+    """``--resolution`` of a drawn map (``plot``, ``explore``)."""
+    return click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
+                        help="Samples of k for the region polygons and curves (2-5000).")
 
 
 # -- from the options to what is drawn -------------------------------------------------------
@@ -231,14 +264,19 @@ def read_points(files: Sequence[str], specs: Sequence[DesignPoint]) -> list[Desi
         Every point; :func:`regimemap.maps.run.run_map` keeps those of its block.
     """
     points = list(specs)
-    if files:
-        from ..maps.file_points import read_points_table  # imports csv: only when needed
     for f in files:
-        try:
-            table = read_points_table(f)
-        except ValueError as exc:
-            raise click.BadParameter(str(exc), param_hint="'--points'") from None
-        if table.note:
-            click.echo(f"regimemap: note: {f} is {table.note}; read as such", err=True)
-        points.extend(table.points)
+        points.extend(read_points_file(f).points)
     return points
+
+
+def read_points_file(path: str) -> PointsTable:
+    """The table of a ``--points`` CSV file (:func:`regimemap.maps.file_points.read_points_table`):
+    a file it refuses is a usage error naming ``--points``; a file read in another dialect is noted
+    on standard error."""
+    from ..maps.file_points import read_points_table  # imports csv: only when needed
+
+    with refusing("'--points'"):
+        table = read_points_table(path)
+    if table.note:
+        click.echo(f"regimemap: note: {path} is {table.note}; read as such", err=True)
+    return table

@@ -13,8 +13,12 @@ from __future__ import annotations
 import contextlib
 import sys
 from collections.abc import Callable, Iterator
+from contextlib import AbstractContextManager
 
-__all__ = ["DELAY", "progress_bar"]
+__all__ = ["DELAY", "Bars", "progress_bar", "progress_bars"]
+
+#: ``bars(total, what)``: the bar of one stage of a run (the ``progress`` of the library's runs).
+Bars = Callable[[int, str], AbstractContextManager[Callable[[int], None]]]
 
 #: Seconds a run must last before its bar is drawn.
 DELAY = 1.0
@@ -72,3 +76,12 @@ def progress_bar(total: int | None, description: str, quiet: bool = False, *,
         yield step
     finally:
         bar.close()
+
+
+def progress_bars(quiet: bool, unit: str, prefix: str = "") -> Bars:
+    """``bars(total, what)``: a :func:`progress_bar` of ``unit`` for each stage ``what`` of a run,
+    described ``prefix + what`` (none with ``quiet`` or off a terminal)."""
+    def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
+        return progress_bar(total, f"{prefix}{what}", quiet, unit=unit)
+
+    return bars

@@ -6,23 +6,25 @@ figure drawn once, the path of each file written, and the one printer of the not
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import click
 
 from ..io.formats import SuffixError, format_for, suffix_of
-from ._main import RunError, import_matplotlib
+from ._main import RunError, import_matplotlib, refusing
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
     from ..mechanics.notices import Notice
 
-__all__ = ["checked_format", "distinct_files", "echo_notices", "file_suffix", "output_dir", "output_path",
-           "report_written", "write_files", "writing"]
+__all__ = ["checked_format", "checked_output", "distinct_files", "echo_notes", "echo_notices",
+           "figure_output", "file_suffix", "output_dir", "output_path", "print_report", "report_written",
+           "write_figure", "write_files", "writing"]
 
 
 @contextlib.contextmanager
@@ -59,10 +61,17 @@ def checked_format(path: str, record: str | Sequence[tuple[str, Sequence[str]]],
     """The format of output ``path`` for ``record`` (:func:`regimemap.io.formats.format_for`);
     a suffix it is not written in is a usage error (exit 2) naming ``param_hint``
     (``"'--output'"``), worded by :func:`regimemap.io.formats.suffix_error`."""
-    try:
+    with refusing(param_hint, SuffixError):
         return format_for(path, record)
-    except SuffixError as exc:
-        raise click.BadParameter(str(exc), param_hint=param_hint) from None
+
+
+def checked_output(path: str, record: str | Sequence[tuple[str, Sequence[str]]], param: str = "--output",
+                   hint: str | None = None) -> str:
+    """The format of output ``path`` for ``record`` (:func:`checked_format`, a usage error naming
+    ``hint``, by default ``param``), its folder checked (:func:`output_path`, naming ``param``)."""
+    fmt = checked_format(path, record, hint or f"'{param}'")
+    output_path(path, param)
+    return fmt
 
 
 def distinct_files(paths: Sequence[str], param_hint: str) -> None:
@@ -96,11 +105,19 @@ def write_files(paths: Sequence[str], draw: Callable[[], Figure], *,
                 if fig is None:
                     import_matplotlib()
                     fig = draw()
-                from ..drawing.save import save_figure
-
-                save_figure(fig, path)
+                write_figure(fig, path)
         written.append(path)
     return written
+
+
+def write_figure(fig: Figure, path: str | os.PathLike[str], fmt: str | None = None,
+                 dpi: float | None = None) -> None:
+    """Save ``fig`` to ``path`` atomically (:func:`regimemap.drawing.save.save_figure`: the format
+    ``fmt``, else the suffix's); a file that cannot be written is :func:`writing`'s error."""
+    from ..drawing.save import save_figure
+
+    with writing(path):
+        save_figure(fig, path, fmt, dpi=dpi)
 
 
 def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
@@ -111,6 +128,17 @@ def output_path(path: str | os.PathLike[str], param: str = "--output") -> Path:
         return check_output_path(path, param)
     except ValueError as exc:
         raise click.BadParameter(str(exc).replace(f"{param} ", "", 1), param_hint=f"'{param}'") from None
+
+
+def figure_output(path: str) -> tuple[Path, str]:
+    """``-o`` of a command that writes one figure: the file, its folder checked (:func:`output_path`),
+    and its format from the suffix (:func:`regimemap.drawing.save.format_from_path`); a suffix of
+    no figure is a usage error naming ``'-o' / '--output'``."""
+    from ..drawing.save import format_from_path
+
+    with refusing("'-o' / '--output'"):
+        fmt = format_from_path(path)
+    return output_path(path, "--output"), fmt
 
 
 def report_written(path: str | os.PathLike[str], note: str | None = None) -> None:
@@ -136,6 +164,27 @@ def echo_notices(notices: Iterable[Notice], prefix: dict[str, str] | None = None
     where = f"{source}: " if source else ""
     for n in notices:
         click.echo(f"{(prefix or {}).get(n.code, 'regimemap: warning: ')}{where}{n.message}", err=True)
+
+
+def print_report(as_json: bool, text: Callable[[], str | None], data: Callable[[], dict[str, Any]],
+                 written: Sequence[str] = (), indent: int = 2) -> None:
+    """A command's report on standard output, the one way every command prints it: with
+    ``as_json`` one JSON object, ``data()`` (``indent``: its indent), else the text, ``text()``
+    (None: none), then the path of each file ``written`` (:func:`report_written`)."""
+    if as_json:
+        click.echo(json.dumps(data(), indent=indent, allow_nan=False))
+        return
+    report = text()
+    if report is not None:
+        click.echo(report)
+    for path in written:
+        report_written(path)
+
+
+def echo_notes(notes: Iterable[str], prefix: str = "regimemap: ") -> None:
+    """Notes on standard error, one line each: ``regimemap: NOTE`` (or ``prefix`` + ``NOTE``)."""
+    for note in notes:
+        click.echo(f"{prefix}{note}", err=True)
 
 
 def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False) -> Path:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import click
@@ -17,41 +16,21 @@ from ..drawing.limits import (
     MAX_PANELS,
 )
 from ..io.formats import FIGURES
-from ._common import LOAD_OPTIONS, ParamType, check_kprime_crest, gamma_option, load_options, positive_float
+from ..mechanics.validation import check_gamma
+from ._common import (
+    LOAD_OPTIONS,
+    Values,
+    axis_options,
+    check_kprime_crest,
+    gamma_option,
+    load_options,
+    output_option,
+    view_option,
+)
 from ._main import import_matplotlib
-from ._writing import checked_format, echo_notices, output_path, report_written, writing
+from ._writing import checked_output, echo_notices, figure_output, report_written, writing
 
 __all__ = ["atlas_cmd", "animate_cmd"]
-
-
-class _Values(ParamType):
-    """A list ``a,b,c`` or a range ``start:stop:count`` of checked numbers."""
-
-    def __init__(self, name: str, check: Callable[[float], float], max_count: int):
-        self.name = f"{name}-list"
-        self._what = name
-        self._check = check
-        self._max = max_count
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> list[float]:
-        if isinstance(value, list):
-            return value
-        from ..maps.sweeps import parse_values
-
-        try:
-            return parse_values(str(value), self._what, self._check, self._max)
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
-
-
-#: The list-or-range option type, shared with ``regimemap outcome`` (cli/dynamics.py).
-Values = _Values
-
-
-def _gamma_check(v: float) -> float:
-    from ..mechanics.validation import check_gamma
-
-    return check_gamma(v)
 
 
 def _kprime_check(v: float) -> float:
@@ -108,40 +87,23 @@ def _checked_blocks(gammas: list[float], sweep: str, values: list[float], fixed:
         raise click.UsageError(str(exc)) from None
 
 
-def _figure_output(path: str) -> str:
-    from ..drawing.save import format_from_path
-
-    try:
-        fmt = format_from_path(path)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
-    output_path(path, "--output")
-    return fmt
-
-
 @click.command("atlas", short_help="Small multiples of the map: rows gamma, columns k'.")
 @click.option("--gamma", "gammas", required=True, metavar="LIST",
-              type=_Values("gamma", _gamma_check, MAX_PANELS),
+              type=Values("gamma", check_gamma, MAX_PANELS),
               help="Aspect ratios H/B (> 0), one row each: 1,2,3 or start:stop:count.")
 @click.option("--kprime", "kprimes", required=True, metavar="LIST",
-              type=_Values("kprime", _kprime_check, MAX_PANELS),
+              type=Values("kprime", _kprime_check, MAX_PANELS),
               help="Force heights h/H in [-1, 1] (up to --crest), one column each: -0.6,0,0.4 "
                    "or -1:1:5.")
 @click.option("--share", type=click.Choice(["all", "row", "none"]), default="all",
               show_default=True,
               help="Axes shared by the whole figure, within each row, or not at all.")
-@click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
-              help="Right end of the k axis of every panel (default: automatic).")
-@click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
-              help="Top of the mu axis of every panel (default: automatic).")
-@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
-              show_default=True,
-              help="Each panel's own view: mu up to 1.2 (designer) or every characteristic "
-                   "point (report).")
+@axis_options("Right end of the k axis of every panel (default: automatic).",
+              "Top of the mu axis of every panel (default: automatic).")
+@view_option("Each panel's own view: mu up to 1.2 (designer) or every characteristic point (report).")
 @click.option("--dpi", type=click.IntRange(*ATLAS_DPI_RANGE), default=ATLAS_DPI, show_default=True,
               help="Resolution of PNG output.")
-@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
-              help=f"Output file: {FIGURES} (written atomically).")
+@output_option(f"Output file: {FIGURES} (written atomically).", required=True)
 @load_options(sweep=MAX_PANELS)
 def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: float | None,
               mu_max: float | None, view: str, dpi: int, output: str,
@@ -180,7 +142,7 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
             f"{len(gammas)} gamma x {len(values)} {sweep} = {n} panels exceed the limit of "
             f"{MAX_PANELS}; give fewer values to --gamma or {opt}")
     _checked_blocks(gammas, sweep, values, fixed)
-    fmt = _figure_output(output)
+    _, fmt = figure_output(output)
     import_matplotlib()
     from ..maps.figures.atlas import write_atlas
     from ..maps.run_atlas import run_atlas
@@ -197,23 +159,17 @@ def atlas_cmd(gammas: list[float], kprimes: list[float], share: str, k_max: floa
 @click.command("animate", short_help="A GIF of the map as k' sweeps a range.")
 @gamma_option()
 @click.option("--kprime", "kprimes", required=True, metavar="RANGE",
-              type=_Values("kprime", _kprime_check, MAX_FRAMES),
+              type=Values("kprime", _kprime_check, MAX_FRAMES),
               help="k' of the frames: start:stop:count (e.g. -1:1:41) or a list -1,-0.5,0; "
                    "in [-1, 1] (up to --crest).")
-@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
-              show_default=True,
-              help="The view of the frames: mu up to 1.2 (designer) or every characteristic "
-                   "point (report).")
+@view_option("The view of the frames: mu up to 1.2 (designer) or every characteristic point (report).")
 @click.option("--fps", type=click.FloatRange(*FPS_RANGE), default=8.0, show_default=True,
               help="Frames per second.")
 @click.option("--dpi", type=click.IntRange(*ANIMATION_DPI_RANGE), default=ANIMATION_DPI, show_default=True,
               help="Pixels per inch (the frame is 5.2 x 4.5 inches: 520 x 450 at 100).")
-@click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
-              help="Right end of the k axis (default: upper quartile of the frames' automatic views).")
-@click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
-              help="Top of the mu axis (default: upper quartile of the frames' automatic views).")
-@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE.gif",
-              help="Output GIF (written atomically).")
+@axis_options("Right end of the k axis (default: upper quartile of the frames' automatic views).",
+              "Top of the mu axis (default: upper quartile of the frames' automatic views).")
+@output_option("Output GIF (written atomically).", metavar="FILE.gif", required=True)
 @load_options(sweep=MAX_FRAMES)
 def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: int,
                 k_max: float | None, mu_max: float | None, output: str,
@@ -236,8 +192,7 @@ def animate_cmd(gamma: float, kprimes: list[float], view: str, fps: float, dpi: 
       regimemap animate --gamma 1.5 --kprime -0.8:0:17 --fps 4 --k-max 5 --mu-max 3 -o below.gif
       regimemap animate --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0:1:21 -o nu.gif
     """
-    checked_format(output, "animation", "'-o' / '--output'")
-    output_path(output, "--output")
+    checked_output(output, "animation", hint="'-o' / '--output'")
     kprimes = _up_to_crest(kprimes, loads)
     sweep, values, fixed = _sweep(kprimes, loads, "frames")
     _checked_blocks([gamma], sweep, values, fixed)

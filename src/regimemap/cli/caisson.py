@@ -2,20 +2,20 @@
 
 from __future__ import annotations
 
-import json
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import click
 
 from ..io.formats import FIGURES
 from ._check import check_option, exit_on_failure
+from ._common import json_option, output_option
 from ._inputs import DESIGN_FILE, read_design_file
 from ._main import import_matplotlib
 from ._plausible import STRICT_RECORD_HELP, caisson_record
-from ._writing import checked_format, output_path, report_written, writing
+from ._writing import checked_output, print_report, write_figure
 
 if TYPE_CHECKING:
-    from ..caisson.run import CaissonRecord
+    pass
 
 __all__ = ["caisson_cmd"]
 
@@ -27,9 +27,8 @@ __all__ = ["caisson_cmd"]
 @click.argument("design", required=False, type=DESIGN_FILE, metavar="DESIGN.toml")
 @click.option("--example", is_flag=True,
               help="Print the commented example design file (Goda's worked caisson) and exit.")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="SHEET.pdf",
-              help=f"Also write a one-page design sheet ({FIGURES}), atomically.")
+@json_option()
+@output_option(f"Also write a one-page design sheet ({FIGURES}), atomically.", metavar="SHEET.pdf")
 @click.option("--strict", is_flag=True, help=STRICT_RECORD_HELP)
 @check_option
 def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | None, strict: bool,
@@ -86,44 +85,14 @@ def caisson_cmd(design: str | None, example: bool, as_json: bool, output: str | 
     record = caisson_record(d, source, strict=strict, sheet=output is not None)
     if output is not None:  # the sheet first: a failure leaves no report half-printed
         from ..caisson.figures.page import caisson_sheet
-        from ..drawing.save import save_figure
 
-        with writing(output):
-            save_figure(caisson_sheet(record), output)
-    from ..caisson.record import caisson_json, format_caisson
+        write_figure(caisson_sheet(record), output)
+    from ..caisson.run_report import caisson_report_json, caisson_report_text
 
-    if as_json:
-        obj = caisson_json(record.report, source=source, required=record.required, checks=record.checks,
-                           lifetime=_lifetime_json(record))
-        if output is not None:  # the written file's path, inside the one JSON object
-            obj = {"sheet": output, **obj}
-        click.echo(json.dumps(obj, indent=2, allow_nan=False))
-    else:
-        click.echo(format_caisson(record.report, source=source, required=record.required,
-                                  checks=record.checks, written=d.written, lifetime=_lifetime_lines(record)))
-        if output is not None:
-            report_written(output)
+    # with --json the sheet's path is inside the one JSON object
+    print_report(as_json, lambda: caisson_report_text(record, source),
+                 lambda: caisson_report_json(record, source, output), [output] if output is not None else [])
     exit_on_failure(record.checks, check)
-
-
-def _lifetime_lines(record: CaissonRecord) -> list[str]:
-    """The sliding over the design life in the report's words (none without ``[lifetime]``)."""
-    from ..lifetime.record import lifetime_brief_lines
-
-    run = record.lifetime_run
-    if run is None:
-        return []
-    return lifetime_brief_lines(run.result, run.model, run.band, run.wave_record)
-
-
-def _lifetime_json(record: CaissonRecord) -> dict[str, Any] | None:
-    """The sliding over the design life for the JSON (None without ``[lifetime]``)."""
-    from ..lifetime.record import lifetime_brief_json
-
-    run = record.lifetime_run
-    if run is None:
-        return None
-    return lifetime_brief_json(run.result, run.model, run.band, run.wave_record)
 
 
 def _print_example(design: str | None, as_json: bool, output: str | None) -> None:
@@ -142,6 +111,5 @@ def _check_arguments(design: str | None, output: str | None) -> str:
         raise click.UsageError("missing DESIGN.toml (a design file; `regimemap caisson --example` "
                                "prints one)", ctx=click.get_current_context())
     if output is not None:
-        checked_format(output, "design sheet", "'--output'")
-        output_path(output, "--output")
+        checked_output(output, "design sheet")
     return design

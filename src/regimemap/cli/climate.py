@@ -7,17 +7,18 @@ record: the report (:mod:`regimemap.climate.record`) and the figures
 
 from __future__ import annotations
 
-import json
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import click
 
+from ..climate.run_options import return_periods_option, threshold_option
 from ..io.formats import FIGURES
 from ._check import refuse_notices
-from ._common import ParamType
+from ._common import Checked, json_option, outputs_option
 from ._inputs import RECORD_FILE
-from ._writing import checked_format, distinct_files, echo_notices, output_path, report_written, write_files
+from ._main import refusing
+from ._writing import checked_output, distinct_files, echo_notices, print_report, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -28,48 +29,6 @@ if TYPE_CHECKING:
 
 __all__ = ["climate_cmd"]
 
-#: The option of each field of ClimateOptions that an analysis's error may blame.
-_OPTIONS = {"threshold": "--threshold", "coverage": "--coverage", "return_periods": "--return-periods"}
-#: The option that names each column of a record.
-_COLUMNS = {"time": "--time", "significant wave height": "--hs", "period": "--period"}
-
-
-class _Threshold(ParamType):
-    name = "threshold"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        if not isinstance(value, str):
-            return value
-        from ..climate.peaks import parse_threshold
-        from ..climate.wave_record import HS_MAX
-
-        try:
-            kind, u = parse_threshold(value)
-        except ValueError as exc:
-            self.fail(str(exc), param, ctx)
-        if kind == "value" and u > HS_MAX:  # a bare number is metres: 99.5 is above any sea state
-            hint = (f"did you mean {value.strip()}%? (a quantile of the heights is written with %)"
-                    if u < 100.0 else "give a height in metres or a quantile such as 99.5%")
-            self.fail(f"threshold {u:g} m is above any sea state (Hs at most {HS_MAX:g} m); {hint}",
-                      param, ctx)
-        return kind, u
-
-
-class _Periods(ParamType):
-    name = "periods"
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> Any:
-        if not isinstance(value, str):
-            return value
-        try:
-            out = tuple(float(v) for v in value.split(","))
-        except ValueError:
-            self.fail(f"return periods must be numbers of years > 1, comma-separated, got {value!r}",
-                      param, ctx)
-        if not out or any(not (1.0 < v <= 1e5) for v in out):
-            self.fail(f"return periods must be numbers of years in (1, 100000], got {value!r}", param, ctx)
-        return out
-
 
 def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
     """The ``-o`` and ``--diagnostics`` files, checked before any work; an error names the option
@@ -78,15 +37,15 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
     every += [(diagnostics, "--diagnostics")] if diagnostics else []
     distinct_files([path for path, _ in every], "'-o' / '--diagnostics'")
     for path, option in every:
-        checked_format(path, "climate figures", f"'{option}'")
-        output_path(path, option)
+        checked_output(path, "climate figures", option)
 
 
 @click.command("climate", short_help="Return values of Hs with confidence bands from a wave record.")
 @click.argument("record", type=RECORD_FILE, metavar="RECORD")
 @click.option("--method", type=click.Choice(["pot", "annual-maxima"]), default="pot", show_default=True,
               help="Peaks over a threshold (storms) or the maxima of the calendar years.")
-@click.option("--threshold", type=_Threshold(), default="99.5%", show_default=True, metavar="U",
+@click.option("--threshold", type=Checked("threshold", threshold_option), default="99.5%", show_default=True,
+              metavar="U",
               help="Storm threshold: a height in metres, or a quantile of the heights such as 99.5%.")
 @click.option("--gap", "gap_hours", type=click.FloatRange(min=0.0, min_open=True, max=8760.0), default=48.0,
               show_default=True, metavar="HOURS",
@@ -99,7 +58,8 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--coverage", type=click.FloatRange(min=0.0, min_open=True, max=1.0), default=0.8,
               show_default=True, metavar="SHARE",
               help="Least share of a calendar year's hours observed for its annual maximum, (0, 1].")
-@click.option("--return-periods", type=_Periods(), default="10,50,100", show_default=True, metavar="R,R",
+@click.option("--return-periods", type=Checked("periods", return_periods_option), default="10,50,100",
+              show_default=True, metavar="R,R",
               help="Return periods in years (> 1), comma-separated.")
 @click.option("--confidence", type=click.FloatRange(min=0.5, max=0.999), default=0.9, show_default=True,
               metavar="LEVEL", help="Level of the intervals, 0.5 to 0.999.")
@@ -120,10 +80,9 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--period", "period_col", default=None, metavar="NAME",
               help="The period column (NDBC: DPD, the default, or APD).")
 @click.option("--drop-spikes", is_flag=True, help="Remove the isolated spikes (else flagged and kept).")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-              help=f"Figure (repeatable; {FIGURES}): the record, the return levels with the "
-                   "band and the observations, the QQ plot.")
+@json_option()
+@outputs_option(f"Figure (repeatable; {FIGURES}): the record, the return levels with the band and the "
+                "observations, the QQ plot.")
 @click.option("--diagnostics", type=click.Path(dir_okay=False), default=None, metavar="FILE",
               help="Threshold diagnostics figure: mean residual life and parameter stability.")
 @click.option("--strict", is_flag=True, help="Quality-control and fit warnings are errors (exit 2).")
@@ -165,10 +124,8 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
                              distribution=distribution, shape=shape, coverage=coverage,
                              return_periods=return_periods, confidence=confidence, interval=interval,
                              replicates=replicates, seed=seed)
-    try:
+    with refusing("'--distribution'"):
         options.check()
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--distribution'") from None
     result = _run(record, options, time_col, hs_col, period_col, drop_spikes, diagnostics is not None)
     if strict:
         refuse_notices(result.notices, ("record-quality", "fit"),
@@ -180,35 +137,21 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
         found, threshold_used, moved = result.diagnostics, result.result.fit.threshold, result.sensitivity
         written += write_files([diagnostics],
                                lambda: _diagnostics_figure(found, threshold_used, title, moved))
-    if as_json:
-        click.echo(json.dumps(result.report_json(written), indent=2, allow_nan=False))
-        return
-    click.echo(result.report_text())
-    for path in written:
-        report_written(path)
+    print_report(as_json, result.report_text, lambda: result.report_json(written), written)
 
 
 def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,
          period_col: str | None, drop_spikes: bool, diagnostics: bool) -> ClimateRecord:
     """The workflow's call: an unreadable record or an impossible analysis is a usage error naming the
-    record and the option it blames (:func:`regimemap.lifetime.file_record.analysis_fault`), or RECORD."""
-    from ..climate.file import RecordError
+    record and the option it blames (:func:`regimemap.climate.run_options.blamed_option`), or RECORD."""
     from ..climate.run import run_climate
-    from ..lifetime.file_record import analysis_fault
+    from ..climate.run_options import blamed_option
 
     try:
         return run_climate(record, options, time=time_col, hs=hs_col, period=period_col,
                            drop_spikes=drop_spikes, diagnostics=diagnostics)
     except ValueError as exc:
-        message = str(exc)
-        if not message.startswith(record):
-            message = f"{record}: {message}"
-        if isinstance(exc, RecordError):  # a column named by --time, --hs or --period that is not there
-            given = {"time": time_col, "significant wave height": hs_col, "period": period_col}
-            option = next((_COLUMNS[what] for what, col in given.items()
-                           if col is not None and f" for the {what} (columns: " in message), "RECORD")
-        else:
-            option = _OPTIONS.get(analysis_fault(str(exc)) or "", "RECORD")
+        message, option = blamed_option(exc, record, time=time_col, hs=hs_col, period=period_col)
         raise click.BadParameter(message, param_hint=f"'{option}'") from None
 
 

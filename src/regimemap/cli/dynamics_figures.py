@@ -7,19 +7,21 @@ from the cache) and :func:`regimemap.motion.figures.presets.dynamics_figure` dra
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
-from contextlib import AbstractContextManager
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
 
 from ..io.formats import FIGURE_FORMATS
-from ._main import import_matplotlib
-from ._writing import output_dir, report_written, writing
+from ..motion.run_notes import dynamics_figure_note, dynamics_files_note
+from ._common import quiet_option
+from ._main import import_matplotlib, refusing
+from ._plot_options import parse_formats
+from ._progress import progress_bars
+from ._writing import echo_notes, output_dir, report_written, write_figure, writing
 
 if TYPE_CHECKING:  # pragma: no cover
-    from matplotlib.figure import Figure
+    pass
 
 __all__ = ["dynamics_figures_cmd"]
 
@@ -33,7 +35,7 @@ __all__ = ["dynamics_figures_cmd"]
               help="Keep the computed maps in DIR (created if missing) and reuse them while the "
                    "figures' definitions and regimemap.dynamics are unchanged.")
 @click.option("--list", "list_only", is_flag=True, help="List the figures; draw nothing.")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
+@quiet_option()
 def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_only: bool, quiet: bool) -> None:
     """Draw the figures of regimemap.dynamics (D.1, D.2, D.3) into a folder.
 
@@ -59,7 +61,8 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     if list_only:
         click.echo("\n".join(f"{f.id:4s} {f.caption}" for f in DYNAMICS_FIGURES.values()))
         return
-    fmts = _formats(formats)
+    with refusing("'--format'"):  # checked here, not by the option's type: --list lists whatever it says
+        fmts = parse_formats(formats)
     folder = output_dir(out_dir, "--out")
     if cache is not None and Path(cache).exists() and not Path(cache).is_dir():
         raise click.BadParameter(f"{cache!r} is a file, not a folder", param_hint="'--cache'")
@@ -69,43 +72,14 @@ def dynamics_figures_cmd(out_dir: str, formats: str, cache: str | None, list_onl
     for f in DYNAMICS_FIGURES.values():
         t0 = time.perf_counter()
         with writing(cache, f"to the cache {cache}"):
-            record = run_dynamics_figure(f, cache=cache, bars=_bars(f.id, quiet))
-        _save(dynamics_figure(f, record.data), [folder / f.filename(fmt) for fmt in fmts])
-        how = ("from the cache" if record.from_cache else
-               f"grid {record.outcome.category.size} runs, boundaries {record.refine_runs} runs")
+            record = run_dynamics_figure(f, cache=cache, bars=progress_bars(quiet, " runs", f"{f.id} "))
+        fig = dynamics_figure(f, record.data)
+        for path in [folder / f.filename(fmt) for fmt in fmts]:
+            write_figure(fig, path)
+            report_written(path)
         if not quiet:
-            click.echo(f"{f.id}: {time.perf_counter() - t0:.1f} s ({how})", err=True)
+            echo_notes([dynamics_figure_note(record, time.perf_counter() - t0)], prefix="")
     if not quiet:
-        click.echo(f"regimemap: {len(fmts) * len(DYNAMICS_FIGURES)} files ({len(DYNAMICS_FIGURES)} figures x "
-                   f"{', '.join(fmts)}) in {folder}", err=True)
+        echo_notes([dynamics_files_note(len(DYNAMICS_FIGURES), fmts, folder)])
 
 
-def _formats(formats: str) -> list[str]:
-    """The formats of --format, each once, in the order given."""
-    fmts = [s.strip().lower().lstrip(".") for s in formats.split(",") if s.strip()]
-    bad = [f for f in fmts if f not in FIGURE_FORMATS]
-    if not fmts or bad:
-        what = f"unknown format {bad[0]!r}" if bad else "no format given"
-        raise click.BadParameter(f"{what}; use a comma-separated list of {', '.join(FIGURE_FORMATS)}",
-                                 param_hint="'--format'")
-    return list(dict.fromkeys(fmts))
-
-
-def _bars(fid: str, quiet: bool) -> Callable[[int, str], AbstractContextManager[Callable[[int], None]]]:
-    """The progress bars of the stages of figure ``fid``'s map."""
-    from ._progress import progress_bar
-
-    def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
-        return progress_bar(total, f"{fid} {what}", quiet, unit=" runs")
-
-    return bars
-
-
-def _save(fig: Figure, paths: list[Path]) -> None:
-    """Save ``fig`` to each path, its format from the suffix, and say so."""
-    from ..drawing.save import save_figure
-
-    for path in paths:
-        with writing(path):
-            save_figure(fig, path)
-        report_written(path)

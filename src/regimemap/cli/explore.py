@@ -16,11 +16,12 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import FIGURES
-from ._common import gamma_option, kprime_option, load_options, resolution_type
+from ._common import gamma_option, given_options, kprime_option, load_options
 from ._inputs import DESIGN_FILE, read_design_file
 from ._main import RunError, import_matplotlib
-from ._writing import output_path, report_written, writing
-from .plot import DEFAULT_SAMPLES, plot_stem
+from ._plot_options import DEFAULT_SAMPLES, resolution_option
+from ._writing import figure_output, report_written, writing
+from .plot import plot_stem
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -91,43 +92,10 @@ def _stem(ex: Explorer) -> str:
     return plot_stem(p.gamma, p.kprime, ex.loads)
 
 
-_EXPLORE_HELP = """Open the regime map in a window, live: sliders for GAMMA and KPRIME.
-
-Drag the sliders and the map is redrawn as regimemap plot draws it; tick
-'loads' for two more sliders, the buoyancy beta and the uplift ratio nu.
-Click on the map: the mode at that point, its margins and the physics at
-initiation (what regimemap classify prints) appear beside the map and on
-standard output.  'Save' writes the current view exactly as regimemap plot
-would (the same bytes) to regime-g<GAMMA>-kp<KPRIME>.png in the current
-folder and prints its path.
-
---design FILE.toml starts at a caisson's design wave (`regimemap caisson
---example` prints a design file): its loaded block (gamma, k', buoyancy,
-uplift ratio and arm, gyration, crest) and the point (k, mu) of the design
-wave marked, as `regimemap caisson` computes them; the file gives the block,
-so --gamma, --kprime and the loads may not be given too.
-
-A window needs a display (and a GUI backend of matplotlib, e.g. TkAgg).
-Without one the command stops with exit status 1; -o FILE saves the first
-view without a window instead (for scripts and CI).  In Jupyter, use
-regimemap.cli.explore.open_explorer with %matplotlib widget (pip install
-'regimemap[notebook]').
-
-\b
-Examples:
-  regimemap explore
-  regimemap explore --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
-  regimemap explore --gamma 3 --kprime 0.4 -o start.png
-  regimemap explore --design goda.toml -o goda-map.png
-"""
-
-
-@click.command("explore", help=_EXPLORE_HELP,
-               short_help="The regime map, live: sliders for gamma and k', click for the physics.")
+@click.command("explore", short_help="The regime map, live: sliders for gamma and k', click for the physics.")
 @gamma_option(required=False, default=3.0, show_default=True)
 @kprime_option(required=False, default=0.4, show_default=True)
-@click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
-              help="Samples of k for the region polygons and curves (2-5000).")
+@resolution_option()
 @click.option("-o", "--output", metavar="FILE",
               help=f"Save the first view (as regimemap plot draws it; {FIGURES}) and "
                    "exit without opening a window.")
@@ -137,8 +105,37 @@ Examples:
 @load_options
 def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None, design: str | None,
                 loads: dict[str, Any]) -> None:
+    """Open the regime map in a window, live: sliders for GAMMA and KPRIME.
+
+    Drag the sliders and the map is redrawn as regimemap plot draws it; tick
+    'loads' for two more sliders, the buoyancy beta and the uplift ratio nu.
+    Click on the map: the mode at that point, its margins and the physics at
+    initiation (what regimemap classify prints) appear beside the map and on
+    standard output.  'Save' writes the current view exactly as regimemap plot
+    would (the same bytes) to regime-g<GAMMA>-kp<KPRIME>.png in the current
+    folder and prints its path.
+
+    --design FILE.toml starts at a caisson's design wave (`regimemap caisson
+    --example` prints a design file): its loaded block (gamma, k', buoyancy,
+    uplift ratio and arm, gyration, crest) and the point (k, mu) of the design
+    wave marked, as `regimemap caisson` computes them; the file gives the block,
+    so --gamma, --kprime and the loads may not be given too.
+
+    A window needs a display (and a GUI backend of matplotlib, e.g. TkAgg).
+    Without one the command stops with exit status 1; -o FILE saves the first
+    view without a window instead (for scripts and CI).  In Jupyter, use
+    regimemap.cli.explore.open_explorer with %matplotlib widget (pip install
+    'regimemap[notebook]').
+
+    \b
+    Examples:
+      regimemap explore
+      regimemap explore --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
+      regimemap explore --gamma 3 --kprime 0.4 -o start.png
+      regimemap explore --design goda.toml -o goda-map.png
+    """
     params, point = _start(gamma, kprime, loads, design)
-    path = _output_path(output)
+    path = None if output is None else figure_output(output)[0]
     import_matplotlib()
     if path is not None:
         ex = open_explorer(params, resolution=resolution, echo=None, window=False, point=point)
@@ -156,19 +153,6 @@ def explore_cmd(gamma: float, kprime: float, resolution: int, output: str | None
     ex = open_explorer(params, resolution=resolution, point=point)
     sys.stdout.flush()
     ex.show(f"regimemap explore ({Path(design).name if design is not None else _stem(ex)})")
-
-
-def _output_path(output: str | None) -> Path | None:
-    """``-o``: a file of a format ``plot`` writes, in a writable folder (None: a window)."""
-    from ..drawing.save import format_from_path
-
-    if output is None:
-        return None
-    try:
-        format_from_path(output)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
-    return output_path(output, "--output")
 
 
 def _start(gamma: float, kprime: float, loads: dict[str, Any], design: str | None
@@ -189,14 +173,9 @@ def _design_start(design: str, loads: dict[str, Any]) -> tuple[Parameters, Desig
     reports it; implausible values are warnings on standard error
     (:func:`regimemap.caisson.run.run_caisson`, as ``regimemap caisson`` runs it).
     """
-    from click.core import ParameterSource
-
     from ._plausible import caisson_record
 
-    ctx = click.get_current_context()
-    given = [f"--{n.replace('_', '-')}" for n in ("gamma", "kprime")
-             if ctx.get_parameter_source(n) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
-    given += [f"--{n.replace('_', '-')}" for n in loads]
+    given = given_options(("gamma", "kprime")) + [f"--{n.replace('_', '-')}" for n in loads]
     if given:
         raise click.UsageError(f"{', '.join(given)} and --design exclude each other: the design file "
                                "gives the block (change the design file, or give the block without --design)")

@@ -7,7 +7,16 @@ from typing import Any
 import click
 
 from ..io.formats import record_formats
-from ._common import gamma_option, kprime_option, load_options, positive_float, resolution_type
+from ._common import (
+    axis_options,
+    gamma_option,
+    kprime_option,
+    load_options,
+    output_option,
+    resolution_type,
+    view_option,
+)
+from ._main import refusing
 from ._writing import output_path, report_written, writing
 
 __all__ = ["export_cmd"]
@@ -16,19 +25,14 @@ __all__ = ["export_cmd"]
 @click.command("export", short_help="Write the map as a grid (.npz, .csv) or as vectors (.json).")
 @gamma_option()
 @kprime_option()
-@click.option("--k-max", type=positive_float("k_max"), default=None, metavar="K",
-              help="Right end of the k axis (default: automatic, as in 'plot').")
-@click.option("--mu-max", type=positive_float("mu_max"), default=None, metavar="MU",
-              help="Top of the mu axis (default: automatic, as in 'plot').")
+@axis_options("Right end of the k axis (default: automatic, as in 'plot').",
+              "Top of the mu axis (default: automatic, as in 'plot').")
 @click.option("--resolution", type=resolution_type, default=401, show_default=True,
               metavar="N", help="Grid samples along each axis for .npz/.csv (2 to 5000).")
-@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
-              show_default=True,
-              help="Default view: mu up to 1.2 (designer) or every characteristic point (report).")
+@view_option("Default view: mu up to 1.2 (designer) or every characteristic point (report).")
 @click.option("--format", "fmt", type=click.Choice(record_formats("map data"), case_sensitive=False),
               default=None, help="Format (default: from the suffix of -o).")
-@click.option("-o", "--output", required=True, type=click.Path(dir_okay=False), metavar="FILE",
-              help="Output file: .npz, .csv or .json (written atomically).")
+@output_option("Output file: .npz, .csv or .json (written atomically).", required=True)
 @load_options
 def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float | None,
                resolution: int, view: str, fmt: str | None, output: str,
@@ -63,10 +67,8 @@ def export_cmd(gamma: float, kprime: float, k_max: float | None, mu_max: float |
     from ..maps.record_export import export_map, format_of
     from ..mechanics.block import Parameters
 
-    try:
+    with refusing("'-o' / '--output'"):
         fmt = format_of(output, fmt)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'-o' / '--output'") from None
     output_path(output, "--output")
     p = Parameters(gamma, kprime, **loads)
     with writing(output):

@@ -9,20 +9,26 @@ the figure (:mod:`regimemap.lifetime.figures`), each file atomically.
 
 from __future__ import annotations
 
-import json
-from collections.abc import Callable
-from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING
 
 import click
 
-from ..io.formats import FIGURES, record_formats
+from ..io.formats import record_formats
+from ..lifetime.run_notes import output_refusal, run_notes
 from ._check import check_option, exit_on_failure, refuse_notices
 from ._inputs import DESIGN_FILE
 from ._lifetime_options import chart_options, lifetime_options, report_options, run_options
-from ._main import RunError
+from ._main import RunError, refusing
 from ._plausible import STRICT_RECORD_HELP
-from ._writing import checked_format, distinct_files, echo_notices, output_path, report_written, write_files
+from ._writing import (
+    checked_format,
+    distinct_files,
+    echo_notes,
+    echo_notices,
+    output_path,
+    print_report,
+    write_files,
+)
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -96,15 +102,10 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
                   scheduler=scheduler, quiet=quiet)
     refuse_notices(record.notices, "target-not-bracketed", "", "'--width'")
     if not quiet:
-        _note_run(record, widths)
+        echo_notes(run_notes(record))
     written = write_files(outputs, lambda: _figure(record, design),
                           data_formats=record_formats("lifetimes"), write_data=record.write_data)
-    if as_json:
-        click.echo(json.dumps(record.report_json(written), indent=2, allow_nan=False))
-    else:
-        click.echo(record.report_text())
-        for path in written:
-            report_written(path)
+    print_report(as_json, record.report_text, lambda: record.report_json(written), written)
     exit_on_failure(record.result.checks, check)
 
 
@@ -114,11 +115,9 @@ def _run(design: str, inputs: LifetimeDesign, widths: list[float] | None, target
     """The workflow's run with a progress bar; a run that cannot be made is a :class:`RunError`."""
     from ..lifetime import ClusterUnavailable
     from ..lifetime.run import run_chart, run_lifetime
-    from ._progress import progress_bar
+    from ._progress import progress_bars
 
-    def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
-        return progress_bar(total, what, quiet, unit=" lifetimes")
-
+    bars = progress_bars(quiet, " lifetimes")
     try:
         if widths is None:
             return run_lifetime(inputs, trials=trials, seed=seed, jobs=jobs, chunk=chunk, scheduler=scheduler,
@@ -150,11 +149,9 @@ def _check_outputs(outputs: tuple[str, ...], widths: list[float] | None) -> None
     """The ``-o`` files, checked before any work: distinct, of a known suffix, writable."""
     distinct_files(outputs, "'-o' / '--output'")
     for path in outputs:
-        kind = checked_format(path, "lifetime", "'--output'")
-        if kind == "npz" and widths is not None:
-            raise click.BadParameter(f"{path!r}: the lifetimes (.npz) are written for one width, not "
-                                     f"with --width (a chart is written as .csv, its table, or as {FIGURES})",
-                                     param_hint="'--output'")
+        refusal = output_refusal(path, checked_format(path, "lifetime", "'--output'"), widths is not None)
+        if refusal is not None:
+            raise click.BadParameter(refusal, param_hint="'--output'")
         output_path(path, "--output")
 
 
@@ -164,10 +161,8 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
     from ..caisson.file import DesignFileError
     from ..lifetime.run import RECORD_WARNINGS, read_lifetime_design
 
-    try:
+    with refusing("'DESIGN.toml'", DesignFileError):
         inputs = read_lifetime_design(design, years)
-    except DesignFileError as exc:
-        raise click.BadParameter(str(exc), param_hint="'DESIGN.toml'") from None
     if strict:
         refuse_notices(inputs.notices, "implausible-value", "--strict refuses implausible values",
                        "'DESIGN.toml'")
@@ -175,25 +170,6 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
                        "'DESIGN.toml'")
     echo_notices(inputs.notices)
     return inputs
-
-
-def _note_run(record: LifetimeRecord | ChartRecord, widths: list[float] | None) -> None:
-    """The notes on standard error: how many lifetimes, how long, where; the seed if none was given;
-    the climate band's run."""
-    n, p = record.trials, record.processes
-    where = (f"on the Dask cluster at {record.scheduler}" if record.scheduler is not None else
-             "in this process" if p == 1 else f"on {p} processes")
-    lives = f"{n} lifetime{'' if n == 1 else 's'}"
-    what = lives if widths is None else f"{len(widths)} widths x {lives}"
-    click.echo(f"regimemap: {what} of {record.model.years} years in {record.seconds:.1f} s {where}",
-               err=True)
-    if record.seed is None:
-        used = record.used_seed
-        click.echo(f"regimemap: no seed given: this run's seed is {used} (--seed {used} repeats it)",
-                   err=True)
-    if record.band is not None:
-        click.echo(f"regimemap: climate band: {record.band.replicates} replicate climates x {n} lifetimes "
-                   f"in {record.band_seconds or 0.0:.1f} s", err=True)
 
 
 def _figure(record: LifetimeRecord | ChartRecord, design: str) -> Figure:

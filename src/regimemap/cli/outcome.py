@@ -9,21 +9,20 @@ record's data through :mod:`regimemap.motion.record_outcome` or draws it with
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from contextlib import AbstractContextManager
 from typing import TYPE_CHECKING
 
 import click
 
 from ..io.formats import FIGURE_FORMATS, FIGURES, record_formats
+from ._common import outputs_option, quiet_option
 from ._dynamics_options import (
     block_options,
-    check_output_file,
     input_option,
     min_rotation_option,
     option_errors,
 )
-from ._writing import distinct_files, write_files
+from ._progress import progress_bars
+from ._writing import checked_output, distinct_files, write_files
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -43,15 +42,13 @@ _DATA_FORMATS = record_formats("outcome data")
 @click.option("--dimensionless", is_flag=True,
               help="Draw (and export) the axes as omega_p/p and k_peak/tan(alpha) (Makris & Roussos "
                    "2000), for a k_peak, duration or omega_p sweep.")
-@click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE",
-              multiple=True, required=True,
-              help=f"Output file (repeatable): {FIGURES} draws the map, .npz, .csv or .json "
-                   "writes its data (atomically; .json with the refined boundaries).")
+@outputs_option(f"Output file (repeatable): {FIGURES} draws the map, .npz, .csv or .json writes its data "
+                "(atomically; .json with the refined boundaries).", required=True)
 @min_rotation_option()
 @click.option("--no-refine", "no_refine", is_flag=True,
               help="Do not refine the boundaries between categories: draw the cells of the grid as "
                    "computed (a staircase at the grid's pitch), with no boundaries in .json.")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar and no notes on standard error.")
+@quiet_option()
 def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float] | None, mu: list[float],
                 pulse: str | None, k_peak: list[float] | None, duration: list[float] | None,
                 restitution: float | None, buoyancy: list[float] | None, uplift: list[float] | None,
@@ -93,6 +90,7 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     """
     from ..motion.file import map_options
     from ..motion.run_maps import run_outcome
+    from ..motion.run_notes import outcome_start_note
 
     values: dict[str, list[float] | None] = {
         "k_peak": k_peak, "duration": duration, "omega_p": omega_p, "mu": mu, "kprime": kprime,
@@ -105,10 +103,10 @@ def outcome_cmd(gamma: list[float], half_width: list[float], kprime: list[float]
     _check_outputs(outputs)
     with option_errors():
         opts.check_steps()
-    _note(quiet, f"simulating {opts.n_runs} runs ({len(opts.axis(0))} x {len(opts.axis(1))}) ...")
+    _note(quiet, outcome_start_note(opts))
     with option_errors():
         record = run_outcome(opts, restitution=restitution, min_rotation=min_rotation, refine=not no_refine,
-                             dimensionless=dimensionless, bars=_bars(quiet))
+                             dimensionless=dimensionless, bars=progress_bars(quiet, " runs"))
     from ..motion.record_outcome import outcome_summary
 
     _note(quiet, "\n".join(outcome_summary(record)))
@@ -122,21 +120,11 @@ def _note(quiet: bool, text: str) -> None:
         click.echo(text, err=True)
 
 
-def _bars(quiet: bool) -> Callable[[int, str], AbstractContextManager[Callable[[int], None]]]:
-    """The progress bars of the stages of the map (none with --quiet or off a terminal)."""
-    from ._progress import progress_bar
-
-    def bars(total: int, what: str) -> AbstractContextManager[Callable[[int], None]]:
-        return progress_bar(total, what, quiet, unit=" runs")
-
-    return bars
-
-
 def _check_outputs(outputs: tuple[str, ...]) -> None:
     """Each output file of a known format, each different and in a writable folder."""
     distinct_files(outputs, "'-o' / '--output'")
     for p in outputs:
-        check_output_file(p, (("an outcome map", FIGURE_FORMATS + _DATA_FORMATS),), "--output")
+        checked_output(p, (("an outcome map", FIGURE_FORMATS + _DATA_FORMATS),))
 
 
 def _write(record: OutcomeRecord, outputs: tuple[str, ...]) -> None:

@@ -6,29 +6,37 @@ fast); the commands import :mod:`regimemap.drawing` when they run.
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import click
 
-from ..drawing.save import DEFAULT_DPI, DPI_RANGE
-from ..io.formats import FIGURE_FORMATS, FIGURES
-from ._common import gamma_option, kprime_option, load_options, positive_float, resolution_type
+from ..io.formats import FIGURE_FORMATS
+from ._common import (
+    axis_options,
+    gamma_option,
+    jobs_option,
+    kprime_option,
+    load_options,
+    quiet_option,
+    view_option,
+)
 from ._inputs import POINTS_FILE
 from ._main import RunError, import_matplotlib
 from ._plot_options import (
+    DEFAULT_SAMPLES,
     FORMATS,
-    Dpi,
-    Format,
+    POINT_SPEC,
     FormatList,
     Modes,
-    PointSpec,
     check_modes_on_map,
+    dpi_option,
+    format_option,
     read_points,
+    resolution_option,
     resolve_output,
 )
 from ._plot_options import number_text as _num
-from ._writing import echo_notices, output_dir, report_written, writing
+from ._writing import echo_notices, output_dir, report_written, write_figure
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..maps.run import MapRecord
@@ -37,9 +45,6 @@ if TYPE_CHECKING:  # pragma: no cover
 __all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command", "figure_maps",
            "figures_command", "plot_command", "plot_stem"]
 
-_LO, _HI = DPI_RANGE
-
-DEFAULT_SAMPLES = 801
 #: The number of the report's model figure (repeated from regimemap.maps.figures.model).
 MODEL_ID = "2.1"
 
@@ -62,10 +67,6 @@ def plot_stem(gamma: float, kprime: float, loads: dict[str, Any] | None = None) 
     return f"regime-g{_num(gamma)}-kp{_num(kprime)}{extra}"
 
 
-def _check_dir(path: str, option: str) -> Path:
-    return output_dir(path, option, create=True)
-
-
 _PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
           (r"\nu", "nu"),
           ("$", ""), ("{", ""), ("}", ""))
@@ -78,61 +79,22 @@ def _plain(tex: str) -> str:
     return tex
 
 
-def _written(path: Path) -> None:
-    report_written(path)
-
-
 # -- plot ------------------------------------------------------------------------------------
 
-_PLOT_HELP = """Draw the regime map of a block for one GAMMA and KPRIME.
 
-Shades the region of each mode (rest RE, slide SL, rock RO, slide-rock SRO-,
-SRO+, SRO'-), draws the boundary curves mu*(k), mu**(k) and the report's
-lines with the named points (O, A, B', C, D ...), and writes PNG, SVG or PDF
-(from the suffix of -o, or --format).  The view shows the friction
-coefficients of real contacts, mu up to 1.2 (--view report: every
-characteristic point).  Without -o the file is
-regime-g<GAMMA>-kp<KPRIME>.<format> in the current folder, e.g.
-regime-g3-kp0.4.png.
-
-\b
-Examples:
-  regimemap plot --gamma 3 --kprime 0.4
-  regimemap plot --gamma 3 --kprime 0.4 -o map.svg
-  regimemap plot --gamma 3 --kprime -0.3 --format pdf -o figs/below
-  regimemap plot --gamma 3 --kprime 0.4 --point 0.45,0.6:caisson-A
-  regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
-  regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
-  regimemap plot --gamma 1 --kprime -0.99 --view report
-  regimemap plot --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
-
-With loads (--buoyancy, --uplift, --uplift-ratio, --uplift-arm, --gyration,
---crest) the map is that of the loaded block: lift-off (LO) appears, the
-title states the loads, and the default file name carries them.
-"""
-
-
-@click.command("plot", help=_PLOT_HELP, short_help="Draw the regime map of one gamma and kprime.")
+@click.command("plot", short_help="Draw the regime map of one gamma and kprime.")
 @gamma_option()
 @kprime_option()
 @click.option("-o", "--output", metavar="FILE",
               help=f"Output file; its suffix ({', '.join('.' + f for f in FIGURE_FORMATS)}) sets the format. "
                    "Default: regime-g<GAMMA>-kp<KPRIME>.<format>.")
-@click.option("--format", "fmt", type=Format(), default=None,
-              help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
-@click.option("--view", type=click.Choice(["designer", "report"]), default="designer",
-              show_default=True,
-              help="designer: mu up to 1.2 and k far enough to show every boundary that "
-                   "crosses that band, with arrows at the edge to the points outside; report: "
-                   "every characteristic point in view.")
-@click.option("--k-max", type=positive_float("k-max"), default=None,
-              help="Right end of the k axis (wins over --view).")
-@click.option("--mu-max", type=positive_float("mu-max"), default=None,
-              help="Top of the mu axis (wins over --view).")
-@click.option("--resolution", type=resolution_type, default=DEFAULT_SAMPLES, show_default=True,
-              help="Samples of k for the region polygons and curves (2-5000).")
-@click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
-              help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
+@format_option()
+@view_option("designer: mu up to 1.2 and k far enough to show every boundary that crosses that band, "
+             "with arrows at the edge to the points outside; report: every characteristic point in view.")
+@axis_options("Right end of the k axis (wins over --view).", "Top of the mu axis (wins over --view).",
+              metavars=False)
+@resolution_option()
+@dpi_option()
 @click.option("--title", default=None,
               help="Title above the map (mathtext allowed); '' for none. "
                    "Default: what is shown, the report's case, gamma and kprime.")
@@ -146,7 +108,7 @@ title states the loads, and the default file name carries them.
 @click.option("--raw", is_flag=True,
               help="Shade each mode's region as the report derives it, before Section 4.7 "
                    "resolves overlaps (regions may overlap; use with --modes).")
-@click.option("--point", "point_specs", type=PointSpec(), multiple=True,
+@click.option("--point", "point_specs", type=POINT_SPEC, multiple=True,
               help="Mark a design point K,MU or K,MU:NAME (repeatable).")
 @click.option("--points", "points_files", type=POINTS_FILE, multiple=True, metavar="FILE.csv",
               help="Mark design points from a CSV file with columns k,mu[,gamma,kprime,name] "
@@ -161,6 +123,32 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
                  modes: tuple[Any, ...] | None, raw: bool, point_specs: tuple[Any, ...],
                  points_files: tuple[str, ...], show_ambiguity: bool,
                  loads: dict[str, Any]) -> None:
+    """Draw the regime map of a block for one GAMMA and KPRIME.
+
+    Shades the region of each mode (rest RE, slide SL, rock RO, slide-rock SRO-,
+    SRO+, SRO'-), draws the boundary curves mu*(k), mu**(k) and the report's
+    lines with the named points (O, A, B', C, D ...), and writes PNG, SVG or PDF
+    (from the suffix of -o, or --format).  The view shows the friction
+    coefficients of real contacts, mu up to 1.2 (--view report: every
+    characteristic point).  Without -o the file is
+    regime-g<GAMMA>-kp<KPRIME>.<format> in the current folder, e.g.
+    regime-g3-kp0.4.png.
+
+    \b
+    Examples:
+      regimemap plot --gamma 3 --kprime 0.4
+      regimemap plot --gamma 3 --kprime 0.4 -o map.svg
+      regimemap plot --gamma 3 --kprime -0.3 --format pdf -o figs/below
+      regimemap plot --gamma 3 --kprime 0.4 --point 0.45,0.6:caisson-A
+      regimemap plot --gamma 3 --kprime 0.4 --points design.csv --k-max 2
+      regimemap plot --gamma 3 --kprime 0.4 --modes RO,SRO- --no-labels
+      regimemap plot --gamma 1 --kprime -0.99 --view report
+      regimemap plot --gamma 0.7 --kprime -0.02 --buoyancy 0.32 --uplift-ratio 0.52
+
+    With loads (--buoyancy, --uplift, --uplift-ratio, --uplift-arm, --gyration,
+    --crest) the map is that of the loaded block: lift-off (LO) appears, the
+    title states the loads, and the default file name carries them.
+    """
     from ..mechanics.block import Parameters
 
     path, fmt = resolve_output(output, fmt, plot_stem(gamma, kprime, loads))
@@ -168,7 +156,6 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     modes = check_modes_on_map(modes, params.loaded)
     points = read_points(points_files, point_specs)
     import_matplotlib()
-    from ..drawing.save import save_figure
     from ..maps.figures.figure import map_figure
     from ..maps.figures.mapplot import MapStyle
     from ..maps.run import run_map
@@ -179,41 +166,26 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
     echo_notices(record.notices)
     style = MapStyle(curves=not no_curves, labels=not no_labels, legend=not no_legend, title=title)
     fig, _, _ = map_figure(record, style=style, dpi=dpi)
-    with writing(path):
-        save_figure(fig, path, fmt, dpi=dpi)
-    _written(path)
+    write_figure(fig, path, fmt, dpi)
+    report_written(path)
 
 
 # -- figure / figures ------------------------------------------------------------------------
 
-_FIGURE_HELP = """Draw one figure of the report (e.g. 2.1, 3.9a, 4.7b).
-
-Fig. 2.1 is the model: the block of half width B and half height H
-(gamma = H/B), the force F = mgk at h = k'H above the centre of mass C,
-and the reactions of the base.
-
-Each figure uses parameters strictly inside its caption's case (see
-'regimemap figures --list').  Without -o the file is fig-<ID>.<format>.
-
-\b
-Examples:
-  regimemap figure 2.1
-  regimemap figure 3.9a
-  regimemap figure 4.7a -o fig47a.pdf
-  regimemap figure 3.11 --format svg --dpi 300
-"""
 
 
-def _preset_or_usage_error(fid: str) -> Any:
+def _figure_id(fid: str) -> str:
+    """The id of the report's figure ``fid`` as the report writes it; a usage error naming the
+    nearest ids when there is none."""
     from ..maps.figures.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
     from ..maps.figures.worked import WORKED
 
     if normalise_id(fid) == MODEL_ID:
-        return None
+        return MODEL_ID
     if fid.strip().upper() in WORKED:  # the worked figures of the loaded block: W.1, W.2 ...
-        return WORKED[fid.strip().upper()]
+        return WORKED[fid.strip().upper()].id
     try:
-        return get_preset(fid)
+        return get_preset(fid).id
     except KeyError:
         near = suggest_ids(fid)
         hint = f" Did you mean {' or '.join(near)}?" if near else ""
@@ -222,76 +194,81 @@ def _preset_or_usage_error(fid: str) -> Any:
             param_hint="'FIGURE_ID'") from None
 
 
-@click.command("figure", help=_FIGURE_HELP, short_help="Draw one figure of the report.")
+@click.command("figure", short_help="Draw one figure of the report.")
 @click.argument("figure_id", metavar="FIGURE_ID")
 @click.option("-o", "--output", metavar="FILE",
               help=f"Output file ({', '.join('.' + f for f in FIGURE_FORMATS)}); default fig-<ID>.<format>.")
-@click.option("--format", "fmt", type=Format(), default=None,
-              help=f"{FIGURES.replace('.', '')} (default: from the suffix of -o, else png).")
-@click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
-              help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
+@format_option()
+@dpi_option()
 def figure_command(figure_id: str, output: str | None, fmt: str | None, dpi: float) -> None:
-    preset = _preset_or_usage_error(figure_id)
-    path, fmt = resolve_output(output, fmt, f"fig-{MODEL_ID if preset is None else preset.id}")
+    """Draw one figure of the report (e.g. 2.1, 3.9a, 4.7b).
 
+    Fig. 2.1 is the model: the block of half width B and half height H
+    (gamma = H/B), the force F = mgk at h = k'H above the centre of mass C,
+    and the reactions of the base.
+
+    Each figure uses parameters strictly inside its caption's case (see
+    'regimemap figures --list').  Without -o the file is fig-<ID>.<format>.
+
+    \b
+    Examples:
+      regimemap figure 2.1
+      regimemap figure 3.9a
+      regimemap figure 4.7a -o fig47a.pdf
+      regimemap figure 3.11 --format svg --dpi 300
+    """
+    fid = _figure_id(figure_id)
+    path, fmt = resolve_output(output, fmt, f"fig-{fid}")
     import_matplotlib()
-    from ..drawing.save import save_figure
     from ..maps.figures.batch import render_figure
 
-    fid = MODEL_ID if preset is None else preset.id
-    fig = render_figure(fid, figure_maps(fid), dpi=dpi)
-    with writing(path):
-        save_figure(fig, path, fmt, dpi=dpi)
-    _written(path)
+    write_figure(render_figure(fid, figure_maps(fid), dpi=dpi), path, fmt, dpi)
+    report_written(path)
 
 
-_FIGURES_HELP = """Draw all 25 figures of the report (and the worked figures W.1 ...) into a folder.
-
-Writes fig-<ID>.<format> for every figure (2.1, 3.1 ... 3.11, 4.2 ... 4.7b) and
-every format, on every core of the machine (--jobs to choose).  On one
-machine the output is byte-identical from run to run, whatever the number of
-processes.
-PNGs are 150 dpi by default (use --dpi 300 for print; SVG and PDF are vector).
-
-\b
-Examples:
-  regimemap figures
-  regimemap figures --out figures --format png,svg
-  regimemap figures --out paper --format pdf
-  regimemap figures --list
-  regimemap figures --out figures --format png,svg --set all
-
---set worked draws the worked figures of the loaded block instead (W.1:
-Goda's caisson submerged, W.2: in air, W.3: a slender block lifting off,
-W.4: the uplift ratio swept); --set all draws both.
-"""
-
-
-@click.command("figures", help=_FIGURES_HELP, short_help="Draw all 25 figures of the report.")
+@click.command("figures", short_help="Draw all 25 figures of the report.")
 @click.option("--out", "out_dir", default=".", show_default=True, metavar="DIR",
               help="Folder for the files (created if its parent folder exists).")
 @click.option("--format", "formats", type=FormatList(), default="png", show_default=True,
               help=f"Comma-separated formats: {', '.join(FIGURE_FORMATS)}.")
-@click.option("--dpi", type=Dpi(), default=DEFAULT_DPI, show_default=True,
-              help=f"Resolution of PNG output ({_LO:g}-{_HI:g} dots per inch).")
+@dpi_option()
 @click.option("--list", "list_only", is_flag=True,
               help="List the figures with their parameters and captions; draw nothing.")
 @click.option("--set", "which", type=click.Choice(["report", "worked", "all"]), default="report",
               show_default=True,
               help="The report's 25 figures, the worked figures of the loaded block "
                    "(W.1, W.2 ...: submerged caissons), or both.")
-@click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
-              help="Worker processes (default: one per core).")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar on standard error.")
+@jobs_option("Worker processes (default: one per core).")
+@quiet_option("No progress bar on standard error.")
 def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_only: bool,
                     which: str, jobs: int | None, quiet: bool) -> None:
+    """Draw all 25 figures of the report (and the worked figures W.1 ...) into a folder.
+
+    Writes fig-<ID>.<format> for every figure (2.1, 3.1 ... 3.11, 4.2 ... 4.7b) and
+    every format, on every core of the machine (--jobs to choose).  On one
+    machine the output is byte-identical from run to run, whatever the number of
+    processes.
+    PNGs are 150 dpi by default (use --dpi 300 for print; SVG and PDF are vector).
+
+    \b
+    Examples:
+      regimemap figures
+      regimemap figures --out figures --format png,svg
+      regimemap figures --out paper --format pdf
+      regimemap figures --list
+      regimemap figures --out figures --format png,svg --set all
+
+    --set worked draws the worked figures of the loaded block instead (W.1:
+    Goda's caisson submerged, W.2: in air, W.3: a slender block lifting off,
+    W.4: the uplift ratio swept); --set all draws both.
+    """
     from ..maps.figures.presets import PRESETS
     from ..maps.figures.worked import WORKED
 
     if list_only:
         _list_figures(which)
         return
-    folder = _check_dir(out_dir, "--out")
+    folder = output_dir(out_dir, "--out", create=True)
 
     import_matplotlib()
     from ..maps.figures.batch import write_figures

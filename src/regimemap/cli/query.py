@@ -2,41 +2,36 @@
 
 from __future__ import annotations
 
-import json
 import math
 from typing import TYPE_CHECKING, Any
 
 import click
 
 from ..io.formats import suffix_of
-from ._common import ParamType, gamma_option, kprime_option, load_options
+from ._common import Checked, gamma_option, json_option, kprime_option, load_options, output_option
 from ._inputs import POINTS_FILE
 from ._main import RunError
-from ._writing import output_path, report_written, writing
+from ._plot_options import read_points_file
+from ._writing import output_path, print_report, report_written, writing
 
 if TYPE_CHECKING:
     from ..maps.points import DesignPoint
-    from ..maps.query import PointResult
 
 __all__ = ["classify_cmd"]
 
 
-class _NonNegative(ParamType):
+def _non_negative(what: str) -> Checked:
     """A finite float >= 0 (k, mu)."""
-
-    name = "number"
-
-    def __init__(self, what: str):
-        self.what = what
-
-    def convert(self, value: Any, param: click.Parameter | None, ctx: click.Context | None) -> float:
+    def check(text: str) -> float:
         try:
-            v = float(value)
-        except (TypeError, ValueError):
-            self.fail(f"{self.what} must be a finite number >= 0, got {value!r}", param, ctx)
+            v = float(text)
+        except ValueError:
+            v = math.nan
         if not math.isfinite(v) or v < 0.0:
-            self.fail(f"{self.what} must be a finite number >= 0, got {value!r}", param, ctx)
+            raise ValueError(f"{what} must be a finite number >= 0, got {text!r}")
         return v
+
+    return Checked("number", check)
 
 
 @click.command(
@@ -45,18 +40,16 @@ class _NonNegative(ParamType):
 )
 @gamma_option(required=False)
 @kprime_option(required=False)
-@click.option("--k", "k", type=_NonNegative("k"), metavar="K",
+@click.option("--k", "k", type=_non_negative("k"), metavar="K",
               help="Force F/(mg) >= 0 (one point).")
-@click.option("--mu", "mu", type=_NonNegative("mu"), metavar="MU",
+@click.option("--mu", "mu", type=_non_negative("mu"), metavar="MU",
               help="Friction coefficient >= 0 (one point).")
 @click.option("--points", "points_file", type=POINTS_FILE,
               metavar="FILE.csv",
               help="Classify every row of a CSV with columns k,mu and optionally gamma,kprime,name.")
-@click.option("--json", "as_json", is_flag=True,
-              help="Print JSON (one object per point) instead of text / CSV.")
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
-              help="With --points: write to FILE (atomically) instead of standard output; "
-                   "a .json suffix selects JSON.")
+@json_option("Print JSON (one object per point) instead of text / CSV.")
+@output_option("With --points: write to FILE (atomically) instead of standard output; a .json suffix "
+               "selects JSON.")
 @load_options
 def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu: float | None,
                  points_file: str | None, as_json: bool, output: str | None,
@@ -101,7 +94,10 @@ def classify_cmd(gamma: float | None, kprime: float | None, k: float | None, mu:
     except ValueError as exc:
         raise RunError(str(exc)) from None
     if points_file is None:
-        _echo_point(record.results[0], as_json)
+        from ..maps.record_tables import format_result, result_json
+
+        point = record.results[0]
+        print_report(as_json, lambda: format_result(point), lambda: result_json(point))
         return
     from ..maps.record_tables import results_text
 
@@ -151,28 +147,11 @@ def _one_point(gamma: float | None, kprime: float | None, k: float | None, mu: f
     return DesignPoint(k, mu)
 
 
-def _echo_point(result: PointResult, as_json: bool) -> None:
-    """One point's answer as text (or JSON) on standard output."""
-    from ..maps.record_tables import format_result, result_json
-
-    if as_json:
-        click.echo(json.dumps(result_json(result), indent=2, allow_nan=False))
-    else:
-        click.echo(format_result(result))
-
-
 def _points_of_file(points_file: str, gamma: float | None, kprime: float | None
                     ) -> list[DesignPoint]:
     """The rows of ``--points``; a usage error for a bad file or a row without its gamma or
     k' when no ``--gamma``/``--kprime`` gives it."""
-    from ..maps.file_points import read_points_table
-
-    try:
-        table = read_points_table(points_file)
-    except ValueError as exc:
-        raise click.BadParameter(str(exc), param_hint="'--points'") from None
-    if table.note:
-        click.echo(f"regimemap: note: {points_file} is {table.note}; read as such", err=True)
+    table = read_points_file(points_file)
     for line, pt in zip(table.lines, table.points):
         for opt, own, default in (("--gamma", pt.gamma, gamma), ("--kprime", pt.kprime, kprime)):
             if own is None and default is None:

@@ -15,17 +15,16 @@ import click
 
 from ..io.formats import FIGURE_FORMATS, FIGURES
 from ._check import CHECK_HELP, exit_on_failure
-from ._common import check_kprime_crest
+from ._common import check_kprime_crest, given_options, json_option, output_option
 from ._dynamics_options import (
     block_options,
-    check_output_file,
     min_rotation_option,
     option_errors,
 )
 from ._inputs import DESIGN_FILE, PULSE_FILE
 from ._main import import_matplotlib
 from ._plausible import STRICT_HELP
-from ._writing import echo_notices, writing
+from ._writing import checked_output, echo_notes, echo_notices, write_figure, writing
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..motion.run import SimulationRecord
@@ -51,9 +50,8 @@ __all__ = ["simulate_cmd"]
                    "factors of its design wave at least [caisson] required_* (1.2), one line each, PASS or "
                    "FAIL; " + CHECK_HELP[0].lower() + CHECK_HELP[1:])
 @min_rotation_option()
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("-o", "--output", "output", type=click.Path(dir_okay=False), metavar="FILE",
-              help="Write the time history: .csv or .npz (atomically).")
+@json_option()
+@output_option("Write the time history: .csv or .npz (atomically).")
 @click.option("--plot", "plot", type=click.Path(dir_okay=False), metavar="FILE",
               help=f"Draw k(t), the slide and theta(t) with the phases shaded: {FIGURES}.")
 @click.option("--animate", "animate", type=click.Path(dir_okay=False), metavar="FILE.gif",
@@ -155,15 +153,11 @@ def _check_design_flags(design: str | None, strict: bool, check: bool) -> None:
                                "FILE.toml")
     if design is None:
         return
-    from click.core import ParameterSource
-
     from ..dynamics.design_wave import DESIGN_INPUTS
 
-    ctx = click.get_current_context()
-    given = [name for name in (*DESIGN_INPUTS, "pulse_file")
-             if ctx.get_parameter_source(name) in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)]
+    given = given_options((*DESIGN_INPUTS, "pulse_file"))
     if given:
-        flags = ", ".join("--" + n.replace("_", "-") for n in given)
+        flags = ", ".join(given)
         raise click.UsageError(f"{flags} and --design exclude each other: the design file gives the block "
                                "and the pulse (change the design file, or give the block without --design)")
 
@@ -174,11 +168,11 @@ def _check_outputs(output: str | None, plot: str | None, animate: str | None) ->
     if len({str(Path(p).resolve()) for p in paths}) < len(paths):
         raise click.UsageError("-o, --plot and --animate must name different files")
     if output is not None:
-        check_output_file(output, "time history", "--output")
+        checked_output(output, "time history")
     if plot is not None:
-        check_output_file(plot, (("the plot", FIGURE_FORMATS),), "--plot")
+        checked_output(plot, (("the plot", FIGURE_FORMATS),), "--plot")
     if animate is not None:
-        check_output_file(animate, "animation", "--animate")
+        checked_output(animate, "animation", "--animate")
     return bool(paths)
 
 
@@ -196,18 +190,16 @@ def _write_outputs(record: SimulationRecord, output: str | None, plot: str | Non
         return written
     import_matplotlib()
     if plot is not None:
-        from ..drawing.save import save_figure
         from ..motion.figures.history import simulation_figure
 
-        with writing(plot):
-            save_figure(simulation_figure(record), plot)
+        write_figure(simulation_figure(record), plot)
         written.append(plot)
     if animate is not None:
         from ..motion.figures.history import simulation_animation
+        from ..motion.run_notes import animation_note
 
         with writing(animate):
-            n, (w, h), speed = simulation_animation(animate, record)
-        click.echo(f"{animate}: {n} frames, {w} x {h} pixels, "
-                   + ("real time" if speed == 1.0 else f"{speed:.3g} x real time"), err=True)
+            n, size, speed = simulation_animation(animate, record)
+        echo_notes([animation_note(animate, n, size, speed)], prefix="")
         written.append(animate)
     return written

@@ -10,7 +10,6 @@ processes or on Dask, each stored as it finishes -- and writes the table
 from __future__ import annotations
 
 import contextlib
-import json
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -18,10 +17,10 @@ from typing import TYPE_CHECKING
 import click
 
 from ..io.formats import FIGURES, record_formats, suffix_of
-from ._common import ParamType
+from ._common import Checked, jobs_option, json_option, outputs_option, quiet_option
 from ._inputs import DESIGN_FILE
 from ._main import RunError
-from ._writing import checked_format, echo_notices, output_path, report_written, write_files
+from ._writing import checked_output, echo_notices, print_report, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -34,21 +33,16 @@ __all__ = ["study_cmd"]
 FIGURE_KINDS = ("chainage", "years", "width")
 
 
-class _Scheduler(ParamType):
+def _scheduler(text: str) -> str:
     """``local``, or a Dask scheduler's address (:func:`regimemap.lifetime.file_options.check_scheduler`)."""
+    from ..lifetime.file_options import check_scheduler
 
-    name = "text"
-
-    def convert(self, value: object, param: click.Parameter | None, ctx: click.Context | None) -> str:
-        from ..lifetime.file_options import check_scheduler
-
-        text = str(value).strip()
-        if text == "local":
-            return text
-        try:
-            return check_scheduler(text)
-        except ValueError as exc:
-            self.fail(f"{exc} (or 'local', a Dask LocalCluster)", param, ctx)
+    if text.strip() == "local":
+        return "local"
+    try:
+        return check_scheduler(text.strip())
+    except ValueError as exc:
+        raise ValueError(f"{exc} (or 'local', a Dask LocalCluster)") from None
 
 
 #: The message when Dask's distributed is missing (found before anything is made).
@@ -81,8 +75,7 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
         raise click.UsageError("--resume and --overwrite exclude each other: --resume finishes the "
                                "store's run, --overwrite replaces the store with a new run", ctx=ctx)
     for path in outputs:
-        checked_format(path, "study", "'--output'")
-        output_path(path, "--output")
+        checked_output(path, "study")
     # the extras, before the store or any file is made and before a long run
     if scheduler is not None and _missing("distributed"):
         raise click.BadParameter(NO_DASK, param_hint="'--scheduler'")
@@ -170,10 +163,9 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.argument("study", type=DESIGN_FILE, metavar="STUDY.toml", required=False)
 @click.option("--example", is_flag=True, help="Print the commented example study (three sections, two "
               "scenarios) and exit.")
-@click.option("--jobs", "-j", type=click.IntRange(1, 256), default=None, metavar="N",
-              help="Worker processes on this machine (default: one per core; 1: this process); with "
-                   "--scheduler local, the LocalCluster's workers.")
-@click.option("--scheduler", type=_Scheduler(), default=None, metavar="local|ADDRESS",
+@jobs_option("Worker processes on this machine (default: one per core; 1: this process); with --scheduler "
+             "local, the LocalCluster's workers.")
+@click.option("--scheduler", type=Checked("text", _scheduler), default=None, metavar="local|ADDRESS",
               help="Run the tasks on Dask: 'local' starts a LocalCluster, else a scheduler's address "
                    "(tcp://host:8786); needs the 'cluster' extra.")
 @click.option("--resume", is_flag=True, help="Run only the tasks missing from the store (the same numbers "
@@ -184,18 +176,15 @@ def _write(record: StudyRecord, outputs: tuple[str, ...], figure: str, section: 
 @click.option("--store", default=None, metavar="DIR",
               help="The results store, one file per finished task (default: STUDY.store beside the "
                    "study file).")
-@click.option("--json", "as_json", is_flag=True, help="Print one JSON object (the rows; with --check, the "
-              "requirements) instead of text.")
-@click.option("-o", "--output", "outputs", type=click.Path(dir_okay=False), metavar="FILE", multiple=True,
-              help=f"Output file (repeatable), written atomically: .csv or .nc the table, {FIGURES} the "
-                   "figure (--figure).")
+@json_option("Print one JSON object (the rows; with --check, the requirements) instead of text.")
+@outputs_option(f"Output file (repeatable), written atomically: .csv or .nc the table, {FIGURES} the "
+                "figure (--figure).")
 @click.option("--figure", type=click.Choice(FIGURE_KINDS), default="chainage", show_default=True,
               help="The figure: ESD along the chainage, expected sliding by service year (of --section), "
                    "or the required width along the chainage.")
 @click.option("--section", default=None, metavar="NAME", help="The section of --figure years (default: "
               "the first).")
-@click.option("--quiet", "-q", is_flag=True, help="No progress bar; with -o, no table either (the files "
-              "hold it).")
+@quiet_option("No progress bar; with -o, no table either (the files hold it).")
 @click.option("--check", is_flag=True, help="Print one requirement line per section x scenario (PASS or "
               "FAIL: the section's [lifetime] target ESD, or its width against the width for its target) "
               "and exit with status 1 when any fails (the files are written first).")
@@ -227,8 +216,8 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
       regimemap study breakwater.toml --overwrite --check
       regimemap study breakwater.toml --scheduler local -o esd.svg
     """
-    from ..study.record_table import study_check_lines, study_checks_json, study_json, study_lines
     from ..study.run import study_checks
+    from ..study.run_report import study_report_json, study_report_text
 
     _check_call(study, example, outputs, scheduler, jobs, resume, overwrite)
     if example:
@@ -241,22 +230,9 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
     echo_notices(parsed.notices)  # before the run: the file's warnings
     record = _run(parsed, jobs, scheduler, resume, overwrite, store, quiet)
     echo_notices([n for n in record.notices if n not in parsed.notices])
-    checks = study_checks(parsed, record) if check else ()
+    checks = study_checks(parsed, record) if check else None
     written = _write(record, outputs, figure, section)
-    if as_json:
-        data = study_json(record)
-        if check:
-            data["checks"] = study_checks_json(checks)
-        if written:
-            data["written"] = written
-        click.echo(json.dumps(data, indent=1, allow_nan=False))
-    else:
-        if not (outputs and quiet):
-            click.echo("\n".join(study_lines(record)))
-        if check:
-            click.echo("requirements:")
-            click.echo("\n".join(f"  {line}" for line in study_check_lines(checks)))
-        for path in written:
-            report_written(path)
-    if check and not all(c.passed for c in checks):
+    print_report(as_json, lambda: study_report_text(record, checks, table=not (outputs and quiet)),
+                 lambda: study_report_json(record, checks, written), written, indent=1)
+    if checks is not None and not all(c.passed for c in checks):
         raise click.exceptions.Exit(1)
