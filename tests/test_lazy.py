@@ -6,7 +6,7 @@ import sys
 
 import pytest
 
-from regimemap._lazy import attach
+from regimemap._lazy import attach, typed_imports
 
 
 @pytest.fixture
@@ -18,9 +18,13 @@ def package(tmp_path, monkeypatch):
     (root / "inner" / "__init__.py").write_text("")
     (root / "inner" / "beta.py").write_text("B = 2\n")
     (root / "__init__.py").write_text(
+        "from typing import TYPE_CHECKING\n"
         "from regimemap._lazy import attach\n"
+        "if TYPE_CHECKING:\n"
+        "    from .alpha import VALUE, f\n"
+        "    from .inner.beta import B\n"
         "EAGER = 0\n"
-        "__getattr__, __dir__ = attach(__name__, {'alpha': ['VALUE', 'f'], 'inner.beta': ['B']})\n")
+        "__getattr__, __dir__ = attach(__name__, __file__)\n")
     monkeypatch.syspath_prepend(str(tmp_path))
     import lazypkg
 
@@ -53,6 +57,23 @@ def test_unknown_names_raise_attribute_error_naming_the_package(package):
     assert not hasattr(package, "also_nope")
 
 
-def test_a_name_under_two_submodules_is_refused():
+def _init(tmp_path, typed: str) -> str:
+    path = tmp_path / "__init__.py"
+    path.write_text(f"if TYPE_CHECKING:\n{typed}", encoding="utf-8")
+    return str(path)
+
+
+def test_the_names_are_the_typed_imports_by_submodule(tmp_path):
+    path = _init(tmp_path, "    from .a import x, y\n    from ..sibling.b import z\n    from .a import w\n")
+    assert typed_imports(path) == {"a": ["x", "y", "w"], ".sibling.b": ["z"]}
+
+
+def test_a_name_under_two_submodules_is_refused(tmp_path):
     with pytest.raises(ValueError, match="'x' listed under 'a' and 'b'"):
-        attach("somepkg", {"a": ["x"], "b": ["x"]})
+        attach("somepkg", _init(tmp_path, "    from .a import x\n    from .b import x\n"))
+
+
+@pytest.mark.parametrize("typed", ["    from a import x\n", "    from .a import x as y\n", "    import os\n"])
+def test_an_import_the_package_could_not_give_by_its_name_is_refused(tmp_path, typed):
+    with pytest.raises(ValueError, match="__init__.py:2: a lazy name is a relative 'from .module import name'"):
+        typed_imports(_init(tmp_path, typed))

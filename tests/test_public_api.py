@@ -177,10 +177,13 @@ def test_dir_lists_every_public_name(package):
 
 def _lazy_view(package: str) -> tuple[set[str], dict[str, set[str]], dict[str, set[str]], bool]:
     """What a package's ``__init__`` says, read from its source: (names bound when the module runs,
-    names imported under ``if TYPE_CHECKING:`` by submodule, names given to
-    :func:`regimemap._lazy.attach` by submodule, ``attach`` called under ``if not TYPE_CHECKING:``)."""
+    names imported under ``if TYPE_CHECKING:`` by submodule, the names :func:`regimemap._lazy.attach`
+    imports on first use by submodule -- read from those imports, when it is given the package's
+    ``__name__`` and ``__file__`` --, ``attach`` called under ``if not TYPE_CHECKING:``)."""
     import ast
     from pathlib import Path
+
+    from regimemap._lazy import typed_imports
 
     path = Path(importlib.import_module(package).__file__)
     tree = ast.parse(path.read_text(encoding="utf-8"))
@@ -195,9 +198,10 @@ def _lazy_view(package: str) -> tuple[set[str], dict[str, set[str]], dict[str, s
                     typed.setdefault("." * (n.level - 1) + (n.module or ""), set()).update(a.asname or a.name for a in n.names)
         elif isinstance(node, ast.If) and isinstance(node.test, ast.UnaryOp) and isinstance(node.test.op, ast.Not):
             for n in ast.walk(node):
-                if isinstance(n, ast.Call) and getattr(n.func, "id", None) == "attach":
+                if (isinstance(n, ast.Call) and getattr(n.func, "id", None) == "attach"
+                        and [getattr(a, "id", None) for a in n.args] == ["__name__", "__file__"]):
                     hidden = True
-                    lazy = {k: set(v) for k, v in ast.literal_eval(n.args[1]).items()}
+                    lazy = {k: set(v) for k, v in typed_imports(str(path)).items()}
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
             bound |= {a.asname or a.name.split(".")[0] for a in node.names}
         elif isinstance(node, (ast.Assign, ast.AnnAssign)):
@@ -217,6 +221,8 @@ def test_type_checkers_see_every_lazy_name(package):
     lazy_names = set().union(*lazy.values()) if lazy else set()
     unseen = set(importlib.import_module(package).__all__) - bound - lazy_names
     assert not unseen, f"{package}: public names neither bound nor lazy: {sorted(unseen)}"
+    hidden = lazy_names - set(importlib.import_module(package).__all__)
+    assert not hidden, f"{package}: lazy names that __all__ does not list: {sorted(hidden)}"
 
 
 @pytest.mark.parametrize("package", sorted(set(PUBLIC_API) - {"regimemap.cli"}))

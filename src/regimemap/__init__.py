@@ -55,6 +55,4 @@ logging.getLogger(__name__).addHandler(logging.NullHandler())
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "maps.query": ["PointResult", "margin", "query_point", "query_points"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

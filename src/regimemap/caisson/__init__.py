@@ -28,10 +28,4 @@ __all__ = ["CaissonError", "CaissonNumbers", "CaissonRecord", "Design", "DesignF
            "run_caisson"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "figures.page": ["caisson_sheet"],
-        "file": ["Design", "parse_design", "read_design"],
-        ".io.toml_errors": ["DesignFileError"],
-        "file_example": ["example_design_text"],
-        "run": ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError", "run_caisson"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -33,10 +33,4 @@ __all__ = [
 ]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "analysis": ["METHODS", "ClimateOptions", "ClimateResult", "analyse"],
-        "fits": ["AM_DISTRIBUTIONS", "POT_DISTRIBUTIONS", "Fit", "fit"],
-        "intervals": ["Band", "bootstrap"],
-        "peaks": ["AnnualMaxima", "Storms", "annual_maxima", "parse_threshold", "storms"],
-        "wave_record": ["Quality", "Record", "make_record"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -80,20 +80,4 @@ def load_matplotlib() -> None:
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        ".climate.figures": ["climate_figure", "diagnostics_figure"],
-        ".lifetime.figures.chart": ["chart_figure"],
-        ".lifetime.figures.exceedance": ["lifetime_figure"],
-        ".maps.figures.ambiguity": ["draw_ambiguity"],
-        ".maps.figures.animation": ["write_animation"],
-        "artists": ["MapArtists"],
-        ".maps.figures.atlas": ["atlas_figure", "write_atlas"],
-        ".maps.figures.figure": ["FIGSIZE", "fit_figure", "map_figure", "new_figure", "render_map",
-                                 "render_preset"],
-        ".maps.figures.mapplot": ["MapStyle", "default_title", "draw_design_points", "draw_map"],
-        ".motion.figures.history": ["motion_figure"],
-        ".motion.figures.outcome": ["OutcomeStyle", "draw_outcome_map", "outcome_figure"],
-        "save": ["save_figure"],
-        ".study.figures": ["study_figure"],
-        "style": ["MODE_STYLE", "OUTCOME_STYLE", "style_context"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -82,13 +82,4 @@ __all__ = [
 ]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "block": ["Block", "G", "frequency_parameter", "size_R", "slenderness"],
-        "design_wave": ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "design_wave_inputs",
-                        "design_wave_numbers", "design_wave_run"],
-        "outcome": ["SWEEPABLE", "OutcomeMap", "from_dimensionless", "outcome_map", "to_dimensionless"],
-        "pulses": ["SHAPES", "Pulse"],
-        "stepper": ["CATEGORY_LABELS", "FREE_STEP", "OVERTURN", "PULSE_STEPS", "REST", "ROCK", "SLIDE",
-                    "SLIDE_ROCK", "STILL_MOVING", "History", "Phase", "Simulation", "default_steps",
-                    "simulate"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -40,13 +40,4 @@ __all__ = [
 ]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        ".climate.file": ["read_record"],
-        ".maps.file_points": ["parse_point_spec", "read_points_csv"],
-        ".maps.record_export": ["export_map"],
-        ".maps.record_tables": ["format_result", "result_row"],
-        ".motion.file_pulses": ["read_pulse_csv"],
-        ".motion.record_outcome": ["write_outcome"],
-        ".motion.record_simulation": ["write_history"],
-        "atomic": ["atomic_open", "atomic_path"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -58,15 +58,4 @@ __all__ = [
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "chart": ["DesignChart", "design_chart", "sf_width"],
-        "climate": ["DISTRIBUTIONS", "Climate"],
-        "model": ["DEFAULT_ERRORS", "DEFAULT_THRESHOLDS", "Caisson", "ErrorFactor", "Errors",
-                  "LifetimeModel", "YearTrend"],
-        "parallel": ["ClusterUnavailable"],
-        "requirements": ["Requirements", "judge_chart", "judge_lifetime"],
-        "results": ["Failure", "LifetimeResult"],
-        "simulate": ["lifetime_sliding"],
-        "sliding": ["ADDED_MASS_COEFFICIENT", "added_mass", "half_sine_slide", "wave_duration"],
-        ".workers": ["available_cores"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -47,11 +47,4 @@ __all__ = [
 # imported on first use (PEP 562), so ``import regimemap.maps.classify`` does not load the
 # polygons, the ambiguity and the query
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "ambiguity": ["AmbiguousRegion", "ambiguous_regions"],
-        "geometry": ["DEFAULT_SAMPLES", "region_polygons"],
-        "mapdata": ["CurveData", "MapData", "compute_map"],
-        "points": ["DesignPoint"],
-        "query": ["Crossing", "Margin", "PointResult", "margin", "query_point", "query_points"],
-        "view": ["auto_extent"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

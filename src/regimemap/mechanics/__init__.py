@@ -55,11 +55,4 @@ __all__ = [
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "block": ["Case", "Parameters", "case_of"],
-        "curves": ["Curve", "NamedPoint", "map_curves", "named_points"],
-        "modes": ["LOADED_MAP_MODES", "MAP_MODES", "PRIORITY", "SELECTION_ORDER", "Mode"],
-        "regions": ["RAW_REGIONS", "raw_region"],
-        "solver": ["TOLERANCE", "Hypothesis", "Response", "admissible", "admissible_hypotheses", "choose",
-                   "least_constraint", "solve"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -25,10 +25,4 @@ __all__ = ["DynamicsFigureRecord", "OutcomeRecord", "SimulationRecord", "motion_
            "run_dynamics_figure", "run_outcome", "run_simulation"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "figures.history": ["motion_figure"],
-        "figures.outcome": ["outcome_figure"],
-        "record": ["DynamicsFigureRecord", "OutcomeRecord", "SimulationRecord"],
-        "run": ["run_simulation"],
-        "run_maps": ["run_dynamics_figure", "run_outcome"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

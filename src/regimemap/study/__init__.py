@@ -26,11 +26,4 @@ __all__ = ["Study", "StudyCheck", "StudyFileError", "StudyRecord", "StudyRow", "
            "read_study", "run_study", "study_figure"]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "figures": ["study_figure"],
-        "file": ["Study", "read_study"],
-        "file_example": ["example_study_text"],
-        "file_sections": ["StudyFileError"],
-        "record": ["StudyCheck", "StudyRecord", "StudyRow"],
-        "run": ["run_study"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

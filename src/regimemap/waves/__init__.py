@@ -70,15 +70,4 @@ __all__ = [
 
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        "analysis": ["CaissonAnalysis", "Densities", "analyse_caisson"],
-        "block": ["EquivalentBlock", "RestCheck", "equivalent_block", "static_rest_check"],
-        "caisson": ["CaissonLoads", "CaissonSection", "Stability", "caisson_loads", "heel_pressure",
-                    "section_from_densities", "section_from_weight", "stability"],
-        "dispersion": ["deep_water_wavelength", "wavelength", "wavenumber"],
-        "heights": ["HMAX_FACTOR", "DesignHeights", "breaker_height", "design_heights", "given_heights",
-                    "linear_shoaling_coefficient", "shoaling_coefficient"],
-        "pressure": ["GODA_ROTATION_DEG", "GodaPressures", "effective_angle", "goda_pressures",
-                     "impulsive_coefficient"],
-        "timing": ["wave_duration"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)

@@ -75,18 +75,4 @@ __all__ = [
 ]
 
 if not TYPE_CHECKING:  # hidden from mypy, so that an unknown name is an error, not Any
-    __getattr__, __dir__ = attach(__name__, {
-        ".caisson.run": ["CaissonError", "CaissonNumbers", "CaissonRecord", "ImplausibleDesignError",
-                         "run_caisson"],
-        ".climate.run": ["ClimateRecord", "run_climate"],
-        ".lifetime.run": ["ChartRecord", "LifetimeDesign", "LifetimeRecord", "read_lifetime_design",
-                          "run_chart", "run_lifetime"],
-        ".maps.run": ["MapRecord", "points_of_map", "run_map"],
-        ".maps.run_atlas": ["AnimationRecord", "AtlasRecord", "run_animation", "run_atlas"],
-        ".maps.run_query": ["QueryRecord", "run_query"],
-        ".mechanics.notices": ["Notice"],
-        ".mechanics.records": ["Field", "Record"],
-        ".motion.run": ["SimulationRecord", "run_simulation"],
-        ".motion.run_maps": ["DynamicsFigureRecord", "OutcomeRecord", "run_dynamics_figure", "run_outcome"],
-        ".study.run": ["StudyRecord", "StudyRow", "run_study"],
-    })
+    __getattr__, __dir__ = attach(__name__, __file__)
