@@ -71,6 +71,34 @@ def _run_and_check(monkeypatch, tmp_path, design, sig, code, message):
     assert {s: signal.getsignal(s) for s in before} == before
 
 
+@pytest.mark.parametrize("sig,code,message", [(signal.SIGTERM, 143, "regimemap: terminated"),
+                                              (signal.SIGINT, 130, "regimemap: interrupted")])
+def test_a_signal_that_became_another_error_still_ends_the_command_as_the_signal(
+        monkeypatch, design, sig, code, message):
+    """Ctrl-C landing in a C extension's module initialization comes back as ``ImportError:
+    initialization failed`` (seen under load in the stress test): still the signal's exit."""
+    def read(path):
+        try:
+            os.kill(os.getpid(), sig)
+            time.sleep(1.0)
+        except BaseException:
+            raise ImportError("initialization failed") from None
+
+    monkeypatch.setattr(regimemap.caisson.file, "read_design", read)
+    old = signal.signal(signal.SIGINT, signal.default_int_handler)
+    try:
+        r = invoke_cli(["lifetime", str(design), "--trials", "100"])
+    finally:
+        signal.signal(signal.SIGINT, old)
+    assert r.code == code, r.output
+    assert [ln for ln in r.stderr.splitlines() if ln.strip()] == [message]
+
+
+def test_an_error_without_a_signal_is_that_error():
+    with pytest.raises(ImportError, match="initialization failed"), stop_signals():
+        raise ImportError("initialization failed")
+
+
 def test_exiting_leaves_both_signals_ignored():
     """The console process, once interrupted, ignores further signals until it has exited."""
     before = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}

@@ -63,7 +63,10 @@ def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Ite
     ``regimemap`` process: :data:`EXIT_DEADLINE`), the process ends that many
     seconds after the first signal at the latest, whatever it is doing.  A signal the process was
     started with ignored (``nohup``, a background job of a script) stays
-    ignored.  Outside the main thread nothing is changed.
+    ignored.  An ordinary exception that leaves the block after a signal (the signal landed in
+    code that made another error of it, such as a C extension's module initialization, which
+    says ``ImportError: initialization failed``) is raised as the signal's exception, from it.
+    Outside the main thread nothing is changed.
     """
     if threading.current_thread() is not threading.main_thread():
         yield
@@ -96,6 +99,13 @@ def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Ite
     sys.unraisablehook = unraisable
     try:
         yield
+    except Exception as exc:
+        if not caught:
+            raise
+        # the signal landed in code that made another error of it (Ctrl-C in a C extension's
+        # module initialization is "ImportError: initialization failed"): the command still ends
+        # as the signal ends it
+        raise (Terminated(caught[0]) if caught[0] == signal.SIGTERM else KeyboardInterrupt()) from exc
     finally:
         sys.unraisablehook = hook
         for sig, handler in saved.items():
