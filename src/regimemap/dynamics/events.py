@@ -61,21 +61,6 @@ _TIME_TOL = 1e-13
 _BISECT_STEPS = 80
 
 
-def _expressions(t: dict[str, FloatArray], mu: FloatArray, g: FloatArray, i2: FloatArray,
-                 k: float) -> list[FloatArray]:
-    """Every expression whose sign a condition of classify's rule tests, at one k (affine in k).
-
-    The list of :func:`regimemap.maps.margins` (complete: see its module docstring).
-    """
-    W, S = t["W"], t["S"]
-    out = [W, S, t["TO"], t["TP"], t["fxO"], t["fyO"], t["fxP"], t["fyP"], W * i2 + S, W * i2 - S,
-           mu * W - k]
-    for sg in (1.0, -1.0):
-        out += [W - S - sg * g * mu * W, W + S - sg * g * mu * W, S - W - sg * g * mu * W,
-                mu * t["fyO"] - sg * t["fxO"], mu * t["fyP"] - sg * t["fxP"]]
-    return out
-
-
 def onset_boundaries(block: Block, n: int, mirror: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
     """The values of k >= 0 where the mode of :func:`regimemap.classify` changes, per run.
 
@@ -97,7 +82,7 @@ def onset_boundaries(block: Block, n: int, mirror: bool = False) -> tuple[FloatA
     """
     from ..maps.classify import classify_constants
     from ..mechanics.loads import block_constants
-    from ..mechanics.regions import affine_terms
+    from ..mechanics.regions import affine_terms, rule_expressions
 
     par = block.arrays(n)
     col = {key: v[:, None] for key, v in par.items()}
@@ -107,8 +92,8 @@ def onset_boundaries(block: Block, n: int, mirror: bool = False) -> tuple[FloatA
                           sign * col["e_u"], gyr)
     mu = col["mu"]
     with np.errstate(divide="ignore", invalid="ignore"):
-        e0 = _expressions(affine_terms(np.zeros((n, 1)), cst), mu, cst.gamma, cst.i2, 0.0)
-        e1 = _expressions(affine_terms(np.ones((n, 1)), cst), mu, cst.gamma, cst.i2, 1.0)
+        e0 = rule_expressions(affine_terms(np.zeros((n, 1)), cst), mu, cst.gamma, cst.i2, 0.0)
+        e1 = rule_expressions(affine_terms(np.ones((n, 1)), cst), mu, cst.gamma, cst.i2, 1.0)
         roots = np.concatenate([np.broadcast_to(-a / (b - a), (n, 1)) for a, b in zip(e0, e1, strict=True)]
                                + [np.zeros((n, 1))], axis=1)
     roots = np.where(np.isfinite(roots) & (roots >= 0.0), roots, np.inf)

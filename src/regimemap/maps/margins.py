@@ -58,7 +58,7 @@ import numpy as np
 from ..mechanics import constants as C
 from ..mechanics.loads import BlockConstants, block_constants
 from ..mechanics.modes import Mode
-from ..mechanics.regions import affine_terms, column_intervals
+from ..mechanics.regions import affine_terms, column_intervals, rule_expressions
 from ..mechanics.validation import check_gamma, check_kprime, check_loads, check_nonnegative_array
 from .classify import classify
 
@@ -196,26 +196,14 @@ def carries_loads(loads: dict[str, Any]) -> bool:
         or loads.get("gyration") is not None
 
 
-def _expressions(t: dict[str, np.ndarray], mu: np.ndarray, g: np.ndarray, i2: Any,
-                 k: float) -> list[np.ndarray]:
-    """Every expression whose sign a condition of the rule tests, at one k (affine in k)."""
-    W, S = t["W"], t["S"]
-    out = [W, S, t["TO"], t["TP"], t["fxO"], t["fyO"], t["fxP"], t["fyP"], W * i2 + S, W * i2 - S,
-           mu * W - k]
-    for sg in (1.0, -1.0):
-        out += [W - S - sg * g * mu * W, W + S - sg * g * mu * W, S - W - sg * g * mu * W,
-                mu * t["fyO"] - sg * t["fxO"], mu * t["fyP"] - sg * t["fxP"]]
-    return out
-
-
 def _roots_along_k(mu: np.ndarray, g: np.ndarray, kp: np.ndarray,
                    loads: dict[str, Any] | None = None) -> np.ndarray:
     """Every k where the rule of classify may change along the line of constant mu; shape (n, m)."""
     if not loads or not carries_loads(loads):
         return C.k_roots_at_mu(mu, g, kp)
     cst = loads_constants(g, kp, loads)
-    e0 = _expressions(affine_terms(np.zeros_like(mu), cst), mu, g, cst.i2, 0.0)
-    e1 = _expressions(affine_terms(np.ones_like(mu), cst), mu, g, cst.i2, 1.0)
+    e0 = rule_expressions(affine_terms(np.zeros_like(mu), cst), mu, g, cst.i2, 0.0)
+    e1 = rule_expressions(affine_terms(np.ones_like(mu), cst), mu, g, cst.i2, 1.0)
     with np.errstate(divide="ignore", invalid="ignore"):
         roots = [np.broadcast_to(-a / (b - a), mu.shape) for a, b in zip(e0, e1)]
     return np.stack(roots, axis=1)

@@ -37,6 +37,7 @@ __all__ = [
     "affine_terms",
     "column_intervals",
     "raw_region",
+    "rule_expressions",
     "rest_region",
     "slide_region",
     "rock_region",
@@ -75,6 +76,23 @@ def affine_terms(k: ArrayLike, cst: BlockConstants) -> dict[str, Float]:
         "fxP": cst.aP * k - cst.bP, "fyP": cst.dP - cst.cP * k,
         "TO": k * cst.P - cst.Q, "TP": cst.Qp + k * cst.Pp,
     }
+
+
+def rule_expressions(t: dict[str, Float], mu: Float, g: Float, i2: Float | float, k: float) -> list[Float]:
+    """Every expression whose sign a condition of the classification rule tests, at one k.
+
+    ``t`` is :func:`affine_terms` at that ``k`` (each expression is affine in k, so its root in
+    k follows from its values at two k): the margins along k (:mod:`regimemap.maps.margins`)
+    and the dynamics' events (:mod:`regimemap.dynamics.events`) find where the rule may change
+    from them.
+    """
+    W, S = t["W"], t["S"]
+    out = [W, S, t["TO"], t["TP"], t["fxO"], t["fyO"], t["fxP"], t["fyP"], W * i2 + S, W * i2 - S,
+           mu * W - k]
+    for sg in (1.0, -1.0):
+        out += [W - S - sg * g * mu * W, W + S - sg * g * mu * W, S - W - sg * g * mu * W,
+                mu * t["fyO"] - sg * t["fxO"], mu * t["fyP"] - sg * t["fxP"]]
+    return out
 
 
 # -- the predicates ---------------------------------------------------------------------------
