@@ -1,7 +1,9 @@
-"""The report of ``regimemap caisson`` from its record: the text (:func:`regimemap.caisson.record.
-format_caisson`) or the JSON object (:func:`regimemap.caisson.record.caisson_json`, the design
-sheet's path its first key), each with the sliding over the design life when the design has a
-``[lifetime]`` table (:mod:`regimemap.lifetime.record`'s brief)."""
+"""The report of ``regimemap caisson`` from its record, as text or as one JSON object.
+
+The text is :func:`regimemap.caisson.record.format_caisson`'s, the JSON object
+:func:`regimemap.caisson.record.caisson_json`'s (the design sheet's path its first key), each
+with the sliding over the design life when the design has a ``[lifetime]`` table
+(:mod:`regimemap.lifetime.record`'s brief)."""
 
 from __future__ import annotations
 
