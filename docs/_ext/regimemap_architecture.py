@@ -39,7 +39,8 @@ ROLE_WORDS = {"figures": "figures", "run": "run", "file": "input declaration", "
 #: What each shared package is, in its band.
 SHARED_WORDS = {"mechanics": "the physics: closed forms, the independent solver (numpy only)",
                 "waves": "Goda-Takahashi wave loads", "dynamics": "the engine of the motion past initiation",
-                "io": "files in and out, by format: atomic writes, the format registry, numbers, verdicts",
+                "io": "files in and out, by format: atomic writes, the format registry, the input keys' "
+                      "declaration and reader, numbers, verdicts",
                 "workflows": "the index of the runs: one call per command",
                 "drawing": "what every figure shares: style, figure files, the tidy pass, label placement",
                 "cli": "the command line: options and one call per command",
