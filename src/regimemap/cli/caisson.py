@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 import click
 
 from ..io.formats import FIGURES
@@ -13,9 +11,6 @@ from ._inputs import DESIGN_FILE, read_design_file
 from ._main import import_matplotlib
 from ._plausible import STRICT_RECORD_HELP, caisson_record
 from ._writing import checked_output, print_report, write_figure
-
-if TYPE_CHECKING:
-    pass
 
 __all__ = ["caisson_cmd"]
 

@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 import click
 
@@ -19,9 +18,6 @@ from ._main import import_matplotlib, refusing
 from ._plot_options import parse_formats
 from ._progress import progress_bars
 from ._writing import echo_notes, output_dir, report_written, write_figure, writing
-
-if TYPE_CHECKING:  # pragma: no cover
-    pass
 
 __all__ = ["dynamics_figures_cmd"]
 
