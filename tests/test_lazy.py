@@ -64,7 +64,7 @@ def _init(tmp_path, typed: str) -> str:
 
 
 def test_the_names_are_the_typed_imports_by_submodule(tmp_path):
-    path = _init(tmp_path, "    from .a import x, y\n    from ..sibling.b import z\n    from .a import w\n")
+    path = _init(tmp_path, "    from .a import x, y\n    from ..sibling.b import z\n    pass\n    from .a import w\n")
     assert typed_imports(path) == {"a": ["x", "y", "w"], ".sibling.b": ["z"]}
 
 

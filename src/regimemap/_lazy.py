@@ -54,6 +54,8 @@ def typed_imports(init_file: str) -> dict[str, list[str]]:
         if not (isinstance(node, ast.If) and getattr(node.test, "id", None) == "TYPE_CHECKING"):
             continue
         for imp in node.body:
+            if isinstance(imp, ast.Pass):
+                continue
             if not isinstance(imp, ast.ImportFrom) or not imp.level or any(a.asname for a in imp.names):
                 raise ValueError(f"{init_file}:{imp.lineno}: a lazy name is a relative "
                                  "'from .module import name' under 'if TYPE_CHECKING:'")
