@@ -18,6 +18,7 @@ import numpy as np
 
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
+from ..io.npz import write_npz
 from . import DesignChart, LifetimeResult
 from .results import threshold_key
 
@@ -113,8 +114,7 @@ def write_samples(result: LifetimeResult, path: str | os.PathLike[str]) -> str:
             "width": np.float64(result.width),
             "thresholds": np.asarray(result.thresholds, dtype=np.float64),
         }
-        with atomic_open(path, "wb") as fh:
-            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        write_npz(path, arrays)
         return fmt
     sliding = result.sliding.tolist()
     storm = result.max_storm.tolist()

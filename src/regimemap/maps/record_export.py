@@ -41,6 +41,7 @@ from typing import Any
 
 import numpy as np
 
+from ..io import npz
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
 from ..io.numbers import round_sig, text
@@ -184,8 +185,7 @@ def write_npz(path: str | os.PathLike[str], p: Parameters, k: np.ndarray, mu: np
         arrays["loaded"] = np.array(True)
         for key, v in p.loads.items():
             arrays[key] = np.float64(math.nan if v is None else v)
-    with atomic_open(path, "wb") as fh:
-        np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+    npz.write_npz(path, arrays)
 
 
 def write_csv(path: str | os.PathLike[str], k: np.ndarray, mu: np.ndarray, mode: np.ndarray,

@@ -23,6 +23,7 @@ from numpy.typing import NDArray
 from ..dynamics.outcome import OutcomeMap
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
+from ..io.npz import write_npz
 from ..io.numbers import DIGITS as SIGNIFICANT
 from ..io.numbers import round_sig
 from .record_simulation import json_inputs
@@ -94,11 +95,7 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
         }
         for key, arr in (axes or {}).items():
             arrays[key] = np.asarray(arr, dtype=np.float64)
-        for key, v in (inputs or {}).items():
-            if v is not None and key not in arrays:
-                arrays[key] = np.asarray(v)
-        with atomic_open(path, "wb") as fh:
-            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        write_npz(path, arrays, inputs)
         return fmt
     xs = [repr(float(v)) for v in m.first_values]
     labels = list(m.labels)
@@ -257,10 +254,9 @@ def cached_outcome(folder: str | os.PathLike[str] | None, name: str, spec: str,
     arrays = {k: np.asarray(getattr(m, k)) for k in _CACHED}
     if m.crossings is not None:
         arrays.update({f"crossings_{k}": v for k, v in m.crossings.arrays().items()})
-    with atomic_open(path, "wb") as fh:
-        np.savez_compressed(fh, first_name=np.array(m.first_name), second_name=np.array(m.second_name),
-                            labels=np.array(m.labels), seconds=np.float64(m.seconds), x=np.asarray(x),
-                            y=np.asarray(y), refined=np.bool_(m.refined),
-                            refine_seconds=np.float64(m.refine_seconds),
-                            min_rotation=np.float64(m.min_rotation), **arrays)  # type: ignore[arg-type]
+    write_npz(path, {"first_name": np.array(m.first_name), "second_name": np.array(m.second_name),
+                     "labels": np.array(m.labels), "seconds": np.float64(m.seconds), "x": np.asarray(x),
+                     "y": np.asarray(y), "refined": np.bool_(m.refined),
+                     "refine_seconds": np.float64(m.refine_seconds),
+                     "min_rotation": np.float64(m.min_rotation), **arrays})
     return m, x, y, False

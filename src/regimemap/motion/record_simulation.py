@@ -21,6 +21,7 @@ from numpy.typing import NDArray
 from ..dynamics.stepper import History, Phase
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
+from ..io.npz import write_npz
 from ..io.numbers import round_sig
 from ..mechanics.modes import Mode
 
@@ -245,12 +246,7 @@ def write_history(path: str | os.PathLike[str], history: History, H: float,
     fmt = format_for(path, "time history")
     cols = history_arrays(history, H)
     if fmt == "npz":
-        arrays: dict[str, NDArray[Any]] = dict(cols)
-        for key, v in (inputs or {}).items():
-            if v is not None and key not in arrays:
-                arrays[key] = np.asarray(v)
-        with atomic_open(path, "wb") as fh:
-            np.savez_compressed(fh, **arrays)  # type: ignore[arg-type]
+        write_npz(path, cols, inputs)
         return fmt
     names = list(cols)
     numeric = [cols[n].tolist() for n in names[:-1]]
