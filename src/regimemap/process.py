@@ -14,15 +14,17 @@ that the process spawns (``study --scheduler local``) imports regimemap too, as 
 
 from __future__ import annotations
 
+import _thread
 import os
 import signal
 import sys
 import threading
 import time
+from types import FrameType
 from typing import Any
 
-__all__ = ["INTERRUPTED", "TERMINATED", "die_with_spawning_parent", "exit_now", "exit_on_signal_at_start",
-           "flush_on_exit", "is_console"]
+__all__ = ["INTERRUPTED", "TERMINATED", "LostSignals", "die_with_spawning_parent", "exit_now",
+           "exit_on_signal_at_start", "flush_on_exit", "is_console"]
 
 #: The line and exit code of Ctrl-C (SIGINT) and of SIGTERM (128 + the signal's number, as a shell
 #: reports a process the signal ended).
@@ -32,6 +34,80 @@ TERMINATED = ("regimemap: terminated", 128 + int(signal.SIGTERM))
 _exiting = threading.Lock()
 _exiting_thread: list[int] = []
 _flushed: list[Any] = []
+
+
+def _send_to_main_thread(signum: int) -> None:
+    """``signum`` to the main thread, from a thread of its own: it arrives after the caller returns.
+
+    ``pthread_kill`` wakes a main thread that sleeps or waits (the call is retried after the
+    handler, PEP 475); where it is missing, :func:`_thread.interrupt_main` sets the signal as
+    pending.  Both from another thread, because ``signal.raise_signal`` and ``os.kill`` run the
+    handler at once, in their caller.
+    """
+    main = threading.main_thread().ident
+    if main is None or not hasattr(signal, "pthread_kill"):  # pragma: no cover - not POSIX
+        _thread.start_new_thread(_thread.interrupt_main, (signal.Signals(signum),))
+    else:
+        _thread.start_new_thread(signal.pthread_kill, (main, signum))
+
+
+class LostSignals:
+    """A signal's exception that lands in a finalizer, raised again in the code that runs next.
+
+    Python runs a ``__del__`` method or a weakref callback wherever an object dies, and an
+    exception raised there cannot leave it: Python prints ``Exception ignored in ...`` with a
+    traceback on stderr and carries on, as if the signal had never come.  While this is
+    installed (``with``), ``sys.unraisablehook`` takes an exception of ``kinds`` back without a
+    word and the signal is sent again to the main thread (:func:`_send_to_main_thread`), whose
+    handler then raises in the code that runs next.  A handler first asks :meth:`deferred`: a
+    signal handled inside the hook itself is sent again too, rather than raised there.  Used by
+    the ``regimemap`` process while a command runs (:func:`regimemap.cli._signals.stop_signals`)
+    and by every worker of the process pool (:mod:`regimemap.workers`).
+
+    Parameters
+    ----------
+    kinds
+        The exceptions the handlers raise (KeyboardInterrupt, ...).
+    """
+
+    def __init__(self, kinds: tuple[type[BaseException], ...]) -> None:
+        self.kinds = kinds
+        #: The signal whose exception the handlers raised last (sent again when it is lost).
+        self.signum: int | None = None
+        #: Whether the exception of :attr:`signum` was lost in a finalizer and is being sent again.
+        self.lost = False
+        self._hook: Any = sys.unraisablehook
+
+    def __enter__(self) -> LostSignals:
+        self._hook = sys.unraisablehook
+        sys.unraisablehook = self._unraisable
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        sys.unraisablehook = self._hook
+
+    def raising(self, signum: int) -> None:
+        """Note that a handler raises the exception of ``signum`` now."""
+        self.signum = signum
+        self.lost = False
+
+    def deferred(self, signum: int, frame: FrameType | None) -> bool:
+        """Whether a handler of ``signum`` runs inside the hook: then the signal is sent again."""
+        if frame is not None and frame.f_code in _HOOK_CODE:
+            _send_to_main_thread(signum)
+            return True
+        return False
+
+    def _unraisable(self, info: Any) -> None:
+        if self.signum is not None and isinstance(info.exc_value, self.kinds):
+            self.lost = True
+            _send_to_main_thread(self.signum)
+            return
+        self._hook(info)
+
+
+#: The code of the hook and of what it calls: a handler that runs there does not raise.
+_HOOK_CODE = (LostSignals._unraisable.__code__, _send_to_main_thread.__code__)
 
 
 def is_console() -> bool:

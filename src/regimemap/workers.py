@@ -45,7 +45,10 @@ from collections.abc import Callable, Iterator
 from concurrent.futures import Future
 from multiprocessing.connection import Connection, wait
 from multiprocessing.reduction import ForkingPickler
+from types import FrameType
 from typing import Any, TypeVar
+
+from .process import LostSignals
 
 __all__ = ["PARENT_VARIABLE", "STOP_GRACE", "STOP_SIGNAL", "PoolBroken", "WorkerPool", "WorkerStopped",
            "available_cores", "die_with_parent", "local_cluster", "worker_pool"]
@@ -115,7 +118,15 @@ def signals_held() -> Iterator[None]:
 
 # -- in the worker ----------------------------------------------------------------------------
 
-def _raise_stopped(signum: int, frame: object) -> None:
+#: A worker's :class:`WorkerStopped` lost in a finalizer (a weakref callback of matplotlib's, in
+#: the report's figures) is raised again in the code that runs next.
+_lost = LostSignals((WorkerStopped,))
+
+
+def _raise_stopped(signum: int, frame: FrameType | None) -> None:
+    if _lost.deferred(signum, frame):
+        return
+    _lost.raising(signum)
     raise WorkerStopped(signum)
 
 
@@ -161,6 +172,7 @@ def _worker_main(conn: Connection, parent: int, others: list[Connection]) -> Non
     for sig in _STOP_SIGNALS:
         signal.signal(sig, signal.SIG_IGN)
     signal.signal(STOP_SIGNAL, _raise_stopped)
+    _lost.__enter__()
     for other in others:  # the parent's ends of the other workers' pipes
         other.close()
     try:

@@ -94,6 +94,31 @@ def test_a_signal_that_became_another_error_still_ends_the_command_as_the_signal
     assert [ln for ln in r.stderr.splitlines() if ln.strip()] == [message]
 
 
+class _SignalledWhenCollected:
+    """An object whose finalizer gets a signal (as matplotlib's weakref callbacks did under load)."""
+
+    def __init__(self, sig: int) -> None:
+        self.sig = sig
+
+    def __del__(self) -> None:
+        os.kill(os.getpid(), self.sig)  # its handler runs here, inside the finalizer
+
+
+@pytest.mark.parametrize("sig,kind", [(signal.SIGINT, KeyboardInterrupt), (signal.SIGTERM, Terminated)])
+def test_a_signal_lost_in_a_finalizer_is_raised_in_the_code_that_runs_next(capfd, sig, kind):
+    """Python prints "Exception ignored in" and carries on when a handler raises in a finalizer:
+    the signal is sent again, and the command's code stops without a word on stderr."""
+    carried_on = False
+    start = time.monotonic()
+    with pytest.raises(kind), stop_signals():
+        _SignalledWhenCollected(sig)
+        time.sleep(5.0)
+        carried_on = True
+    assert not carried_on and time.monotonic() - start < 4.0
+    err = capfd.readouterr().err
+    assert "Exception ignored" not in err and "Traceback" not in err, err
+
+
 def test_an_error_without_a_signal_is_that_error():
     with pytest.raises(ImportError, match="initialization failed"), stop_signals():
         raise ImportError("initialization failed")

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.workers import PoolBroken, WorkerPool, worker_pool
+from regimemap.workers import STOP_SIGNAL, PoolBroken, WorkerPool, worker_pool
 
 pytestmark = [pytest.mark.subprocess,
               pytest.mark.skipif(not sys.platform.startswith("linux"), reason="fork, signals")]
@@ -33,6 +33,22 @@ def _sleep_then_mark(folder: str, seconds: float) -> str:
         return "done"
     finally:
         Path(folder, f"cleaned-{os.getpid()}").touch()
+
+
+class _StoppedWhenCollected:
+    """An object whose finalizer gets the stop signal (a weakref callback of matplotlib's did)."""
+
+    def __del__(self) -> None:
+        os.kill(os.getpid(), STOP_SIGNAL)  # its handler runs here, inside the finalizer
+
+
+def _stopped_in_a_finalizer(folder: str) -> str:
+    try:
+        _StoppedWhenCollected()
+        time.sleep(5.0)
+        return "carried on"
+    finally:
+        Path(folder, "cleaned").touch()
 
 
 def test_results_come_back_in_any_order_from_every_worker() -> None:
@@ -76,6 +92,18 @@ def test_stop_ends_a_running_task_after_its_cleanup(tmp_path: Path) -> None:
             os.waitpid(pid, os.WNOHANG)
     cleaned = {p.name for p in tmp_path.iterdir()} - {"started"}
     assert cleaned and cleaned <= {f"cleaned-{pid}" for pid in pids}
+
+
+def test_a_stop_lost_in_a_finalizer_still_stops_the_worker_after_its_cleanup(tmp_path: Path, capfd) -> None:
+    """Python prints "Exception ignored in" and carries on when a handler raises in a finalizer:
+    the worker sends itself the signal again, and its task stops, cleaned up, without a word."""
+    start = time.monotonic()
+    with pytest.raises(PoolBroken), worker_pool(1) as pool:
+        pool.submit(_stopped_in_a_finalizer, str(tmp_path)).result(timeout=60)
+    assert time.monotonic() - start < 4.0
+    assert (tmp_path / "cleaned").exists()
+    err = capfd.readouterr().err
+    assert "Exception ignored" not in err and "Traceback" not in err, err
 
 
 def test_a_worker_killed_breaks_the_pool_with_an_error(tmp_path: Path) -> None:

@@ -13,12 +13,11 @@ from __future__ import annotations
 
 import contextlib
 import signal
-import sys
 import threading
 from collections.abc import Iterator
-from typing import Any
+from types import FrameType
 
-from ..process import INTERRUPTED, TERMINATED, exit_now
+from ..process import INTERRUPTED, TERMINATED, LostSignals, exit_now
 
 __all__ = ["EXIT_DEADLINE", "Terminated", "stop_signals"]
 
@@ -57,7 +56,8 @@ def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Ite
     half-way with a traceback.  An interrupt that lands in a finalizer
     (``__del__``, a weakref callback), where Python would print ``Exception
     ignored`` and carry on, is taken back and raised again in the code that
-    runs next.  Afterwards the handlers are restored, unless ``exiting`` (the
+    runs next (:class:`regimemap.process.LostSignals`).  Afterwards the handlers
+    are restored, unless ``exiting`` (the
     ``regimemap`` process itself, which ends now) and a signal came: both are
     then ignored until the process has exited.  With a ``deadline`` (the
     ``regimemap`` process: :data:`EXIT_DEADLINE`), the process ends that many
@@ -73,30 +73,26 @@ def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Ite
         return
     saved = {sig: signal.getsignal(sig) for sig in _STOP_SIGNALS}
     caught: list[int] = []
+    lost = LostSignals((KeyboardInterrupt, Terminated))
 
-    def stop(signum: int, frame: object) -> None:
-        if caught:  # the first one is being handled
+    def stop(signum: int, frame: FrameType | None) -> None:
+        if lost.deferred(signum, frame):
             return
-        caught.append(signum)
-        if deadline is not None:
-            _arm_deadline(signum, deadline)
-        if signum == signal.SIGTERM:
-            raise Terminated(signum)
+        if caught and not lost.lost:  # the first one is being handled
+            return
+        if not caught:
+            caught.append(signum)
+            if deadline is not None:
+                _arm_deadline(signum, deadline)
+        lost.raising(caught[0])
+        if caught[0] == signal.SIGTERM:
+            raise Terminated(caught[0])
         raise KeyboardInterrupt
-
-    hook = sys.unraisablehook
-
-    def unraisable(info: Any) -> None:
-        if caught and isinstance(info.exc_value, (KeyboardInterrupt, Terminated)):
-            signum = caught.pop()  # lost in a finalizer: raised again, at the next bytecode
-            signal.raise_signal(signum)
-            return
-        hook(info)
 
     for sig in _STOP_SIGNALS:
         if saved[sig] is not signal.SIG_IGN:
             signal.signal(sig, stop)
-    sys.unraisablehook = unraisable
+    lost.__enter__()
     try:
         yield
     except Exception as exc:
@@ -107,7 +103,7 @@ def stop_signals(*, exiting: bool = False, deadline: float | None = None) -> Ite
         # as the signal ends it
         raise (Terminated(caught[0]) if caught[0] == signal.SIGTERM else KeyboardInterrupt()) from exc
     finally:
-        sys.unraisablehook = hook
+        lost.__exit__()
         for sig, handler in saved.items():
             # SIG_IGN, not a Python handler: the interpreter keeps it while it shuts down
             signal.signal(sig, signal.SIG_IGN if exiting and caught else handler)
