@@ -24,7 +24,7 @@ import numpy as np
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, design_chart, lifetime_sliding
 from regimemap.lifetime.model import PERIOD_COEFFICIENT, PERIOD_EXPONENT
 
-GODA = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
+GODA = Caisson(depth=10.1, armour_depth=5.6, seabed_slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
                friction=0.6, buoyant_weight=2312e3, berm_width=8.0, angle_deg=15.0)
 MODEL = LifetimeModel(Climate.from_return_values(5.0, 6.3))
 

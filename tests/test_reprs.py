@@ -22,7 +22,7 @@ from regimemap.maps import compute_map
 from regimemap.mechanics.htmltable import cell_text, html_table, number, number_range
 from regimemap.waves import analyse_caisson
 
-GODA = dict(H0=6.3, period=11.4, slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1,
+GODA = dict(H0=6.3, period=11.4, seabed_slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1,
             crest=3.4, berm_width=8.0, angle_deg=15.0, width=15.0, friction=0.6,
             buoyant_weight=2312e3)
 

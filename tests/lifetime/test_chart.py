@@ -53,7 +53,7 @@ def test_sf_width_has_the_required_safety_factor():
     w = sf_width(GODA, MODEL, 1.2)
     H0 = MODEL.climate.return_value(50)
     c = GODA.with_width(w)
-    a = analyse_caisson(depth=c.depth, armour_depth=c.armour_depth, slope=c.slope, period=3.3 * H0**0.63,
+    a = analyse_caisson(depth=c.depth, armour_depth=c.armour_depth, seabed_slope=c.seabed_slope, period=3.3 * H0**0.63,
                         width=w, base_depth=c.base_depth, crest=c.crest, friction=c.friction, H0=H0,
                         angle_deg=c.angle_deg, berm_width=c.berm_width, buoyant_weight=c.buoyant_weight)
     assert float(a.stability.sliding) == pytest.approx(1.2, rel=1e-9)

@@ -109,8 +109,8 @@ def _heaviest_push(caisson: Caisson, model: LifetimeModel) -> tuple[float, float
     from regimemap.waves import breaker_height, deep_water_wavelength
 
     T = float(model.period)
-    H = float(breaker_height(deep_water_wavelength(T), caisson.depth, caisson.slope))
-    a = analyse_caisson(depth=caisson.depth, armour_depth=caisson.armour_depth, slope=caisson.slope,
+    H = float(breaker_height(deep_water_wavelength(T), caisson.depth, caisson.seabed_slope))
+    a = analyse_caisson(depth=caisson.depth, armour_depth=caisson.armour_depth, seabed_slope=caisson.seabed_slope,
                         period=T, width=caisson.width, base_depth=caisson.base_depth, crest=caisson.crest,
                         friction=caisson.friction, H13=H, Hmax=H, buoyant_weight=caisson.buoyant_weight,
                         berm_width=caisson.berm_width, angle_deg=caisson.angle_deg, impulsive=False)
@@ -120,7 +120,7 @@ def _heaviest_push(caisson: Caisson, model: LifetimeModel) -> tuple[float, float
 @pytest.mark.parametrize("margin,slides", [(1.001, False), (0.97, True)])
 def test_no_sliding_when_the_largest_possible_wave_cannot_slide(margin, slides):
     model = LifetimeModel(Climate.from_return_values(8.0, 10.0), years=20, period=12.0, errors=NO_ERRORS)
-    flat = replace(GODA, slope=0.0, angle_deg=0.0)
+    flat = replace(GODA, seabed_slope=0.0, angle_deg=0.0)
     push, _ = _heaviest_push(flat, model)
     # the buoyant weight at which friction just holds the breaker-limited wave, times the margin
     weight = push / flat.friction  # the push does not depend on the weight

@@ -101,8 +101,8 @@ def test_sea_level_rise_in_depth_limited_water_raises_the_esd():
     # Goda's site is in the surf zone: the highest waves at the wall under the 50-year storm break,
     # and their height grows with the depth (Hmax 7.98 m at h = 10.1 m, 8.63 m at 11.1 m)
     T = 3.3 * 6.3**0.63
-    shallow = design_heights(6.3, T, GODA.depth, GODA.slope).Hmax
-    deeper = design_heights(6.3, T, GODA.depth + 1.0, GODA.slope).Hmax
+    shallow = design_heights(6.3, T, GODA.depth, GODA.seabed_slope).Hmax
+    deeper = design_heights(6.3, T, GODA.depth + 1.0, GODA.seabed_slope).Hmax
     assert deeper > shallow * 1.05
     base = _run(MODEL)
     esd = [base.expected_sliding]

@@ -17,7 +17,7 @@ from regimemap.waves import (
     static_rest_check,
 )
 
-GODA = dict(H0=6.3, period=11.4, slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1, crest=3.4,
+GODA = dict(H0=6.3, period=11.4, seabed_slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1, crest=3.4,
             berm_width=8.0, angle_deg=15.0, width=15.0, friction=0.6, buoyant_weight=2312e3)
 
 
@@ -26,7 +26,7 @@ def random_designs(n: int, seed: int, densities: Densities | None = None) -> Cai
     depth = rng.uniform(6, 30, n)
     base = depth * rng.uniform(0.5, 0.95, n)
     cond = dict(H0=rng.uniform(1, 9, n), period=rng.uniform(5, 16, n), depth=depth,
-                slope=rng.uniform(0.0, 0.08, n), base_depth=base,
+                seabed_slope=rng.uniform(0.0, 0.08, n), base_depth=base,
                 armour_depth=base * rng.uniform(0.5, 1.0, n), crest=rng.uniform(0.0, 8.0, n),
                 berm_width=rng.uniform(0, 25, n), angle_deg=rng.uniform(0, 40, n),
                 width=rng.uniform(6, 35, n), friction=rng.uniform(0.4, 0.8, n))

@@ -27,7 +27,7 @@ from regimemap.waves import (
 
 from ._deltares_cases import DELTARES_CASES
 
-GODA = dict(H0=6.3, period=11.4, slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1, crest=3.4,
+GODA = dict(H0=6.3, period=11.4, seabed_slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1, crest=3.4,
             berm_width=8.0, angle_deg=15.0, width=15.0, friction=0.6, buoyant_weight=2312e3)
 
 
@@ -209,7 +209,7 @@ def test_vectorised_equals_loop_of_scalars() -> None:
     rng = np.random.default_rng(7)
     n = 40
     cond = dict(H0=rng.uniform(1, 8, n), period=rng.uniform(5, 16, n), depth=rng.uniform(8, 40, n),
-                slope=rng.uniform(0.0, 0.1, n), berm_width=rng.uniform(0, 30, n),
+                seabed_slope=rng.uniform(0.0, 0.1, n), berm_width=rng.uniform(0, 30, n),
                 angle_deg=rng.uniform(0, 45, n), width=rng.uniform(8, 30, n),
                 buoyant_weight=rng.uniform(1e6, 6e6, n))
     cond["base_depth"] = cond["depth"] * rng.uniform(0.6, 0.9, n)

@@ -18,7 +18,7 @@ import numpy as np
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, design_chart
 from regimemap.lifetime.figures.chart import chart_figure
 
-goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
+goda = Caisson(depth=10.1, armour_depth=5.6, seabed_slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
                friction=0.6, buoyant_weight=2312e3, berm_width=8.0, angle_deg=15.0)
 model = LifetimeModel(Climate.from_return_values(5.0, 6.3))
 chart = design_chart(goda, model, np.linspace(10.0, 25.0, 21), trials=2000, seed=2026, target=0.1)

@@ -18,7 +18,7 @@ Command line::
 from regimemap.lifetime import Caisson, Climate, LifetimeModel, lifetime_sliding
 from regimemap.lifetime.figures.exceedance import lifetime_figure
 
-goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
+goda = Caisson(depth=10.1, armour_depth=5.6, seabed_slope=0.01, width=15.0, base_depth=7.1, crest=3.4,
                friction=0.6, buoyant_weight=2312e3, berm_width=8.0, angle_deg=15.0)
 model = LifetimeModel(Climate.from_return_values(5.0, 6.3))
 result = lifetime_sliding(goda, model, trials=2000, seed=2026)

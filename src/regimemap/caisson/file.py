@@ -89,7 +89,7 @@ class Design:
             densities = Densities(c.concrete_fraction, c.concrete_density, c.fill_density,
                                   c.fill_density_above)
         return dict(
-            depth=self.site.depth, armour_depth=self.site.armour_depth, slope=self.site.seabed_slope,
+            depth=self.site.depth, armour_depth=self.site.armour_depth, seabed_slope=self.site.seabed_slope,
             period=self.wave.period, H0=self.wave.H0, H13=self.wave.H13, Hmax=self.wave.Hmax,
             angle_deg=self.wave.angle, rotation_deg=self.wave.rotation, width=c.width,
             base_depth=c.base_depth, crest=c.crest, berm_width=c.berm_width, friction=c.friction,
@@ -112,7 +112,7 @@ class Design:
         from regimemap.lifetime import Caisson
 
         a = self.analysis_inputs(g)
-        return Caisson(depth=a["depth"], armour_depth=a["armour_depth"], slope=a["slope"],
+        return Caisson(depth=a["depth"], armour_depth=a["armour_depth"], seabed_slope=a["seabed_slope"],
                        width=a["width"], base_depth=a["base_depth"], crest=a["crest"],
                        friction=a["friction"], buoyant_weight=a["buoyant_weight"],
                        densities=a["densities"], berm_width=a["berm_width"], angle_deg=a["angle_deg"],

@@ -265,7 +265,7 @@ def sf_width(caisson: Caisson, model: LifetimeModel, required_sf: float = 1.2,
 
     def sf(width: float) -> float:
         c = caisson.with_width(width)
-        a = analyse_caisson(depth=c.depth, armour_depth=c.armour_depth, slope=c.slope, period=T,
+        a = analyse_caisson(depth=c.depth, armour_depth=c.armour_depth, seabed_slope=c.seabed_slope, period=T,
                             width=c.width, base_depth=c.base_depth, crest=c.crest, friction=c.friction,
                             H0=H0, angle_deg=c.angle_deg, rotation_deg=c.rotation_deg,
                             berm_width=c.berm_width, buoyant_weight=c.buoyant_weight,

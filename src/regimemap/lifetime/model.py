@@ -104,7 +104,7 @@ class Caisson:
     ----------
     depth, armour_depth : float
         ``h`` at the wall and ``d`` above the armour layer [m].
-    slope : float
+    seabed_slope : float
         ``tan(theta)`` of the sea bed.
     width, base_depth, crest : float
         Full width ``b`` (twice the map's half width ``B``), ``h'``, ``hc`` [m].
@@ -124,7 +124,7 @@ class Caisson:
 
     depth: float
     armour_depth: float
-    slope: float
+    seabed_slope: float
     width: float
     base_depth: float
     crest: float

@@ -46,7 +46,7 @@ def lifetime_sliding(caisson: Caisson, model: LifetimeModel, trials: int = 5000,
     Examples
     --------
     >>> from regimemap.lifetime import Caisson, Climate, LifetimeModel
-    >>> goda = Caisson(depth=10.1, armour_depth=5.6, slope=0.01, width=15.0, base_depth=7.1,
+    >>> goda = Caisson(depth=10.1, armour_depth=5.6, seabed_slope=0.01, width=15.0, base_depth=7.1,
     ...                crest=3.4, friction=0.6, buoyant_weight=2312e3, berm_width=8.0, angle_deg=15.0)
     >>> model = LifetimeModel(Climate.from_return_values(5.0, 6.3))
     >>> r = lifetime_sliding(goda, model, trials=200, seed=1)

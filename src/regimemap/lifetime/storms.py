@@ -83,9 +83,9 @@ def sea_states(caissons: tuple[Caisson, ...], model: LifetimeModel, H0: FloatArr
     hp = c.base_depth + tide
     d = c.armour_depth + tide
     hc = c.crest - tide
-    heights = design_heights(h0, T, h, c.slope, g=c.g)
+    heights = design_heights(h0, T, h, c.seabed_slope, g=c.g)
     H13 = np.where(calm, 0.0, heights.H13 * transformation)
-    hb = h + 5.0 * H13 * c.slope
+    hb = h + 5.0 * H13 * c.seabed_slope
     n_waves = np.where(calm, 0, np.rint(model.storm_hours * 3600.0 / T)).astype(np.int64)
     mu = c.friction * friction
     widths = np.array([ci.width for ci in caissons], dtype=np.float64)
@@ -93,7 +93,7 @@ def sea_states(caissons: tuple[Caisson, ...], model: LifetimeModel, H0: FloatArr
     weight = dry * c.g - c.rho_w * c.g * widths[:, None] * hp[None, :]
     return SeaStates(H0=np.where(calm, 0.0, h0), period=T, depth=h, base_depth=hp, armour_depth=d,
                      crest=hc, H13=H13, hb=hb, L=wavelength(T, h, c.g),
-                     H_cap=breaker_height(heights.L0, hb, c.slope), n_waves=n_waves,
+                     H_cap=breaker_height(heights.L0, hb, c.seabed_slope), n_waves=n_waves,
                      force_factor=np.asarray(force, dtype=np.float64), friction=mu, widths=widths,
                      resistance=mu[None, :] * weight,
                      mass=dry + added_mass(hp, c.rho_w)[None, :])

@@ -107,7 +107,7 @@ class CaissonAnalysis:
 
 # Goda's design procedure takes one keyword-only argument per input of the method (site, wave,
 # section, friction, options), named as in the design file and Goda (2000) (PLR0913 accepted here).
-def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope: npt.ArrayLike,  # noqa: PLR0913
+def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, seabed_slope: npt.ArrayLike,  # noqa: PLR0913
                     period: npt.ArrayLike, width: npt.ArrayLike, base_depth: npt.ArrayLike,
                     crest: npt.ArrayLike, friction: npt.ArrayLike,
                     H0: npt.ArrayLike | None = None, H13: npt.ArrayLike | None = None,
@@ -122,7 +122,7 @@ def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope:
 
     Parameters
     ----------
-    depth, armour_depth, slope : array_like
+    depth, armour_depth, seabed_slope : array_like
         ``h`` [m], ``d`` [m], ``tan theta`` of the sea bed.
     period : array_like
         ``T1/3`` [s].
@@ -158,9 +158,9 @@ def analyse_caisson(*, depth: npt.ArrayLike, armour_depth: npt.ArrayLike, slope:
     if H0 is not None:
         if H13 is not None or Hmax is not None:
             raise ValueError("give either H0 or (H13 and Hmax), not both")
-        heights = design_heights(H0, period, depth, slope, g=g, hmax_factor=hmax_factor)
+        heights = design_heights(H0, period, depth, seabed_slope, g=g, hmax_factor=hmax_factor)
     elif H13 is not None and Hmax is not None:
-        heights = given_heights(H13, Hmax, depth, slope)
+        heights = given_heights(H13, Hmax, depth, seabed_slope)
     else:
         raise ValueError("give either H0 or both H13 and Hmax")
     if (buoyant_weight is None) == (densities is None):

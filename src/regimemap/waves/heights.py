@@ -123,7 +123,7 @@ class DesignHeights:
 
 
 def design_heights(H0: npt.ArrayLike, period: npt.ArrayLike, depth: npt.ArrayLike,
-                   slope: npt.ArrayLike, g: float = G,
+                   seabed_slope: npt.ArrayLike, g: float = G,
                    hmax_factor: float = HMAX_FACTOR) -> DesignHeights:
     """Goda's design wave heights ``H1/3`` and ``Hmax`` at the wall.
 
@@ -135,7 +135,7 @@ def design_heights(H0: npt.ArrayLike, period: npt.ArrayLike, depth: npt.ArrayLik
         Significant wave period ``T1/3`` [s].
     depth : array_like
         Water depth at the wall ``h`` [m].
-    slope : array_like
+    seabed_slope : array_like
         ``tan(theta)`` of the sea bed in front of the wall [-].
     g : float, optional
         Gravitational acceleration [m/s^2].
@@ -172,7 +172,7 @@ def design_heights(H0: npt.ArrayLike, period: npt.ArrayLike, depth: npt.ArrayLik
       be 7.86 m).
     """
     h0, t, h, tan = np.broadcast_arrays(as_float(H0), as_float(period), as_float(depth),
-                                        as_float(slope))
+                                        as_float(seabed_slope))
     L0 = deep_water_wavelength(t, g)
     s = h0 / L0
     ks = shoaling_coefficient(h0, t, h, g)
@@ -199,7 +199,7 @@ def design_heights(H0: npt.ArrayLike, period: npt.ArrayLike, depth: npt.ArrayLik
 
 
 def given_heights(H13: npt.ArrayLike, Hmax: npt.ArrayLike, depth: npt.ArrayLike,
-                  slope: npt.ArrayLike) -> DesignHeights:
+                  seabed_slope: npt.ArrayLike) -> DesignHeights:
     """Design heights given directly (no shoaling, no surf-zone formula).
 
     Parameters
@@ -208,7 +208,7 @@ def given_heights(H13: npt.ArrayLike, Hmax: npt.ArrayLike, depth: npt.ArrayLike,
         Significant and maximum wave heights at the wall [m].
     depth : array_like
         Water depth at the wall ``h`` [m].
-    slope : array_like
+    seabed_slope : array_like
         ``tan(theta)`` of the sea bed, for ``h_b = h + 5 H1/3 tan theta``
         (Goda 2000, Sect. 4.2).
 
@@ -218,14 +218,14 @@ def given_heights(H13: npt.ArrayLike, Hmax: npt.ArrayLike, depth: npt.ArrayLike,
         ``Ks`` and ``L0`` are nan, ``surf_zone`` is False.
     """
     h13, hmax, h, tan = np.broadcast_arrays(as_float(H13), as_float(Hmax), as_float(depth),
-                                            as_float(slope))
+                                            as_float(seabed_slope))
     nan = np.full(h13.shape, np.nan)
     return DesignHeights(H13=h13.copy(), Hmax=hmax.copy(),
                          hb=np.asarray(h + 5.0 * h13 * tan, dtype=np.float64), Ks=nan,
                          L0=nan.copy(), surf_zone=np.zeros(h13.shape, dtype=np.bool_))
 
 
-def breaker_height(L0: npt.ArrayLike, depth: npt.ArrayLike, slope: npt.ArrayLike) -> FloatArray:
+def breaker_height(L0: npt.ArrayLike, depth: npt.ArrayLike, seabed_slope: npt.ArrayLike) -> FloatArray:
     """Goda's breaker limit: the highest individual wave at a depth.
 
     Parameters
@@ -235,7 +235,7 @@ def breaker_height(L0: npt.ArrayLike, depth: npt.ArrayLike, slope: npt.ArrayLike
     depth : array_like
         Water depth ``h_b`` at which the wave breaks [m] (for a wave at an
         upright wall, ``h_b = h + 5 H1/3 tan(theta)``, Goda 2000, Sect. 4.2).
-    slope : array_like
+    seabed_slope : array_like
         ``tan(theta)`` of the sea bed [-].
 
     Returns
@@ -250,6 +250,6 @@ def breaker_height(L0: npt.ArrayLike, depth: npt.ArrayLike, slope: npt.ArrayLike
     waves in the expected-sliding-distance model (Shimosako & Takahashi 1999;
     Goda & Takagi 2000).
     """
-    l0, hb, tan = np.broadcast_arrays(as_float(L0), as_float(depth), as_float(slope))
+    l0, hb, tan = np.broadcast_arrays(as_float(L0), as_float(depth), as_float(seabed_slope))
     return np.asarray(0.17 * l0 * -np.expm1(-1.5 * np.pi * hb / l0 * (1.0 + 15.0 * tan ** (4.0 / 3.0))),
                       dtype=np.float64)

@@ -258,7 +258,7 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
         fig.text(0.6 / W, 1.0 - 0.68 / H,
                  f"{wave}, T\u2081/\u2083 = {value('wave.period', 'period')} s, "
                  f"\u03b2 = {float(a.pressures.beta):g}\u00b0, "
-                 f"tan \u03b8 = {value('site.seabed_slope', 'slope')}, "
+                 f"tan \u03b8 = {value('site.seabed_slope', 'seabed_slope')}, "
                  f"\u03bc = {shown.get('caisson.friction') or format(report.mu, 'g')}, "
                  f"W\u2032 = {fmt(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
                  + ("Goda (2000) with Takahashi's \u03b1$_I$ (impulsive = true)"
