@@ -10,6 +10,11 @@ interpreter importing numpy would print a traceback. While the command runs,
 :func:`exit_now` ends the process (the line, then ``os._exit``) once they have. A Dask worker
 that the process spawns (``study --scheduler local``) imports regimemap too, as it starts:
 :func:`die_with_spawning_parent` has it die with its parent from then on.
+
+Two things every process of regimemap's shares live here too: a signal whose exception lands in
+a finalizer is raised again in the code that runs next (:class:`LostSignals`: the command's
+handlers and every worker of :mod:`regimemap.workers` use it), and a process asks to receive a
+signal when its parent dies (:func:`die_with_parent`: a pool's worker, a Dask worker).
 """
 
 from __future__ import annotations
@@ -23,8 +28,8 @@ import time
 from types import FrameType
 from typing import Any
 
-__all__ = ["INTERRUPTED", "TERMINATED", "LostSignals", "die_with_spawning_parent", "exit_now",
-           "exit_on_signal_at_start", "flush_on_exit", "is_console"]
+__all__ = ["INTERRUPTED", "TERMINATED", "LostSignals", "die_with_parent", "die_with_spawning_parent",
+           "exit_now", "exit_on_signal_at_start", "flush_on_exit", "is_console"]
 
 #: The line and exit code of Ctrl-C (SIGINT) and of SIGTERM (128 + the signal's number, as a shell
 #: reports a process the signal ended).
@@ -211,13 +216,47 @@ def exit_on_signal_at_start() -> None:
             signal.signal(sig, _exit_on)
 
 
+#: ``prctl``'s option that sends a signal when the parent dies (linux/prctl.h).
+_PR_SET_PDEATHSIG = 1
+
+
+def _watch_parent(parent: int, signum: int) -> None:  # pragma: no cover - not Linux
+    """A worker's thread where prctl is missing: ``signum`` to itself once the parent is gone."""
+    while os.getppid() == parent:
+        time.sleep(0.5)
+    os.kill(os.getpid(), signum)
+
+
+def die_with_parent(parent: int, signum: int) -> None:
+    """Make this (worker) process receive ``signum`` when the process ``parent`` dies.
+
+    Linux: ``prctl(PR_SET_PDEATHSIG)``, then a check that the parent did not
+    die before it (the worker is then an orphan already).  Elsewhere a daemon
+    thread polls the parent's pid.  Called by a pool's worker as it starts, and
+    by a LocalCluster's worker (SIGKILL) as it imports regimemap
+    (:data:`regimemap.workers.PARENT_VARIABLE`).
+    """
+    done = False
+    if sys.platform.startswith("linux"):
+        try:
+            import ctypes
+
+            libc = ctypes.CDLL(None, use_errno=True)
+            done = libc.prctl(_PR_SET_PDEATHSIG, int(signum), 0, 0, 0) == 0
+        except (OSError, AttributeError):  # pragma: no cover - no libc prctl
+            done = False
+    if not done:  # pragma: no cover - not Linux
+        threading.Thread(target=_watch_parent, args=(parent, signum), daemon=True,
+                         name="regimemap-parent-watch").start()
+    if os.getppid() != parent:  # the parent died before prctl
+        os.kill(os.getpid(), signum)
+
+
 def die_with_spawning_parent() -> None:
     """In a process spawned for a LocalCluster of the ``regimemap`` process (a Dask worker, which
     imports regimemap as it starts): SIGKILL when that parent dies, from this moment on."""
     parent = os.environ.get("REGIMEMAP_DIE_WITH_PARENT", "")  # regimemap.workers.PARENT_VARIABLE
     if parent.isdigit() and int(parent) != os.getpid() and os.getppid() in (int(parent), 1):
-        from .workers import die_with_parent
-
         die_with_parent(int(parent), signal.SIGKILL)
 
 

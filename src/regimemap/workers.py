@@ -14,7 +14,8 @@ Both hold the same three promises:
   :class:`WorkerStopped` in the worker's task, so the cleanups of an atomic
   write (:mod:`regimemap.io.atomic`) run before the worker ends.
 * **No worker outlives its parent.**  On Linux a pool worker asks the kernel
-  for :data:`STOP_SIGNAL` when its parent dies (``prctl(PR_SET_PDEATHSIG)``; it fires
+  for :data:`STOP_SIGNAL` when its parent dies (:func:`regimemap.process.die_with_parent`,
+  ``prctl(PR_SET_PDEATHSIG)``; it fires
   when the *thread* that forked the worker ends, so the pool forks from the
   thread that owns it, and holds it open for its whole life); elsewhere a
   thread of the worker watches its parent's pid.  A LocalCluster's worker
@@ -38,7 +39,6 @@ import logging
 import multiprocessing
 import os
 import signal
-import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -48,10 +48,10 @@ from multiprocessing.reduction import ForkingPickler
 from types import FrameType
 from typing import Any, TypeVar
 
-from .process import LostSignals
+from .process import LostSignals, die_with_parent
 
 __all__ = ["PARENT_VARIABLE", "STOP_GRACE", "STOP_SIGNAL", "PoolBroken", "WorkerPool", "WorkerStopped",
-           "available_cores", "die_with_parent", "local_cluster", "worker_pool"]
+           "available_cores", "local_cluster", "worker_pool"]
 
 _T = TypeVar("_T")
 
@@ -77,10 +77,6 @@ PARENT_VARIABLE = "REGIMEMAP_DIE_WITH_PARENT"
 
 #: The signals held off while a worker starts.
 _HELD = (*_STOP_SIGNALS, STOP_SIGNAL)
-
-#: ``prctl``'s option that sends a signal when the parent dies (linux/prctl.h).
-_PR_SET_PDEATHSIG = 1
-
 
 class WorkerStopped(BaseException):
     """Raised in a worker's task by :data:`STOP_SIGNAL`: the parent stops the pool, or has died.
@@ -130,38 +126,6 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
     raise WorkerStopped(signum)
 
 
-def _watch_parent(parent: int, signum: int) -> None:  # pragma: no cover - not Linux
-    """A worker's thread where prctl is missing: ``signum`` to itself once the parent is gone."""
-    while os.getppid() == parent:
-        time.sleep(0.5)
-    os.kill(os.getpid(), signum)
-
-
-def die_with_parent(parent: int, signum: int = STOP_SIGNAL) -> None:
-    """Make this (worker) process receive ``signum`` when the process ``parent`` dies.
-
-    Linux: ``prctl(PR_SET_PDEATHSIG)``, then a check that the parent did not
-    die before it (the worker is then an orphan already).  Elsewhere a daemon
-    thread polls the parent's pid.  Called by a pool's worker as it starts, and
-    by a LocalCluster's worker (SIGKILL) as it imports regimemap
-    (:data:`PARENT_VARIABLE`).
-    """
-    done = False
-    if sys.platform.startswith("linux"):
-        try:
-            import ctypes
-
-            libc = ctypes.CDLL(None, use_errno=True)
-            done = libc.prctl(_PR_SET_PDEATHSIG, int(signum), 0, 0, 0) == 0
-        except (OSError, AttributeError):  # pragma: no cover - no libc prctl
-            done = False
-    if not done:  # pragma: no cover - not Linux
-        threading.Thread(target=_watch_parent, args=(parent, signum), daemon=True,
-                         name="regimemap-parent-watch").start()
-    if os.getppid() != parent:  # the parent died before prctl
-        os.kill(os.getpid(), signum)
-
-
 def _worker_main(conn: Connection, parent: int, others: list[Connection]) -> None:
     """A worker process: run the tasks ``conn`` hands over, one at a time, until told to stop.
 
@@ -176,7 +140,7 @@ def _worker_main(conn: Connection, parent: int, others: list[Connection]) -> Non
     for other in others:  # the parent's ends of the other workers' pipes
         other.close()
     try:
-        die_with_parent(parent)
+        die_with_parent(parent, STOP_SIGNAL)
         if hasattr(signal, "pthread_sigmask"):
             signal.pthread_sigmask(signal.SIG_UNBLOCK, _HELD)
         _serve(conn)

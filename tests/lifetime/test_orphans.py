@@ -4,7 +4,7 @@ Each test starts a run in its own process group, waits until its workers exist (
 descendants in /proc) and the run is under way, kills the parent with SIGKILL (no cleanup of
 its own can run) and checks that every process it had started is gone within
 :data:`GONE_WITHIN` seconds: the pool's workers by their parent-death signal
-(:func:`regimemap.workers.die_with_parent`), a LocalCluster's by Dask's pipe from
+(:func:`regimemap.process.die_with_parent`), a LocalCluster's by Dask's pipe from
 the parent.  Polled every 50 ms; the seconds it took are in the failure message.
 """
 
