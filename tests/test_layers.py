@@ -1,6 +1,7 @@
 """The layers and their import rules, read from the source (AST), so a breach fails a test.
 
-The physics core -- mechanics (numpy only) -> waves -> dynamics -- and beside the engine each
+What every record is made of (records: notices, checks, fields, numbers for people); the
+physics core -- mechanics (numpy only) -> waves -> dynamics -- and beside the engine each
 product's computation; then io (files in and out, by format), each product's input declaration
 (``file*``) and record (``record*``), its run (``run*``), the index of the runs (``workflows``),
 drawing and each product's figures (``figures*``), and the command line (``cli``): a module
@@ -21,7 +22,7 @@ from pathlib import Path
 SRC = Path(__file__).resolve().parents[1] / "src" / "regimemap"
 
 #: Layer of each package that is not a product: a module may import from layers <= its own.
-LAYER = {"mechanics": 0, "waves": 1, "dynamics": 2, "io": 3, "workflows": 3.6, "drawing": 4, "cli": 5}
+LAYER = {"records": -1, "mechanics": 0, "waves": 1, "dynamics": 2, "io": 3, "workflows": 3.6, "drawing": 4, "cli": 5}
 #: The products: one folder each, holding its computation, input declaration, run, record and figures.
 PRODUCTS = ("maps", "caisson", "motion", "lifetime", "climate", "study")
 #: The layer of a product module by its role, the first word of its name (``file_keys`` is a
@@ -332,8 +333,6 @@ DRAWING_MAY_IMPORT = {
     "mechanics.modes.Mode": "the modes, an enumeration",
     "mechanics.modes.MAP_MODES": "the modes of a map, a constant tuple",
     "mechanics.modes.LOADED_MAP_MODES": "the modes of a loaded map, a constant tuple",
-    "mechanics.checks.Check": "a requirement and its value, a record",
-    "mechanics.checks.all_pass": "whether every given check passed (a comparison, no physics)",
     "mechanics.validation.check_gamma": "input range check, raises ValueError",
     "mechanics.validation.check_resolution": "input range check, raises ValueError",
     "maps.mapdata.MapData": "a computed map, a record",
@@ -348,7 +347,6 @@ DRAWING_MAY_IMPORT = {
     "maps.geometry.DEFAULT_SAMPLES": "a default resolution, a constant",
     "maps.geometry.area_in_view": "area of a drawn polygon clipped to the axes (plane geometry)",
     "maps.describe.LOAD_SYMBOLS": "the loads' symbols, constants",
-    "maps.describe.format_significant": "number formatting",
     "maps.describe.format_value": "number formatting",
     "maps.describe.load_items": "the loads as (symbol, value) pairs (formatting)",
     "maps.describe.loads_text": "the loads in words (formatting)",

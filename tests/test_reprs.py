@@ -19,7 +19,8 @@ from regimemap import Parameters, query_point
 from regimemap.caisson.report import caisson_report
 from regimemap.lifetime import LifetimeResult
 from regimemap.maps import compute_map
-from regimemap.mechanics.htmltable import cell_text, html_table, number, number_range
+from regimemap.records.htmltable import cell_text, html_table
+from regimemap.records.numbers import number, number_range
 from regimemap.waves import analyse_caisson
 
 GODA = dict(H0=6.3, period=11.4, seabed_slope=0.01, depth=10.1, armour_depth=5.6, base_depth=7.1,

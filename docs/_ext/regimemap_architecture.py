@@ -37,10 +37,12 @@ SHARED = ("#333333", "#FFFFFF")
 ROLE_WORDS = {"figures": "figures", "run": "run", "file": "input declaration", "record": "record",
               "compute": "computation"}
 #: What each shared package is, in its band.
-SHARED_WORDS = {"mechanics": "the physics: closed forms, the independent solver (numpy only)",
+SHARED_WORDS = {"records": "what every record is made of: warnings and verdicts as data, fields, numbers "
+                           "for people",
+                "mechanics": "the physics: closed forms, the independent solver (numpy only)",
                 "waves": "Goda-Takahashi wave loads", "dynamics": "the engine of the motion past initiation",
                 "io": "files in and out, by format: atomic writes, the format registry, the input keys' "
-                      "declaration and reader, numbers, verdicts",
+                      "declaration and reader",
                 "workflows": "the index of the runs: one call per command",
                 "drawing": "what every figure shares: style, figure files, the tidy pass, label placement",
                 "cli": "the command line: options and one call per command",

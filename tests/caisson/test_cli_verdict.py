@@ -9,7 +9,7 @@ import pytest
 
 from regimemap.caisson.file import example_design_text, parse_design
 from regimemap.caisson.report import caisson_checks, caisson_report
-from regimemap.mechanics.checks import Check
+from regimemap.records.checks import Check
 
 EXAMPLE = example_design_text()
 NO_LIFE = EXAMPLE.split("# Optional: the sliding of the caisson")[0]

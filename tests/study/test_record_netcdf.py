@@ -13,7 +13,7 @@ import sys
 import numpy as np
 import pytest
 
-from regimemap.mechanics.notices import Notice
+from regimemap.records.notices import Notice
 from regimemap.study.run import StudyRecord, StudyRow
 
 YEARS = 10

@@ -5,7 +5,7 @@ A design file can pass every range check and still describe no breakwater:
 ``buoyant_weight = 2312000`` (N/m for kN/m) a section as dense as lead. Each
 check below names the key, the value, the range that real vertical
 breakwaters fall in, and the slip that most likely explains the value; as
-warnings of a workflow they are :class:`~regimemap.mechanics.notices.Notice`
+warnings of a workflow they are :class:`~regimemap.records.notices.Notice`
 data (:func:`implausible_notices`). The commands print them on standard error;
 ``--strict`` makes them errors. Valid inputs are never refused without ``--strict``.
 
@@ -27,7 +27,7 @@ import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 
 if TYPE_CHECKING:  # pragma: no cover
     from regimemap.waves import CaissonAnalysis
@@ -36,7 +36,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = ["IMPLAUSIBLE", "Implausible", "implausible_notices", "implausible_values"]
 
-#: The code of an implausible value's :class:`~regimemap.mechanics.notices.Notice`.
+#: The code of an implausible value's :class:`~regimemap.records.notices.Notice`.
 IMPLAUSIBLE = "implausible-value"
 
 #: Plausible ranges: (low, high) and the unit they are in.
@@ -111,7 +111,7 @@ def implausible_values(design: Design, analysis: CaissonAnalysis | None = None) 
 def implausible_notices(design: Design, analysis: CaissonAnalysis | None = None
                         ) -> tuple[Notice, ...]:
     """:func:`implausible_values` as the warnings of a workflow, one
-    :class:`~regimemap.mechanics.notices.Notice` each (:meth:`Implausible.notice`).
+    :class:`~regimemap.records.notices.Notice` each (:meth:`Implausible.notice`).
 
     Examples
     --------

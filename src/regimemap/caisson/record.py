@@ -14,16 +14,14 @@ from typing import Any
 
 import numpy as np
 
-from ..io.checks import checks_json, checks_lines
-from ..io.numbers import json_number as round_sig
-from ..maps.describe import format_significant as _sig
 from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
-from ..mechanics.checks import Check
+from ..records.checks import Check, checks_json, checks_lines
+from ..records.numbers import format_significant, json_number
 from .report import REQUIRED_SF, CaissonReport, caisson_checks
 
 __all__ = ["CONSISTENCY_NOTE", "NUMBERS", "REQUIRED_SF", "UNITS", "CaissonNumbers", "Number", "caisson_json",
            "caisson_numbers", "design_check", "design_check_lines", "format_caisson", "impulsive_words",
-           "number", "number_rows", "round_sig", "text_context"]
+           "number", "number_rows", "text_context"]
 
 #: Why Goda's safety factors and the map agree (docs/waves.md, Sect. 7).
 CONSISTENCY_NOTE = (
@@ -39,14 +37,14 @@ def _f(x: Any) -> float:
 def _crossing_dict(c: Crossing | None) -> dict[str, Any] | None:
     if c is None:
         return None
-    return {"at": round_sig(c.at), "delta": round_sig(c.delta),
-            "relative": None if c.relative is None else round_sig(c.relative),
+    return {"at": json_number(c.at), "delta": json_number(c.delta),
+            "relative": None if c.relative is None else json_number(c.relative),
             "to": mode_label(c.to)}
 
 
 def _margin_dict(m: Margin) -> dict[str, Any]:
     n = m.nearest
-    return {"value": round_sig(m.value), "up": _crossing_dict(m.up), "down": _crossing_dict(m.down),
+    return {"value": json_number(m.value), "up": _crossing_dict(m.up), "down": _crossing_dict(m.down),
             "nearest": None if n is None else n.direction}
 
 
@@ -192,9 +190,10 @@ def text_context(r: CaissonReport, n: Mapping[str, float],
     depth = (written or {}).get("site.depth") or f"{float(r.inputs['depth']):g}"
     side = "above" if n["kprime"] > 0 else ("below" if n["kprime"] < 0 else "at")
     which = "alpha_I" if n["alpha_I"] > n["alpha2"] and n["alpha_star"] == n["alpha_I"] else "alpha2"
-    return {"depth": depth, "arm": _sig(abs(n["kprime"]) * n["H_C"], 3), "side": side, "which": which,
+    return {"depth": depth, "arm": format_significant(abs(n["kprime"]) * n["H_C"], 3), "side": side,
+            "which": which,
             "impulsive": impulsive_words(r),
-            **{a: _sig(n[a]) for a in ("alpha1", "alpha2", "alpha3", "alpha_I")}}
+            **{a: format_significant(n[a]) for a in ("alpha1", "alpha2", "alpha3", "alpha_I")}}
 
 
 def number_rows(n: Mapping[str, float],
@@ -221,7 +220,7 @@ def design_check(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) 
     out: dict[str, Any] = {}
     for name, value, need in (("sliding", _f(st.sliding), required[0]),
                               ("overturning", _f(st.overturning), required[1])):
-        out[name] = {"value": round_sig(value), "required": need, "meets": bool(value >= need)}
+        out[name] = {"value": json_number(value), "required": need, "meets": bool(value >= need)}
     return out
 
 
@@ -268,7 +267,7 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
-    out.update({k: round_sig(v) for k, v in caisson_numbers(r).items()})
+    out.update({k: json_number(v) for k, v in caisson_numbers(r).items()})
     out["mode"] = mode_label(r.mode)
     out["mode_description"] = mode_description(r.mode)
     out["margin"] = {"k": _margin_dict(r.margin_k), "mu": _margin_dict(r.margin_mu)}
@@ -282,14 +281,14 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     st = p.analysis.stability
     out["path"] = {
         "scaling": "H13 and Hmax times factor; loads recomputed; each point on its own map",
-        "onset_factor": None if p.onset is None else round_sig(p.onset),
-        "onset_Hmax": None if p.onset is None else round_sig(p.onset * hmax),
+        "onset_factor": None if p.onset is None else json_number(p.onset),
+        "onset_Hmax": None if p.onset is None else json_number(p.onset * hmax),
         "onset_mode": None if p.onset_mode is None else mode_label(p.onset_mode),
         "points": [{
-            "factor": round_sig(p.factors[i]), "Hmax": round_sig(p.factors[i] * hmax),
-            "k": round_sig(p.k[i]), "kprime": round_sig(p.kprime[i]),
-            "uplift_ratio": round_sig(p.uplift_ratio[i]),
-            "SF_sliding": round_sig(st.sliding[i]), "SF_overturning": round_sig(st.overturning[i]),
+            "factor": json_number(p.factors[i]), "Hmax": json_number(p.factors[i] * hmax),
+            "k": json_number(p.k[i]), "kprime": json_number(p.kprime[i]),
+            "uplift_ratio": json_number(p.uplift_ratio[i]),
+            "SF_sliding": json_number(st.sliding[i]), "SF_overturning": json_number(st.overturning[i]),
             "mode": mode_label(p.modes[i]), "mode_on_design_map": mode_label(p.design_map_modes[i]),
         } for i in tenths],
     }
@@ -351,7 +350,7 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     for label, value, unit, words, digits, heading in number_rows(n, text_context(r, n, written)):
         if heading:
             lines.extend(heading.split("\n"))
-        lines.append(f"  {label:<14}{_sig(value, digits):>10} {unit:<8} {words}")
+        lines.append(f"  {label:<14}{format_significant(value, digits):>10} {unit:<8} {words}")
     lines.append(f"mode on the loaded map: {mode_label(r.mode)} ({mode_description(r.mode)})")
     lines.append("  margin (smallest change that changes the mode, the other variable fixed):")
     lines.append(_margin_line(r.margin_k))
@@ -360,19 +359,22 @@ def format_caisson(r: CaissonReport, source: str | None = None,
     lo, hi = float(p.factors[0]), float(p.factors[-1])
     lines.append(f"as the wave grows (H1/3 and Hmax times s = {lo:g} .. {hi:g}, loads recomputed, "
                  "each point on its own map):")
-    lines.append(f"  k' {_sig(float(p.kprime[0]))} .. {_sig(float(p.kprime[-1]))},  uplift ratio "
-                 f"{_sig(float(p.uplift_ratio[0]))} .. {_sig(float(p.uplift_ratio[-1]))},  "
-                 f"k {_sig(float(p.k[0]))} .. {_sig(float(p.k[-1]))}")
+    def span(values: Any) -> str:
+        return f"{format_significant(float(values[0]))} .. {format_significant(float(values[-1]))}"
+
+    lines.append(f"  k' {span(p.kprime)},  uplift ratio {span(p.uplift_ratio)},  k {span(p.k)}")
     hmax = n["Hmax"]
     if p.onset is None:
-        lines.append(f"  the caisson stays at rest up to s = {hi:g} (Hmax = {_sig(hi * hmax)} m)")
+        lines.append(f"  the caisson stays at rest up to s = {hi:g} "
+                     f"(Hmax = {format_significant(hi * hmax)} m)")
     elif p.onset <= lo and p.modes[0] != 0:
         assert p.onset_mode is not None
         lines.append(f"  the caisson already moves at s = {lo:g}: {mode_label(p.onset_mode)} "
                      f"({mode_description(p.onset_mode)})")
     else:
         assert p.onset_mode is not None
-        lines.append(f"  the caisson leaves rest at s = {p.onset:.4f} (Hmax = {_sig(p.onset * hmax)} m): "
+        lines.append(f"  the caisson leaves rest at s = {p.onset:.4f} "
+                     f"(Hmax = {format_significant(p.onset * hmax)} m): "
                      f"{mode_label(p.onset_mode)} ({mode_description(p.onset_mode)})")
     verdict = "both SF >= 1" if r.safe_by_goda else "an SF < 1"
     agree = "consistent" if r.consistent else "INCONSISTENT (please report it)"

@@ -28,9 +28,10 @@ from numpy.typing import NDArray
 from ..maps.loadedmap import LoadedMap, Margin, classify_at, margins, mode_grid, named_points
 from ..maps.mapdata import MapData, compute_map
 from ..maps.point_result import margin_words
-from ..mechanics.checks import Check
-from ..mechanics.htmltable import html_table, number
 from ..mechanics.modes import Mode
+from ..records.checks import Check
+from ..records.htmltable import html_table
+from ..records.numbers import number
 from ..waves import CaissonAnalysis, analyse_caisson
 
 __all__ = [

@@ -9,7 +9,7 @@ table, simulates its sliding over the design life and judges those requirements 
 including the climate's uncertainty).  The requirements never depend on the outputs asked
 for: the design sheet adds only its map.  It returns a :class:`CaissonRecord` holding the
 design, the numbers a designer checks, the implausible values as
-:class:`~regimemap.mechanics.notices.Notice` data, the checks, the lifetime and, for the
+:class:`~regimemap.records.notices.Notice` data, the checks, the lifetime and, for the
 design sheet, the map of panel (d).
 """
 
@@ -21,9 +21,9 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from ..maps.loadedmap import mode_label
 from ..maps.points import DesignPoint
-from ..mechanics.checks import Check, all_pass
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.checks import Check, all_pass
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 from .file import Design, read_design
 from .file_plausibility import implausible_notices
 from .record import NUMBERS, CaissonNumbers, caisson_numbers, text_context

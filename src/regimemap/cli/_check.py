@@ -1,7 +1,7 @@
 """A record's verdict and warnings on the command line: ``--check``, ``--strict`` and the notices.
 
 ``--check`` makes the verdict of the requirements the exit status (1 when any fails); a
-record's notices (:class:`~regimemap.mechanics.notices.Notice`) are printed on standard error
+record's notices (:class:`~regimemap.records.notices.Notice`) are printed on standard error
 by :func:`regimemap.cli._writing.echo_notices`, or, those ``--strict`` refuses, are a usage
 error (exit 2) naming the first.
 """
@@ -13,8 +13,8 @@ from typing import Any
 
 import click
 
-from ..mechanics.checks import Check, all_pass
-from ..mechanics.notices import Notice
+from ..records.checks import Check, all_pass
+from ..records.notices import Notice
 
 __all__ = ["CHECK_HELP", "check_option", "exit_on_failure", "refuse_notices"]
 

@@ -20,7 +20,7 @@ from ._writing import echo_notices
 if TYPE_CHECKING:  # pragma: no cover
     from regimemap.caisson.file import Design
     from regimemap.caisson.run import CaissonRecord
-    from regimemap.mechanics.notices import Notice
+    from regimemap.records.notices import Notice
 
 __all__ = ["STRICT_HELP", "STRICT_RECORD_HELP", "caisson_record"]
 

@@ -20,7 +20,7 @@ from ._main import RunError, import_matplotlib, refusing
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-    from ..mechanics.notices import Notice
+    from ..records.notices import Notice
 
 __all__ = ["checked_format", "checked_output", "distinct_files", "echo_notes", "echo_notices",
            "figure_output", "file_suffix", "output_dir", "output_path", "print_report", "report_written",

@@ -11,7 +11,7 @@ from dataclasses import InitVar, dataclass, field, replace
 
 import numpy as np
 
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 from .fits import AM_DISTRIBUTIONS, POT_DISTRIBUTIONS, Fit, fit
 from .guards import endpoint, fit_notices, limit_notices
 from .intervals import (

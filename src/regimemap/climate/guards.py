@@ -1,6 +1,6 @@
 """When a fit breaks: the shape parameter, the upper end point, the search bounds, a physical limit.
 
-numpy only.  Each guard is a :class:`~regimemap.mechanics.notices.Notice` (code ``fit``) with the
+numpy only.  Each guard is a :class:`~regimemap.records.notices.Notice` (code ``fit``) with the
 quantity and its value; ``regimemap climate --strict`` makes them errors.
 
 * GPD shape :math:`\\xi < -1/2` (:data:`XI_NONREGULAR`): the maximum-likelihood estimator is no
@@ -26,7 +26,7 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 from .fits import GEV_XI, Fit
 
 __all__ = ["XI_NEAR_BOUND", "XI_NONREGULAR", "endpoint", "endpoint_close", "fit_notices", "limit_notices"]

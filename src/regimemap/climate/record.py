@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from ..io.numbers import json_number
+from ..records.numbers import json_number
 from .analysis import ClimateResult, Sensitivity
 
 __all__ = ["climate_json", "format_climate", "parameter_text",

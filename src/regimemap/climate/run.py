@@ -16,8 +16,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, ClassVar
 
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 
 if TYPE_CHECKING:
     from .analysis import ClimateOptions, ClimateResult, Curves, Diagnostics, Sensitivity

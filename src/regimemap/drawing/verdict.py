@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
-from ..mechanics.checks import Check, all_pass
+from ..records.checks import Check, all_pass
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure

@@ -19,7 +19,7 @@ the source of every default.
   width of a required safety factor;
 * :class:`Requirements`, :func:`judge_lifetime`, :func:`judge_chart` -- the
   requirements (target ESD, allowed exceedance probabilities, the sliding
-  limit off the mound) as :class:`~regimemap.mechanics.checks.Check` lists and
+  limit off the mound) as :class:`~regimemap.records.checks.Check` lists and
   the probability of failure (:class:`Failure`);
 * :func:`half_sine_slide`, :func:`added_mass` -- the sliding of one wave.
 """

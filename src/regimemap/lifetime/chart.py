@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from regimemap.mechanics.checks import Check
+from regimemap.records.checks import Check
 from regimemap.waves import analyse_caisson
 
 from .model import Caisson, LifetimeModel

@@ -20,8 +20,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-from ..io.checks import checks_json, checks_lines
-from ..io.numbers import json_number
+from ..records.checks import checks_json, checks_lines
+from ..records.numbers import json_number
 from . import DesignChart, LifetimeModel, LifetimeResult
 from .results import STATISTICS, threshold_key
 

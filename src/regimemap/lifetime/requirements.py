@@ -6,7 +6,7 @@ must achieve over its life: a tolerable expected sliding distance (``target``,
 exceeding given slides (``allowed``, after Kim & Suh 2013) and the sliding at
 which the caisson is off its mound (``failure_sliding``).  From a
 :class:`~regimemap.lifetime.LifetimeResult` they give a list of
-:class:`~regimemap.mechanics.checks.Check` -- read by the text, the JSON, the
+:class:`~regimemap.records.checks.Check` -- read by the text, the JSON, the
 figures and the exit status of ``--check`` -- and the probability of failure
 with its standard error.  The verdict compares the Monte Carlo estimate with
 the limit; the estimate's standard error is reported beside it.
@@ -26,7 +26,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
-from ..mechanics.checks import Check
+from ..records.checks import Check
 from .chart import DesignChart
 from .results import Failure, LifetimeResult
 

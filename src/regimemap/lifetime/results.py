@@ -17,7 +17,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 from numpy.typing import NDArray
 
-from ..mechanics.checks import Check
+from ..records.checks import Check
 
 __all__ = ["STATISTICS", "Failure", "LifetimeResult", "Statistic", "threshold_key", "year_passing"]
 
@@ -192,7 +192,8 @@ class LifetimeResult:
 
     def _repr_html_(self) -> str:
         """The statistics of :data:`STATISTICS` as a small table (Jupyter's rich display)."""
-        from ..mechanics.htmltable import html_table, number
+        from ..records.htmltable import html_table
+        from ..records.numbers import number
 
         aside = {s.beside for s in STATISTICS}
         rows: list[tuple[object, ...]] = []
@@ -288,7 +289,7 @@ class Statistic:
     def cell(self, result: LifetimeResult, x: float | None = None) -> str:
         """Its value in ``result`` for people, with its unit (at the threshold ``x`` when
         ``per_threshold``): ``0.32 m``, ``40 %``, ``5``."""
-        from ..mechanics.htmltable import number
+        from ..records.numbers import number
 
         value = getattr(result, self.key)
         if self.per_threshold:

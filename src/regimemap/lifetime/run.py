@@ -25,8 +25,8 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 import numpy as np
 
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 from .finite import quiet_arithmetic, require_finite
 from .results import STATISTICS
 from .run_design import RECORD_WARNINGS, LifetimeDesign, read_lifetime_design

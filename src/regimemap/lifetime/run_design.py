@@ -12,7 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 
 if TYPE_CHECKING:
     from ..caisson.file import Design, LifetimeSpec

@@ -13,7 +13,7 @@ from fractions import Fraction
 
 from ..mechanics.block import Parameters
 
-__all__ = ["LOAD_SYMBOLS", "format_significant", "format_value", "load_items", "loads_text"]
+__all__ = ["LOAD_SYMBOLS", "format_value", "load_items", "loads_text"]
 
 #: Each load: (plain symbol, mathtext symbol, what it is).
 LOAD_SYMBOLS: dict[str, tuple[str, str, str]] = {
@@ -34,23 +34,6 @@ def format_value(x: float) -> str:
         if fr.denominator > 1 and abs(float(fr) - x) <= 1e-12 * abs(x):
             return f"{fr.numerator}/{fr.denominator}"
     return text
-
-
-def format_significant(x: float, digits: int = 4) -> str:
-    """``x`` to ``digits`` significant digits for a report: ``26210`` (not ``2.621e+04``), ``0.5200``.
-
-    Trailing zeros are kept (they state the precision); non-finite values read
-    ``inf`` or ``n/a``; a value that rounds to zero reads ``0``.
-    """
-    if not math.isfinite(x):
-        return "inf" if x > 0 else "n/a"
-    if 10.0 ** digits <= abs(x) < 1e12:
-        s = f"{x:.0f}"
-    else:
-        s = f"{x:#.{digits}g}"
-        if "e" not in s:
-            s = s.rstrip(".")
-    return "0" if float(s) == 0.0 else s
 
 
 def load_items(p: Parameters) -> list[tuple[str, float]]:

@@ -21,8 +21,8 @@ import numpy as np
 
 from ..mechanics.block import Parameters
 from ..mechanics.curves import NamedPoint
-from ..mechanics.htmltable import html_table
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
+from ..records.htmltable import html_table
 from .describe import loads_text
 from .designer_view import points_off_view
 from .geometry import DEFAULT_SAMPLES, area_in_view, region_polygons

@@ -11,9 +11,10 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ..mechanics.block import Case, Parameters
-from ..mechanics.htmltable import html_table, number
 from ..mechanics.modes import Mode
 from ..mechanics.solver import Hypothesis
+from ..records.htmltable import html_table
+from ..records.numbers import number
 from .describe import loads_text
 from .margins import Margin, finite_or_none, negligible
 

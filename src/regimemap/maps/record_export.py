@@ -44,11 +44,11 @@ import numpy as np
 from ..io import npz
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
-from ..io.numbers import round_sig, text
 from ..mechanics.block import Parameters
 from ..mechanics.curves import map_curves, named_points
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
+from ..records.numbers import round_sig, text
 from .ambiguity import ambiguous_regions
 from .classify import label_grid
 from .geometry import DEFAULT_SAMPLES, region_polygons

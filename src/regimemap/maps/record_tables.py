@@ -8,7 +8,7 @@ import math
 import textwrap
 from collections.abc import Sequence
 
-from ..io.numbers import rounded, text
+from ..records.numbers import rounded, text
 from .margins import Crossing
 from .point_result import INITIATION_FIELDS, PointResult
 

@@ -5,7 +5,7 @@ view and the design points to mark, and returns a :class:`MapRecord`: the map
 (:class:`~regimemap.maps.mapdata.MapData`: the region polygons of Section 4.7,
 the boundary curves and the named points in the view), the points drawn on it,
 the parts where several modes are admissible (when asked) and the warnings as
-:class:`~regimemap.mechanics.notices.Notice` data.
+:class:`~regimemap.records.notices.Notice` data.
 :func:`regimemap.maps.figures.figure.map_figure` draws the record.
 """
 
@@ -18,8 +18,8 @@ from typing import TYPE_CHECKING, ClassVar
 
 from ..mechanics.block import Parameters
 from ..mechanics.modes import Mode
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 from .geometry import DEFAULT_SAMPLES
 from .mapdata import MapData, map_for_view
 from .points import LOAD_FIELDS, DesignPoint

@@ -17,8 +17,8 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 from ..mechanics.block import Parameters
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 from .mapdata import MapData, compute_map
 from .sweeps import (
     MAX_PANELS,

@@ -16,8 +16,8 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 from .point_result import PointResult
 from .points import DesignPoint
 from .query import query_points

@@ -21,7 +21,7 @@ from numpy.typing import NDArray
 from ..dynamics.block import Block
 from ..dynamics.limits import MAX_MAP_RUNS, check_gyration, check_loads, check_map_steps
 from ..dynamics.pulses import SHAPES, Pulse
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 
 __all__ = [
     "OptionError",

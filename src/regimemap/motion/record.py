@@ -17,8 +17,8 @@ from typing import TYPE_CHECKING, Any, ClassVar
 import numpy as np
 from numpy.typing import NDArray
 
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..dynamics.block import Block
@@ -26,7 +26,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from ..dynamics.presets import DynamicsFigure
     from ..dynamics.pulses import Pulse
     from ..dynamics.results import Simulation
-    from ..mechanics.checks import Check
+    from ..records.checks import Check
     from .file import MapOptions
 
 __all__ = ["DynamicsFigureRecord", "OutcomeRecord", "SimulationRecord"]

@@ -24,8 +24,8 @@ from ..dynamics.outcome import OutcomeMap
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
 from ..io.npz import write_npz
-from ..io.numbers import DIGITS as SIGNIFICANT
-from ..io.numbers import round_sig
+from ..records.numbers import DIGITS as SIGNIFICANT
+from ..records.numbers import round_sig
 from .record_simulation import json_inputs
 
 if TYPE_CHECKING:  # pragma: no cover

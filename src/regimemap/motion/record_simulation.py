@@ -22,8 +22,8 @@ from ..dynamics.stepper import History, Phase
 from ..io.atomic import atomic_open
 from ..io.formats import format_for, record_formats
 from ..io.npz import write_npz
-from ..io.numbers import round_sig
 from ..mechanics.modes import Mode
+from ..records.numbers import round_sig
 
 if TYPE_CHECKING:  # pragma: no cover
     from .record import SimulationRecord
@@ -81,7 +81,7 @@ def simulation_record(record: SimulationRecord) -> dict[str, Any]:
     }
     if record.design_numbers is not None:
         from ..dynamics.design_wave import DESIGN_UNITS, NO_ADDED_MASS, PROFILE
-        from ..io.checks import checks_json
+        from ..records.checks import checks_json
 
         numbers = {key: round_sig(v) for key, v in record.design_numbers.items()}
         out["design"] = {"file": record.design, **numbers,
@@ -122,7 +122,7 @@ def format_simulation(record: SimulationRecord | Mapping[str, Any]) -> str:
         lines.append("design     " + describe_design_wave(record.design_numbers, record.design))
     lines.append(_format_run(simulation_record(record)))
     if record.checks:
-        from ..io.checks import checks_lines
+        from ..records.checks import checks_lines
 
         lines.append("design check of the file (--check: exit status 1 when a requirement fails)")
         lines += checks_lines(record.checks)

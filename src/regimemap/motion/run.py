@@ -7,7 +7,7 @@ named as :data:`regimemap.dynamics.limits.INPUT_LIMITS`), or from a caisson's de
 :class:`SimulationRecord` holds them, the quantities a designer checks (p, alpha, H,
 Housner's ratio and the impact ratio used, the pulse's peak, duration and frequency), the
 design file's requirements (Goda's safety factors), the warnings as
-:class:`~regimemap.mechanics.notices.Notice` and the :class:`~regimemap.dynamics.Simulation`.
+:class:`~regimemap.records.notices.Notice` and the :class:`~regimemap.dynamics.Simulation`.
 """
 
 from __future__ import annotations
@@ -19,14 +19,14 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 from .file import OptionError
 from .record import SimulationRecord
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..caisson.file import Design
     from ..dynamics import Block, Pulse, Simulation
-    from ..mechanics.checks import Check
+    from ..records.checks import Check
     from ..waves import CaissonAnalysis
 
 __all__ = ["IMPLAUSIBLE", "STILL_MOVING", "SimulationRecord", "UNRESOLVED", "run_simulation"]

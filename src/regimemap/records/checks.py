@@ -3,17 +3,20 @@
 A :class:`Check` is plain data -- the name of a requirement, the value the
 design reaches, the limit it must meet and the sense of the comparison -- so
 that the text report, the JSON, the figures and the exit code of ``--check``
-all read one verdict.  A value that is not finite never passes.
+all read one verdict, written here as text lines (:func:`checks_lines`) and as JSON
+(:func:`checks_json`).  A value that is not finite never passes.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Literal
+from typing import Any, Literal
 
-__all__ = ["Check", "all_pass", "failed"]
+from .numbers import round_sig
+
+__all__ = ["Check", "all_pass", "checks_json", "checks_lines", "failed"]
 
 
 @dataclass(frozen=True)
@@ -81,3 +84,32 @@ def failed(checks: Iterable[Check]) -> list[Check]:
 def all_pass(checks: Iterable[Check]) -> bool:
     """Whether every check passes (``True`` for none)."""
     return not failed(checks)
+
+
+def _number(value: float, unit: str) -> str:
+    text = f"{value:.4g}"
+    return f"{text} {unit}" if unit else text
+
+
+def checks_lines(checks: Sequence[Check]) -> list[str]:
+    """One line per requirement, PASS or FAIL first, then the overall verdict.
+
+    Examples
+    --------
+    >>> for line in checks_lines([Check.at_least("sliding safety factor", 1.16, 1.2)]):
+    ...     print(line)
+    FAIL  sliding safety factor 1.16 >= 1.2
+    verdict: FAIL (1 of 1 requirements not met)
+    """
+    lines = [f"{c.verdict}  {c.name} {_number(c.value, c.unit)} {c.relation} {_number(c.required, c.unit)}"
+             for c in checks]
+    bad = sum(not c.passed for c in checks)
+    lines.append("verdict: PASS (every requirement met)" if all_pass(checks)
+                 else f"verdict: FAIL ({bad} of {len(checks)} requirements not met)")
+    return lines
+
+
+def checks_json(checks: Sequence[Check]) -> list[dict[str, Any]]:
+    """``[{"name", "value", "required", "relation", "unit", "pass"}, ...]`` (numbers to 12 digits)."""
+    return [{"name": c.name, "value": round_sig(c.value), "required": round_sig(c.required),
+             "relation": c.relation, "unit": c.unit, "pass": c.passed} for c in checks]

@@ -4,7 +4,7 @@ The standard library only, in the lowest layer, so that a record may be defined 
 of the data it holds (the domain packages') and written by :mod:`regimemap.io`.
 
 A record is a frozen dataclass that holds a workflow's inputs, the intermediate
-quantities a designer checks, its warnings as :class:`~regimemap.mechanics.notices.Notice`
+quantities a designer checks, its warnings as :class:`~regimemap.records.notices.Notice`
 data, and its results.  Its :data:`Record.FIELDS` table names the fields a person
 reads first, with their units and meaning; the HTML display of a notebook
 (``_repr_html_``) and :meth:`Record.field_rows` read that one table.
@@ -57,7 +57,7 @@ class Record:
     """Mixin of the workflow records: the field table, the notices and the HTML display.
 
     Subclasses are frozen dataclasses with a ``notices`` field (a tuple of
-    :class:`~regimemap.mechanics.notices.Notice`) and a class-level
+    :class:`~regimemap.records.notices.Notice`) and a class-level
     :data:`FIELDS` table.
     """
 

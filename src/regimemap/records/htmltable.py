@@ -16,34 +16,13 @@ True
 
 from __future__ import annotations
 
-import math
 import numbers
 from collections.abc import Iterable, Sequence
 from html import escape
 
-__all__ = ["cell_text", "html_table", "number", "number_range"]
+from .numbers import number
 
-
-def number(x: float, digits: int = 4) -> str:
-    """``x`` to ``digits`` significant digits, plainly: ``0.2525``, ``1.2e+05``, ``n/a`` for NaN."""
-    x = float(x)
-    if math.isnan(x):
-        return "n/a"
-    if math.isinf(x):
-        return "inf" if x > 0 else "-inf"
-    text = f"{x:.{digits}g}"
-    return "0" if float(text) == 0.0 else text
-
-
-def number_range(values: Iterable[float], digits: int = 4) -> str:
-    """One number, or ``lo … hi`` for several that differ (NaNs left out)."""
-    finite = [float(v) for v in values if not math.isnan(float(v))]
-    if not finite:
-        return "n/a"
-    lo, hi = min(finite), max(finite)
-    if number(lo, digits) == number(hi, digits):
-        return number(lo, digits)
-    return f"{number(lo, digits)} \u2026 {number(hi, digits)}"
+__all__ = ["cell_text", "html_table"]
 
 
 def cell_text(value: object) -> str:

@@ -1,18 +1,26 @@
-"""Numbers for people: floats rounded to 12 significant digits in text output.
+"""Numbers for people, written one way each: in files, in reports, in tables and on figures.
 
 The library keeps exact values (``PointResult``, ``MapData``, the ``.npz``
 export); the text files and the JSON written for people round them, so that
 ``-0.5999999999999999`` reads ``-0.6`` and ``0.08250000000000002`` reads
-``0.0825``.  Twelve digits keep every number the report's closed forms
-produce well beyond what a map or a margin can tell.
+``0.0825`` (:func:`round_sig`, :func:`json_number`, :func:`text`, :func:`rounded`).  Twelve
+digits keep every number the report's closed forms produce well beyond what a map or a
+margin can tell.  A report's number keeps its trailing zeros (:func:`format_significant`), a
+figure's label has a true minus (:func:`significant`), a notebook's table is plain
+(:func:`number`, :func:`number_range`), and a parameter in a title is as short as Python
+writes it (:func:`short`).
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from typing import Any
 
 import numpy as np
+
+__all__ = ["DIGITS", "format_significant", "json_number", "number", "number_range", "round_sig", "rounded",
+           "short", "significant", "text"]
 
 #: Significant digits of the numbers written as text (CSV, JSON).
 DIGITS = 12
@@ -52,3 +60,52 @@ def rounded(obj: Any, digits: int = DIGITS) -> Any:
     if isinstance(obj, (float, np.floating)):
         return round_sig(float(obj), digits)
     return obj
+
+
+def format_significant(x: float, digits: int = 4) -> str:
+    """``x`` to ``digits`` significant digits for a report: ``26210`` (not ``2.621e+04``), ``0.5200``.
+
+    Trailing zeros are kept (they state the precision); non-finite values read
+    ``inf`` or ``n/a``; a value that rounds to zero reads ``0``.
+    """
+    if not math.isfinite(x):
+        return "inf" if x > 0 else "n/a"
+    if 10.0 ** digits <= abs(x) < 1e12:
+        s = f"{x:.0f}"
+    else:
+        s = f"{x:#.{digits}g}"
+        if "e" not in s:
+            s = s.rstrip(".")
+    return "0" if float(s) == 0.0 else s
+
+
+def significant(x: float, digits: int = 4) -> str:
+    """:func:`format_significant` with a true minus sign, for a figure's label."""
+    return format_significant(x, digits).replace("-", "\u2212")
+
+
+def number(x: float, digits: int = 4) -> str:
+    """``x`` to ``digits`` significant digits, plainly: ``0.2525``, ``1.2e+05``, ``n/a`` for NaN."""
+    x = float(x)
+    if math.isnan(x):
+        return "n/a"
+    if math.isinf(x):
+        return "inf" if x > 0 else "-inf"
+    text = f"{x:.{digits}g}"
+    return "0" if float(text) == 0.0 else text
+
+
+def number_range(values: Iterable[float], digits: int = 4) -> str:
+    """One number, or ``lo \u2026 hi`` for several that differ (NaNs left out)."""
+    finite = [float(v) for v in values if not math.isnan(float(v))]
+    if not finite:
+        return "n/a"
+    lo, hi = min(finite), max(finite)
+    if number(lo, digits) == number(hi, digits):
+        return number(lo, digits)
+    return f"{number(lo, digits)} \u2026 {number(hi, digits)}"
+
+
+def short(x: float) -> str:
+    """``x`` as Python's ``g`` format writes it (``0.5``, ``1e-05``): a parameter in a title."""
+    return f"{x:g}"

@@ -37,7 +37,7 @@ from ..io.inputs import read_design_text
 from ..io.toml_errors import did_you_mean
 from ..io.toml_keys import number_of
 from ..io.toml_lines import key_line
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 from .file_limits import check_scenario_limits, check_wave_heights, falling_sea_level
 from .file_sections import (
     DESIGN_TABLES,

@@ -10,7 +10,7 @@ water (``hc - rise > 0``, :meth:`regimemap.lifetime.YearTrend.check_site`): a
 scenario that puts a crest under water, leaves a mound dry or a depth out of range is
 refused, naming the file, the scenario's line, the service year and the section, with
 a hint when the values read in millimetres (or centimetres) would pass.  A sea level
-that falls is unusual, not impossible: a :class:`~regimemap.mechanics.notices.Notice`.
+that falls is unusual, not impossible: a :class:`~regimemap.records.notices.Notice`.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 from ..caisson.file_keys import DESIGN_KEYS
 from ..lifetime.file_keys import LIFETIME_KEYS
-from ..mechanics.notices import Notice
+from ..records.notices import Notice
 from .file_sections import Where
 
 if TYPE_CHECKING:

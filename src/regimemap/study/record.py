@@ -11,9 +11,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, ClassVar, Literal
 
-from ..mechanics.checks import Check
-from ..mechanics.notices import Notice
-from ..mechanics.records import Field, Record
+from ..records.checks import Check
+from ..records.fields import Field, Record
+from ..records.notices import Notice
 
 __all__ = ["COLUMNS", "LIMITS", "Column", "StudyCheck", "StudyRecord", "StudyRow"]
 

@@ -14,7 +14,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from ..io.atomic import atomic_open
-from ..io.numbers import json_number
+from ..records.numbers import json_number
 from .record import COLUMNS, LIMITS
 
 if TYPE_CHECKING:
@@ -129,12 +129,12 @@ def _length(x: float) -> str:
 
 def study_check_lines(checks: Sequence[StudyCheck]) -> list[str]:
     """One line per section x scenario, PASS or FAIL first (as ``regimemap lifetime``'s
-    requirements, :func:`regimemap.io.checks.checks_lines`), then the overall verdict.
+    requirements, :func:`regimemap.records.checks.checks_lines`), then the overall verdict.
 
     Examples
     --------
     >>> from regimemap.study.record import StudyCheck
-    >>> from regimemap.mechanics.checks import Check
+    >>> from regimemap.records.checks import Check
     >>> c = StudyCheck("trunk", "today", Check.at_most("expected sliding distance", 0.04, 0.1, "m"),
     ...                "the ESD of the design's climate at 15 m")
     >>> for line in study_check_lines([c]):

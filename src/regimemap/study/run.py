@@ -25,8 +25,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..lifetime.finite import require_finite
-from ..mechanics.checks import Check
-from ..mechanics.notices import Notice
+from ..records.checks import Check
+from ..records.notices import Notice
 from .record import StudyCheck, StudyRecord, StudyRow
 from .run_tasks import LIMITS, StudyTask, run_task, task_seed
 

@@ -7,7 +7,8 @@ from dataclasses import dataclass
 import numpy as np
 import numpy.typing as npt
 
-from ..mechanics.htmltable import html_table, number_range
+from ..records.htmltable import html_table
+from ..records.numbers import number_range
 from ._types import RHO_SEAWATER, G, as_float
 from .block import EquivalentBlock, equivalent_block
 from .caisson import (

@@ -6,7 +6,7 @@ reads its inputs through :mod:`regimemap.io` (a design file's path or the
 objects themselves), computes through the evaluation packages (maps,
 dynamics, lifetime, climate) and returns a record holding the inputs, the
 intermediate quantities a designer checks, the warnings as data
-(:class:`~regimemap.mechanics.notices.Notice`) and the results.  It prints
+(:class:`~regimemap.records.notices.Notice`) and the results.  It prints
 nothing and draws nothing: :mod:`regimemap.io` writes a record,
 :mod:`regimemap.drawing` draws it.
 """
@@ -31,10 +31,10 @@ if TYPE_CHECKING:  # the real names, for mypy and IDEs; imported on first use at
     from ..maps.run import MapRecord, points_of_map, run_map
     from ..maps.run_atlas import AnimationRecord, AtlasRecord, run_animation, run_atlas
     from ..maps.run_query import QueryRecord, run_query
-    from ..mechanics.notices import Notice
-    from ..mechanics.records import Field, Record
     from ..motion.run import SimulationRecord, run_simulation
     from ..motion.run_maps import DynamicsFigureRecord, OutcomeRecord, run_dynamics_figure, run_outcome
+    from ..records.fields import Field, Record
+    from ..records.notices import Notice
     from ..study.run import StudyRecord, StudyRow, run_study
 
 __all__ = [

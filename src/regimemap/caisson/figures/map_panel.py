@@ -20,8 +20,9 @@ from ...maps.figures.mapplot import MapStyle, draw_map
 from ...maps.geometry import area_in_view
 from ...maps.mapdata import MapData
 from ...mechanics.modes import Mode
+from ...records.numbers import significant
 from ..report import CaissonReport, MapView
-from .panels import FS, fmt, mode_style
+from .panels import FS, mode_style
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -104,9 +105,10 @@ def _axes_style(ax: Axes, r: CaissonReport) -> None:
     ax.tick_params(labelsize=FS - 0.5)
     m = r.map
     ax.set_title("(d) loaded regime map of the design wave", fontsize=FS + 1, loc="left", pad=13)
-    ax.text(0.0, 1.015, f"\u03b3 = {fmt(m.gamma, 3)},  k\u2032 = {fmt(m.kprime, 3)},  "
-                        f"U/P = {fmt(m.uplift_ratio, 3)},  uplift arm {fmt(m.uplift_arm, 3)},  "
-                        f"buoyancy {fmt(m.buoyancy, 3)},  i = {fmt(m.gyration or 0.0, 3)}",
+    ax.text(0.0, 1.015, f"\u03b3 = {significant(m.gamma, 3)},  k\u2032 = {significant(m.kprime, 3)},  "
+                        f"U/P = {significant(m.uplift_ratio, 3)},  "
+                        f"uplift arm {significant(m.uplift_arm, 3)},  "
+                        f"buoyancy {significant(m.buoyancy, 3)},  i = {significant(m.gyration or 0.0, 3)}",
             fontsize=FS - 0.5, ha="left", va="bottom", color="0.2", transform=ax.transAxes)
 
 

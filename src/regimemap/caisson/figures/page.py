@@ -35,10 +35,11 @@ from ...drawing.save import DEFAULT_DPI, figure_version
 from ...drawing.style import agg_figure, label_axes, style_context
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
 from ...maps.mapdata import MapData
-from ...mechanics.checks import Check
+from ...records.checks import Check
+from ...records.numbers import significant
 from ..report import CaissonReport, MapView
 from .map_panel import draw_map_panel, map_legend, tidy_map_panel
-from .panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, fmt, num
+from .panels import FS, draw_path, draw_pressure, draw_section, draw_table, draw_uplift, num
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -86,8 +87,8 @@ def _path_note(r: CaissonReport, short: bool,
     """The note under (e) (``short``: under (g), in fewer words; with a wave ``record`` -- its path,
     its fit in words and its band -- (g)'s sentence names them)."""
     p = r.path
-    kp = f"{fmt(float(p.kprime[0]), 3)} \u2026 {fmt(float(p.kprime[-1]), 3)}"
-    up = f"{fmt(float(p.uplift_ratio[0]), 3)} \u2026 {fmt(float(p.uplift_ratio[-1]), 3)}"
+    kp = f"{significant(float(p.kprime[0]), 3)} \u2026 {significant(float(p.kprime[-1]), 3)}"
+    up = f"{significant(float(p.uplift_ratio[0]), 3)} \u2026 {significant(float(p.uplift_ratio[-1]), 3)}"
     if short:
         return (f"(d): the regions of the design wave; along the path k\u2032 ({kp}) and U/P ({up}) "
                 "change: each marker and (e)'s band has the colour of the mode on its own map.  "
@@ -260,7 +261,7 @@ def sheet_figure(report: CaissonReport, *, view: MapView, data: MapData, checks:
                  f"\u03b2 = {float(a.pressures.beta):g}\u00b0, "
                  f"tan \u03b8 = {value('site.seabed_slope', 'seabed_slope')}, "
                  f"\u03bc = {shown.get('caisson.friction') or format(report.mu, 'g')}, "
-                 f"W\u2032 = {fmt(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
+                 f"W\u2032 = {significant(float(a.section.buoyant_weight) / 1e3)} kN/m.\n"
                  + ("Goda (2000) with Takahashi's \u03b1$_I$ (impulsive = true)"
                     if inp.get("impulsive", True) else
                     "Goda (2000) without Takahashi's \u03b1$_I$ (impulsive = false)")

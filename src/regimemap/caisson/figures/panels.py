@@ -7,7 +7,8 @@ cross-section to scale (:func:`draw_section`), (b) Goda's pressures on the wall
 (:func:`draw_table`); the loaded map (d) is :mod:`regimemap.caisson.figures.map_panel`.
 Everything drawn is computed beforehand (:func:`regimemap.caisson.report.caisson_report`);
 these functions only draw.  Also the sheet's small helpers: its font size
-:data:`FS`, :func:`fmt` for numbers and :func:`mode_style` for a mode's fill.
+:data:`FS`, :func:`~regimemap.records.numbers.significant` for numbers and :func:`mode_style` for a
+mode's fill.
 """
 
 from __future__ import annotations
@@ -19,16 +20,16 @@ import numpy as np
 
 from ...drawing.style import MODE_STYLE, ModeStyle, label_axes
 from ...drawing.verdict import FAIL_COLOUR
-from ...maps.describe import format_significant
 from ...maps.loadedmap import Margin, mode_label
-from ...mechanics.checks import Check
 from ...mechanics.modes import Mode
+from ...records.checks import Check
+from ...records.numbers import significant
 from ..report import CaissonReport
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
 
-__all__ = ["FS", "draw_path", "draw_pressure", "draw_section", "draw_table", "draw_uplift", "fmt",
+__all__ = ["FS", "draw_path", "draw_pressure", "draw_section", "draw_table", "draw_uplift",
            "mode_style", "num"]
 
 _WATER = "#D6E9F5"
@@ -44,11 +45,6 @@ FS = 7.5
 def mode_style(code: int) -> ModeStyle:
     """The fill of a mode code, as every map draws it (:data:`regimemap.drawing.style.MODE_STYLE`)."""
     return MODE_STYLE[Mode(int(code))]
-
-
-def fmt(x: float, digits: int = 4) -> str:
-    """``x`` to ``digits`` significant digits, with a true minus sign."""
-    return format_significant(x, digits).replace("-", "\u2212")
 
 
 def num(r: CaissonReport, name: str) -> float:
@@ -122,13 +118,13 @@ def draw_section(ax: Axes, r: CaissonReport) -> None:
     ax.text(xu + 0.35, -hp - 0.3 * hp, "U", fontsize=FS, color="#b0431c", va="bottom", zorder=7,
             bbox={"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.8})
     # dimensions
-    _dimension(ax, w + 0.6 * berm_lee, -hp, 0.0, f"h\u2032 = {fmt(hp, 3)} m", side="right")
-    _dimension(ax, w + 0.6 * berm_lee, 0.0, hc, f"h$_c$ = {fmt(hc, 3)} m", side="right")
-    _dimension(ax, x0 + 0.6, -h, 0.0, f"h = {fmt(h, 3)} m", side="right")
-    _dimension(ax, -bm - 1.0, -d, 0.0, f"d = {fmt(d, 3)} m")
-    _hdimension(ax, hc + 0.1 * (h + hc), 0.0, w, f"2B = {fmt(w, 3)} m", below=False)
+    _dimension(ax, w + 0.6 * berm_lee, -hp, 0.0, f"h\u2032 = {significant(hp, 3)} m", side="right")
+    _dimension(ax, w + 0.6 * berm_lee, 0.0, hc, f"h$_c$ = {significant(hc, 3)} m", side="right")
+    _dimension(ax, x0 + 0.6, -h, 0.0, f"h = {significant(h, 3)} m", side="right")
+    _dimension(ax, -bm - 1.0, -d, 0.0, f"d = {significant(d, 3)} m")
+    _hdimension(ax, hc + 0.1 * (h + hc), 0.0, w, f"2B = {significant(w, 3)} m", below=False)
     if bm > 0:
-        _hdimension(ax, -d + 0.35, -bm, 0.0, f"B$_M$ = {fmt(bm, 3)} m", below=False)
+        _hdimension(ax, -d + 0.35, -bm, 0.0, f"B$_M$ = {significant(bm, 3)} m", below=False)
     ax.set_xlim(x0, x1)
     ax.set_ylim(-h - 0.06 * (h + hc), top)
     ax.set_aspect("equal", adjustable="box")
@@ -161,11 +157,11 @@ def draw_pressure(ax: Axes, r: CaissonReport) -> None:
     ax.text(pmax * 0.98, 0.15, "SWL", fontsize=FS - 1, color="#1f5f99", ha="left", va="bottom")
     box = {"boxstyle": "square,pad=0.1", "fc": "white", "ec": "none", "alpha": 0.75}
     lab: dict[str, Any] = {"fontsize": FS, "ha": "left", "bbox": box}
-    ax.text(p1 - 0.04 * pmax, -0.3, f"p$_1$ = {fmt(p1)} kPa", va="top", **lab)
-    ax.text(p3 - 0.04 * pmax, -hp + 0.25, f"p$_3$ = {fmt(p3)} kPa", va="bottom", **lab)
+    ax.text(p1 - 0.04 * pmax, -0.3, f"p$_1$ = {significant(p1)} kPa", va="top", **lab)
+    ax.text(p3 - 0.04 * pmax, -hp + 0.25, f"p$_3$ = {significant(p3)} kPa", va="bottom", **lab)
     if eta > hc:
-        ax.text(p4 - 0.04 * pmax, hc - 0.25, f"p$_4$ = {fmt(p4)} kPa", va="top", **lab)
-    ax.text(0.03 * pmax, eta, f"\u03b7* = {fmt(eta)} m", ha="right", va="bottom", fontsize=FS)
+        ax.text(p4 - 0.04 * pmax, hc - 0.25, f"p$_4$ = {significant(p4)} kPa", va="top", **lab)
+    ax.text(0.03 * pmax, eta, f"\u03b7* = {significant(eta)} m", ha="right", va="bottom", fontsize=FS)
     ax.plot([0.0], [eta], marker="_", color="#1f4e99", markersize=8)
     ax.set_xlim(pmax, 0.0)
     ax.set_ylim(-hp - 0.08 * (hp + top), top)
@@ -180,9 +176,9 @@ def draw_uplift(ax: Axes, r: CaissonReport) -> None:
     ax.fill([0.0, 0.0, w], [0.0, pu, 0.0], color=_UPLIFT, alpha=0.55, lw=0)
     ax.plot([0.0, 0.0, w], [0.0, pu, 0.0], color="#b0431c", lw=1.0)
     ax.plot([0.0, w], [0.0, 0.0], color="0.1", lw=3.0, solid_capstyle="butt")
-    ax.text(0.03 * w, pu, f"p$_u$ = {fmt(pu)} kPa", ha="left", va="top", fontsize=FS)
+    ax.text(0.03 * w, pu, f"p$_u$ = {significant(pu)} kPa", ha="left", va="top", fontsize=FS)
     u = float(r.analysis.loads.U) / 1e3
-    ax.text(0.97 * w, 0.72 * pu, f"U = {fmt(u)} kN/m", ha="right", va="center", fontsize=FS)
+    ax.text(0.97 * w, 0.72 * pu, f"U = {significant(u)} kN/m", ha="right", va="center", fontsize=FS)
     ax.set_xlim(-0.05 * w, 1.05 * w)
     ax.set_ylim(1.3 * pu, -0.15 * pu)  # pressure downward: the triangle hangs under the base
     label_axes(ax, "from the seaward toe (m)", "uplift (kPa)", FS, "(c) uplift under the base")
@@ -274,33 +270,36 @@ def draw_table(ax: Axes, r: CaissonReport, checks: Mapping[str, Check | None] | 
     f = float
     c1 = [
         ("design wave", "", ""),
-        ("H\u2081/\u2083", fmt(f(h.H13)), "m"), ("H$_{max}$", fmt(f(h.Hmax)), "m"),
-        ("T\u2081/\u2083", fmt(num(r, "period"), 3), "s"), ("\u03b2", fmt(f(p.beta), 3), "\u00b0"),
-        ("L", fmt(f(p.L)), "m"), ("\u03b7*", fmt(f(p.eta_star)), "m"),
-        ("\u03b1\u2081", fmt(f(p.alpha1)), ""), ("\u03b1\u2082", fmt(f(p.alpha2)), ""),
-        ("\u03b1\u2083", fmt(f(p.alpha3)), ""), ("\u03b1$_I$", fmt(f(p.alpha_I)), ""),
+        ("H\u2081/\u2083", significant(f(h.H13)), "m"), ("H$_{max}$", significant(f(h.Hmax)), "m"),
+        ("T\u2081/\u2083", significant(num(r, "period"), 3), "s"),
+        ("\u03b2", significant(f(p.beta), 3), "\u00b0"),
+        ("L", significant(f(p.L)), "m"), ("\u03b7*", significant(f(p.eta_star)), "m"),
+        ("\u03b1\u2081", significant(f(p.alpha1)), ""), ("\u03b1\u2082", significant(f(p.alpha2)), ""),
+        ("\u03b1\u2083", significant(f(p.alpha3)), ""), ("\u03b1$_I$", significant(f(p.alpha_I)), ""),
     ]
     c2 = [
         ("pressures and loads", "", ""),
-        ("p\u2081", fmt(f(p.p1) / 1e3), "kPa"), ("p\u2083", fmt(f(p.p3) / 1e3), "kPa"),
-        ("p\u2084", fmt(f(p.p4) / 1e3), "kPa"), ("p$_u$", fmt(f(p.pu) / 1e3), "kPa"),
-        ("P", fmt(f(ld.P) / 1e3), "kN/m"), ("M$_P$", fmt(f(ld.Mp) / 1e3), "kN\u00b7m/m"),
-        ("U", fmt(f(ld.U) / 1e3), "kN/m"), ("M$_U$", fmt(f(ld.Mu) / 1e3), "kN\u00b7m/m"),
-        ("W\u2032", fmt(f(sec.buoyant_weight) / 1e3), "kN/m"),
+        ("p\u2081", significant(f(p.p1) / 1e3), "kPa"), ("p\u2083", significant(f(p.p3) / 1e3), "kPa"),
+        ("p\u2084", significant(f(p.p4) / 1e3), "kPa"), ("p$_u$", significant(f(p.pu) / 1e3), "kPa"),
+        ("P", significant(f(ld.P) / 1e3), "kN/m"), ("M$_P$", significant(f(ld.Mp) / 1e3), "kN\u00b7m/m"),
+        ("U", significant(f(ld.U) / 1e3), "kN/m"), ("M$_U$", significant(f(ld.Mu) / 1e3), "kN\u00b7m/m"),
+        ("W\u2032", significant(f(sec.buoyant_weight) / 1e3), "kN/m"),
     ]
     c3 = [
         ("safety factors", "", ""),
-        ("sliding", fmt(f(st.sliding)), ""), ("overturning", fmt(f(st.overturning)), ""),
-        ("heel pressure", fmt(f(st.heel_pressure) / 1e3), "kPa"),
+        ("sliding", significant(f(st.sliding)), ""), ("overturning", significant(f(st.overturning)), ""),
+        ("heel pressure", significant(f(st.heel_pressure) / 1e3), "kPa"),
         ("loaded block", "", ""),
-        ("B, H$_C$", f"{fmt(f(b.B), 3)}, {fmt(f(b.H), 3)}", "m"), ("\u03b3", fmt(f(b.gamma)), ""),
-        ("k, \u03bc", f"{fmt(f(b.k))}, {fmt(f(b.mu), 3)}", ""), ("k\u2032", fmt(f(b.kprime), 3), ""),
-        ("buoyancy", fmt(f(b.beta_b)), ""),
+        ("B, H$_C$", f"{significant(f(b.B), 3)}, {significant(f(b.H), 3)}", "m"),
+        ("\u03b3", significant(f(b.gamma)), ""),
+        ("k, \u03bc", f"{significant(f(b.k))}, {significant(f(b.mu), 3)}", ""),
+        ("k\u2032", significant(f(b.kprime), 3), ""),
+        ("buoyancy", significant(f(b.beta_b)), ""),
     ]
     c4 = [
         ("", "", ""),
-        ("uplift ratio", fmt(f(b.nu)), ""), ("uplift arm", fmt(f(b.e_u)), ""),
-        ("gyration", fmt(f(b.i)), ""),
+        ("uplift ratio", significant(f(b.nu)), ""), ("uplift arm", significant(f(b.e_u)), ""),
+        ("gyration", significant(f(b.i)), ""),
         ("on the loaded map", "", ""),
         ("mode", mode_label(r.mode), ""),
         ("", _margin_text(r.margin_k), ""), ("", _margin_text(r.margin_mu), ""),

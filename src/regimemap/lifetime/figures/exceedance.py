@@ -41,7 +41,7 @@ from ...drawing.text.labelplacer import (
     vline_label,
 )
 from ...drawing.verdict import draw_verdict_badge, verdict_colour
-from ...mechanics.checks import Check
+from ...records.checks import Check
 from ..results import LifetimeResult
 from .style import (
     BAND,

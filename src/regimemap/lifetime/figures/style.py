@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from ...maps.describe import format_significant
+from ...records.numbers import format_significant, significant
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
@@ -95,11 +95,6 @@ def title_height(title: str | None) -> float:
 
 
 # -- numbers ---------------------------------------------------------------------------------
-
-
-def significant(x: float, digits: int = 3) -> str:
-    """``x`` to ``digits`` significant digits, with a true minus sign (for labels)."""
-    return format_significant(x, digits).replace("-", "\u2212")
 
 
 def metres(x: float) -> str:

@@ -21,6 +21,7 @@ from ...io.formats import format_for
 from ...mechanics.block import Parameters
 from ...mechanics.modes import MAP_MODES, Mode
 from ...mechanics.validation import check_gamma
+from ...records.numbers import short
 from ..describe import loads_text
 from ..sweeps import sweep_params
 from .atlas import key_modes, sweep_text
@@ -49,10 +50,6 @@ __all__ = [
     "write_animation",
 ]
 
-
-
-def _fmt(x: float) -> str:
-    return f"{x:g}"
 
 
 def _pillow_writer(fps: float) -> PillowWriter:
@@ -148,7 +145,7 @@ def draw_frame(fig: Figure, ax: Axes, gamma: float, kprime: float, data: MapData
     p = Parameters(gamma, kprime) if block is None else block
     loads = loads_text(p, tex=True)
     caption = f"All modes, block with loads ({loads})" if loads else f"All modes, {p.case.tex}"
-    corner = rf"$\gamma = {_fmt(gamma)}$, " + (rf"$k' = {kprime:+.3f}$" if swept is None else swept)
+    corner = rf"$\gamma = {short(gamma)}$, " + (rf"$k' = {kprime:+.3f}$" if swept is None else swept)
     with style_context():
         ax.cla()
         for leg in list(fig.legends):

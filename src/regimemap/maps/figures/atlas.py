@@ -22,6 +22,7 @@ from typing import TYPE_CHECKING, Any
 
 from ...drawing.limits import ATLAS_DPI, ATLAS_DPI_RANGE, MAX_PANELS
 from ...mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
+from ...records.numbers import short
 from ..describe import format_value
 from ..sweeps import SWEEPS
 
@@ -48,10 +49,6 @@ __all__ = [
 #: Size of one atlas panel in inches (width, height).
 PANEL_SIZE: tuple[float, float] = (2.7, 2.35)
 
-def _fmt(x: float) -> str:
-    return f"{x:g}"
-
-
 def sweep_text(sweep: str, value: float) -> str:
     r"""``$k' = 0.4$``, ``$\beta = 0.3$``: the swept quantity of a panel or frame (mathtext).
 
@@ -66,7 +63,7 @@ def sweep_text(sweep: str, value: float) -> str:
     str
     """
     sym = SWEEPS[sweep][0]
-    return rf"${sym} = {format_value(value) if sweep != 'kprime' else _fmt(value)}$"
+    return rf"${sym} = {format_value(value) if sweep != 'kprime' else short(value)}$"
 
 
 def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
@@ -77,7 +74,7 @@ def _legend_handles(modes: Sequence[Mode], dotted: bool = False) -> list[Any]:
 
 
 def _panel_title(g: float, kp: float, sweep: str = "kprime") -> str:
-    return rf"$\gamma = {_fmt(g)}$, " + sweep_text(sweep, kp)
+    return rf"$\gamma = {short(g)}$, " + sweep_text(sweep, kp)
 
 
 def _fixed_text(sweep: str, fixed: dict[str, Any] | None) -> str:
@@ -282,7 +279,7 @@ def _atlas_title(caption: str | None, sweep: str, fixed: dict[str, Any] | None, 
     if shared_text:
         title += "\n" + shared_text
     if crammed:
-        names = "; ".join(rf"$\gamma = {_fmt(g)}$, {sweep_text(sweep, v)}"
+        names = "; ".join(rf"$\gamma = {short(g)}$, {sweep_text(sweep, v)}"
                           for g, v in crammed[:3])
         more = f" and {len(crammed) - 3} more" if len(crammed) > 3 else ""
         title += ("\neach panel has its own view: a shared one would cram " + names + more

@@ -34,6 +34,7 @@ from ...drawing.text.labels import Frame, curve_labels, mark_off_view, name_poin
 from ...drawing.text.placement import Box, view_points
 from ...mechanics.block import Parameters
 from ...mechanics.modes import MAP_MODES, Mode
+from ...records.numbers import short
 from ..describe import loads_text
 from ..geometry import area_in_view
 from ..mapdata import CurveData, MapData
@@ -103,10 +104,6 @@ class MapStyle:
     legend_kw: Mapping[str, Any] | None = None
 
 
-def _fmt(x: float) -> str:
-    return f"{x:g}"
-
-
 def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
                   raw: bool = False) -> str:
     """A caption-like title: what is shown, the report's case, and (gamma, k').
@@ -130,9 +127,9 @@ def default_title(params: Parameters, *, modes: Sequence[Mode] | None = None,
     loads = loads_text(params, tex=True)
     if loads:  # a loaded block: the loads, not the report's case (which ignores them)
         return (f"{what}, block with loads\n"
-                rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$; {loads})")
+                rf"($\gamma = {short(params.gamma)}$, $k' = {short(params.kprime)}$; {loads})")
     return (f"{what}, {params.case.tex}\n"
-            rf"($\gamma = {_fmt(params.gamma)}$, $k' = {_fmt(params.kprime)}$)")
+            rf"($\gamma = {short(params.gamma)}$, $k' = {short(params.kprime)}$)")
 
 
 
