@@ -44,7 +44,7 @@ MODEL = LifetimeModel(Climate.from_return_values(5.0, 6.3))
 
 
 @pytest.fixture(scope="module")
-def goda() -> LifetimeResult:
+def goda_result() -> LifetimeResult:
     return lifetime_sliding(GODA, MODEL, trials=1000, seed=1)
 
 
@@ -75,8 +75,8 @@ def _all_text(fig) -> str:
     return " | ".join(t.get_text() for t in figure_texts(fig))
 
 
-def test_lifetime_figure_of_a_normal_result(goda: LifetimeResult) -> None:
-    fig = lifetime_figure(goda)
+def test_lifetime_figure_of_a_normal_result(goda_result: LifetimeResult) -> None:
+    fig = lifetime_figure(goda_result)
     axes = {ax.get_label(): ax for ax in fig.axes}
     assert set(axes) == {"exceedance", "histogram"}
     ax = axes["exceedance"]
@@ -87,18 +87,18 @@ def test_lifetime_figure_of_a_normal_result(goda: LifetimeResult) -> None:
     assert "0.1 m" in text and "0.3 m" in text
     assert "Goda & Takagi 2000" in text and "Shimosako & Takahashi 1999" in text
     assert "Kim & Suh 2013" in text
-    share = f"{100 * goda.never_slides:.1f} %"
+    share = f"{100 * goda_result.never_slides:.1f} %"
     assert share in text and "did not" in text
     # the lifetime curve: a step line from P(S > 0) down to 1/n at the largest slide
     life = max(ax.get_lines(), key=lambda ln: len(ln.get_xdata()))
     y = np.asarray(life.get_ydata())
-    assert y[0] == pytest.approx(1.0 - goda.never_slides)
-    assert y[-1] == pytest.approx(1.0 / goda.trials)
+    assert y[0] == pytest.approx(1.0 - goda_result.never_slides)
+    assert y[-1] == pytest.approx(1.0 / goda_result.trials)
     assert np.all(np.diff(y) <= 0.0)
-    assert float(np.max(life.get_xdata())) == pytest.approx(float(goda.sliding.max()))
+    assert float(np.max(life.get_xdata())) == pytest.approx(float(goda_result.sliding.max()))
     # the ESD line, and the tolerable limits, are drawn at their values
     xs = {round(float(ln.get_xdata()[0]), 12) for ln in ax.get_lines() if len(ln.get_xdata()) == 2}
-    assert {0.1, 0.3, round(goda.expected_sliding, 12)} <= xs
+    assert {0.1, 0.3, round(goda_result.expected_sliding, 12)} <= xs
     # the histogram counts every lifetime that slid (here none slid less than the axis starts)
     bars = axes["histogram"].patches
     assert bars
@@ -245,8 +245,8 @@ def _labels_off_the_lines(fig, only: str | None = None) -> None:
 
 
 @pytest.mark.parametrize("which", ["goda", "wide", "zero"])
-def test_lifetime_figure_is_legible(which: str, goda: LifetimeResult, wide: LifetimeResult) -> None:
-    result = {"goda": goda, "wide": wide, "zero": _zero()}[which]
+def test_lifetime_figure_is_legible(which: str, goda_result: LifetimeResult, wide: LifetimeResult) -> None:
+    result = {"goda": goda_result, "wide": wide, "zero": _zero()}[which]
     fig = lifetime_figure(result, title="Goda's caisson" if which == "wide" else None)
     _check_figure(fig)
     _labels_off_the_lines(fig)
@@ -272,8 +272,8 @@ def _bytes(fig, fmt: str, dpi: float | None = None) -> bytes:
 
 
 @pytest.mark.deep
-def test_svg_is_byte_stable(goda: LifetimeResult, chart: DesignChart) -> None:
-    for make in (lambda dpi: lifetime_figure(goda, dpi=dpi), lambda dpi: chart_figure(chart, dpi=dpi)):
+def test_svg_is_byte_stable(goda_result: LifetimeResult, chart: DesignChart) -> None:
+    for make in (lambda dpi: lifetime_figure(goda_result, dpi=dpi), lambda dpi: chart_figure(chart, dpi=dpi)):
         a = _bytes(make(150), "svg")
         b = _bytes(make(150), "svg")
         c = _bytes(make(60), "svg")  # the labels are placed the same at any resolution
@@ -282,8 +282,8 @@ def test_svg_is_byte_stable(goda: LifetimeResult, chart: DesignChart) -> None:
 
 
 @pytest.mark.deep
-def test_pdf_embeds_truetype_fonts(goda: LifetimeResult, chart: DesignChart) -> None:
-    for fig in (lifetime_figure(goda), chart_figure(chart), lifetime_figure(_zero())):
+def test_pdf_embeds_truetype_fonts(goda_result: LifetimeResult, chart: DesignChart) -> None:
+    for fig in (lifetime_figure(goda_result), chart_figure(chart), lifetime_figure(_zero())):
         data = _bytes(fig, "pdf")
         assert data.startswith(b"%PDF")
         assert b"/Type3" not in data and b"/Subtype /Type3" not in data
@@ -312,23 +312,23 @@ def test_sheet_without_a_lifetime_has_no_lifetime_panel() -> None:
 
 
 @pytest.mark.deep
-def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda: LifetimeResult) -> None:
+def test_sheet_with_a_lifetime_adds_panel_g_and_stays_legible(goda_result: LifetimeResult) -> None:
     from regimemap.caisson.figures.page import LIFETIME_PANEL, PANELS
     from tests.conftest import draw_sheet
 
     report = _goda_report()
-    fig = draw_sheet(report, title="goda.toml", lifetime=goda)
+    fig = draw_sheet(report, title="goda.toml", lifetime=goda_result)
     labels = [ax.get_label() for ax in fig.axes]
     assert LIFETIME_PANEL in labels and all(p in labels for p in PANELS)
     texts = _all_text(fig)
-    assert "(g)" in texts and f"{goda.trials} lifetimes" in texts
+    assert "(g)" in texts and f"{goda_result.trials} lifetimes" in texts
     _labels_off_the_lines(fig, only=LIFETIME_PANEL)
     # the same bytes twice (the panel is placed deterministically)
     import io
 
     a, b = io.BytesIO(), io.BytesIO()
     print_figure(fig, a, "svg")
-    print_figure(draw_sheet(report, title="goda.toml", lifetime=goda), b, "svg")
+    print_figure(draw_sheet(report, title="goda.toml", lifetime=goda_result), b, "svg")
     assert a.getvalue() == b.getvalue()
 
 
@@ -346,14 +346,14 @@ def _fig_texts(fig) -> list:
 
 
 @pytest.mark.parametrize(("target", "word"), [(0.1, "FAIL (1 of 1)"), (100.0, "PASS")])
-def test_the_lifetime_figure_says_pass_or_fail_and_colours_a_failing_esd(goda: LifetimeResult, target: float,
+def test_the_lifetime_figure_says_pass_or_fail_and_colours_a_failing_esd(goda_result: LifetimeResult, target: float,
                                                                          word: str) -> None:
     from matplotlib.colors import to_hex
 
     from regimemap.drawing.verdict import FAIL_COLOUR
     from regimemap.lifetime.figures.exceedance import lifetime_title
 
-    result = _judged(goda, target, failure=5.0)
+    result = _judged(goda_result, target, failure=5.0)
     fig = lifetime_figure(result, lifetime_title("goda", result))
     _check_figure(fig)
     texts = _fig_texts(fig)

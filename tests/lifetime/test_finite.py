@@ -36,7 +36,7 @@ def test_quiet_arithmetic_silences_numpy_and_restores_its_state():
 
 
 @pytest.fixture
-def goda(tmp_path):
+def goda_60_trials(tmp_path):
     path = tmp_path / "goda.toml"
     path.write_text(example_design_text().replace("trials = 5000", "trials = 60"))
     return path
@@ -56,17 +56,17 @@ def _broken_lifetimes(monkeypatch):
     monkeypatch.setattr(lifetime, "lifetime_sliding", broken)
 
 
-def test_the_lifetime_command_refuses_a_non_finite_result_and_writes_nothing(run_cli, goda, monkeypatch):
+def test_the_lifetime_command_refuses_a_non_finite_result_and_writes_nothing(run_cli, goda_60_trials, monkeypatch):
     _broken_lifetimes(monkeypatch)
-    out = run_cli(["lifetime", str(goda), "--jobs", "1", "-q", "-o", str(goda.with_suffix(".csv"))])
+    out = run_cli(["lifetime", str(goda_60_trials), "--jobs", "1", "-q", "-o", str(goda_60_trials.with_suffix(".csv"))])
     assert out.code == 1, out.output
-    assert out.stderr.strip() == (f"regimemap: error: {goda}: the lifetime sliding is not finite (inf in 1 of 60 "
+    assert out.stderr.strip() == (f"regimemap: error: {goda_60_trials}: the lifetime sliding is not finite (inf in 1 of 60 "
                                   "values, nan in 0): the model is outside the range of its formulas; nothing "
                                   "is written")
-    assert out.stdout == "" and not goda.with_suffix(".csv").exists()
+    assert out.stdout == "" and not goda_60_trials.with_suffix(".csv").exists()
 
 
-def test_the_design_chart_refuses_a_non_finite_esd(goda, monkeypatch):
+def test_the_design_chart_refuses_a_non_finite_esd(goda_60_trials, monkeypatch):
     import regimemap.lifetime as lifetime
     from regimemap.lifetime.run import run_chart
 
@@ -81,4 +81,4 @@ def test_the_design_chart_refuses_a_non_finite_esd(goda, monkeypatch):
     monkeypatch.setattr(lifetime, "design_chart", broken)
     with pytest.raises(NonFiniteResult, match=r"the design chart's ESD is not finite \(inf in 0 of 2 values, "
                                               r"nan in 1\)"):
-        run_chart(goda, [12.0, 18.0], trials=40, seed=1)
+        run_chart(goda_60_trials, [12.0, 18.0], trials=40, seed=1)

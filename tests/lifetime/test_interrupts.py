@@ -35,7 +35,7 @@ EXIT_WITHIN = 10.0
 
 
 @pytest.fixture
-def goda(tmp_path: Path) -> Path:
+def goda_in_a_folder(tmp_path: Path) -> Path:
     d = tmp_path / "design"
     d.mkdir()
     f = d / "goda.toml"
@@ -109,51 +109,51 @@ def _interrupt(proc: subprocess.Popen[bytes], sig: int, started: bytes, out_dir:
     assert left == [], "an output or a temporary file was left"
 
 
-def _lifetime(goda: Path, *more: str) -> list[str]:
-    return ["lifetime", str(goda), "--trials", "2000000", "-o", "life.png", "-o", "life.csv", *more]
+def _lifetime(goda_in_a_folder: Path, *more: str) -> list[str]:
+    return ["lifetime", str(goda_in_a_folder), "--trials", "2000000", "-o", "life.png", "-o", "life.csv", *more]
 
 
 @pytest.mark.parametrize("jobs", [1, 2, 3])
-def test_ctrl_c_ends_the_run(goda: Path, tmp_path: Path, jobs: int) -> None:
+def test_ctrl_c_ends_the_run(goda_in_a_folder: Path, tmp_path: Path, jobs: int) -> None:
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(_lifetime(goda, "--jobs", str(jobs)), out)
+    proc = _start(_lifetime(goda_in_a_folder, "--jobs", str(jobs)), out)
     where = "in this process" if jobs == 1 else f"in {jobs} processes"
     started = _wait_for(proc, "lifetimes of", where)
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted")
 
 
 @pytest.mark.parametrize("jobs", [1, 2])
-def test_sigterm_ends_the_run(goda: Path, tmp_path: Path, jobs: int) -> None:
+def test_sigterm_ends_the_run(goda_in_a_folder: Path, tmp_path: Path, jobs: int) -> None:
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(_lifetime(goda, "--jobs", str(jobs), "--quiet"), out)
+    proc = _start(_lifetime(goda_in_a_folder, "--jobs", str(jobs), "--quiet"), out)
     where = "in this process" if jobs == 1 else f"in {jobs} processes"
     started = _wait_for(proc, "lifetimes of", where)
     _interrupt(proc, signal.SIGTERM, started, out, 143, "regimemap: terminated")
 
 
-def test_ctrl_c_twice_is_still_one_line(goda: Path, tmp_path: Path) -> None:
+def test_ctrl_c_twice_is_still_one_line(goda_in_a_folder: Path, tmp_path: Path) -> None:
     """A second Ctrl-C while the first is handled does not break the exit with a traceback."""
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(_lifetime(goda, "--jobs", "2"), out)
+    proc = _start(_lifetime(goda_in_a_folder, "--jobs", "2"), out)
     started = _wait_for(proc, "lifetimes of", "in 2 processes")
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted", again=3)
 
 
 @pytest.mark.deep
-def test_ctrl_c_during_the_width_bisection(goda: Path, tmp_path: Path) -> None:
+def test_ctrl_c_during_the_width_bisection(goda_in_a_folder: Path, tmp_path: Path) -> None:
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(["lifetime", str(goda), "--trials", "3000", "--width", "10:25:5", "--target", "0.1",
+    proc = _start(["lifetime", str(goda_in_a_folder), "--trials", "3000", "--width", "10:25:5", "--target", "0.1",
                    "--jobs", "2", "-o", "chart.png"], out)
     started = _wait_for(proc, "lifetimes of", "x 2 widths", "in 2 processes")  # a bisection step
     _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted", delay=0.2)
 
 
 @pytest.mark.deep
-def test_ctrl_c_on_a_dask_cluster(goda: Path, tmp_path: Path) -> None:
+def test_ctrl_c_on_a_dask_cluster(goda_in_a_folder: Path, tmp_path: Path) -> None:
     pytest.importorskip("distributed")
     from distributed import LocalCluster
 
@@ -161,7 +161,7 @@ def test_ctrl_c_on_a_dask_cluster(goda: Path, tmp_path: Path) -> None:
     out.mkdir()
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, host="127.0.0.1",
                       dashboard_address=None) as cluster:
-        proc = _start(_lifetime(goda, "--scheduler", cluster.scheduler_address), out)
+        proc = _start(_lifetime(goda_in_a_folder, "--scheduler", cluster.scheduler_address), out)
         started = _wait_for(proc, "lifetimes of", "on the Dask scheduler")
         _interrupt(proc, signal.SIGINT, started, out, 130, "regimemap: interrupted", delay=1.0)
         deadline = time.monotonic() + 10.0
@@ -205,12 +205,12 @@ def _numpy_loaded(pid: int) -> bool:
 
 @pytest.mark.parametrize("sig,code,message", [(signal.SIGINT, 130, "regimemap: interrupted"),
                                               (signal.SIGTERM, 143, "regimemap: terminated")])
-def test_a_signal_while_the_process_starts(goda: Path, tmp_path: Path, sig: int, code: int,
+def test_a_signal_while_the_process_starts(goda_in_a_folder: Path, tmp_path: Path, sig: int, code: int,
                                            message: str) -> None:
     """During the imports (numpy loading, before the command runs): the same one line and code."""
     out = tmp_path / "out"
     out.mkdir()
-    proc = _start(_lifetime(goda, "--jobs", "2"), out)
+    proc = _start(_lifetime(goda_in_a_folder, "--jobs", "2"), out)
     deadline = time.monotonic() + START_WITHIN
     while not _numpy_loaded(proc.pid) and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.002)

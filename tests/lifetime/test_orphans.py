@@ -17,8 +17,6 @@ from pathlib import Path
 
 import pytest
 
-from regimemap.caisson.file import example_design_text
-
 from .._processes import START_WITHIN, alive, descendants, describe, kill_group, start, wait_until
 
 pytestmark = [pytest.mark.subprocess, pytest.mark.slow,
@@ -44,13 +42,6 @@ def _kill_parent_and_check(proc, workers: int, ready=lambda: True) -> None:  # t
     finally:
         kill_group(proc.pid)
         proc.communicate()
-
-
-@pytest.fixture
-def goda(tmp_path: Path) -> Path:
-    f = tmp_path / "goda.toml"
-    f.write_text(example_design_text(), encoding="utf-8")
-    return f
 
 
 def test_lifetime_workers_die_with_their_parent(goda: Path, tmp_path: Path) -> None:
