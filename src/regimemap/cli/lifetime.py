@@ -9,6 +9,7 @@ the figure (:mod:`regimemap.lifetime.figures`), each file atomically.
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 import click
@@ -103,7 +104,12 @@ def lifetime_cmd(design: str, trials: int | None, seed: int | None, years: int |
     refuse_notices(record.notices, "target-not-bracketed", "", "'--width'")
     if not quiet:
         echo_notes(run_notes(record))
-    written = write_files(outputs, lambda: _figure(record, design),
+    def figure() -> Figure:
+        from ..lifetime.figures.record_figure import record_figure
+
+        return record_figure(record, Path(design).stem)
+
+    written = write_files(outputs, figure,
                           data_formats=record_formats("lifetimes"), write_data=record.write_data)
     print_report(as_json, record.report_text, lambda: record.report_json(written), written)
     exit_on_failure(record.result.checks, check)
@@ -170,24 +176,3 @@ def _read_design(design: str, years: int | None, strict: bool) -> LifetimeDesign
                        "'DESIGN.toml'")
     echo_notices(inputs.notices)
     return inputs
-
-
-def _figure(record: LifetimeRecord | ChartRecord, design: str) -> Figure:
-    """The exceedance figure of the lifetimes, or the design chart (with its climate band); the
-    title names the section by the design file's stem."""
-    from pathlib import Path
-
-    from ..lifetime import LifetimeResult
-
-    title = Path(design).stem
-    if isinstance(record.result, LifetimeResult):
-        from ..lifetime.figures.exceedance import lifetime_figure, lifetime_title
-        from ..lifetime.replicates import ClimateBand
-
-        life_band = record.band if isinstance(record.band, ClimateBand) else None
-        return lifetime_figure(record.result, lifetime_title(title, record.result), band=life_band)
-    from ..lifetime.figures.chart import chart_figure, chart_title
-    from ..lifetime.replicates import ChartBand
-
-    band = record.band if isinstance(record.band, ChartBand) else None
-    return chart_figure(record.result, chart_title(title, record.result), band=band)
