@@ -131,7 +131,7 @@ def test_design_record_gives_the_fitted_climate(tmp_path):
     ('path = "buoy.txt.gz"\nthresold = 3', "", r"line \d+: unknown key \[lifetime.record\] thresold \(did you mean 'threshold'\?\)"),
     ('method = "pot"', "", r"\[lifetime.record\] has no path"),
     ('path = "buoy.txt.gz"\ngap_hours = 0', "", r"line \d+: \[lifetime.record\] gap_hours = 0: out of range"),
-    ('path = "buoy.txt.gz"\nthreshold = "200%"', "", r"threshold = '200%': neither a height"),
+    ('path = "buoy.txt.gz"\nthreshold = "200%"', "", r'threshold = "200%": neither a height'),
     ('path = "buoy.txt.gz"\nmethod = "annual-maxima"\ndistribution = "gpd"', "", r"not a distribution of annual-maxima"),
     ('path = "buoy.txt.gz"', "H0_10 = 5.0", r"\[lifetime\] H0_10 together with \[lifetime.record\]"),
     ('path = "absent.csv"', "", r"absent.csv: cannot read the wave record: No such file"),

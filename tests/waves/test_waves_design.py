@@ -74,7 +74,7 @@ def test_missing_wave_height(tmp_path: Path) -> None:
 
 def test_wrong_type(tmp_path: Path) -> None:
     msg = error_of(edit(EXAMPLE, "width = 15.0", 'width = "15 m"'), tmp_path)
-    assert '[caisson] width = "15 m"' in msg and "expected a number, found str" in msg  # as written
+    assert '[caisson] width = "15 m"' in msg and "expected a number, found a string" in msg  # as written
     assert "full width 0.05 <= width <= 500 in metres" in msg
     msg = error_of(edit(EXAMPLE, "friction = 0.6", "friction = true"), tmp_path)
     assert "[caisson] friction = true" in msg and "expected a number" in msg

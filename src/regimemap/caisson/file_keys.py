@@ -224,8 +224,7 @@ def example_tables() -> str:
 
 
 def design_reader(source: str, text: str = "") -> KeyReader:
-    """The reader of a design file's ``[site]``, ``[wave]`` and ``[caisson]`` (their messages name a
-    wrong value by its Python type, ``found str``)."""
-    return KeyReader(source, text, DESIGN_KEYS, python_types=DESIGN_KEYS)
+    """The reader of a design file's ``[site]``, ``[wave]`` and ``[caisson]``."""
+    return KeyReader(source, text, DESIGN_KEYS)
 
 

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 import re
 import sys
-from collections.abc import Callable, Collection, Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import MISSING, Field, dataclass, field, fields
 from typing import Any, TypeVar
 
@@ -171,18 +171,12 @@ class KeyReader:
         Its TOML text (for the lines, and the values as written).
     tables : mapping
         The keys of each table it reads (``{"site": keys_of(SiteSpec), ...}``).
-    python_types : collection of str
-        The tables whose messages name a wrong value by its Python type (``found str``, the design
-        file's ``[site]``, ``[wave]``, ``[caisson]``) and quote a list as written; the others name
-        its TOML type (``found a string``) and quote a list as parsed.
     """
 
-    def __init__(self, source: str, text: str, tables: Mapping[str, Mapping[str, Key]],
-                 python_types: Collection[str] = ()) -> None:
+    def __init__(self, source: str, text: str, tables: Mapping[str, Mapping[str, Key]]) -> None:
         self.source = source
         self.text = text
         self.tables = tables
-        self.python_types = python_types
 
     def at(self, line: int | None) -> str:
         """``source, line N`` (``source`` when the line is not known)."""
@@ -201,15 +195,10 @@ class KeyReader:
         return key_text(self.text, table, key) or repr(value)
 
     def bad(self, table: str, key: str, value: Any, why: str) -> DesignFileError:
-        """``[table] key = VALUE: why; accepted: ...`` at the key's line."""
-        listed = isinstance(value, list) and table not in self.python_types
-        shown = repr(value) if listed else self.written(table, key, value)
+        """``[table] key = VALUE: why; accepted: ...`` at the key's line, the value as written."""
+        shown = self.written(table, key, value)
         return self.fail(f"[{table}] {key} = {shown}: {why}; accepted: {self.tables[table][key].accepted}",
                          table, key)
-
-    def type_name(self, table: str, value: Any) -> str:
-        """The type of a wrong value, as the messages of ``table`` name it."""
-        return type(value).__name__ if table in self.python_types else toml_type(value)
 
     def check_keys(self, table: str, data: Mapping[str, Any]) -> None:
         """Refuse a key of ``data`` that ``table`` does not declare, with the closest one."""
@@ -247,7 +236,7 @@ class KeyReader:
         spec = self.tables[table][key]
         which = f"{value!r} in the list is " if item else ""
         if isinstance(value, bool) or not isinstance(value, (int, float)):
-            found = self.type_name(table, value)
+            found = toml_type(value)
             raise self.bad(table, key, data[key], f"expected {'numbers' if item else 'a number'}, "
                            f"found {which}{found}")
         x = float(value)
@@ -265,7 +254,7 @@ class KeyReader:
         v = data[key]
         is_kind, expected, refused = _SCALARS[self.tables[table][key].kind]
         if not is_kind(v):
-            raise self.bad(table, key, v, f"expected {expected}, found {self.type_name(table, v)}")
+            raise self.bad(table, key, v, f"expected {expected}, found {toml_type(v)}")
         if not self.tables[table][key].check(v):
             raise self.bad(table, key, v, refused)
         return v
@@ -273,7 +262,7 @@ class KeyReader:
     def _numbers(self, table: str, data: Mapping[str, Any], key: str) -> tuple[float, ...]:
         v = data[key]
         if not isinstance(v, list):
-            raise self.bad(table, key, v, f"expected a list of numbers, found {self.type_name(table, v)}")
+            raise self.bad(table, key, v, f"expected a list of numbers, found {toml_type(v)}")
         if not v:
             raise self.bad(table, key, v, "the list is empty")
         return tuple(self.number(table, data, key, x, item=True) for x in v)
@@ -281,7 +270,7 @@ class KeyReader:
     def _pair(self, table: str, data: Mapping[str, Any], key: str) -> tuple[float, float]:
         v = data[key]
         if not isinstance(v, list) or len(v) != 2:
-            found = f"a list of {len(v)}" if isinstance(v, list) else self.type_name(table, v)
+            found = f"a list of {len(v)}" if isinstance(v, list) else toml_type(v)
             raise self.bad(table, key, v, f"expected [ratio, cov], found {found}")
         for x in v:
             if not _finite(x):
@@ -298,7 +287,7 @@ class KeyReader:
         v = data[key]
         if not isinstance(v, dict):
             raise self.bad(table, key, v,
-                           f"expected a table {{sliding = probability}}, found {self.type_name(table, v)}")
+                           f"expected a table {{sliding = probability}}, found {toml_type(v)}")
         if not v:
             raise self.bad(table, key, v, "the table is empty")
         out: dict[float, float] = {}
@@ -318,5 +307,5 @@ class KeyReader:
     def _table(self, table: str, data: Mapping[str, Any], key: str) -> dict[str, Any]:
         v = data[key]
         if not isinstance(v, dict):
-            raise self.bad(table, key, v, f"expected a table, found {self.type_name(table, v)}")
+            raise self.bad(table, key, v, f"expected a table, found {toml_type(v)}")
         return v

@@ -11,7 +11,6 @@ fit gives N replicate climates (:func:`regimemap.lifetime.replicates.climate_ban
 from __future__ import annotations
 
 import functools
-import math
 import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
@@ -113,7 +112,7 @@ def read_record_table(r: KeyReader, table: Mapping[str, Any]) -> RecordSpec:
     t = "lifetime.record"
 
     def bad(key: str, why: str) -> DesignFileError:
-        return r.fail(f"[{t}] {key} = {table[key]!r}: {why}; accepted: {RECORD_KEYS[key].accepted}", t, key)
+        return r.bad(t, key, table[key], why)
 
     r.check_keys(t, table)
     if "path" not in table:
@@ -129,10 +128,7 @@ def read_record_table(r: KeyReader, table: Mapping[str, Any]) -> RecordSpec:
         got["threshold"] = _threshold(table["threshold"], bad)
     for name in ("gap_hours", "shape", "coverage", "period_ratio"):
         if name in table:
-            x = number_of(table[name])
-            if x is None or not math.isfinite(x) or not RECORD_KEYS[name].check(x):
-                raise bad(name, "out of range" if x is not None else "expected a number")
-            got[name] = x
+            got[name] = r.number(t, table, name, table[name])
     if "distribution" in table:
         method = got.get("method", "pot")
         if table["distribution"] not in _DISTRIBUTIONS[method]:
