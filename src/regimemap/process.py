@@ -25,6 +25,7 @@ import signal
 import sys
 import threading
 import time
+from collections.abc import Callable
 from types import FrameType
 from typing import Any
 
@@ -41,19 +42,39 @@ _exiting_thread: list[int] = []
 _flushed: list[Any] = []
 
 
-def _send_to_main_thread(signum: int) -> None:
-    """``signum`` to the main thread, from a thread of its own: it arrives after the caller returns.
+def _send_to_main_thread(main: int, signum: int, pending: Callable[[], bool]) -> None:
+    """``signum`` to the main thread (``main``, its ident), from a thread of its own: it arrives
+    after the caller returns.
 
     ``pthread_kill`` wakes a main thread that sleeps or waits (the call is retried after the
     handler, PEP 475); where it is missing, :func:`_thread.interrupt_main` sets the signal as
     pending.  Both from another thread, because ``signal.raise_signal`` and ``os.kill`` run the
-    handler at once, in their caller.
+    handler at once, in their caller.  A signal that arrives just before the main thread starts
+    to wait is handled only when the wait ends, so it is sent again every :data:`_RESEND`
+    seconds while ``pending()`` (for at most :data:`_RESEND_FOR` seconds).  Only built-in calls
+    here and in the hook: a handler that runs in any other code of Python's would raise there.
     """
-    main = threading.main_thread().ident
-    if main is None or not hasattr(signal, "pthread_kill"):  # pragma: no cover - not POSIX
+    if not hasattr(signal, "pthread_kill"):  # pragma: no cover - not POSIX
         _thread.start_new_thread(_thread.interrupt_main, (signal.Signals(signum),))
     else:
-        _thread.start_new_thread(signal.pthread_kill, (main, signum))
+        _thread.start_new_thread(_kill_thread, (main, signum, pending))
+
+
+#: Seconds between two sends of a signal still not handled, and for how long it is sent.
+_RESEND = 0.02
+_RESEND_FOR = 2.0
+
+
+def _kill_thread(thread: int, signum: int, pending: Callable[[], bool]) -> None:
+    """``signum`` to ``thread`` until it is handled; nothing if it has ended (an exiting interpreter)."""
+    for _ in range(round(_RESEND_FOR / _RESEND)):
+        try:
+            signal.pthread_kill(thread, signum)
+        except OSError:
+            return
+        time.sleep(_RESEND)
+        if not pending():
+            return
 
 
 class LostSignals:
@@ -65,7 +86,9 @@ class LostSignals:
     installed (``with``), ``sys.unraisablehook`` takes an exception of ``kinds`` back without a
     word and the signal is sent again to the main thread (:func:`_send_to_main_thread`), whose
     handler then raises in the code that runs next.  A handler first asks :meth:`deferred`: a
-    signal handled inside the hook itself is sent again too, rather than raised there.  Used by
+    signal handled inside the hook itself is sent again too, rather than raised there; and a
+    handler raises once (:meth:`raising`), then again only for a signal :attr:`lost` (a signal
+    may be sent more than once, :func:`_send_to_main_thread`).  Used by
     the ``regimemap`` process while a command runs (:func:`regimemap.cli._signals.stop_signals`)
     and by every worker of the process pool (:mod:`regimemap.workers`).
 
@@ -82,8 +105,11 @@ class LostSignals:
         #: Whether the exception of :attr:`signum` was lost in a finalizer and is being sent again.
         self.lost = False
         self._hook: Any = sys.unraisablehook
+        self._main = _thread.get_ident()
 
     def __enter__(self) -> LostSignals:
+        """Install the hook, from the main thread (a pool's worker: the thread forked)."""
+        self._main = _thread.get_ident()
         self._hook = sys.unraisablehook
         sys.unraisablehook = self._unraisable
         return self
@@ -99,14 +125,14 @@ class LostSignals:
     def deferred(self, signum: int, frame: FrameType | None) -> bool:
         """Whether a handler of ``signum`` runs inside the hook: then the signal is sent again."""
         if frame is not None and frame.f_code in _HOOK_CODE:
-            _send_to_main_thread(signum)
+            _send_to_main_thread(self._main, signum, lambda: self.lost)
             return True
         return False
 
     def _unraisable(self, info: Any) -> None:
         if self.signum is not None and isinstance(info.exc_value, self.kinds):
             self.lost = True
-            _send_to_main_thread(self.signum)
+            _send_to_main_thread(self._main, self.signum, lambda: self.lost)
             return
         self._hook(info)
 

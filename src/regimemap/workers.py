@@ -120,7 +120,8 @@ _lost = LostSignals((WorkerStopped,))
 
 
 def _raise_stopped(signum: int, frame: FrameType | None) -> None:
-    if _lost.deferred(signum, frame):
+    """:class:`WorkerStopped`, once: a second stop signal cannot break the cleanup of the first."""
+    if _lost.deferred(signum, frame) or (_lost.signum is not None and not _lost.lost):
         return
     _lost.raising(signum)
     raise WorkerStopped(signum)
