@@ -70,7 +70,7 @@ def format_significant(x: float, digits: int = 4) -> str:
     """
     if not math.isfinite(x):
         return "inf" if x > 0 else "n/a"
-    if 10.0 ** digits <= abs(x) < 1e12:
+    if 10.0 ** digits <= abs(float(f"{x:.{digits}g}")) < 1e12:  # 9999.7 to 4 digits: 10000
         s = f"{x:.0f}"
     else:
         s = f"{x:#.{digits}g}"
