@@ -28,7 +28,7 @@ RUNS = np.array([
 
 def _batch(rows: np.ndarray) -> tuple[Block, Pulse]:
     B, gamma, mu, kprime, beta, nu, k, T = rows.T
-    return Block(B=B, gamma=gamma, mu=mu, kprime=kprime, beta=beta, nu=nu), Pulse.half_sine(k, T)
+    return Block(B=B, gamma=gamma, mu=mu, kprime=kprime, buoyancy=beta, uplift_ratio=nu), Pulse.half_sine(k, T)
 
 
 @pytest.mark.slow

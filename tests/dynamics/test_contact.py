@@ -44,10 +44,10 @@ def from_rest(blk: Block, k: float, h: float = H_STEP):
     B = float(np.asarray(blk.B))
     H = float(blk.H)
     J = float(blk.gyration2) * B * B
-    lift = float(np.asarray(blk.u)) + float(np.asarray(blk.nu)) * k
+    lift = float(np.asarray(blk.uplift)) + float(np.asarray(blk.uplift_ratio)) * k
     fx = -G * k
-    fy = G * (float(np.asarray(blk.beta)) + lift - 1.0)
-    tau = (G / J) * (k * float(np.asarray(blk.kprime)) * H + float(np.asarray(blk.e_u)) * B * lift)
+    fy = G * (float(np.asarray(blk.buoyancy)) + lift - 1.0)
+    tau = (G / J) * (k * float(np.asarray(blk.kprime)) * H + float(np.asarray(blk.uplift_arm)) * B * lift)
     state = contact_at(blk, 0.0, h=h).solve(np.array([h * fx]), np.array([h * fy]), np.array([h * tau]))
     assert not state.unresolved.any()
     return state
@@ -56,9 +56,9 @@ def from_rest(blk: Block, k: float, h: float = H_STEP):
 def onset(blk: Block, k: float, hyp: Hypothesis):
     """The mechanics solver's onset of ``hyp`` for ``blk`` under k."""
     return solve(hyp, k, float(np.asarray(blk.mu)), float(np.asarray(blk.gamma)),
-                 float(np.asarray(blk.kprime)), buoyancy=float(np.asarray(blk.beta)),
-                 uplift=float(np.asarray(blk.u)), uplift_ratio=float(np.asarray(blk.nu)),
-                 uplift_arm=float(np.asarray(blk.e_u)),
+                 float(np.asarray(blk.kprime)), buoyancy=float(np.asarray(blk.buoyancy)),
+                 uplift=float(np.asarray(blk.uplift)), uplift_ratio=float(np.asarray(blk.uplift_ratio)),
+                 uplift_arm=float(np.asarray(blk.uplift_arm)),
                  gyration=None if blk.i2 is None else float(np.sqrt(blk.i2)))
 
 
@@ -132,9 +132,9 @@ def test_each_onset_state_is_the_mode_of_classify_with_its_accelerations(
 
 
 @pytest.mark.parametrize("loads, k", [
-    ({"beta": 0.3}, 0.6), ({"beta": 0.2, "u": 0.15, "kprime": 0.4}, 0.5),
-    ({"beta": 0.1, "u": 0.1, "nu": 0.3, "e_u": 0.5, "kprime": -0.3}, 0.9),
-    ({"beta": 0.35, "nu": 0.25, "kprime": -0.1, "i2": 0.6}, 0.4),
+    ({"buoyancy": 0.3}, 0.6), ({"buoyancy": 0.2, "uplift": 0.15, "kprime": 0.4}, 0.5),
+    ({"buoyancy": 0.1, "uplift": 0.1, "uplift_ratio": 0.3, "uplift_arm": 0.5, "kprime": -0.3}, 0.9),
+    ({"buoyancy": 0.35, "uplift_ratio": 0.25, "kprime": -0.1, "i2": 0.6}, 0.4),
 ])
 def test_loaded_onset_states_are_admissible_with_their_accelerations(loads: dict[str, float],
                                                                      k: float) -> None:
@@ -144,15 +144,15 @@ def test_loaded_onset_states_are_admissible_with_their_accelerations(loads: dict
 
 
 @pytest.mark.parametrize("loads, k", [
-    ({"beta": 0.4, "u": 0.7, "e_u": 0.0}, 0.3),  # 0.4 + 0.7 > 1, the uplift through C
-    ({"beta": 0.5, "nu": 3.0}, 0.5),  # 0.5 + 1.5 > 1: lifts both corners despite its moment
+    ({"buoyancy": 0.4, "uplift": 0.7, "uplift_arm": 0.0}, 0.3),  # 0.4 + 0.7 > 1, the uplift through C
+    ({"buoyancy": 0.5, "uplift_ratio": 3.0}, 0.5),  # 0.5 + 1.5 > 1: lifts both corners despite its moment
 ])
 def test_flight_when_the_loads_exceed_the_weight(loads: dict[str, float], k: float) -> None:
     blk = Block(B=1.0, gamma=1.0, mu=0.6, **loads)
     J = float(blk.gyration2)
-    lift = loads.get("u", 0.0) + loads.get("nu", 0.0) * k
-    v_free = (np.array([-G * k * H_STEP]), np.array([G * (loads["beta"] + lift - 1.0) * H_STEP]),
-              np.array([(G / J) * float(np.asarray(blk.e_u)) * lift * H_STEP]))
+    lift = loads.get("uplift", 0.0) + loads.get("uplift_ratio", 0.0) * k
+    v_free = (np.array([-G * k * H_STEP]), np.array([G * (loads["buoyancy"] + lift - 1.0) * H_STEP]),
+              np.array([(G / J) * float(np.asarray(blk.uplift_arm)) * lift * H_STEP]))
     state = contact_at(blk, 0.0).solve(*v_free)
     assert state.code[0] == Phase.FLIGHT
     # no reaction: the free velocity, to the last bit

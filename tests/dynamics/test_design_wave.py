@@ -63,15 +63,15 @@ def test_block_and_pulse_are_those_of_the_analysis():
     b = a.block
     assert isinstance(block, Block) and isinstance(pulse, Pulse)
     for got, want in ((block.B, b.B), (block.gamma, b.gamma), (block.mu, b.mu), (block.kprime, b.kprime),
-                      (block.beta, b.beta_b), (block.u, 0.0), (block.nu, b.nu), (block.e_u, b.e_u),
-                      (block.i2, b.i ** 2)):
+                      (block.buoyancy, b.buoyancy), (block.uplift, 0.0), (block.uplift_ratio, b.uplift_ratio), (block.uplift_arm, b.uplift_arm),
+                      (block.i2, b.gyration ** 2)):
         assert float(np.asarray(got)) == float(np.asarray(want))
     assert block.g == 9.81
     # the caisson's numbers: B = 15/2, k = P/(m g), nu = U/P, e_u = 1/3 (Goda's triangle)
     assert float(block.B) == 7.5 and float(block.gamma) == pytest.approx(0.7)
     assert float(b.k) == pytest.approx(float(a.loads.P) / (float(a.section.mass) * 9.81), rel=1e-15)
-    assert float(block.nu) == pytest.approx(float(a.loads.U / a.loads.P), rel=1e-15)
-    assert float(block.e_u) == pytest.approx(1.0 / 3.0, rel=1e-12)
+    assert float(block.uplift_ratio) == pytest.approx(float(a.loads.U / a.loads.P), rel=1e-15)
+    assert float(block.uplift_arm) == pytest.approx(1.0 / 3.0, rel=1e-12)
     # the pulse: a half-sine of peak k lasting tau0 = (0.5 - Hmax/(8 h)) T1/3
     tau0 = (0.5 - float(a.heights.Hmax) / (8.0 * 10.1)) * 11.4
     assert pulse.shape == "half-sine"
@@ -81,7 +81,7 @@ def test_block_and_pulse_are_those_of_the_analysis():
     t = np.linspace(0.0, tau0, 7)
     np.testing.assert_allclose(pulse.k(t), float(b.k) * np.sin(np.pi * t / tau0), atol=1e-15)
     # the uplift in phase: U(t)/(m g) = nu k(t), nothing at zero push (u = 0)
-    assert float(block.u) == 0.0 and block.loaded
+    assert float(block.uplift) == 0.0 and block.loaded
 
 
 def test_wave_duration_is_the_lifetime_models():

@@ -60,14 +60,14 @@ def test_loaded_block_starts_at_closed_form_thresholds(beta: float, u: float, nu
     gamma = 2.5
     # rocking about O (friction high): moment about O of push, weight-buoyancy and uplift vanishes
     k_rock = ((1 - beta) - u * (1 + e_u)) / ((1 + kprime) * gamma + nu * (1 + e_u))
-    blk = Block(B=0.5, gamma=gamma, mu=5.0, kprime=kprime, beta=beta, u=u, nu=nu, e_u=e_u)
+    blk = Block(B=0.5, gamma=gamma, mu=5.0, kprime=kprime, buoyancy=beta, uplift=u, uplift_ratio=nu, uplift_arm=e_u)
     sim = simulate(blk, Pulse.rectangular(np.array([0.99, 1.01]) * k_rock, 0.05), t_max=0.004,
                    record_phases=False)
     assert list(sim.initial_mode) == [Phase.RE, Phase.RO]
     # sliding (friction low, squat block): k = mu (1 - beta - u - nu k)
     mu = 0.2
     k_slide = mu * (1 - beta - u) / (1 + mu * nu)
-    blk = Block(B=2.0, gamma=0.3, mu=mu, kprime=kprime, beta=beta, u=u, nu=nu, e_u=e_u)
+    blk = Block(B=2.0, gamma=0.3, mu=mu, kprime=kprime, buoyancy=beta, uplift=u, uplift_ratio=nu, uplift_arm=e_u)
     sim = simulate(blk, Pulse.rectangular(np.array([0.99, 1.01]) * k_slide, 0.05), t_max=0.004,
                    record_phases=False)
     assert list(sim.initial_mode) == [Phase.RE, Phase.SL]

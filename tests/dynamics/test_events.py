@@ -30,7 +30,7 @@ from regimemap.motion.record_simulation import format_simulation
 from ..conftest import invoke_cli
 
 # the issue's caisson: classify puts the SL/SRO- boundary at k = 0.8557 (mu = 0.6)
-CAISSON = {"B": 7.5, "gamma": 0.7, "kprime": -0.02, "beta": 0.32, "nu": 0.52}
+CAISSON = {"B": 7.5, "gamma": 0.7, "kprime": -0.02, "buoyancy": 0.32, "uplift_ratio": 0.52}
 CAISSON_CLI = ["--gamma", "0.7", "--half-width", "7.5", "--kprime", "-0.02", "--buoyancy", "0.32",
                "--uplift-ratio", "0.52", "--pulse", "breaking", "--k-peak", "0.86"]
 _ROCKING = {"RO", "SRO-", "SRO+", "SRO'-", "RO'", "SRO'+", "FLIGHT"}
@@ -74,15 +74,15 @@ def test_breakpoints_hold_the_peaks_and_the_samples() -> None:
 
 # -- the boundaries of the initiation map and their crossings ----------------------------------------
 
-@pytest.mark.parametrize("loads", [{}, {"beta": 0.32, "nu": 0.52}, {"beta": 0.2, "u": 0.15, "e_u": 0.0},
-                                   {"nu": 0.3, "e_u": 0.5, "i2": 1.2}])
+@pytest.mark.parametrize("loads", [{}, {"buoyancy": 0.32, "uplift_ratio": 0.52}, {"buoyancy": 0.2, "uplift": 0.15, "uplift_arm": 0.0},
+                                   {"uplift_ratio": 0.3, "uplift_arm": 0.5, "i2": 1.2}])
 def test_onset_boundaries_are_where_classify_changes(loads: dict[str, float]) -> None:
     mus = np.array([0.0, 0.2, 0.6, 1.5, 5.0])
     blk = Block(B=1.0, gamma=0.9, mu=mus, kprime=-0.3, **loads)
     kb, lo, hi = onset_boundaries(blk, mus.size)
     k = np.linspace(0.0, 4.0, 4001)
-    kw = {"buoyancy": loads.get("beta", 0.0), "uplift": loads.get("u", 0.0),
-          "uplift_ratio": loads.get("nu", 0.0), "uplift_arm": loads.get("e_u", 1 / 3),
+    kw = {"buoyancy": loads.get("buoyancy", 0.0), "uplift": loads.get("uplift", 0.0),
+          "uplift_ratio": loads.get("uplift_ratio", 0.0), "uplift_arm": loads.get("uplift_arm", 1 / 3),
           "gyration": None if "i2" not in loads else np.sqrt(loads["i2"])}
     for i, mu in enumerate(mus):
         modes = regimemap.classify(k, mu, 0.9, -0.3, **kw)
@@ -209,7 +209,7 @@ _PINNED_SLIDE = [-0.0, 0.06376574494529223, -4.04575600558875e-06, 0.02637448428
 @pytest.mark.deep
 def test_without_events_the_stepper_is_unchanged() -> None:
     B, gamma, mu, kprime, beta, nu, k, T = _BATCH.T
-    blk = Block(B=B, gamma=gamma, mu=mu, kprime=kprime, beta=beta, nu=nu)
+    blk = Block(B=B, gamma=gamma, mu=mu, kprime=kprime, buoyancy=beta, uplift_ratio=nu)
     sim = simulate(blk, Pulse.half_sine(k, T), events=False)
     assert sim.steps.tolist() == _PINNED_STEPS
     np.testing.assert_allclose(sim.end_time, _PINNED_END, rtol=1e-13)
@@ -225,7 +225,7 @@ def test_without_events_the_stepper_is_unchanged() -> None:
 @pytest.mark.deep
 def test_categories_agree_with_the_phases() -> None:
     B, gamma, mu, kprime, beta, nu, k, T = _BATCH.T
-    blk = Block(B=B, gamma=gamma, mu=mu, kprime=kprime, beta=beta, nu=nu)
+    blk = Block(B=B, gamma=gamma, mu=mu, kprime=kprime, buoyancy=beta, uplift_ratio=nu)
     sim = simulate(blk, Pulse.half_sine(k, T))
     assert sim.phases is not None
     for cat, ph, over, moving in zip(sim.category, sim.phases, sim.overturned, sim.still_moving, strict=True):

@@ -94,7 +94,7 @@ def test_closed_form_matches_simulate_for_a_block_that_only_slides(k_peak, durat
     A squat block pushed low (gamma 0.3, k' = -0.5) slides without rocking.
     """
     mu, beta, nu, g = 0.5, 0.3, 0.4, 9.81
-    block = Block(B=5.0, gamma=0.3, mu=mu, kprime=-0.5, beta=beta, nu=nu, g=g)
+    block = Block(B=5.0, gamma=0.3, mu=mu, kprime=-0.5, buoyancy=beta, uplift_ratio=nu, g=g)
     sim = simulate(block, Pulse.half_sine(k_peak, duration), dt=duration / 2000)
     assert not bool(sim.rocked[0]) and bool(sim.slid[0]) and bool(sim.settled[0])
     m = 1.0  # per unit mass

@@ -81,7 +81,7 @@ def test_block_from_options() -> None:
     values = {"half_width": 0.2, "gamma": 3.0, "mu": 0.5, "kprime": None, "gyration": 1.5,
               "buoyancy": 0.1, "uplift": 0.2, "uplift_ratio": 0.3, "uplift_arm": 0.25}
     b = block_from_options(values)
-    assert (b.B, b.gamma, b.mu, b.kprime, b.i2, b.beta, b.u, b.nu, b.e_u) == (
+    assert (b.B, b.gamma, b.mu, b.kprime, b.i2, b.buoyancy, b.uplift, b.uplift_ratio, b.uplift_arm) == (
         0.2, 3.0, 0.5, 0.0, 2.25, 0.1, 0.2, 0.3, 0.25)
     assert block_from_options({**values, "gyration": None, "kprime": -0.4}).i2 is None
 

@@ -75,7 +75,7 @@ def test_a_squat_block_has_no_impact_ratio_unless_given() -> None:
 
 @pytest.mark.deep
 def test_a_run_still_moving_at_the_time_limit_is_a_notice() -> None:
-    caisson = Block(B=7.5, gamma=0.7, kprime=-0.02, beta=0.32, nu=0.52, mu=0.0)
+    caisson = Block(B=7.5, gamma=0.7, kprime=-0.02, buoyancy=0.32, uplift_ratio=0.52, mu=0.0)
     sim = simulate(caisson, Pulse.breaking(0.86, 2.0), t_max=5.0)
     (notice,) = _run_notices(sim, 2.0)
     assert notice.code == STILL_MOVING and notice.quantity == "end_time"

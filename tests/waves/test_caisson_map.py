@@ -41,7 +41,7 @@ def test_safety_factors_agree_with_rest_on_the_map_uniform_caissons(seed: int) -
     assert ((st.sliding < 1) & (st.overturning >= 1)).sum() > 50
     assert (st.overturning < 1).sum() > 50
     # uniform caissons: the gyration is the uniform block's
-    np.testing.assert_allclose(a.block.i, np.sqrt((1 + a.block.gamma ** 2) / 3), rtol=1e-12)
+    np.testing.assert_allclose(a.block.gyration, np.sqrt((1 + a.block.gamma ** 2) / 3), rtol=1e-12)
 
 
 def test_safety_factors_agree_with_rest_on_the_map_filled_caissons() -> None:

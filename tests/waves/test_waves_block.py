@@ -47,19 +47,19 @@ def test_block_of_worked_example() -> None:
     assert float(b.H) == pytest.approx((7.1 + 3.4) / 2)
     assert float(b.gamma) == pytest.approx(5.25 / 7.5)
     assert float(b.k) == pytest.approx(float(a.loads.P) / mg, rel=1e-14)
-    assert float(b.beta_b) == pytest.approx(1030 * 9.81 * 15.0 * 7.1 / mg, rel=1e-14)
-    assert float(b.nu) == pytest.approx(float(a.loads.U / a.loads.P), rel=1e-14)
-    assert float(b.e_u) == pytest.approx(1 / 3, rel=1e-14)     # Goda's triangle
+    assert float(b.buoyancy) == pytest.approx(1030 * 9.81 * 15.0 * 7.1 / mg, rel=1e-14)
+    assert float(b.uplift_ratio) == pytest.approx(float(a.loads.U / a.loads.P), rel=1e-14)
+    assert float(b.uplift_arm) == pytest.approx(1 / 3, rel=1e-14)     # Goda's triangle
     assert float(b.kprime) == pytest.approx((float(a.loads.Mp / a.loads.P) - 5.25) / 5.25, rel=1e-14)
-    assert float(b.i) == pytest.approx(np.sqrt((1 + float(b.gamma) ** 2) / 3), rel=1e-14)
-    assert float(b.u) == 0.0
+    assert float(b.gyration) == pytest.approx(np.sqrt((1 + float(b.gamma) ** 2) / 3), rel=1e-14)
+    assert float(b.uplift) == 0.0
     rc = b.rest_check()
     assert bool(rc.at_rest)
 
 
 def test_static_rest_check_simple_cases() -> None:
     # no force: at rest unless buoyancy lifts it
-    rc = static_rest_check(k=0.0, mu=0.6, gamma=1.0, kprime=0.0, beta_b=[0.5, 1.2])
+    rc = static_rest_check(k=0.0, mu=0.6, gamma=1.0, kprime=0.0, buoyancy=[0.5, 1.2])
     np.testing.assert_array_equal(rc.at_rest, [True, False])
     # dry block, no uplift: slides at k > mu, tips at k > 1/(gamma (1 + k'))
     rc = static_rest_check(k=[0.2, 0.4, 0.6], mu=0.5, gamma=2.0, kprime=0.0)
@@ -117,7 +117,7 @@ def test_densities_caisson_agrees_too() -> None:
     # layered section: C below mid-height, i from the section
     assert (a.block.H < 0.5 * (a.section.base_depth + a.section.crest)).all()
     i_uniform = np.sqrt((1 + a.block.gamma**2) / 3)
-    assert not np.allclose(a.block.i, i_uniform)
+    assert not np.allclose(a.block.gyration, i_uniform)
 
 
 def test_block_fields_are_arrays_of_the_broadcast_shape() -> None:

@@ -156,11 +156,11 @@ class CaissonNumbers:
     k: float = number(_A + "block.k", "", "k", "P / (m g), m g the dry weight", digits=6)
     kprime: float = number(_A + "block.kprime", "", "k'",
                            "(Mp/P - H_C)/H_C: P acts {arm} m {side} the centre of mass", digits=6)
-    buoyancy: float = number(_A + "block.beta_b", "", "buoyancy", "rho_w g V_submerged / (m g)", digits=6)
-    uplift_ratio: float = number(_A + "block.nu", "", "uplift ratio", "U / P", digits=6)
-    uplift_arm: float = number(_A + "block.e_u", "", "uplift arm",
+    buoyancy: float = number(_A + "block.buoyancy", "", "buoyancy", "rho_w g V_submerged / (m g)", digits=6)
+    uplift_ratio: float = number(_A + "block.uplift_ratio", "", "uplift ratio", "U / P", digits=6)
+    uplift_arm: float = number(_A + "block.uplift_arm", "", "uplift arm",
                                "U acts this many B from C toward the seaward corner", digits=6)
-    gyration: float = number(_A + "block.i", "", "gyration", "radius of gyration / B", digits=6)
+    gyration: float = number(_A + "block.gyration", "", "gyration", "radius of gyration / B", digits=6)
     crest: float = number("map.crest")
     mu: float = number(_A + "block.mu", "", "mu", "friction coefficient", digits=6)
 

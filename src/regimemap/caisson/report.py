@@ -69,8 +69,8 @@ def loaded_map_of(a: CaissonAnalysis, index: Any = ()) -> LoadedMap:
     top = float(s.base_depth[index] + s.crest[index])
     hc_ = float(b.H[index])
     return LoadedMap(gamma=float(b.gamma[index]), kprime=float(b.kprime[index]),
-                     buoyancy=float(b.beta_b[index]), uplift_ratio=float(b.nu[index]),
-                     uplift_arm=float(b.e_u[index]), gyration=float(b.i[index]),
+                     buoyancy=float(b.buoyancy[index]), uplift_ratio=float(b.uplift_ratio[index]),
+                     uplift_arm=float(b.uplift_arm[index]), gyration=float(b.gyration[index]),
                      crest=(top - hc_) / hc_)
 
 
@@ -116,7 +116,7 @@ class WavePath:
 
     @property
     def uplift_ratio(self) -> NDArray[np.float64]:
-        return np.asarray(self.analysis.block.nu, dtype=np.float64)
+        return np.asarray(self.analysis.block.uplift_ratio, dtype=np.float64)
 
 
 @dataclass(frozen=True)

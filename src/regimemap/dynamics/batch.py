@@ -182,8 +182,9 @@ class Batch:
         r_x = np.where(th0 > 0, H * s0 - B * c0, B * c0 + H * s0)
         r_y = np.where(th0 > 0, -B * s0 - H * c0, B * s0 - H * c0)
         return cls(
-            idx=np.arange(n), B=B, H=H, J=J, mu=par["mu"], kpr=par["kprime"], beta=par["beta"],
-            u=par["u"], nu=par["nu"], eu=par["e_u"], kp=kp, T=T, hp=hp, hf=hf, tmax=tmax,
+            idx=np.arange(n), B=B, H=H, J=J, mu=par["mu"], kpr=par["kprime"], beta=par["buoyancy"],
+            u=par["uplift"], nu=par["uplift_ratio"], eu=par["uplift_arm"], kp=kp, T=T, hp=hp, hf=hf,
+            tmax=tmax,
             eta=(J + H * H - B * B) / (J + H * H + B * B), alpha=np.arctan2(B, H),
             gtol0=1e-6 * B, BH=B + H, gJ=float(block.g) / J,
             ev=ev, iev=np.zeros(n, dtype=np.int64), evn=ev[:, 0].copy(), mid=np.zeros(n, dtype=bool),

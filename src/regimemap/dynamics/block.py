@@ -7,10 +7,11 @@ about O is theta > 0).  The push F = k m g acts to the *left* (towards O) at
 the body point on the vertical centre line k' H_C above C (it turns with the
 block; for k' = 0 it acts at C and is exactly a ground acceleration a_g = k g).
 
-Loads (all optional, in units of m g): a buoyancy ``beta`` upward through C; an
-uplift ``U = u m g + nu F`` upward on the base at ``e_u B`` from C towards O'
-(default e_u = 1/3, a triangular uplift pressure, after Goda's caisson design
-practice as used by Tanimoto et al. 1996 and Shimosako & Takahashi 1999).
+Loads (all optional, in units of m g): a buoyancy ``beta`` (``buoyancy``) upward through C;
+an uplift ``U = u m g + nu F`` (``uplift`` u, ``uplift_ratio`` nu) upward on the base at
+``e_u B`` (``uplift_arm`` e_u) from C towards O' (default e_u = 1/3, a triangular uplift
+pressure, after Goda's caisson design practice as used by Tanimoto et al. 1996 and Shimosako &
+Takahashi 1999).
 
 References
 ----------
@@ -78,12 +79,12 @@ class Block:
     i2 : array_like or None
         Squared radius of gyration about C in units of B^2 (I = m B^2 i2);
         None is the uniform block, i2 = (1 + gamma^2)/3.
-    beta : array_like
-        Buoyancy, upward through C, in units of m g.
-    u, nu : array_like
-        Uplift U = u m g + nu F, upward on the base.
-    e_u : array_like
-        Point of application of the uplift, e_u B from C towards O'.
+    buoyancy : array_like
+        ``beta``: buoyancy, upward through C, in units of m g.
+    uplift, uplift_ratio : array_like
+        ``u`` and ``nu`` of the uplift U = u m g + nu F, upward on the base.
+    uplift_arm : array_like
+        ``e_u``: point of application of the uplift, e_u B from C towards O'.
     g : float
         Gravity (m/s^2).
     """
@@ -93,10 +94,10 @@ class Block:
     mu: ArrayLike
     kprime: ArrayLike = 0.0
     i2: ArrayLike | None = None
-    beta: ArrayLike = 0.0
-    u: ArrayLike = 0.0
-    nu: ArrayLike = 0.0
-    e_u: ArrayLike = field(default=1.0 / 3.0)
+    buoyancy: ArrayLike = 0.0
+    uplift: ArrayLike = 0.0
+    uplift_ratio: ArrayLike = 0.0
+    uplift_arm: ArrayLike = field(default=1.0 / 3.0)
     g: float = G
 
     @classmethod
@@ -156,8 +157,8 @@ class Block:
     @property
     def loaded(self) -> bool:
         """Whether any buoyancy or uplift is present."""
-        return bool(np.any(np.asarray(self.beta) != 0) or np.any(np.asarray(self.u) != 0)
-                    or np.any(np.asarray(self.nu) != 0))
+        return bool(np.any(np.asarray(self.buoyancy) != 0) or np.any(np.asarray(self.uplift) != 0)
+                    or np.any(np.asarray(self.uplift_ratio) != 0))
 
     def with_(self, **changes: Any) -> Block:
         """A copy with some fields changed."""

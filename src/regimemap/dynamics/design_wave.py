@@ -3,8 +3,8 @@
 Goda's procedure (:func:`regimemap.waves.analyse_caisson`) gives the loads of
 the design wave ``Hmax`` and the equivalent loaded block
 (:class:`regimemap.waves.EquivalentBlock`: ``B``, ``gamma``, ``k = P/(m g)``,
-``k'``, buoyancy ``beta_b``, uplift ratio ``nu = U/P``, its arm ``e_u``,
-gyration ``i`` and ``mu``).  The run puts that block under the force history
+``k'``, ``buoyancy`` beta_b, ``uplift_ratio`` nu = U/P, its arm ``uplift_arm`` e_u,
+``gyration`` i and ``mu``).  The run puts that block under the force history
 of Shimosako & Takahashi (1999) for that wave, the one
 :mod:`regimemap.lifetime` uses for every wave of a storm::
 
@@ -117,8 +117,8 @@ def design_wave_run(analysis: CaissonAnalysis, depth: npt.ArrayLike, period: npt
     Returns
     -------
     (Block, Pulse)
-        The block: ``B``, ``gamma``, ``mu``, ``kprime``, ``i2 = i^2``, ``beta`` = the buoyancy,
-        ``u = 0``, ``nu = U/P``, ``e_u`` of the equivalent block; the pulse: half-sine of peak
+        The block: ``B``, ``gamma``, ``mu``, ``kprime``, ``i2 = i^2``, and the ``buoyancy``,
+        ``uplift`` (0), ``uplift_ratio`` (U/P) and ``uplift_arm`` of the equivalent block; the pulse: half-sine of peak
         ``k = P/(m g)`` and duration ``tau0 = (0.5 - Hmax/(8 h)) T1/3``
         (:func:`regimemap.waves.wave_duration`).  No added mass of water (module docstring).
 
@@ -140,21 +140,22 @@ def design_wave_run(analysis: CaissonAnalysis, depth: npt.ArrayLike, period: npt
     b = analysis.block
     tau0 = np.asarray(wave_duration(analysis.heights.Hmax, depth, period), dtype=np.float64)
     checked = {"gamma": b.gamma, "half_width": b.B, "kprime": b.kprime, "mu": b.mu, "k_peak": b.k,
-               "buoyancy": b.beta_b, "uplift_ratio": b.nu, "uplift_arm": b.e_u}
+               "buoyancy": b.buoyancy, "uplift_ratio": b.uplift_ratio, "uplift_arm": b.uplift_arm}
     for name, values in checked.items():
         _check(name, np.asarray(values, dtype=np.float64))
     _check_duration(tau0, analysis.heights.Hmax, depth, period)
-    beta = np.asarray(b.beta_b, dtype=np.float64)
+    beta = np.asarray(b.buoyancy, dtype=np.float64)
     gamma = np.asarray(b.gamma, dtype=np.float64)
     for be, ga, i in zip(np.ravel(beta).tolist(), np.ravel(gamma).tolist(),
-                         np.ravel(np.broadcast_to(b.i, gamma.shape)).tolist(), strict=True):
+                         np.ravel(np.broadcast_to(b.gyration, gamma.shape)).tolist(), strict=True):
         try:
             check_loads(be, 0.0)
             check_gyration(i, ga)
         except ValueError as exc:
             raise ValueError(f"the caisson's section is outside the range of a run: {exc}") from None
-    block = Block(B=b.B, gamma=b.gamma, mu=b.mu, kprime=b.kprime, i2=np.asarray(b.i) ** 2,
-                  beta=b.beta_b, u=b.u, nu=b.nu, e_u=b.e_u, g=g)
+    block = Block(B=b.B, gamma=b.gamma, mu=b.mu, kprime=b.kprime, i2=np.asarray(b.gyration) ** 2,
+                  buoyancy=b.buoyancy, uplift=b.uplift, uplift_ratio=b.uplift_ratio,
+                  uplift_arm=b.uplift_arm, g=g)
     return block, Pulse.half_sine(b.k, tau0)
 
 
@@ -176,8 +177,9 @@ def design_wave_inputs(analysis: CaissonAnalysis, depth: float, period: float) -
     """
     b = analysis.block
     return {"gamma": _one(b.gamma), "half_width": _one(b.B), "kprime": _one(b.kprime), "mu": _one(b.mu),
-            "buoyancy": _one(b.beta_b), "uplift": _one(b.u), "uplift_ratio": _one(b.nu),
-            "uplift_arm": _one(b.e_u), "gyration": _one(b.i), "pulse": "half-sine", "k_peak": _one(b.k),
+            "buoyancy": _one(b.buoyancy), "uplift": _one(b.uplift), "uplift_ratio": _one(b.uplift_ratio),
+            "uplift_arm": _one(b.uplift_arm), "gyration": _one(b.gyration), "pulse": "half-sine",
+            "k_peak": _one(b.k),
             "duration": _one(wave_duration(analysis.heights.Hmax, depth, period))}
 
 
@@ -200,8 +202,8 @@ def design_wave_numbers(analysis: CaissonAnalysis, depth: float, period: float,
         "P": _one(a.loads.P) / 1e3, "U": _one(a.loads.U) / 1e3,
         "W": _one(a.section.buoyant_weight) / 1e3, "weight": mass * g / 1e3, "mass": mass / 1e3,
         "added_mass": 0.0, "B": _one(b.B), "H_C": _one(b.H), "gamma": _one(b.gamma), "k": _one(b.k),
-        "kprime": _one(b.kprime), "buoyancy": _one(b.beta_b), "uplift_ratio": _one(b.nu),
-        "uplift_arm": _one(b.e_u), "gyration": _one(b.i), "mu": _one(b.mu),
+        "kprime": _one(b.kprime), "buoyancy": _one(b.buoyancy), "uplift_ratio": _one(b.uplift_ratio),
+        "uplift_arm": _one(b.uplift_arm), "gyration": _one(b.gyration), "mu": _one(b.mu),
     }
 
 

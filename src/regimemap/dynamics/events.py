@@ -88,8 +88,8 @@ def onset_boundaries(block: Block, n: int, mirror: bool = False) -> tuple[FloatA
     col = {key: v[:, None] for key, v in par.items()}
     sign = -1.0 if mirror else 1.0
     gyr = None if block.i2 is None else np.sqrt(col["i2"])
-    cst = block_constants(col["gamma"], col["kprime"], col["beta"], col["u"], sign * col["nu"],
-                          sign * col["e_u"], gyr)
+    cst = block_constants(col["gamma"], col["kprime"], col["buoyancy"], col["uplift"],
+                          sign * col["uplift_ratio"], sign * col["uplift_arm"], gyr)
     mu = col["mu"]
     with np.errstate(divide="ignore", invalid="ignore"):
         e0 = rule_expressions(affine_terms(np.zeros((n, 1)), cst), mu, cst.gamma, cst.i2, 0.0)

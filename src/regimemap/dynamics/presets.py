@@ -131,7 +131,7 @@ DYNAMICS_FIGURES: dict[str, DynamicsFigure] = {f.id: f for f in (
         id="D.3",
         caption="Caisson (B = 10 m, gamma = 1.1, mu = 0.6, k' = -0.1, buoyancy 0.35, uplift 0.25 F) under "
                 "the breaking-wave pulse; k_peak 0.1-1.6, duration 0.5-6 s (61 x 45 runs)",
-        block={"B": 10.0, "gamma": 1.1, "mu": 0.6, "kprime": -0.1, "beta": 0.35, "nu": 0.25},
+        block={"B": 10.0, "gamma": 1.1, "mu": 0.6, "kprime": -0.1, "buoyancy": 0.35, "uplift_ratio": 0.25},
         shape="breaking", first=("k_peak", 0.1, 1.6, 61), second=("duration", 0.5, 6.0, 45),
         title="D.3  caisson under a breaking-wave pulse\nB = 10 m, γ = 1.1, μ = 0.6, k' = −0.1, "
               "buoyancy 0.35 mg, uplift 0.25 F"),

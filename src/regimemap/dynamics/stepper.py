@@ -257,8 +257,9 @@ def simulate(block: Block, pulse: Pulse, *, dt: float | None = None, t_max: Arra
     if restitution is not None and not 0.0 <= restitution <= 1.0:
         raise ValueError("restitution must lie in [0, 1]")
     n = int(np.broadcast(np.asarray(block.B), np.asarray(block.gamma), np.asarray(block.mu),
-                         np.asarray(block.kprime), np.asarray(block.beta), np.asarray(block.u),
-                         np.asarray(block.nu), np.asarray(block.e_u),
+                         np.asarray(block.kprime), np.asarray(block.buoyancy),
+                         np.asarray(block.uplift), np.asarray(block.uplift_ratio),
+                         np.asarray(block.uplift_arm),
                          np.asarray(block.gamma if block.i2 is None else block.i2),
                          pulse.k_peak, pulse.duration, np.asarray(theta0), np.asarray(omega0)).size)
     batch = Batch.start(block, pulse, n, dt, t_max, theta0, omega0,

@@ -39,7 +39,7 @@ FloatArray = NDArray[np.float64]
 #: Option name -> the field of :class:`~regimemap.dynamics.Block` it sets.
 BLOCK_FIELDS: dict[str, str] = {
     "half_width": "B", "gamma": "gamma", "mu": "mu", "kprime": "kprime", "gyration": "i2",
-    "buoyancy": "beta", "uplift": "u", "uplift_ratio": "nu", "uplift_arm": "e_u"}
+    "buoyancy": "buoyancy", "uplift": "uplift", "uplift_ratio": "uplift_ratio", "uplift_arm": "uplift_arm"}
 #: The inputs an outcome map can sweep, in the order of the options of ``regimemap outcome``.
 MAP_INPUTS: tuple[str, ...] = ("k_peak", "duration", "omega_p", "mu", "kprime", "gamma", "half_width",
                                "gyration", "buoyancy", "uplift", "uplift_ratio", "uplift_arm")

@@ -140,8 +140,9 @@ def _block_inputs(block: Block, pulse: Pulse) -> dict[str, Any]:
     return {"gamma": num(block.gamma), "half_width": num(block.B), "kprime": num(block.kprime),
             "mu": num(block.mu), "pulse": pulse.shape if pulse.t_samples is None else "file",
             "k_peak": num(pulse.k_peak), "duration": num(pulse.duration), "pulse_file": None,
-            "buoyancy": num(block.beta), "uplift": num(block.u), "uplift_ratio": num(block.nu),
-            "uplift_arm": num(block.e_u), "gyration": None if block.i2 is None else math.sqrt(num(block.i2))}
+            "buoyancy": num(block.buoyancy), "uplift": num(block.uplift),
+            "uplift_ratio": num(block.uplift_ratio), "uplift_arm": num(block.uplift_arm),
+            "gyration": None if block.i2 is None else math.sqrt(num(block.i2))}
 
 
 def _options_run(opts: dict[str, Any]) -> tuple[Block, Pulse, dict[str, Any]]:

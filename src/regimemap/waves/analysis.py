@@ -79,8 +79,8 @@ class CaissonAnalysis:
             ("gamma", r(b.gamma), "H_C / B of the equivalent block"),
             ("k", r(b.k), "P / (m g)"),
             ("k'", r(b.kprime), "height of the wave force's resultant above C / H_C"),
-            ("beta", r(b.beta_b), "buoyancy / dry weight"),
-            ("nu", r(b.nu), "uplift ratio U / P"),
+            ("beta", r(b.buoyancy), "buoyancy / dry weight"),
+            ("nu", r(b.uplift_ratio), "uplift ratio U / P"),
             ("mu", r(b.mu), "friction coefficient"),
         ]
 

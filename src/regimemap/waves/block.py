@@ -56,8 +56,8 @@ class RestCheck:
 
 
 def static_rest_check(*, k: npt.ArrayLike, mu: npt.ArrayLike, gamma: npt.ArrayLike,
-                      kprime: npt.ArrayLike, beta_b: npt.ArrayLike = 0.0, nu: npt.ArrayLike = 0.0,
-                      e_u: npt.ArrayLike = 0.0, u: npt.ArrayLike = 0.0) -> RestCheck:
+                      kprime: npt.ArrayLike, buoyancy: npt.ArrayLike = 0.0, uplift_ratio: npt.ArrayLike = 0.0,
+                      uplift_arm: npt.ArrayLike = 0.0, uplift: npt.ArrayLike = 0.0) -> RestCheck:
     """Does the loaded block stay at rest? Closed form, vectorised.
 
     Parameters
@@ -70,14 +70,14 @@ def static_rest_check(*, k: npt.ArrayLike, mu: npt.ArrayLike, gamma: npt.ArrayLi
         ``H / B``.
     kprime : array_like
         Height of ``F`` above ``C`` in units of ``H``.
-    beta_b : array_like, optional
-        Buoyancy as a fraction of ``m g``, upward through ``C``.
-    nu : array_like, optional
-        Uplift proportional to ``F``: ``nu F``.
-    e_u : array_like, optional
-        Arm of the uplift from ``C`` toward ``O'``, in units of ``B``.
-    u : array_like, optional
-        Uplift independent of ``F``, fraction of ``m g`` (0 for a caisson).
+    buoyancy : array_like, optional
+        ``beta_b``: buoyancy as a fraction of ``m g``, upward through ``C``.
+    uplift_ratio : array_like, optional
+        ``nu``: uplift proportional to ``F``, ``nu F``.
+    uplift_arm : array_like, optional
+        ``e_u``: arm of the uplift from ``C`` toward ``O'``, in units of ``B``.
+    uplift : array_like, optional
+        ``u``: uplift independent of ``F``, fraction of ``m g`` (0 for a caisson).
 
     Returns
     -------
@@ -97,8 +97,8 @@ def static_rest_check(*, k: npt.ArrayLike, mu: npt.ArrayLike, gamma: npt.ArrayLi
     ``SF_o = ((1 - beta_b) - nu k (1 + e_u)) / (k (1 + k') gamma)``.
     """
     k_, mu_, g_, kp, bb, nu_, eu, u_ = np.broadcast_arrays(
-        as_float(k), as_float(mu), as_float(gamma), as_float(kprime), as_float(beta_b),
-        as_float(nu), as_float(e_u), as_float(u))
+        as_float(k), as_float(mu), as_float(gamma), as_float(kprime), as_float(buoyancy),
+        as_float(uplift_ratio), as_float(uplift_arm), as_float(uplift))
     slide = mu_ * (1.0 - bb - u_ - nu_ * k_) - k_
     over = (1.0 - bb) - k_ * (1.0 + kp) * g_ - (u_ + nu_ * k_) * (1.0 + eu)
     ns = slide >= 0.0
@@ -126,17 +126,17 @@ class EquivalentBlock:
         ``P / (m g)``, ``m g`` the dry weight.
     kprime : ndarray
         ``(Mp/P - H_C)/H_C``.
-    beta_b : ndarray
-        Buoyancy fraction :math:`\\rho_w g V_\\mathrm{sub} / (m g)`.
-    nu : ndarray
-        ``U / P``.
-    e_u : ndarray
-        ``(Mu/U - B)/B``, arm of the uplift from ``C`` toward ``O'`` in units
+    buoyancy : ndarray
+        ``beta_b``, the buoyancy fraction :math:`\\rho_w g V_\\mathrm{sub} / (m g)`.
+    uplift_ratio : ndarray
+        ``nu = U / P``.
+    uplift_arm : ndarray
+        ``e_u = (Mu/U - B)/B``, arm of the uplift from ``C`` toward ``O'`` in units
         of ``B``.
-    u : ndarray
-        Uplift independent of ``F`` (0).
-    i : ndarray
-        Radius of gyration in units of ``B``: :math:`I = m B^2 i^2`
+    uplift : ndarray
+        ``u``, uplift independent of ``F`` (0).
+    gyration : ndarray
+        ``i``, radius of gyration in units of ``B``: :math:`I = m B^2 i^2`
         (:math:`i^2 = (1 + \\gamma^2)/3` for a uniform block).
     mu : ndarray
         Friction coefficient.
@@ -149,18 +149,19 @@ class EquivalentBlock:
     gamma: FloatArray
     k: FloatArray
     kprime: FloatArray
-    beta_b: FloatArray
-    nu: FloatArray
-    e_u: FloatArray
-    u: FloatArray
-    i: FloatArray
+    buoyancy: FloatArray
+    uplift_ratio: FloatArray
+    uplift_arm: FloatArray
+    uplift: FloatArray
+    gyration: FloatArray
     mu: FloatArray
     mass: FloatArray
 
     def rest_check(self) -> RestCheck:
         """:func:`static_rest_check` of this block."""
         return static_rest_check(k=self.k, mu=self.mu, gamma=self.gamma, kprime=self.kprime,
-                                 beta_b=self.beta_b, nu=self.nu, e_u=self.e_u, u=self.u)
+                                 buoyancy=self.buoyancy, uplift_ratio=self.uplift_ratio,
+                                 uplift_arm=self.uplift_arm, uplift=self.uplift)
 
 
 def equivalent_block(section: CaissonSection, loads: CaissonLoads, friction: npt.ArrayLike,
@@ -199,5 +200,5 @@ def equivalent_block(section: CaissonSection, loads: CaissonLoads, friction: npt
         return np.asarray(a, dtype=np.float64)
 
     return EquivalentBlock(B=f(B), H=f(hc_), gamma=f(hc_ / B), k=f(k), kprime=f(kprime),
-                           beta_b=f(section.buoyancy / mg), nu=f(nu), e_u=f(e_u),
-                           u=np.zeros(k.shape), i=f(i), mu=f(mu), mass=f(section.mass))
+                           buoyancy=f(section.buoyancy / mg), uplift_ratio=f(nu), uplift_arm=f(e_u),
+                           uplift=np.zeros(k.shape), gyration=f(i), mu=f(mu), mass=f(section.mass))

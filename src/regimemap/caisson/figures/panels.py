@@ -294,12 +294,13 @@ def draw_table(ax: Axes, r: CaissonReport, checks: Mapping[str, Check | None] | 
         ("\u03b3", significant(f(b.gamma)), ""),
         ("k, \u03bc", f"{significant(f(b.k))}, {significant(f(b.mu), 3)}", ""),
         ("k\u2032", significant(f(b.kprime), 3), ""),
-        ("buoyancy", significant(f(b.beta_b)), ""),
+        ("buoyancy", significant(f(b.buoyancy)), ""),
     ]
     c4 = [
         ("", "", ""),
-        ("uplift ratio", significant(f(b.nu)), ""), ("uplift arm", significant(f(b.e_u)), ""),
-        ("gyration", significant(f(b.i)), ""),
+        ("uplift ratio", significant(f(b.uplift_ratio)), ""),
+        ("uplift arm", significant(f(b.uplift_arm)), ""),
+        ("gyration", significant(f(b.gyration)), ""),
         ("on the loaded map", "", ""),
         ("mode", mode_label(r.mode), ""),
         ("", _margin_text(r.margin_k), ""), ("", _margin_text(r.margin_mu), ""),
