@@ -39,7 +39,6 @@ __all__ = [
     "resolve_output",
     "read_points",
     "read_points_file",
-    "number_text",
     "parse_formats",
     "DEFAULT_SAMPLES",
     "dpi_option",
@@ -54,11 +53,6 @@ _LO, _HI = DPI_RANGE
 
 #: Samples of k of a map drawn by ``plot`` and ``explore`` (``--resolution``).
 DEFAULT_SAMPLES = 801
-
-
-def number_text(x: float) -> str:
-    """A number written shortest (``%g``), as file names and messages write them."""
-    return f"{x:g}"
 
 
 # -- option types --------------------------------------------------------------------------

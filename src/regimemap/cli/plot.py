@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import FIGURE_FORMATS
+from ..records.numbers import short
 from ._common import (
     axis_options,
     gamma_option,
@@ -35,18 +36,15 @@ from ._plot_options import (
     resolution_option,
     resolve_output,
 )
-from ._plot_options import number_text as _num
 from ._writing import echo_notices, output_dir, report_written, write_figure
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..maps.run import MapRecord
     from ..maps.run_atlas import AtlasRecord
 
-__all__ = ["DEFAULT_SAMPLES", "FORMATS", "MODEL_ID", "check_modes_on_map", "figure_command", "figure_maps",
+__all__ = ["DEFAULT_SAMPLES", "FORMATS", "check_modes_on_map", "figure_command", "figure_maps",
            "figures_command", "plot_command", "plot_stem"]
 
-#: The number of the report's model figure (repeated from regimemap.maps.figures.model).
-MODEL_ID = "2.1"
 
 
 # -- helpers -------------------------------------------------------------------------------
@@ -63,20 +61,8 @@ def plot_stem(gamma: float, kprime: float, loads: dict[str, Any] | None = None) 
     Numbers are written shortest (``%g``): ``regime-g3-kp0.4``, ``regime-g2.5-kp-0.3``;
     the loads given follow, ``regime-g0.7-kp-0.02-b0.32-nu0.52``.
     """
-    extra = "".join(f"-{_LOAD_STEM[k]}{_num(v)}" for k, v in (loads or {}).items())
-    return f"regime-g{_num(gamma)}-kp{_num(kprime)}{extra}"
-
-
-_PLAIN = ((r"\leq", "<="), (r"\geq", ">="), (r"\gamma", "g"), (r"\ddot{x}_O", "x_O''"),
-          (r"\nu", "nu"),
-          ("$", ""), ("{", ""), ("}", ""))
-
-
-def _plain(tex: str) -> str:
-    """A caption in plain ASCII for the terminal (mathtext removed)."""
-    for a, b in _PLAIN:
-        tex = tex.replace(a, b)
-    return tex
+    extra = "".join(f"-{_LOAD_STEM[k]}{short(v)}" for k, v in (loads or {}).items())
+    return f"regime-g{short(gamma)}-kp{short(kprime)}{extra}"
 
 
 # -- plot ------------------------------------------------------------------------------------
@@ -177,11 +163,11 @@ def plot_command(gamma: float, kprime: float, output: str | None, fmt: str | Non
 def _figure_id(fid: str) -> str:
     """The id of the report's figure ``fid`` as the report writes it; a usage error naming the
     nearest ids when there is none."""
-    from ..maps.figures.presets import FIGURE_IDS, get_preset, normalise_id, suggest_ids
+    from ..maps.figures.presets import FIGURE_IDS, MODEL_FIGURE_ID, get_preset, normalise_id, suggest_ids
     from ..maps.figures.worked import WORKED
 
-    if normalise_id(fid) == MODEL_ID:
-        return MODEL_ID
+    if normalise_id(fid) == MODEL_FIGURE_ID:
+        return MODEL_FIGURE_ID
     if fid.strip().upper() in WORKED:  # the worked figures of the loaded block: W.1, W.2 ...
         return WORKED[fid.strip().upper()].id
     try:
@@ -190,7 +176,7 @@ def _figure_id(fid: str) -> str:
         near = suggest_ids(fid)
         hint = f" Did you mean {' or '.join(near)}?" if near else ""
         raise click.BadParameter(
-            f"no figure {fid!r} in the report.{hint} Known: {MODEL_ID}, {', '.join(FIGURE_IDS)}",
+            f"no figure {fid!r} in the report.{hint} Known: {MODEL_FIGURE_ID}, {', '.join(FIGURE_IDS)}",
             param_hint="'FIGURE_ID'") from None
 
 
@@ -262,18 +248,20 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
     Goda's caisson submerged, W.2: in air, W.3: a slender block lifting off,
     W.4: the uplift ratio swept); --set all draws both.
     """
-    from ..maps.figures.presets import PRESETS
+    from ..maps.figures.presets import MODEL_FIGURE_ID, PRESETS
     from ..maps.figures.worked import WORKED
 
     if list_only:
-        _list_figures(which)
+        from ..maps.figures.listing import figure_listing
+
+        click.echo("\n".join(figure_listing(which)))
         return
     folder = output_dir(out_dir, "--out", create=True)
 
     import_matplotlib()
     from ..maps.figures.batch import write_figures
 
-    ids = [] if which == "worked" else [MODEL_ID, *PRESETS]
+    ids = [] if which == "worked" else [MODEL_FIGURE_ID, *PRESETS]
     if which != "report":
         ids += list(WORKED)
     from ._progress import progress_bar
@@ -291,8 +279,7 @@ def figures_command(out_dir: str, formats: tuple[str, ...], dpi: float, list_onl
 def figure_maps(fid: str) -> MapRecord | AtlasRecord | None:
     """The maps a figure of the report shows, by its id, from the workflows (None for the model
     figure, 2.1): what :func:`regimemap.maps.figures.batch.render_figure` draws."""
-    from ..maps.figures.model import MODEL_FIGURE_ID
-    from ..maps.figures.presets import get_preset
+    from ..maps.figures.presets import MODEL_FIGURE_ID, get_preset
     from ..maps.figures.worked import WORKED
     from ..maps.run import run_map
     from ..maps.run_atlas import run_atlas
@@ -303,25 +290,3 @@ def figure_maps(fid: str) -> MapRecord | AtlasRecord | None:
     if worked is None:
         return run_map(**get_preset(fid).map_keywords)
     return run_atlas(**worked.atlas_keywords) if worked.sweep else run_map(**worked.map_keywords)
-
-
-def _list_figures(which: str) -> None:
-    """``figures --list``: a line per figure of the set, with its parameters and caption."""
-    from ..maps.figures.presets import PRESETS
-    from ..maps.figures.worked import WORKED
-
-    report = {} if which == "worked" else PRESETS
-    if which != "worked":
-        click.echo(f"{MODEL_ID:5s} the model: the block (half width B, half height H), the "
-                   "force F at h = k'H above C, the reactions f_x, f_y at xi, the rotation theta")
-    for p in report.values():
-        what = "final map" if not p.raw else "raw region of " + p.modes[0].label
-        click.echo(f"{p.id:5s} gamma={_num(p.gamma):4s} kprime={_num(p.kprime):6s} "
-                   f"{p.params.case.value:8s} {what:24s} [{p.caption_source}]  "
-                   f"{_plain(p.caption)}")
-    for w in WORKED.values() if which != "report" else ():
-        g, kp = _num(w.params.gamma), _num(w.params.kprime)
-        what = "atlas of final maps" if w.sweep else "final map"
-        kind = 'loaded' if w.params.loaded else w.params.case.value
-        click.echo(f"{w.id:5s} gamma={g:4s} kprime={kp:6s} {kind:8s} {what:24s} [worked]  "
-                   f"{_plain(w.title.splitlines()[0].split('  ', 1)[1])}")

@@ -117,8 +117,9 @@ def design_wave_run(analysis: CaissonAnalysis, depth: npt.ArrayLike, period: npt
     Returns
     -------
     (Block, Pulse)
-        The block: ``B``, ``gamma``, ``mu``, ``kprime``, ``i2 = i^2``, and the ``buoyancy``,
-        ``uplift`` (0), ``uplift_ratio`` (U/P) and ``uplift_arm`` of the equivalent block; the pulse: half-sine of peak
+        The block: ``B``, ``gamma``, ``mu``, ``kprime``, ``i2 = i^2``, and the
+        ``buoyancy``, ``uplift`` (0), ``uplift_ratio`` (U/P) and ``uplift_arm`` of the
+        equivalent block; the pulse: half-sine of peak
         ``k = P/(m g)`` and duration ``tau0 = (0.5 - Hmax/(8 h)) T1/3``
         (:func:`regimemap.waves.wave_duration`).  No added mass of water (module docstring).
 

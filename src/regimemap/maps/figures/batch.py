@@ -48,8 +48,8 @@ def render_figure(fid: str, maps: MapRecord | AtlasRecord | None, *, dpi: float,
     figure); pass the previous figure of a single map as ``fig`` to reuse it.
     """
     from .figure import render_preset
-    from .model import MODEL_FIGURE_ID, model_figure
-    from .presets import get_preset
+    from .model import model_figure
+    from .presets import MODEL_FIGURE_ID, get_preset
     from .worked import WORKED, render_worked
 
     if fid == MODEL_FIGURE_ID:
@@ -70,8 +70,7 @@ def _render_chunk(ids: Sequence[str], folder: str, formats: Sequence[str], dpi: 
     ``keep`` (a worker process) it is also kept for the worker's next task.
     """
     from ...drawing.save import save_figure
-    from .model import MODEL_FIGURE_ID
-    from .presets import get_preset
+    from .presets import MODEL_FIGURE_ID, get_preset
     from .worked import WORKED
 
     fig: Figure | None = _KEPT.pop("fig", None) if keep else None

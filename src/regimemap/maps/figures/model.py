@@ -21,11 +21,9 @@ if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
 
-__all__ = ["MODEL_FIGURE_ID", "MODEL_TITLE", "model_figure"]
+__all__ = ["MODEL_TITLE", "model_figure"]
 
-#: The report's number of the model figure.
-MODEL_FIGURE_ID = "2.1"
-#: Its caption (mathtext).
+#: The model figure's caption (mathtext).
 MODEL_TITLE = (r"Fig. 2.1  The model: a rigid block of half width $B$ and half height $H$"
                "\n"
                r"($\gamma = H/B$) on a rigid base with friction $\mu$, pushed by "

@@ -26,7 +26,12 @@ from typing import Any
 from ...mechanics.block import Case, Parameters
 from ...mechanics.modes import MAP_MODES, Mode
 
-__all__ = ["FigurePreset", "PRESETS", "FIGURE_IDS", "get_preset", "normalise_id", "suggest_ids"]
+__all__ = ["FigurePreset", "MODEL_FIGURE_ID", "PRESETS", "FIGURE_IDS", "get_preset", "normalise_id",
+           "suggest_ids"]
+
+#: The number of the report's model figure (Fig. 2.1, :mod:`regimemap.maps.figures.model`): the
+#: figure of the set that is not a map.
+MODEL_FIGURE_ID = "2.1"
 
 # -- case conditions (as the captions state them) ----------------------------------------
 
