@@ -2,7 +2,7 @@
 
 A line per figure of a set: its id, its block (gamma, kprime and the case, or "loaded"), what it
 shows and its caption in plain ASCII.  No matplotlib: the presets and the worked figures are
-declarations (:mod:`.presets`, :mod:`.worked`).
+declarations (:mod:`regimemap.maps.figures.presets`, :mod:`regimemap.maps.figures.worked`).
 """
 
 from __future__ import annotations
