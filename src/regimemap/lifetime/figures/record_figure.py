@@ -2,9 +2,9 @@
 
 What ``regimemap lifetime -o FIGURE`` draws: a run of lifetimes
 (:func:`regimemap.lifetime.run.run_lifetime`) is drawn as the exceedance figure of its sliding
-(:func:`.exceedance.lifetime_figure`) with its climate band, a design chart
+(:func:`regimemap.lifetime.figures.exceedance.lifetime_figure`) with its climate band, a design chart
 (:func:`regimemap.lifetime.run.run_chart`, ``--width``) as the chart
-(:func:`.chart.chart_figure`) with its band.
+(:func:`regimemap.lifetime.figures.chart.chart_figure`) with its band.
 """
 
 from __future__ import annotations
