@@ -41,8 +41,8 @@ SHARED_WORDS = {"records": "what every record is made of: warnings and verdicts 
                            "for people",
                 "mechanics": "the physics: closed forms, the independent solver (numpy only)",
                 "waves": "Goda-Takahashi wave loads", "dynamics": "the engine of the motion past initiation",
-                "io": "files in and out, by format: atomic writes, the format registry, the input keys' "
-                      "declaration and reader",
+                "io": "files in and out, by format: atomic writes, the format registry, one writer per "
+                      "data format, the input keys' declaration and reader",
                 "workflows": "the index of the runs: one call per command",
                 "drawing": "what every figure shares: style, figure files, the tidy pass, label placement",
                 "cli": "the command line: options and one call per command",

@@ -202,15 +202,22 @@ def test_format_of():
 
 
 def test_atomic_write_leaves_no_partial_file(tmp_path, monkeypatch):
-    import regimemap.maps.record_export as ex
+    import contextlib
+
+    import regimemap.io.json as json_file
 
     path = tmp_path / "map.json"
     path.write_text("old")
+    real = json_file.atomic_open
 
-    def fail(*a, **k):
-        raise OSError("disk full")
+    @contextlib.contextmanager
+    def fail_half_way(target, *a, **k):
+        with real(target, *a, **k) as fh:
+            fh.write('{"format": "regimemap-map", ')
+            raise OSError("disk full")
+        yield fh  # pragma: no cover
 
-    monkeypatch.setattr(ex.json, "dumps", fail)
+    monkeypatch.setattr(json_file, "atomic_open", fail_half_way)
     with pytest.raises(OSError):
         export_map(path, Parameters(3.0, 0.4))
     assert path.read_text() == "old"

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
 from ..records.checks import Check, checks_json, checks_lines
-from ..records.numbers import format_significant, json_number
+from ..records.numbers import format_significant, rounded
 from .report import REQUIRED_SF, CaissonReport, caisson_checks
 
 __all__ = ["CONSISTENCY_NOTE", "NUMBERS", "REQUIRED_SF", "UNITS", "CaissonNumbers", "Number", "caisson_json",
@@ -37,14 +37,13 @@ def _f(x: Any) -> float:
 def _crossing_dict(c: Crossing | None) -> dict[str, Any] | None:
     if c is None:
         return None
-    return {"at": json_number(c.at), "delta": json_number(c.delta),
-            "relative": None if c.relative is None else json_number(c.relative),
-            "to": mode_label(c.to)}
+    return {"at": float(c.at), "delta": float(c.delta),
+            "relative": None if c.relative is None else float(c.relative), "to": mode_label(c.to)}
 
 
 def _margin_dict(m: Margin) -> dict[str, Any]:
     n = m.nearest
-    return {"value": json_number(m.value), "up": _crossing_dict(m.up), "down": _crossing_dict(m.down),
+    return {"value": float(m.value), "up": _crossing_dict(m.up), "down": _crossing_dict(m.down),
             "nearest": None if n is None else n.direction}
 
 
@@ -220,8 +219,8 @@ def design_check(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF) 
     out: dict[str, Any] = {}
     for name, value, need in (("sliding", _f(st.sliding), required[0]),
                               ("overturning", _f(st.overturning), required[1])):
-        out[name] = {"value": json_number(value), "required": need, "meets": bool(value >= need)}
-    return out
+        out[name] = {"value": value, "required": need, "meets": bool(value >= need)}
+    return rounded(out)
 
 
 def design_check_lines(r: CaissonReport, required: tuple[float, float] = REQUIRED_SF,
@@ -267,7 +266,7 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
-    out.update({k: json_number(v) for k, v in caisson_numbers(r).items()})
+    out.update({k: float(v) for k, v in caisson_numbers(r).items()})
     out["mode"] = mode_label(r.mode)
     out["mode_description"] = mode_description(r.mode)
     out["margin"] = {"k": _margin_dict(r.margin_k), "mu": _margin_dict(r.margin_mu)}
@@ -281,14 +280,13 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     st = p.analysis.stability
     out["path"] = {
         "scaling": "H13 and Hmax times factor; loads recomputed; each point on its own map",
-        "onset_factor": None if p.onset is None else json_number(p.onset),
-        "onset_Hmax": None if p.onset is None else json_number(p.onset * hmax),
+        "onset_factor": None if p.onset is None else float(p.onset),
+        "onset_Hmax": None if p.onset is None else float(p.onset * hmax),
         "onset_mode": None if p.onset_mode is None else mode_label(p.onset_mode),
         "points": [{
-            "factor": json_number(p.factors[i]), "Hmax": json_number(p.factors[i] * hmax),
-            "k": json_number(p.k[i]), "kprime": json_number(p.kprime[i]),
-            "uplift_ratio": json_number(p.uplift_ratio[i]),
-            "SF_sliding": json_number(st.sliding[i]), "SF_overturning": json_number(st.overturning[i]),
+            "factor": float(p.factors[i]), "Hmax": float(p.factors[i] * hmax), "k": float(p.k[i]),
+            "kprime": float(p.kprime[i]), "uplift_ratio": float(p.uplift_ratio[i]),
+            "SF_sliding": float(st.sliding[i]), "SF_overturning": float(st.overturning[i]),
             "mode": mode_label(p.modes[i]), "mode_on_design_map": mode_label(p.design_map_modes[i]),
         } for i in tenths],
     }
@@ -298,7 +296,7 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     out["design_check"] = design_check(r, required)
     out["checks"] = checks_json(checks)
     out["verdict"] = "PASS" if all(c.passed for c in checks) else "FAIL"
-    return out
+    return rounded(out)
 
 
 def _margin_line(m: Margin) -> str:

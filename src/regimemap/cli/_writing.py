@@ -6,7 +6,6 @@ figure drawn once, the path of each file written, and the one printer of the not
 from __future__ import annotations
 
 import contextlib
-import json
 import os
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
@@ -15,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import SuffixError, format_for, suffix_of
+from ..io.json import json_text
 from ._main import RunError, import_matplotlib, refusing
 
 if TYPE_CHECKING:
@@ -172,7 +172,7 @@ def print_report(as_json: bool, text: Callable[[], str | None], data: Callable[[
     ``as_json`` one JSON object, ``data()`` (``indent``: its indent), else the text, ``text()``
     (None: none), then the path of each file ``written`` (:func:`report_written`)."""
     if as_json:
-        click.echo(json.dumps(data(), indent=indent, allow_nan=False))
+        click.echo(json_text(data(), indent=indent))
         return
     report = text()
     if report is not None:

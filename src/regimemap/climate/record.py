@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from ..records.numbers import json_number
+from ..records.numbers import rounded
 from .analysis import ClimateResult, Sensitivity
 
 __all__ = ["climate_json", "format_climate", "parameter_text",
@@ -29,7 +29,7 @@ _PRIOR_TEXT = {"gpd": "ln sigma and in xi on [-1, 1.5], the storm rate's Jeffrey
 
 
 def _num(v: float | None) -> float | None:
-    return None if v is None else json_number(v)
+    return None if v is None else float(v)
 
 
 def sensitivity_json(s: Sensitivity | None) -> dict[str, Any] | None:
@@ -37,11 +37,11 @@ def sensitivity_json(s: Sensitivity | None) -> dict[str, Any] | None:
     (null where too few storms to fit)."""
     if s is None:
         return None
-    rows = [{"quantile": json_number(float(q)), "threshold": json_number(float(u)), "storms": int(n),
-             "value": json_number(float(v)), "lower": json_number(float(lo)), "upper": json_number(float(hi))}
+    rows = [{"quantile": float(q), "threshold": float(u), "storms": int(n), "value": float(v),
+             "lower": float(lo), "upper": float(hi)}
             for q, u, n, v, lo, hi in zip(s.quantiles, s.thresholds, s.storms, s.value, s.lower, s.upper)]
-    return {"period": json_number(s.period), "confidence": json_number(s.confidence), "interval": s.interval,
-            "rows": rows}
+    return rounded({"period": float(s.period), "confidence": float(s.confidence), "interval": s.interval,
+                    "rows": rows})
 
 
 def climate_json(result: ClimateResult, source: str | None = None,
@@ -63,27 +63,27 @@ def climate_json(result: ClimateResult, source: str | None = None,
     """
     r, o, q = result.record, result.options, result.record.quality
     pot = result.storms is not None
-    return {
+    return rounded({
         "record": {
             "source": source if source is not None else r.source,
-            "start": r.start, "end": r.end, "years": json_number(r.years),
-            "step_hours": json_number(r.step_hours), "coverage": json_number(r.coverage),
-            "coverage_by_year": {str(y): json_number(c) for y, c in q.coverage.items()},
+            "start": r.start, "end": r.end, "years": float(r.years),
+            "step_hours": float(r.step_hours), "coverage": float(r.coverage),
+            "coverage_by_year": {str(y): float(c) for y, c in q.coverage.items()},
             "missing": q.missing, "duplicates": q.duplicates,
             "conflicting": 0 if q.conflicts is None else q.conflicts.count, "unsorted": q.unsorted,
             "gaps": len(q.gaps),
-            "flagged": [{"time": t, "hs": json_number(h)} for t, h in q.spikes],
+            "flagged": [{"time": t, "hs": float(h)} for t, h in q.spikes],
             "spikes_dropped": q.spikes_dropped, "period": r.period_name,
         },
         "method": o.method,
         "threshold": _num(result.fit.threshold),
-        "gap_hours": json_number(o.gap_hours) if pot else None,
+        "gap_hours": float(o.gap_hours) if pot else None,
         "storms": result.fit.n,
-        "rate_per_year": json_number(result.fit.rate),
+        "rate_per_year": float(result.fit.rate),
         "distribution": result.fit.distribution,
-        "parameters": {k: json_number(v) for k, v in result.fit.parameters.items()},
+        "parameters": {k: float(v) for k, v in result.fit.parameters.items()},
         "return_values": [{k: _num(v) for k, v in rv.items()} for rv in result.return_values],
-        "confidence": json_number(o.confidence),
+        "confidence": float(o.confidence),
         "interval": None if result.band is None else result.band.method,
         "replicates": 0 if result.band is None else result.band.requested,
         "replicates_fitted": 0 if result.band is None else len(result.band.fits),
@@ -92,7 +92,7 @@ def climate_json(result: ClimateResult, source: str | None = None,
         "threshold_sensitivity": sensitivity_json(sensitivity),
         "warnings": result.warnings(),
         "notices": [{**n.as_dict(), "value": _num(n.value)} for n in result.notices],
-    }
+    })
 
 
 def parameter_text(result: ClimateResult) -> str:

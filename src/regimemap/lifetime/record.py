@@ -21,7 +21,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from ..records.checks import checks_json, checks_lines
-from ..records.numbers import json_number
+from ..records.numbers import rounded
 from . import DesignChart, LifetimeModel, LifetimeResult
 from .results import STATISTICS, threshold_key
 
@@ -40,16 +40,6 @@ _QUANTILES = (0.9, 0.99)
 # -- JSON ---------------------------------------------------------------------------------------
 
 
-def _json_value(v: Any) -> Any:
-    """A value of :meth:`LifetimeResult.summary` for JSON: floats rounded (``null`` if not finite),
-    ints kept, dicts value by value."""
-    if isinstance(v, dict):
-        return {k: _json_value(x) for k, x in v.items()}
-    if v is None or isinstance(v, int):
-        return v
-    return json_number(v)
-
-
 def _units() -> dict[str, str]:
     """The units of the statistics that have one: the lengths and probabilities, then the years."""
     with_unit = sorted((s for s in STATISTICS if s.unit), key=lambda s: s.unit == "year")
@@ -60,23 +50,27 @@ def _model_dict(model: LifetimeModel) -> dict[str, Any]:
     c = model.climate
     return {
         "years": model.years,
-        "storm_hours": json_number(model.storm_hours),
-        "period": None if model.period is None else json_number(model.period),
-        "period_law": None if model.period_law is None else [json_number(v) for v in model.period_law],
-        "steepness": None if model.steepness is None else json_number(model.steepness),
-        "tide_range": json_number(model.tide_range),
+        "storm_hours": float(model.storm_hours),
+        "period": _float(model.period),
+        "period_law": None if model.period_law is None else [float(v) for v in model.period_law],
+        "steepness": _float(model.steepness),
+        "tide_range": float(model.tide_range),
         "impulsive": model.impulsive,
-        "truncate": None if model.truncate is None else json_number(model.truncate),
-        "errors": {name: {"ratio": json_number(getattr(model.errors, name).ratio),
-                          "cov": json_number(getattr(model.errors, name).cov)}
+        "truncate": _float(model.truncate),
+        "errors": {name: {"ratio": float(getattr(model.errors, name).ratio),
+                          "cov": float(getattr(model.errors, name).cov)}
                    for name in model.errors.names()},
         "climate": {
-            "distribution": c.distribution, "scale": json_number(c.scale),
-            "location": json_number(c.location), "shape": json_number(c.shape),
-            "storms_per_year": None if c.storms_per_year is None else json_number(c.storms_per_year),
-            "H0_10": json_number(c.return_value(10)), "H0_50": json_number(c.return_value(50)),
+            "distribution": c.distribution, "scale": float(c.scale), "location": float(c.location),
+            "shape": float(c.shape), "storms_per_year": _float(c.storms_per_year),
+            "H0_10": float(c.return_value(10)), "H0_50": float(c.return_value(50)),
         },
     }
+
+
+def _float(v: float | None) -> float | None:
+    """``v`` as a float (a whole number written as one in the file is a float in the JSON)."""
+    return None if v is None else float(v)
 
 
 def impulsive_text(impulsive: bool) -> str:
@@ -97,26 +91,23 @@ def band_json(band: ClimateBand) -> dict[str, Any]:
     expected_sliding, std_error, trials, seed, exceedance, exceedance_std_error}`` -- the ESD
     and ``P(S > x)`` (threshold in metres as text) with the climate's uncertainty: the means over
     the replicate climates [m, -]."""
-    return {"level": json_number(band.level), "lower": json_number(band.lower),
-            "upper": json_number(band.upper), "replicates": band.replicates,
-            "expected_sliding": json_number(band.expected_sliding), "std_error": json_number(band.std_error),
-            "trials": band.trials, "seed": band.seed,
-            "exceedance": {threshold_key(x): json_number(band.exceedance(x)) for x in band.thresholds},
-            "exceedance_std_error": {threshold_key(x): json_number(band.exceedance_error(x))
-                                     for x in band.thresholds}}
+    return rounded({
+        "level": float(band.level), "lower": float(band.lower), "upper": float(band.upper),
+        "replicates": band.replicates, "expected_sliding": float(band.expected_sliding),
+        "std_error": float(band.std_error), "trials": band.trials, "seed": band.seed,
+        "exceedance": {threshold_key(x): float(band.exceedance(x)) for x in band.thresholds},
+        "exceedance_std_error": {threshold_key(x): float(band.exceedance_error(x)) for x in band.thresholds}})
 
 
 def chart_band_dict(band: ChartBand) -> dict[str, Any]:
     """The design chart's climate band for JSON: ``{level, replicates, trials, seed, target,
     widths, lower, upper, width_for_target}`` -- the band's curves at each width [m] and the
     narrowest width whose ESD at the band's upper level meets the target (``null``: none does)."""
-    return {"level": json_number(band.level), "replicates": band.replicates, "trials": band.trials,
-            "seed": band.seed, "target": json_number(band.target),
-            "widths": [json_number(float(w)) for w in band.widths],
-            "lower": [json_number(float(x)) for x in band.lower],
-            "upper": [json_number(float(x)) for x in band.upper],
-            "width_for_target": (None if band.width_for_target is None
-                                 else json_number(band.width_for_target))}
+    return rounded({"level": float(band.level), "replicates": band.replicates, "trials": band.trials,
+                    "seed": band.seed, "target": float(band.target),
+                    "widths": [float(w) for w in band.widths], "lower": [float(x) for x in band.lower],
+                    "upper": [float(x) for x in band.upper],
+                    "width_for_target": _float(band.width_for_target)})
 
 
 def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | None = None,
@@ -154,7 +145,7 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
-    out.update(_json_value(result.summary()))
+    out.update(result.summary())
     out.update({
         "impulsive": model.impulsive,
         "climate": model.climate.describe(),
@@ -166,7 +157,7 @@ def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | No
         out["climate_band"] = band_json(band)
     out["checks"] = checks_json(result.checks)
     out["verdict"] = verdict_word(result.checks)
-    return out
+    return rounded(out)
 
 
 def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None,
@@ -190,19 +181,18 @@ def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: s
     out: dict[str, Any] = {}
     if source is not None:
         out["source"] = source
-    out["chart"] = [{k: json_number(v) for k, v in row.items()} for row in chart.rows()]
-    out["target"] = json_number(chart.target)
-    out["width_for_target"] = (None if chart.width_for_target is None
-                               else json_number(chart.width_for_target))
-    out["width_tolerance"] = json_number(chart.tolerance)
+    out["chart"] = [{k: float(v) for k, v in row.items()} for row in chart.rows()]
+    out["target"] = float(chart.target)
+    out["width_for_target"] = _float(chart.width_for_target)
+    out["width_tolerance"] = float(chart.tolerance)
     iv = chart.width_interval
     out["width_interval"] = None if iv is None else {
-        "level": json_number(iv.level), "lower": json_number(iv.lower), "upper": json_number(iv.upper),
+        "level": float(iv.level), "lower": float(iv.lower), "upper": float(iv.upper),
         "resamples": iv.resamples}
-    out["failure_sliding"] = None if chart.failure_sliding is None else json_number(chart.failure_sliding)
+    out["failure_sliding"] = _float(chart.failure_sliding)
     out["impulsive"] = chart.impulsive
-    out["required_sf"] = json_number(chart.required_sf)
-    out["sf_width"] = json_number(chart.sf_width)
+    out["required_sf"] = float(chart.required_sf)
+    out["sf_width"] = float(chart.sf_width)
     out["trials"] = chart.trials
     out["seed"] = chart.seed
     if model is not None:
@@ -217,7 +207,7 @@ def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: s
         out["climate_band"] = chart_band_dict(band)
     out["checks"] = checks_json(chart.checks)
     out["verdict"] = verdict_word(chart.checks)
-    return out
+    return rounded(out)
 
 
 # -- text ---------------------------------------------------------------------------------------
@@ -387,18 +377,17 @@ def lifetime_brief_json(result: LifetimeResult, model: LifetimeModel, band: Clim
     or null)."""
     rec = None if record is None else {
         "path": record.path, "method": record.method,
-        "threshold": {"kind": record.threshold[0], "value": json_number(record.threshold[1])},
-        "gap_hours": json_number(record.gap_hours),
-        "period_ratio": None if record.period_ratio is None else json_number(record.period_ratio)}
+        "threshold": {"kind": record.threshold[0], "value": float(record.threshold[1])},
+        "gap_hours": float(record.gap_hours), "period_ratio": _float(record.period_ratio)}
     f = result.failure
-    return {"trials": result.trials, "years": result.years, "seed": result.seed,
-            "expected_sliding": json_number(result.expected_sliding),
-            "std_error": json_number(result.std_error),
-            "climate": model.climate.describe(), "record": rec,
-            "failure": None if f is None else {"sliding_limit": json_number(f.sliding_limit),
-                                               "probability": json_number(f.probability),
-                                               "std_error": json_number(f.std_error)},
-            "climate_band": None if band is None else band_json(band)}
+    return rounded({
+        "trials": result.trials, "years": result.years, "seed": result.seed,
+        "expected_sliding": float(result.expected_sliding), "std_error": float(result.std_error),
+        "climate": model.climate.describe(), "record": rec,
+        "failure": None if f is None else {"sliding_limit": float(f.sliding_limit),
+                                           "probability": float(f.probability),
+                                           "std_error": float(f.std_error)},
+        "climate_band": None if band is None else band_json(band)})
 
 
 def format_chart(chart: DesignChart, model: LifetimeModel | None = None, source: str | None = None,

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..io.atomic import atomic_open
+from ..io.csv import write_csv
 from ..io.formats import format_for, record_formats
 from ..io.npz import write_npz
 from . import DesignChart, LifetimeResult
@@ -73,10 +73,7 @@ def write_chart(chart: DesignChart, path: str | os.PathLike[str], band: ChartBan
         if band is not None:
             cells += [_csv_number(float(lower[i])), _csv_number(float(upper[i]))]
         rows.append(",".join(cells))
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write(",".join(head) + "\n")
-        for row in rows:
-            fh.write(row + "\n")
+    write_csv(path, head, rows)
 
 
 # -- every trial ---------------------------------------------------------------------------------
@@ -119,8 +116,6 @@ def write_samples(result: LifetimeResult, path: str | os.PathLike[str]) -> str:
     sliding = result.sliding.tolist()
     storm = result.max_storm.tolist()
     storms = result.storms.tolist()
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write("trial,sliding_m,max_storm_m,storms\n")
-        for i in range(len(sliding)):
-            fh.write(f"{i},{sliding[i] + 0.0:.12g},{storm[i] + 0.0:.12g},{storms[i]}\n")
+    write_csv(path, ("trial", "sliding_m", "max_storm_m", "storms"),
+              (f"{i},{sliding[i] + 0.0:.12g},{storm[i] + 0.0:.12g},{storms[i]}" for i in range(len(sliding))))
     return fmt

@@ -32,7 +32,6 @@ of some length.
 
 from __future__ import annotations
 
-import json
 import logging
 import math
 import os
@@ -42,13 +41,14 @@ from typing import Any
 import numpy as np
 
 from ..io import npz
-from ..io.atomic import atomic_open
+from ..io.csv import write_csv as write_csv_file
 from ..io.formats import format_for, record_formats
+from ..io.json import write_json as write_json_file
 from ..mechanics.block import Parameters
 from ..mechanics.curves import map_curves, named_points
 from ..mechanics.modes import LOADED_MAP_MODES, MAP_MODES, Mode
 from ..mechanics.validation import MAX_GRID_POINTS, check_positive, check_resolution
-from ..records.numbers import round_sig, text
+from ..records.numbers import round_sig, rounded, text
 from .ambiguity import ambiguous_regions
 from .classify import label_grid
 from .geometry import DEFAULT_SAMPLES, region_polygons
@@ -199,41 +199,21 @@ def write_csv(path: str | os.PathLike[str], k: np.ndarray, mu: np.ndarray, mode:
     k_txt = [text(v) for v in k]
     labels = [m.label for m in Mode]
     tail = ""
-    head = "k,mu,mode"
+    head = ["k", "mu", "mode"]
     if p is not None and _loads_of(p):
         from .describe import load_items
 
         cols = [("gamma", p.gamma), ("kprime", p.kprime)] + load_items(p)
-        head += "".join(f",{name}" for name, _ in cols)
+        head += [name for name, _ in cols]
         tail = "".join(f",{text(v)}" for _, v in cols)
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write(head + "\n")
-        for i, m in enumerate(mu):
-            mt = text(m)
-            row = mode[i]
-            fh.write("".join(f"{kt},{mt},{labels[c]}{tail}\n" for kt, c in zip(k_txt, row.tolist())))
+    rows = ("\n".join(f"{kt},{mt},{labels[c]}{tail}" for kt, c in zip(k_txt, mode[i].tolist()))
+            for i, mt in enumerate(text(m) for m in mu))
+    write_csv_file(path, head, rows)
 
 
 # --------------------------------------------------------------------------------------
 # vector geometry
 # --------------------------------------------------------------------------------------
-def _json_safe(obj: Any) -> Any:
-    """Replace non-finite floats by None, numpy scalars/arrays by Python objects."""
-    if isinstance(obj, dict):
-        return {str(k): _json_safe(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [_json_safe(v) for v in obj]
-    if isinstance(obj, np.ndarray):
-        return _json_safe(obj.tolist())
-    if isinstance(obj, (np.floating,)):
-        obj = float(obj)
-    if isinstance(obj, (np.integer,)):
-        return int(obj)
-    if isinstance(obj, float):
-        return round_sig(obj) if math.isfinite(obj) else None
-    return obj
-
-
 def _graph_in_view(f: Callable[[np.ndarray], np.ndarray], k0: float, k1: float, mu_max: float,
                    n: int = CURVE_SAMPLES, dense_end: bool = False) -> list[np.ndarray]:
     """Polylines of mu = f(k) for k in [k0, k1] where 0 <= mu <= mu_max.
@@ -406,15 +386,12 @@ def map_geometry(p: Parameters, k_max: float | None = None, mu_max: float | None
             "buoyancy beta m g up through C; uplift (u + nu k) m g up at uplift_arm B from C "
             "towards O'; gyration i: I = m B^2 i^2 (null: the uniform block); crest: the top "
             "of the block above C over H")
-    safe: dict[str, Any] = _json_safe(geom)  # a dict stays a dict (with str keys)
-    return safe
+    return rounded(geom)
 
 
 def write_json(path: str | os.PathLike[str], geometry: dict[str, Any]) -> None:
     """Write the geometry as JSON (non-finite numbers as null), atomically."""
-    text = json.dumps(_json_safe(geometry), indent=1, allow_nan=False)
-    with atomic_open(path, "w", encoding="utf-8") as fh:
-        fh.write(text + "\n")
+    write_json_file(path, rounded(geometry))
 
 
 def export_map(path: str | os.PathLike[str], p: Parameters, *, k_max: float | None = None,

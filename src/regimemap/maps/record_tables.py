@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import io
-import json
 import math
 import textwrap
 from collections.abc import Sequence
 
+from ..io.csv import csv_line, csv_text
+from ..io.json import json_text
 from ..records.numbers import rounded, text
 from .margins import Crossing
 from .point_result import INITIATION_FIELDS, PointResult
@@ -66,24 +66,17 @@ def result_row(r: PointResult) -> dict[str, str]:
 
 def result_json(r: PointResult) -> dict[str, object]:
     """:meth:`PointResult.as_dict` with its numbers rounded to 12 significant digits."""
-    out: dict[str, object] = rounded(r.as_dict())
-    return out
+    return rounded(r.as_dict())
 
 
 def results_text(results: Sequence[PointResult], to_json: bool) -> str:
     """Classified points as one JSON object (``count``, ``points``) or as CSV (a header,
     :func:`columns_for`, and a row per point, :func:`result_row`)."""
     if to_json:
-        return json.dumps({"count": len(results), "points": [result_json(r) for r in results]},
-                          indent=1, allow_nan=False) + "\n"
-    import csv  # only when writing CSV: keeps start-up light
-
-    buf = io.StringIO()
-    w = csv.DictWriter(buf, fieldnames=list(columns_for(results)), lineterminator="\n")
-    w.writeheader()
-    for r in results:
-        w.writerow(result_row(r))
-    return buf.getvalue()
+        return json_text({"count": len(results), "points": [result_json(r) for r in results]}) + "\n"
+    columns = columns_for(results)
+    return csv_text(columns, (csv_line([row.get(c, "") for c in columns])
+                              for row in map(result_row, results)))
 
 
 def _pct(c: Crossing) -> str:

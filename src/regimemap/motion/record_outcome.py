@@ -13,7 +13,7 @@ file in the same folder, then a rename).
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -21,23 +21,20 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..dynamics.outcome import OutcomeMap
-from ..io.atomic import atomic_open
+from ..io.csv import write_csv
 from ..io.formats import format_for, record_formats
+from ..io.json import write_json
 from ..io.npz import write_npz
-from ..records.numbers import DIGITS as SIGNIFICANT
-from ..records.numbers import round_sig
-from .record_simulation import json_inputs
+from ..records.numbers import rounded
 
 if TYPE_CHECKING:  # pragma: no cover
     from .record import OutcomeRecord
 
 __all__ = [
     "OUTCOME_DATA_FORMATS",
-    "SIGNIFICANT",
     "cached_outcome",
     "outcome_record",
     "outcome_summary",
-    "round_sig",
     "write_outcome",
     "write_outcome_record",
 ]
@@ -76,12 +73,7 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
     if first == second:
         raise ValueError("the two swept inputs must differ")
     if fmt == "json":
-        import json
-
-        record = outcome_record(m, first, second, inputs, axes)
-        with atomic_open(path, "w", encoding="utf-8") as fh:
-            json.dump(record, fh, ensure_ascii=False, allow_nan=False)
-            fh.write("\n")
+        write_json(path, outcome_record(m, first, second, inputs, axes), indent=None, ascii_only=False)
         return fmt
     if fmt == "npz":
         arrays: dict[str, NDArray[Any]] = {
@@ -97,19 +89,24 @@ def write_outcome(path: str | os.PathLike[str], m: OutcomeMap, first: str, secon
             arrays[key] = np.asarray(arr, dtype=np.float64)
         write_npz(path, arrays, inputs)
         return fmt
+    write_csv(path, (first, second, "category", "overturned", "max_rotation", "residual_slide"),
+              _csv_rows(m))
+    return fmt
+
+
+def _csv_rows(m: OutcomeMap) -> Iterator[str]:
+    """The CSV lines of ``m``, a text of several lines for each value of the second input (the
+    numbers as ``repr``, to read back exactly)."""
     xs = [repr(float(v)) for v in m.first_values]
     labels = list(m.labels)
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write(f"{first},{second},category,overturned,max_rotation,residual_slide\n")
-        for i, yv in enumerate(m.second_values):
-            yt = repr(float(yv))
-            cat = m.category[i].tolist()
-            over = m.overturned[i].tolist()
-            rot = m.max_rotation[i].tolist()
-            sl = m.residual_slide[i].tolist()
-            fh.write("".join(f"{xs[j]},{yt},{labels[cat[j]]},{'true' if over[j] else 'false'},"
-                             f"{rot[j] + 0.0!r},{sl[j] + 0.0!r}\n" for j in range(len(xs))))
-    return fmt
+    for i, yv in enumerate(m.second_values):
+        yt = repr(float(yv))
+        cat = m.category[i].tolist()
+        over = m.overturned[i].tolist()
+        rot = m.max_rotation[i].tolist()
+        sl = m.residual_slide[i].tolist()
+        yield "\n".join(f"{xs[j]},{yt},{labels[cat[j]]},{'true' if over[j] else 'false'},"
+                        f"{rot[j] + 0.0!r},{sl[j] + 0.0!r}" for j in range(len(xs)))
 
 
 def write_outcome_record(path: str | os.PathLike[str], record: OutcomeRecord) -> str:
@@ -133,7 +130,8 @@ def outcome_summary(record: OutcomeRecord) -> list[str]:
 
 def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, Any] | None = None,
                    axes: Mapping[str, NDArray[np.float64]] | None = None) -> dict[str, Any]:
-    """An outcome map as a JSON-ready dict (numbers rounded to :data:`SIGNIFICANT` digits).
+    """An outcome map as a JSON-ready dict (numbers rounded to 12 significant digits,
+    :data:`regimemap.records.numbers.DIGITS`).
 
     Keys: ``first`` and ``second`` (the swept inputs' names: x and y), ``axes`` (their values,
     and any ``axes`` given, e.g. dimensionless ones), ``labels`` (the categories by code),
@@ -145,24 +143,21 @@ def outcome_record(m: OutcomeMap, first: str, second: str, inputs: Mapping[str, 
     """
     labels = list(m.labels)
     names = np.asarray(labels, dtype=object)[np.asarray(m.category, dtype=np.int64)]
-    ax: dict[str, Any] = {first: [round_sig(v) for v in np.asarray(m.first_values).tolist()],
-                          second: [round_sig(v) for v in np.asarray(m.second_values).tolist()]}
-    for key, arr in (axes or {}).items():
-        ax[key] = [round_sig(v) for v in np.asarray(arr, dtype=np.float64).tolist()]
-    return {
+    ax = {first: m.first_values, second: m.second_values, **(axes or {})}
+    return rounded({
         "first": first,
         "second": second,
-        "axes": ax,
+        "axes": {key: np.asarray(arr, dtype=np.float64) for key, arr in ax.items()},
         "labels": labels,
         "category": names.tolist(),
-        "max_rotation": [[round_sig(v) for v in row] for row in np.asarray(m.max_rotation).tolist()],
-        "residual_slide": [[round_sig(v) for v in row] for row in np.asarray(m.residual_slide).tolist()],
+        "max_rotation": np.asarray(m.max_rotation, dtype=np.float64),
+        "residual_slide": np.asarray(m.residual_slide, dtype=np.float64),
         "refined": m.refined,
-        "boundaries": [{"between": [a, b], "points": [[round_sig(x), round_sig(y)] for x, y in p.tolist()]}
+        "boundaries": [{"between": [a, b], "points": np.asarray(p, dtype=np.float64)}
                        for a, b, p in m.boundaries()],
-        "min_rotation": round_sig(m.min_rotation),
-        "inputs": json_inputs(inputs or {}),
-    }
+        "min_rotation": float(m.min_rotation),
+        "inputs": dict(inputs or {}),
+    })
 
 
 # -- a cache of computed outcome maps (make figures) ----------------------------------------------

@@ -19,16 +19,17 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..dynamics.stepper import History, Phase
-from ..io.atomic import atomic_open
+from ..io.csv import write_csv
 from ..io.formats import format_for, record_formats
+from ..io.json import json_text
 from ..io.npz import write_npz
 from ..mechanics.modes import Mode
-from ..records.numbers import round_sig
+from ..records.numbers import rounded
 
 if TYPE_CHECKING:  # pragma: no cover
     from .record import SimulationRecord
 
-__all__ = ["HISTORY_FORMATS", "describe_design_wave", "format_simulation", "history_arrays", "json_inputs",
+__all__ = ["HISTORY_FORMATS", "describe_design_wave", "format_simulation", "history_arrays",
            "phase_description", "simulation_json", "simulation_record", "write_history",
            "write_simulation_history"]
 
@@ -51,8 +52,8 @@ def simulation_record(record: SimulationRecord) -> dict[str, Any]:
     (s), ``steps``, ``derived`` (p, alpha, ..., ``impact_ratio`` None when Housner's ratio does
     not apply, a squat block's) and ``inputs``; for a design file's run, ``design`` (where its
     numbers came from, with their units) and ``checks`` (its requirements).  Floats are rounded
-    to :data:`SIGNIFICANT` significant digits.  A run still moving at the time limit
-    (``settled`` false, not overturned; category "still moving") has no residuals: the three
+    to 12 significant digits (:func:`regimemap.records.numbers.rounded`).  A run still moving at
+    the time limit (``settled`` false, not overturned; category "still moving") has no residuals: the three
     ``residual_*`` are None.
     """
     sim = record.simulation
@@ -60,41 +61,39 @@ def simulation_record(record: SimulationRecord) -> dict[str, Any]:
     init = int(sim.initial_mode[0])
 
     def residual(v: float) -> float | None:
-        return round_sig(v) if record.finished else None
+        return float(v) if record.finished else None
 
     out = {
         "overturned": bool(sim.overturned[0]),
         "category": record.category,
-        "max_rotation": round_sig(sim.max_rotation[0]),
-        "max_rotation_deg": round_sig(math.degrees(float(sim.max_rotation[0]))),
+        "max_rotation": float(sim.max_rotation[0]),
+        "max_rotation_deg": math.degrees(float(sim.max_rotation[0])),
         "residual_rotation": residual(sim.residual_rotation[0]),
         "residual_rotation_deg": residual(math.degrees(float(sim.residual_rotation[0]))),
         "residual_slide": residual(sim.residual_slide[0]),
         "impacts": int(sim.impacts[0]),
         "initial_mode": Phase(init).label if init >= 0 else None,
-        "phases": [{"mode": label, "start": round_sig(t)} for label, t in phases],
+        "phases": [{"mode": label, "start": float(t)} for label, t in phases],
         "settled": bool(sim.settled[0]),
-        "end_time": round_sig(sim.end_time[0]),
+        "end_time": float(sim.end_time[0]),
         "steps": int(sim.steps[0]),
-        "derived": {key: None if v is None else round_sig(v) for key, v in record.derived.items()},
-        "inputs": json_inputs(record.inputs),
+        "derived": {key: None if v is None else float(v) for key, v in record.derived.items()},
+        "inputs": dict(record.inputs),
     }
     if record.design_numbers is not None:
         from ..dynamics.design_wave import DESIGN_UNITS, NO_ADDED_MASS, PROFILE
         from ..records.checks import checks_json
 
-        numbers = {key: round_sig(v) for key, v in record.design_numbers.items()}
+        numbers = {key: float(v) for key, v in record.design_numbers.items()}
         out["design"] = {"file": record.design, **numbers,
                          "profile": PROFILE, "added_mass_note": NO_ADDED_MASS, "units": dict(DESIGN_UNITS)}
         out["checks"] = checks_json(record.checks)
-    return out
+    return rounded(out)
 
 
 def simulation_json(record: SimulationRecord, files: Sequence[str] = ()) -> str:
     """A run as one JSON object (:func:`simulation_record`) with the ``files`` written, indented."""
-    import json
-
-    return json.dumps({**simulation_record(record), "files": list(files)}, indent=1, allow_nan=False)
+    return json_text({**simulation_record(record), "files": list(files)})
 
 
 def _num(x: float, digits: int = 6) -> str:
@@ -211,19 +210,6 @@ def write_simulation_history(path: str | os.PathLike[str], record: SimulationRec
 HISTORY_FORMATS: tuple[str, ...] = record_formats("time history")
 
 
-def json_inputs(inputs: Mapping[str, Any]) -> dict[str, Any]:
-    """Inputs as JSON values: floats (and those in lists) rounded to :data:`SIGNIFICANT` digits."""
-    out: dict[str, Any] = {}
-    for key, v in inputs.items():
-        if isinstance(v, float):
-            out[key] = round_sig(v)
-        elif isinstance(v, (list, tuple)):
-            out[key] = [round_sig(x) if isinstance(x, float) else x for x in v]
-        else:
-            out[key] = v
-    return out
-
-
 def history_arrays(history: History, H: float) -> dict[str, NDArray[Any]]:
     """The columns of a time history: t, k, x, y, theta, vx, vy, omega, slide (of the base,
     positive towards O) and phase (the label of the step ending at t; '' at t = 0)."""
@@ -251,10 +237,8 @@ def write_history(path: str | os.PathLike[str], history: History, H: float,
     names = list(cols)
     numeric = [cols[n].tolist() for n in names[:-1]]
     phase = cols["phase"].tolist()
-    with atomic_open(path, "w", newline="", encoding="utf-8") as fh:
-        fh.write(",".join(names) + "\n")
-        for i in range(len(phase)):
-            fh.write(",".join(repr(float(c[i]) + 0.0) for c in numeric) + f",{phase[i]}\n")
+    write_csv(path, names, (",".join(repr(float(c[i]) + 0.0) for c in numeric) + f",{phase[i]}"
+                            for i in range(len(phase))))
     return fmt
 
 

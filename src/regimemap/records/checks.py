@@ -14,7 +14,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from typing import Any, Literal
 
-from .numbers import round_sig
+from .numbers import rounded
 
 __all__ = ["Check", "all_pass", "checks_json", "checks_lines", "failed"]
 
@@ -111,5 +111,6 @@ def checks_lines(checks: Sequence[Check]) -> list[str]:
 
 def checks_json(checks: Sequence[Check]) -> list[dict[str, Any]]:
     """``[{"name", "value", "required", "relation", "unit", "pass"}, ...]`` (numbers to 12 digits)."""
-    return [{"name": c.name, "value": round_sig(c.value), "required": round_sig(c.required),
-             "relation": c.relation, "unit": c.unit, "pass": c.passed} for c in checks]
+    rows = [{"name": c.name, "value": float(c.value), "required": float(c.required), "relation": c.relation,
+             "unit": c.unit, "pass": c.passed} for c in checks]
+    return rounded(rows)

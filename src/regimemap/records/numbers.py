@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
@@ -24,6 +24,10 @@ __all__ = ["DIGITS", "format_significant", "json_number", "number", "number_rang
 
 #: Significant digits of the numbers written as text (CSV, JSON).
 DIGITS = 12
+
+
+#: A record's JSON object or list of objects.
+_Tree = TypeVar("_Tree", dict[str, Any], list[Any])
 
 
 def round_sig(v: float, digits: int = DIGITS) -> float:
@@ -45,20 +49,27 @@ def text(v: float, digits: int = DIGITS) -> str:
     return repr(round_sig(v, digits))
 
 
-def rounded(obj: Any, digits: int = DIGITS) -> Any:
-    """``obj`` (dicts, lists, numpy scalars and arrays) with every float rounded."""
+def rounded(obj: _Tree, digits: int = DIGITS) -> _Tree:
+    """A record's JSON object (or list) ready for JSON: every float in it, at any depth, rounded as
+    :func:`json_number` (``None`` if not finite); numpy's numbers and arrays Python's, tuples lists;
+    ints, bools, strings and ``None`` as they are.  The one rounding of every record's JSON."""
+    out: _Tree = _rounded(obj, digits)
+    return out
+
+
+def _rounded(obj: Any, digits: int) -> Any:
     if isinstance(obj, dict):
-        return {k: rounded(v, digits) for k, v in obj.items()}
+        return {k: _rounded(v, digits) for k, v in obj.items()}
     if isinstance(obj, (list, tuple)):
-        return [rounded(v, digits) for v in obj]
+        return [_rounded(v, digits) for v in obj]
     if isinstance(obj, np.ndarray):
-        return rounded(obj.tolist(), digits)
+        return _rounded(obj.tolist(), digits)
     if isinstance(obj, (bool, np.bool_)):
         return bool(obj)
     if isinstance(obj, np.integer):
         return int(obj)
     if isinstance(obj, (float, np.floating)):
-        return round_sig(float(obj), digits)
+        return json_number(float(obj), digits)
     return obj
 
 

@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import Any
 
 from ..io.atomic import atomic_open
+from ..io.json import write_json
 
 __all__ = ["MANIFEST", "StudyStore", "StudyStoreError", "replacing_store", "task_name"]
 
@@ -97,10 +98,8 @@ class StudyStore:
                                   "give a new --store")
         else:
             self.tasks_folder.mkdir(parents=True, exist_ok=True)
-            with atomic_open(manifest, "w", encoding="utf-8") as f:
-                json.dump({"format": _FORMAT, "study_hash": study_hash, "study": source, "tasks": tasks},
-                          f, indent=1)
-                f.write("\n")
+            write_json(manifest, {"format": _FORMAT, "study_hash": study_hash, "study": source,
+                                  "tasks": tasks})
         self.tasks_folder.mkdir(parents=True, exist_ok=True)
 
     def path(self, name: str) -> Path:

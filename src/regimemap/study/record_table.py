@@ -7,14 +7,12 @@ back to the same bits), an absent value as an empty cell (CSV) or null (JSON).
 
 from __future__ import annotations
 
-import csv
-import io
 import math
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..io.atomic import atomic_open
-from ..records.numbers import json_number
+from ..io.csv import csv_line, csv_text, write_csv
+from ..records.numbers import rounded
 from .record import COLUMNS, LIMITS
 
 if TYPE_CHECKING:
@@ -69,18 +67,12 @@ def _row_json(r: StudyRow) -> dict[str, Any]:
 
 def study_csv_text(record: StudyRecord) -> str:
     """The table as CSV text (header :data:`STUDY_COLUMNS`, one line per row)."""
-    out = io.StringIO()
-    w = csv.writer(out, lineterminator="\n")
-    w.writerow(STUDY_COLUMNS)
-    for r in record.rows:
-        w.writerow(_row_cells(r))
-    return out.getvalue()
+    return csv_text(STUDY_COLUMNS, (csv_line(_row_cells(r)) for r in record.rows))
 
 
 def write_study_csv(path: str | Path, record: StudyRecord) -> None:
     """Write :func:`study_csv_text` to ``path`` atomically."""
-    with atomic_open(path, "w", encoding="utf-8", newline="") as f:
-        f.write(study_csv_text(record))
+    write_csv(path, STUDY_COLUMNS, (csv_line(_row_cells(r)) for r in record.rows))
 
 
 def study_json(record: StudyRecord) -> dict[str, Any]:
@@ -153,6 +145,7 @@ def study_check_lines(checks: Sequence[StudyCheck]) -> list[str]:
 def study_checks_json(checks: Sequence[StudyCheck]) -> list[dict[str, Any]]:
     """``[{"section", "scenario", "name", "basis", "value", "required", "relation", "unit", "pass"}]``
     (numbers to 12 digits; a value not found is null)."""
-    return [{"section": c.section, "scenario": c.scenario, "name": c.check.name, "basis": c.basis,
-             "value": json_number(c.check.value), "required": json_number(c.check.required),
+    rows = [{"section": c.section, "scenario": c.scenario, "name": c.check.name, "basis": c.basis,
+             "value": float(c.check.value), "required": float(c.check.required),
              "relation": c.check.relation, "unit": c.check.unit, "pass": c.passed} for c in checks]
+    return rounded(rows)
