@@ -38,7 +38,7 @@ import numpy.typing as npt
 
 from ..waves import CaissonAnalysis, wave_duration
 from .block import Block, G
-from .limits import INPUT_LIMITS, check_gyration, check_loads
+from .limits import INPUT_LIMITS, check_gyration, check_net_weight
 from .pulses import Pulse
 
 __all__ = ["DESIGN_INPUTS", "DESIGN_UNITS", "NO_ADDED_MASS", "PROFILE", "design_wave_inputs",
@@ -150,7 +150,7 @@ def design_wave_run(analysis: CaissonAnalysis, depth: npt.ArrayLike, period: npt
     for be, ga, i in zip(np.ravel(beta).tolist(), np.ravel(gamma).tolist(),
                          np.ravel(np.broadcast_to(b.gyration, gamma.shape)).tolist(), strict=True):
         try:
-            check_loads(be, 0.0)
+            check_net_weight(be, 0.0)
             check_gyration(i, ga)
         except ValueError as exc:
             raise ValueError(f"the caisson's section is outside the range of a run: {exc}") from None

@@ -26,7 +26,7 @@ __all__ = [
     "MAX_MAP_RUNS",
     "MAX_AXIS_VALUES",
     "check_input",
-    "check_loads",
+    "check_net_weight",
     "check_gyration",
     "estimated_steps",
     "check_run_steps",
@@ -110,7 +110,7 @@ def check_input(name: str, value: Any) -> float:
     return v + 0.0  # fold -0.0
 
 
-def check_loads(buoyancy: float, uplift: float) -> None:
+def check_net_weight(buoyancy: float, uplift: float) -> None:
     """The block must keep some weight: buoyancy + uplift < 1 (units of m g)."""
     if buoyancy + uplift >= 1.0:
         raise ValueError(f"buoyancy + uplift must be < 1 (the block keeps some weight), got "

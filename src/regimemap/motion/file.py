@@ -19,7 +19,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from ..dynamics.block import Block
-from ..dynamics.limits import MAX_MAP_RUNS, check_gyration, check_loads, check_map_steps
+from ..dynamics.limits import MAX_MAP_RUNS, check_gyration, check_map_steps, check_net_weight
 from ..dynamics.pulses import SHAPES, Pulse
 from ..records.notices import Notice
 
@@ -154,7 +154,7 @@ def check_loads_and_gyration(gammas: Sequence[float], buoyancy: Sequence[float],
         Naming ``--uplift`` and ``--buoyancy``, or ``--gyration``.
     """
     try:
-        check_loads(max(buoyancy), max(uplift))
+        check_net_weight(max(buoyancy), max(uplift))
     except ValueError as exc:
         raise OptionError(str(exc), ("--uplift", "--buoyancy")) from None
     if gyration:
