@@ -20,7 +20,7 @@ __all__ = ["csv_line", "csv_text", "write_csv"]
 
 def csv_line(cells: Sequence[str]) -> str:
     """One line of ``cells`` (no newline), each quoted only where it must be (a comma, a quote,
-    a newline): :mod:`csv`'s ``excel`` dialect with ``\n`` line ends.
+    a newline): :mod:`csv`'s ``excel`` dialect with ``\\n`` line ends.
 
     Examples
     --------
