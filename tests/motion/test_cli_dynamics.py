@@ -399,6 +399,8 @@ def test_dynamics_figures_list_and_errors(tmp_path):
     assert r.code == 0 and [ln.split()[0] for ln in r.stdout.splitlines()] == ["D.1", "D.2", "D.3"]
     one_error(run("dynamics-figures", "--out", str(tmp_path / "none")), 2, r"'--out'.*does not exist")
     one_error(run("dynamics-figures", "--out", str(tmp_path), "--format", "gif"), 2, r"'--format'.*unknown format")
+    # a wrong format is refused with --list too, as 'figures --list' refuses it
+    one_error(run("dynamics-figures", "--format", "bmp", "--list"), 2, r"'--format'.*unknown format 'bmp'")
     f = tmp_path / "file"
     f.write_text("x")
     one_error(run("dynamics-figures", "--out", str(tmp_path), "--cache", str(f)), 2, r"'--cache'.*not a folder")
