@@ -13,6 +13,7 @@ from regimemap.records.numbers import (
     json_number,
     number,
     number_range,
+    optional_float,
     round_sig,
     rounded,
     short,
@@ -70,3 +71,16 @@ def test_number_and_its_range_are_plain() -> None:
     assert number_range([1.0, 1.00001]) == "1" and number_range([1.0, 2.0]) == "1 \u2026 2"
     assert number_range([float("nan")]) == "n/a"
     assert short(0.5) == "0.5" and short(1e-05) == "1e-05" and short(3.0) == "3"
+
+
+def test_optional_float_makes_a_whole_number_a_float_and_keeps_none():
+    import json
+
+    import numpy as np
+
+    assert optional_float(None) is None
+    for v in (10, np.int64(10), np.float64(10.0), True):
+        out = optional_float(v)
+        assert type(out) is float and out == float(v)
+    # the JSON of a file's whole number reads as a float, as the records write it
+    assert json.dumps(rounded({"storms": optional_float(10), "kept": 10})) == '{"storms": 10.0, "kept": 10}'

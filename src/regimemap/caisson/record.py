@@ -16,7 +16,7 @@ import numpy as np
 
 from ..maps.loadedmap import Crossing, Margin, mode_description, mode_label
 from ..records.checks import Check, checks_json, checks_lines
-from ..records.numbers import format_significant, rounded
+from ..records.numbers import format_significant, optional_float, rounded
 from .report import REQUIRED_SF, CaissonReport, caisson_checks
 
 __all__ = ["CONSISTENCY_NOTE", "NUMBERS", "REQUIRED_SF", "UNITS", "CaissonNumbers", "Number", "caisson_json",
@@ -38,7 +38,7 @@ def _crossing_dict(c: Crossing | None) -> dict[str, Any] | None:
     if c is None:
         return None
     return {"at": float(c.at), "delta": float(c.delta),
-            "relative": None if c.relative is None else float(c.relative), "to": mode_label(c.to)}
+            "relative": optional_float(c.relative), "to": mode_label(c.to)}
 
 
 def _margin_dict(m: Margin) -> dict[str, Any]:
@@ -280,7 +280,7 @@ def caisson_json(r: CaissonReport, source: str | None = None,
     st = p.analysis.stability
     out["path"] = {
         "scaling": "H13 and Hmax times factor; loads recomputed; each point on its own map",
-        "onset_factor": None if p.onset is None else float(p.onset),
+        "onset_factor": optional_float(p.onset),
         "onset_Hmax": None if p.onset is None else float(p.onset * hmax),
         "onset_mode": None if p.onset_mode is None else mode_label(p.onset_mode),
         "points": [{

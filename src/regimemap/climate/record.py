@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from ..records.numbers import rounded
+from ..records.numbers import optional_float, rounded
 from .analysis import ClimateResult, Sensitivity
 
 __all__ = ["climate_json", "format_climate", "parameter_text",
@@ -26,10 +26,6 @@ _METHOD_TEXT = {
 _PRIOR_TEXT = {"gpd": "ln sigma and in xi on [-1, 1.5], the storm rate's Jeffreys posterior",
                "weibull": "ln A with k fixed, the storm rate's Jeffreys posterior",
                "gumbel": "B and ln A", "gev": "mu, ln sigma and xi on [-1, 1.5]"}
-
-
-def _num(v: float | None) -> float | None:
-    return None if v is None else float(v)
 
 
 def sensitivity_json(s: Sensitivity | None) -> dict[str, Any] | None:
@@ -76,22 +72,22 @@ def climate_json(result: ClimateResult, source: str | None = None,
             "spikes_dropped": q.spikes_dropped, "period": r.period_name,
         },
         "method": o.method,
-        "threshold": _num(result.fit.threshold),
+        "threshold": optional_float(result.fit.threshold),
         "gap_hours": float(o.gap_hours) if pot else None,
         "storms": result.fit.n,
         "rate_per_year": float(result.fit.rate),
         "distribution": result.fit.distribution,
         "parameters": {k: float(v) for k, v in result.fit.parameters.items()},
-        "return_values": [{k: _num(v) for k, v in rv.items()} for rv in result.return_values],
+        "return_values": [{k: optional_float(v) for k, v in rv.items()} for rv in result.return_values],
         "confidence": float(o.confidence),
         "interval": None if result.band is None else result.band.method,
         "replicates": 0 if result.band is None else result.band.requested,
         "replicates_fitted": 0 if result.band is None else len(result.band.fits),
         "seed": o.seed,
-        "endpoint": _num(result.endpoint),
+        "endpoint": optional_float(result.endpoint),
         "threshold_sensitivity": sensitivity_json(sensitivity),
         "warnings": result.warnings(),
-        "notices": [{**n.as_dict(), "value": _num(n.value)} for n in result.notices],
+        "notices": [{**n.as_dict(), "value": optional_float(n.value)} for n in result.notices],
     })
 
 

@@ -21,7 +21,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from ..records.checks import checks_json, checks_lines
-from ..records.numbers import rounded
+from ..records.numbers import optional_float, rounded
 from . import DesignChart, LifetimeModel, LifetimeResult
 from .results import STATISTICS, threshold_key
 
@@ -51,26 +51,21 @@ def _model_dict(model: LifetimeModel) -> dict[str, Any]:
     return {
         "years": model.years,
         "storm_hours": float(model.storm_hours),
-        "period": _float(model.period),
+        "period": optional_float(model.period),
         "period_law": None if model.period_law is None else [float(v) for v in model.period_law],
-        "steepness": _float(model.steepness),
+        "steepness": optional_float(model.steepness),
         "tide_range": float(model.tide_range),
         "impulsive": model.impulsive,
-        "truncate": _float(model.truncate),
+        "truncate": optional_float(model.truncate),
         "errors": {name: {"ratio": float(getattr(model.errors, name).ratio),
                           "cov": float(getattr(model.errors, name).cov)}
                    for name in model.errors.names()},
         "climate": {
             "distribution": c.distribution, "scale": float(c.scale), "location": float(c.location),
-            "shape": float(c.shape), "storms_per_year": _float(c.storms_per_year),
+            "shape": float(c.shape), "storms_per_year": optional_float(c.storms_per_year),
             "H0_10": float(c.return_value(10)), "H0_50": float(c.return_value(50)),
         },
     }
-
-
-def _float(v: float | None) -> float | None:
-    """``v`` as a float (a whole number written as one in the file is a float in the JSON)."""
-    return None if v is None else float(v)
 
 
 def impulsive_text(impulsive: bool) -> str:
@@ -107,7 +102,7 @@ def chart_band_dict(band: ChartBand) -> dict[str, Any]:
                     "seed": band.seed, "target": float(band.target),
                     "widths": [float(w) for w in band.widths], "lower": [float(x) for x in band.lower],
                     "upper": [float(x) for x in band.upper],
-                    "width_for_target": _float(band.width_for_target)})
+                    "width_for_target": optional_float(band.width_for_target)})
 
 
 def lifetime_json(result: LifetimeResult, model: LifetimeModel, source: str | None = None,
@@ -183,13 +178,13 @@ def chart_json(chart: DesignChart, model: LifetimeModel | None = None, source: s
         out["source"] = source
     out["chart"] = [{k: float(v) for k, v in row.items()} for row in chart.rows()]
     out["target"] = float(chart.target)
-    out["width_for_target"] = _float(chart.width_for_target)
+    out["width_for_target"] = optional_float(chart.width_for_target)
     out["width_tolerance"] = float(chart.tolerance)
     iv = chart.width_interval
     out["width_interval"] = None if iv is None else {
         "level": float(iv.level), "lower": float(iv.lower), "upper": float(iv.upper),
         "resamples": iv.resamples}
-    out["failure_sliding"] = _float(chart.failure_sliding)
+    out["failure_sliding"] = optional_float(chart.failure_sliding)
     out["impulsive"] = chart.impulsive
     out["required_sf"] = float(chart.required_sf)
     out["sf_width"] = float(chart.sf_width)
@@ -378,7 +373,7 @@ def lifetime_brief_json(result: LifetimeResult, model: LifetimeModel, band: Clim
     rec = None if record is None else {
         "path": record.path, "method": record.method,
         "threshold": {"kind": record.threshold[0], "value": float(record.threshold[1])},
-        "gap_hours": float(record.gap_hours), "period_ratio": _float(record.period_ratio)}
+        "gap_hours": float(record.gap_hours), "period_ratio": optional_float(record.period_ratio)}
     f = result.failure
     return rounded({
         "trials": result.trials, "years": result.years, "seed": result.seed,

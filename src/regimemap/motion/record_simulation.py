@@ -24,7 +24,7 @@ from ..io.formats import format_for, record_formats
 from ..io.json import json_text
 from ..io.npz import write_npz
 from ..mechanics.modes import Mode
-from ..records.numbers import rounded
+from ..records.numbers import optional_float, rounded
 
 if TYPE_CHECKING:  # pragma: no cover
     from .record import SimulationRecord
@@ -77,7 +77,7 @@ def simulation_record(record: SimulationRecord) -> dict[str, Any]:
         "settled": bool(sim.settled[0]),
         "end_time": float(sim.end_time[0]),
         "steps": int(sim.steps[0]),
-        "derived": {key: None if v is None else float(v) for key, v in record.derived.items()},
+        "derived": {key: optional_float(v) for key, v in record.derived.items()},
         "inputs": dict(record.inputs),
     }
     if record.design_numbers is not None:

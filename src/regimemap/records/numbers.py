@@ -19,8 +19,8 @@ from typing import Any, TypeVar
 
 import numpy as np
 
-__all__ = ["DIGITS", "format_significant", "json_number", "number", "number_range", "round_sig", "rounded",
-           "short", "significant", "text"]
+__all__ = ["DIGITS", "format_significant", "json_number", "number", "number_range", "optional_float",
+           "round_sig", "rounded", "short", "significant", "text"]
 
 #: Significant digits of the numbers written as text (CSV, JSON).
 DIGITS = 12
@@ -47,6 +47,12 @@ def json_number(v: float, digits: int = DIGITS) -> float | None:
 def text(v: float, digits: int = DIGITS) -> str:
     """The shortest text of ``v`` rounded to ``digits`` significant digits (``repr`` style)."""
     return repr(round_sig(v, digits))
+
+
+def optional_float(v: float | None) -> float | None:
+    """``v`` as a float, or ``None``: a whole number a file gives (``storms_per_year = 10``) is a
+    float in a record's JSON (``10.0``), where :func:`rounded` keeps an int as it is."""
+    return None if v is None else float(v)
 
 
 def rounded(obj: _Tree, digits: int = DIGITS) -> _Tree:
