@@ -5,9 +5,11 @@ the renderer, at :data:`regimemap.drawing.text.tidy.MEASURE_DPI` (so an SVG or P
 does not depend on the resolution of a PNG), and moves each annotation made by
 :func:`make_label` to the first of its :class:`Candidate` places that is inside
 its axes, clear of every other text and clear of the curves.  Used by the
-lifetime figures, the study's and the design sheet; the maps' tidy pass
-(:mod:`regimemap.drawing.text.tidy`) moves each kind of map label with its own movers
-(:mod:`regimemap.drawing.text.relabel`) on the same free space, :class:`Placer`.
+lifetime figures, the study's and the design sheet.  It is the one placer,
+:class:`regimemap.drawing.text.placer.Placer`, measured on a whole figure, with the
+candidates given with each label; the maps' tidy pass (:mod:`regimemap.drawing.text.tidy`)
+uses the same placer with the candidates of each kind of map label
+(:mod:`regimemap.drawing.text.relabel`).
 """
 
 from __future__ import annotations
@@ -20,8 +22,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .relabel import Placer
-from .textboxes import GAP, Box, box_of, boxes_hit
+from .placer import Placer, clear_of
+from .textboxes import GAP, Box, box_of
 from .tidy import MEASURE_DPI
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -122,8 +124,8 @@ class Candidate:
 class LabelPlacer(Placer):
     """Put labels where they meet no other text and no curve, inside their axes.
 
-    The free space is the maps' :class:`~regimemap.drawing.text.relabel.Placer` (the boxes
-    taken and the figure's frame); the candidates are given with each label.  Create it once
+    The free space and the search are the one :class:`~regimemap.drawing.text.placer.Placer`
+    (the boxes taken and the figure's frame); the candidates are given with each label.  Create it once
     the figure's axes, curves and fixed texts are drawn; the texts already in the figure
     (:func:`figure_texts`) are taken.  :meth:`avoid_line` and :meth:`avoid_lines_of` add
     curves; :meth:`place` moves an annotation (offset in points from a point ``xy``) to the
@@ -191,14 +193,6 @@ class LabelPlacer(Placer):
         """A box (pixels at the placer's resolution) that labels keep clear of."""
         self.taken.append(box)
 
-    def _clear_of_lines(self, b: Box) -> bool:
-        x0, y0, x1, y1 = b
-        for p in self.points:
-            if p.size and bool(np.any((p[:, 0] > x0) & (p[:, 0] < x1) & (p[:, 1] > y0)
-                                      & (p[:, 1] < y1))):
-                return False
-        return True
-
     def place(self, ax: Axes, t: Any, candidates: Iterable[Candidate], *,
               texts: Sequence[str] = (), lines: bool = True) -> bool:
         """Move the annotation ``t`` to its first free candidate; hide it if none is free.
@@ -213,7 +207,8 @@ class LabelPlacer(Placer):
         within: Box = (bb.x0 + 1.0, bb.y0 + 1.0, bb.x1 - 1.0, bb.y1 - 1.0)
         cands = list(candidates)
         variants = [t.get_text(), *texts]
-        for need_clear in ((True, False) if lines else (False,)):
+
+        def places() -> Iterator[Any]:
             for text in variants:
                 t.set_text(text)
                 for c in cands:
@@ -221,31 +216,18 @@ class LabelPlacer(Placer):
                     t.xyann = c.offset
                     t.set_ha(c.ha)
                     t.set_va(c.va)
-                    b = self.box(t)
-                    if not self.free(b, within):
-                        continue
-                    if need_clear and not self._clear_of_lines(b):
-                        continue
-                    self.taken.append(b)
-                    patch = t.get_bbox_patch()
-                    if need_clear and patch is not None and t.get_gid() != "boxed":
-                        patch.set_visible(False)
-                    return True
+                    yield t
+
+        for need_clear in ((True, False) if lines else (False,)):
+            _, ok = self.first_free(places(), within, clear_of(self.points) if need_clear else None)
+            if ok:
+                self.take(t)
+                patch = t.get_bbox_patch()
+                if need_clear and patch is not None and t.get_gid() != "boxed":
+                    patch.set_visible(False)
+                return True
         t.set_text(variants[0])
         t.set_visible(False)
-        return False
-
-    def place_legend(self, ax: Axes, leg: Any, locs: Sequence[str]) -> bool:
-        """Put an axes' legend at the first of ``locs`` clear of texts and curves (else the first)."""
-        for loc in locs:
-            leg.set_loc(loc)
-            b = self.box(leg)
-            if any(boxes_hit(b, o) for o in self.taken) or not self._clear_of_lines(b):
-                continue
-            self.taken.append(b)
-            return True
-        leg.set_loc(locs[0])
-        self.take(leg)
         return False
 
 

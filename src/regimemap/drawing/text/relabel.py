@@ -1,8 +1,9 @@
 """Moving one label of a map to a free place: the candidates of each kind of label.
 
-:func:`regimemap.drawing.text.tidy.tidy_figure` keeps the boxes already taken in a
-:class:`Placer` and, for each label that meets another text or leaves the
-figure, calls the mover of its kind:
+:func:`regimemap.drawing.text.tidy.tidy_figure` keeps the boxes already taken in the one
+placer, :class:`regimemap.drawing.text.placer.Placer`, and, for each label that meets another
+text or leaves the figure, calls the mover of its kind.  A mover says only where its label may
+go, in order; :meth:`~regimemap.drawing.text.placer.Placer.first_free` picks the first free place:
 
 * a point's name (:func:`place_annotation`): around the point, then farther
   with a leader line;
@@ -23,7 +24,8 @@ map's records.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
+from itertools import chain
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -31,49 +33,25 @@ import numpy as np
 from ..artists import MapArtists
 from .placement import (
     band_columns,
-    box_hits,
     curve_label_anchor,
     label_anchor,
     leader_label_anchor,
     point_along,
     view_points,
 )
-from .textboxes import GAP, Box, box_of, box_within, boxes_hit
+from .placer import Placer, clear_of
+from .textboxes import Box
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.axes import Axes
-    from matplotlib.backend_bases import RendererBase
-    from matplotlib.figure import Figure
 
-__all__ = ["Placer", "axes_bounds", "inside", "line_pixels", "off_lines", "place_annotation",
+__all__ = ["axes_bounds", "inside", "line_pixels", "off_lines", "place_annotation",
            "place_curve_label", "place_off_view", "place_region_label", "polygon_of",
            "replace_label"]
 
 _RING = [(1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1), (0, -1), (1, 0), (-1, 0)]
 _HA = {1: "left", 0: "center", -1: "right"}
 _VA = {1: "bottom", 0: "center", -1: "top"}
-
-
-class Placer:
-    """The free space of a figure: boxes already taken, and the figure's frame."""
-
-    def __init__(self, fig: Figure, renderer: RendererBase, taken: list[Box]):
-        self.fig = fig
-        self.renderer = renderer
-        self.taken = list(taken)
-        fb = fig.bbox
-        self.frame = (fb.x0 + GAP, fb.y0 + GAP, fb.x1 - GAP, fb.y1 - GAP)
-
-    def box(self, t: Any) -> Box:
-        return box_of(t, self.renderer, GAP / 2)
-
-    def free(self, b: Box, within: Box | None = None) -> bool:
-        if not box_within(b, self.frame) or (within is not None and not box_within(b, within)):
-            return False
-        return not any(boxes_hit(b, o) for o in self.taken)
-
-    def take(self, t: Any) -> None:
-        self.taken.append(self.box(t))
 
 
 def axes_bounds(ax: Axes) -> Box:
@@ -135,35 +113,39 @@ def line_pixels(ax: Axes, art: MapArtists) -> np.ndarray:
 
 def off_lines(b: Box, lines: np.ndarray) -> bool:
     """Does the box (pixels, less a pixel of margin) stay clear of every line?"""
-    return not box_hits((b[0] + 1.0, b[1] + 1.0, b[2] - 1.0, b[3] - 1.0), lines)
+    return clear_of([lines], 1.0)(b)
 
 
 def place_annotation(ax: Axes, t: Any, placer: Placer, within: Box | None,
                       lines: np.ndarray | None = None) -> tuple[Any, bool]:
     """Move an offset annotation (a point's name) to a free place; (artist, placed).
 
-    With ``lines`` (pixels) the first place that is also clear of the lines
-    wins; when every place meets a line, the first free one.
+    Its places: around the point, then farther with a leader line (:func:`_point_candidates`).
+    With ``lines`` (pixels) the first place that is also clear of the lines wins; when every
+    place meets a line, the first free one.
     """
     xy = t.xy
-    if lines is None:
-        lines = np.empty((0, 2))
-    passes = (True, False) if len(lines) else (False,)
-    for clear in passes:
+    label = [t]
+
+    def places() -> Iterator[Any]:
         for offset, ha, va, leader in _point_candidates(t):
-            has_arrow = t.arrow_patch is not None
-            if leader != has_arrow:
-                new = _annotation_like(ax, t, xy, offset, "offset points", ha, va, leader)
-                t.remove()
-                t = new
+            cur = label[0]
+            if leader != (cur.arrow_patch is not None):
+                new = _annotation_like(ax, cur, xy, offset, "offset points", ha, va, leader)
+                cur.remove()
+                label[0] = cur = new
             else:
-                t.xyann = offset
-                t.set_ha(ha)
-                t.set_va(va)
-            b = placer.box(t)
-            if placer.free(b, within) and (not clear or off_lines(b, lines)):
-                return t, True
-    return t, False
+                cur.xyann = offset
+                cur.set_ha(ha)
+                cur.set_va(va)
+            yield cur
+
+    tests = [clear_of([lines], 1.0), None] if lines is not None and len(lines) else [None]
+    for clear in tests:
+        found, ok = placer.first_free(places(), within, clear)
+        if ok:
+            return found, True
+    return label[0], False
 
 
 def place_off_view(t: Any, placer: Placer, within: Box) -> bool:
@@ -171,51 +153,63 @@ def place_off_view(t: Any, placer: Placer, within: Box) -> bool:
     x0, y0 = t.xyann
     n = math.hypot(x0, y0) or 1.0
     ux, uy = x0 / n, y0 / n  # from the edge inwards
-    for k in range(0, 48):
-        back = (k // 8) * 8.0
-        side = ((k % 8 + 1) // 2) * (1 if k % 2 else -1) * 7.0
-        t.xyann = (x0 + back * ux - side * uy, y0 + back * uy + side * ux)
-        if placer.free(placer.box(t), within):
-            return True
-    t.xyann = (x0, y0)
-    return False
+
+    def places() -> Iterator[Any]:
+        for k in range(0, 48):
+            back = (k // 8) * 8.0
+            side = ((k % 8 + 1) // 2) * (1 if k % 2 else -1) * 7.0
+            t.xyann = (x0 + back * ux - side * uy, y0 + back * uy + side * ux)
+            yield t
+
+    _, ok = placer.first_free(places(), within)
+    if not ok:
+        t.xyann = (x0, y0)
+    return ok
 
 
 def place_curve_label(ax: Axes, art: MapArtists, name: str, t: Any, placer: Placer
                        ) -> tuple[Any, bool]:
-    """Move a line's name beside its line, or away from it with a leader line."""
+    """Move a line's name beside its line, or away from it with a leader line.
+
+    Beside the line (:func:`~regimemap.drawing.text.placement.curve_label_anchor`, up to three
+    times, the label's size grown a tenth each time it was not free), then at 80, 60, 40, 20 and
+    90 % along it with a leader (:func:`~regimemap.drawing.text.placement.leader_label_anchor`);
+    each place computed from the space taken so far.
+    """
     cd = art.data.curves.get(name)
     if cd is None:
         return t, False
     k_max, mu_max = art.data.k_max, art.data.mu_max
     size = _size_fraction(ax, placer.box(t))
     lines = [view_points(c.points, k_max, mu_max) for c in art.data.curves.values()]
-    axes_box = axes_bounds(ax)
-    for _attempt in range(3):
-        obstacles = _fractions(ax, placer.taken)
-        at = curve_label_anchor(cd.points, k_max, mu_max, size, lines, obstacles)
-        if at is not None:
-            new = _annotation_like(ax, t, at, at, "data", "center", "center", False)
-            t.remove()
-            t = new
-            if placer.free(placer.box(t), axes_box):
-                return t, True
+    label = [t]
+
+    def redrawn(xy: tuple[float, float], xytext: tuple[float, float], leader: bool) -> Any:
+        new = _annotation_like(ax, label[0], xy, xytext, "data", "center", "center", leader)
+        label[0].remove()
+        label[0] = new
+        return new
+
+    def beside() -> Iterator[Any]:
+        nonlocal size
+        for _attempt in range(3):
+            at = curve_label_anchor(cd.points, k_max, mu_max, size, lines, _fractions(ax, placer.taken))
+            if at is None:
+                return
+            yield redrawn(at, at, False)
             size = (size[0] * 1.1, size[1] * 1.1)
-            continue
-        break
-    for frac in (0.8, 0.6, 0.4, 0.2, 0.9):
-        target = point_along(cd.points, k_max, mu_max, frac)
-        if target is None:
-            break
-        at = leader_label_anchor(target, k_max, mu_max, size, lines, _fractions(ax, placer.taken))
-        if at is None:
-            continue
-        new = _annotation_like(ax, t, target, at, "data", "center", "center", True)
-        t.remove()
-        t = new
-        if placer.free(placer.box(t), axes_box):
-            return t, True
-    return t, False
+
+    def with_leader() -> Iterator[Any]:
+        for frac in (0.8, 0.6, 0.4, 0.2, 0.9):
+            target = point_along(cd.points, k_max, mu_max, frac)
+            if target is None:
+                return
+            at = leader_label_anchor(target, k_max, mu_max, size, lines, _fractions(ax, placer.taken))
+            if at is not None:
+                yield redrawn(target, at, True)
+
+    found, ok = placer.first_free(chain(beside(), with_leader()), axes_bounds(ax))
+    return (found if ok else label[0]), ok
 
 
 def inside(polygon: np.ndarray, xy: tuple[float, float]) -> bool:
@@ -252,25 +246,29 @@ def place_region_label(ax: Axes, art: MapArtists, mode: Any, t: Any, placer: Pla
         t = new
     size = _size_fraction(ax, placer.box(t))
     lines = [view_points(c.points, k_max, mu_max) for c in art.data.curves.values()]
-    for grow in (1.0, 1.15):
-        at = label_anchor(poly, k_max, mu_max, (size[0] * grow, size[1] * grow),
-                          obstacles=_fractions(ax, placer.taken), lines=lines)
-        if at is None:
-            break
-        _move_text(t, at)
-        if inside(poly, at) and placer.free(placer.box(t), axes_box):
-            return t, True
-    # a thin band: on the band, wherever it is free
-    xs, lo, hi = band_columns(poly, k_max, mu_max, 200)
-    room = hi - lo
-    for c in np.argsort(-room, kind="stable")[:200]:
-        if room[c] <= 0.0:
-            break
-        at = (float(xs[c] * k_max), float(0.5 * (lo[c] + hi[c]) * mu_max))
-        _move_text(t, at)
-        if inside(poly, at) and placer.free(placer.box(t), axes_box):
-            return t, True
-    return t, False
+
+    def places() -> Iterator[Any]:
+        for grow in (1.0, 1.15):
+            at = label_anchor(poly, k_max, mu_max, (size[0] * grow, size[1] * grow),
+                              obstacles=_fractions(ax, placer.taken), lines=lines)
+            if at is None:
+                break
+            _move_text(t, at)
+            if inside(poly, at):
+                yield t
+        # a thin band: on the band, wherever it is free
+        xs, lo, hi = band_columns(poly, k_max, mu_max, 200)
+        room = hi - lo
+        for c in np.argsort(-room, kind="stable")[:200]:
+            if room[c] <= 0.0:
+                break
+            at = (float(xs[c] * k_max), float(0.5 * (lo[c] + hi[c]) * mu_max))
+            _move_text(t, at)
+            if inside(poly, at):
+                yield t
+
+    _, ok = placer.first_free(places(), axes_box)
+    return t, ok
 
 
 def _move_text(t: Any, at: tuple[float, float]) -> None:

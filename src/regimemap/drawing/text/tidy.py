@@ -31,8 +31,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..artists import MapArtists
+from .placer import Placer
 from .relabel import (
-    Placer,
     axes_bounds,
     inside,
     line_pixels,
