@@ -148,6 +148,12 @@ USAGE_ERRORS = [
     ("animate", ["--gamma", "3", "--kprime", "0:1:3", "-o", "a.png"], r"unknown file suffix \.png.*use \.gif for the animation"),
     ("animate", ["--gamma", "3", "--kprime", "0:1:100000", "-o", "a.gif"], r"'--kprime'"),
     ("animate", ["--gamma", "3", "--kprime", "0:1:3", "--fps", "0", "-o", "a.gif"], r"'--fps'"),
+    # outcome's required inputs: left out, each is named (not a numpy message from the step count)
+    ("outcome", ["--gamma", "3", "--half-width", "0.2", "--kprime", "0", "--pulse", "half-sine",
+                 "--k-peak", "0.2:1.2:6", "--duration", "0.1:1:6", "-o", "o.svg"], r"Missing option '--mu'"),
+    ("outcome", ["--gamma", "3", "--mu", "0.5", "--kprime", "0", "--pulse", "half-sine",
+                 "--k-peak", "0.2:1.2:6", "--duration", "0.1:1:6", "-o", "o.svg"],
+     r"Missing option '--half-width'"),
 ]
 
 

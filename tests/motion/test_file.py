@@ -154,6 +154,10 @@ def test_the_two_swept_inputs_in_command_line_order_sorted() -> None:
 
 
 @pytest.mark.parametrize("given, message, options", [
+    ({"k_peak": [0.3, 0.9], "duration": [0.2, 0.5], "mu": None},
+     "^missing option\\(s\\) --mu: give the block", ()),
+    ({"k_peak": [0.3, 0.9], "duration": [0.2, 0.5], "half_width": None, "gamma": None},
+     "^missing option\\(s\\) --gamma, --half-width: ", ()),
     ({"k_peak": [0.3, 0.9]}, "give exactly two swept inputs .*; swept: --k-peak$", ()),
     ({"k_peak": [0.3, 0.9], "duration": [0.2, 0.5], "mu": [0.1, 0.2]},
      "swept: --k-peak, --duration, --mu$", ()),

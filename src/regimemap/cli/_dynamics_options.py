@@ -73,12 +73,17 @@ _SWEEPS = " A list a,b,c or a range start:stop:count sweeps it."
 
 def input_option(name: str, swept: bool, metavar: str, default: Any = None, required: bool = False,
                  extra: str = "") -> Callable[[Any], Any]:
-    """``--name`` of input ``name``: one number, or (``swept``) a list or range of them."""
+    """``--name`` of input ``name``: one number, or (``swept``) a list or range of them.
+
+    A ``default`` of None is not passed to click: click 8.3 and later take an explicit None as a
+    default given, and would not refuse a ``required`` option left out.
+    """
     flag = "--" + name.replace("_", "-")
     typ = values_type(name) if swept else input_number(name)
     text = _HELP[name] + (extra if swept else "")
-    return click.option(flag, name, type=typ, default=default, required=required,
-                        metavar=("LIST" if swept else metavar), help=text)
+    given = {} if default is None else {"default": default}
+    return click.option(flag, name, type=typ, required=required,
+                        metavar=("LIST" if swept else metavar), help=text, **given)
 
 
 def block_options(swept: bool) -> Callable[[Any], Any]:

@@ -296,12 +296,16 @@ def map_options(values: Mapping[str, Sequence[float] | None], order: Sequence[st
     Raises
     ------
     OptionError
-        Not exactly two swept inputs, a value twice, a missing or excluded pulse option,
-        loads leaving no weight, dimensionless axes that do not apply, more than
+        A missing block input, not exactly two swept inputs, a value twice, a missing or
+        excluded pulse option, loads leaving no weight, dimensionless axes that do not apply, more than
         :data:`~regimemap.dynamics.limits.MAX_MAP_RUNS` runs.
     """
     vals: dict[str, list[float] | None] = {n: (None if values.get(n) is None else list(values[n] or []))
                                            for n in MAP_INPUTS}
+    missing = [_flag(n) for n in ("gamma", "half_width", "mu") if vals[n] is None]
+    if missing:
+        raise OptionError(f"missing option(s) {', '.join(missing)}: give the block (--gamma, --half-width) "
+                          "and its friction (--mu), one value or a list each")
     swept = _swept_inputs(vals, order)
     shape = _check_pulse(shape, vals)
     fixed = {n: (v[0] if v else None) for n, v in vals.items() if n not in swept}
