@@ -37,6 +37,10 @@ LIMITS = [
     ("width = 15.0", "width = 1e300", "caisson", "width", "1e300", "above 500 m"),
     ("crest = 3.4", "crest = 1e300", "caisson", "crest", "1e300", "above 100 m"),
     ("buoyant_weight = 2312", "buoyant_weight = 1e300", "caisson", "buoyant_weight", "1e300", "kN/m"),
+    # a caisson that weighs nothing in water floats (buoyancy 1: no equivalent block)
+    ("buoyant_weight = 2312", "buoyant_weight = 1e-300", "caisson", "buoyant_weight", "1e-300",
+     "below 0.001 kN/m, a caisson that floats"),
+    ("buoyant_weight = 2312", "buoyant_weight = 0", "caisson", "buoyant_weight", "0", "below 0.001 kN/m"),
     ("armour_depth = 5.6", "armour_depth = 1e-300", "site", "armour_depth", "1e-300", "below 0.01 m"),
 ]
 
@@ -72,6 +76,9 @@ def test_values_inside_the_limits_are_accepted():
     ("depth = 10.1", "depht = 10.1", "site", "depht", "unknown key [site] depht (did you mean 'depth'?)"),
     ("angle = 15", "angle = 95", "wave", "angle", "[wave] angle = 95: out of range"),
     ("friction = 0.6", "friction = true", "caisson", "friction", "[caisson] friction = true: expected a number"),
+    # a friction below 0.01 is no caisson's (and the lifetime's sliding overflows)
+    ("friction = 0.6", "friction = 1e-300", "caisson", "friction",
+     "[caisson] friction = 1e-300: out of range; accepted: a friction coefficient 0.01 <= friction <= 2"),
     ("H0 = 6.3", "H0 = 6.3\nH13 = 5.0", "wave", "H0", "[wave] H0 = 6.3 together with"),
     ("depth = 10.1", "depth = 6.0", "caisson", "base_depth", "[caisson] base_depth = 7.1: the base"),
     ("armour_depth = 5.6", "armour_depth = 7.5", "site", "armour_depth", "[site] armour_depth = 7.5: the top"),

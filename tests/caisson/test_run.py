@@ -195,3 +195,20 @@ def test_each_number_is_declared_once_and_every_output_reads_the_declaration() -
     table = [row[0] for row in record.field_rows()]
     assert table == [s.label for s in shown] + ["mode", "verdict"]
     assert record.field_rows()[2][3] == "wave length of T1/3 at h = 10.1 m"
+
+
+def test_a_heel_pressure_with_no_equilibrium_reads_n_a_and_why_never_inf() -> None:
+    # W' far below U: the resultant falls outside the base, Goda's heel pressure is infinite
+    from regimemap.caisson.record import caisson_json, format_caisson
+
+    light = parse_design(NO_LIFE.replace("buoyant_weight = 2312", "buoyant_weight = 1"))
+    record = run_caisson(light)
+    assert record.numbers.heel_pressure == float("inf")
+    text = format_caisson(record.report, "goda.toml")
+    (row,) = [ln for ln in text.splitlines() if ln.lstrip().startswith("heel pressure")]
+    assert row.split()[2:4] == ["n/a", "kPa"] and "the resultant falls outside the base" in row
+    assert "inf" not in text.replace("infinite", "")
+    assert caisson_json(record.report)["heel_pressure"] is None
+    # a caisson in equilibrium keeps the words of its number
+    normal = format_caisson(run_caisson(parse_design(NO_LIFE)).report, "goda.toml")
+    assert "bearing pressure at the heel" in normal and "n/a" not in normal

@@ -382,7 +382,7 @@ def test_a_bad_lifetime_table_names_the_line(run_cli, tmp_path: Path) -> None:
     path.write_text(text, encoding="utf-8")
     line = 1 + text.splitlines().index(next(ln for ln in text.splitlines() if ln.startswith("shape = -2")))
     failed(run_cli(["lifetime", str(path), "-o", str(tmp_path / "x.png")]), 2,
-           f"{path}, line {line}: [lifetime] shape = -2: out of range; accepted: a Weibull shape k > 0")
+           f"{path}, line {line}: [lifetime] shape = -2: out of range; accepted: a Weibull shape 0.5 <= k <= 5")
     assert files_in(tmp_path) == ["bad.toml"]
 
 

@@ -158,8 +158,13 @@ def test_annual_maxima_and_other_climates() -> None:
 
 #: (line of the example, its replacement, the start of the reported line, expected parts of the message)
 REFUSED = [
-    ("shape = 2.0", "shape = 0", "shape =", ["[lifetime] shape = 0", "out of range", "Weibull shape k > 0"]),
-    ("shape = 2.0", "shape = -1.5", "shape =", ["[lifetime] shape = -1.5", "k > 0"]),
+    ("shape = 2.0", "shape = 0", "shape =", ["[lifetime] shape = 0", "out of range", "Weibull shape 0.5 <= k <= 5"]),
+    ("shape = 2.0", "shape = -1.5", "shape =", ["[lifetime] shape = -1.5", "0.5 <= k <= 5"]),
+    ("shape = 2.0", "shape = 1e308", "shape =", ["[lifetime] shape = 1e308", "out of range", "0.5 <= k <= 5"]),
+    ("shape = 2.0", "shape = 1e-300", "shape =", ["[lifetime] shape = 1e-300", "out of range"]),
+    # one sliding twice (as 0.30 and 0.3): one of its two requirements would be dropped unsaid
+    ('# allowed = {"0.1" = 0.2, "0.3" = 0.05}', 'allowed = {"0.1" = 0.2, "0.30" = 0.05, "0.3" = 0.1}', "allowed =",
+     ["[lifetime] allowed = ", "the sliding '0.3' is given twice (also as '0.30')"]),
     ("shape = 2.0", 'shape = "2"', "shape =", ['[lifetime] shape = "2"', "expected a number, found a string"]),
     ("H0_50 = 6.3", "H0_50 = 5.0", "H0_50 =",
      ["[lifetime] H0_50 = 5.0", "not above [lifetime] H0_10 = 5.0", "H0_10 < H0_50"]),

@@ -82,7 +82,7 @@ def test_plot_format_option(runner, tmp_path):
     (["--kprime", "2"], ["--kprime", "[-1, 1]"]),
     (["--resolution", "1"], ["--resolution", "[2, 5000]"]),
     (["--dpi", "0"], ["--dpi", "[20, 1200]"]),
-    (["--k-max", "-2"], ["--k-max", "> 0"]),
+    (["--k-max", "-2"], ["--k-max", "[1e-06, 1e+06]"]),
     (["--modes", "RE,XX"], ["--modes", "RE, SL, RO, SRO-, SRO+, SRO'-"]),
     (["--point", "0.4"], ["--point", "K,MU"]),
     (["--point", "-1,0.5"], ["--point", ">= 0"]),

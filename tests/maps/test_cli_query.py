@@ -74,7 +74,7 @@ def test_kprime_range_in_message():
     r = run("classify", "--gamma", "1", "--kprime", "2", "--k", "1", "--mu", "1")
     assert r.exit_code == 2 and "[-1, 1]" in r.output
     r = run("classify", "--gamma", "1", "--kprime", "0", "--k", "-1", "--mu", "1")
-    assert r.exit_code == 2 and ">= 0" in r.output
+    assert r.exit_code == 2 and "[0, 1e+100]" in r.output
 
 
 @pytest.fixture()

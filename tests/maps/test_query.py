@@ -162,6 +162,18 @@ def test_known_margin_above_c():
     assert mm.up.at == pytest.approx(1.0 / 3.0 - 0.12, rel=1e-12)
 
 
+@pytest.mark.parametrize("k,mu", [(0.3, 1e100), (1e100, 0.5), (1e100, 1e100), (0.5 * 1e100, 0.6)])
+def test_margins_at_the_largest_k_and_mu_probe_no_further(k, mu):
+    # the probe beyond the last root (2 x + 1) stops at MAX_VALUE: it used to be refused there
+    from regimemap.mechanics.validation import MAX_VALUE
+
+    r = query_point(k, mu, 3.0, 0.4)
+    for m in (r.margin_k, r.margin_mu):
+        for c in (m.up, m.down):
+            assert c is None or 0.0 <= c.at <= MAX_VALUE
+    assert r.mode == int(classify(k, mu, 3.0, 0.4))
+
+
 @pytest.mark.slow
 def test_margin_at_zero():
     r = query_point(0.0, 0.0, 3.0, 0.4)

@@ -19,15 +19,19 @@ from regimemap import Parameters, classify, label_grid
 from regimemap.mechanics.validation import (
     GAMMA_MAX,
     GAMMA_MIN,
+    MAX_AXIS,
     MAX_GRID_POINTS,
     MAX_RESOLUTION,
     MAX_VALUE,
+    MIN_AXIS,
     check_axis,
+    check_axis_end,
     check_gamma,
     check_kprime,
     check_nonnegative_array,
     check_positive,
     check_resolution,
+    check_weight,
 )
 
 NAN = math.nan
@@ -267,6 +271,39 @@ def test_check_positive(bad):
 @pytest.mark.parametrize("good", [1e-300, 1, 2.5, np.float32(3), MAX_VALUE])
 def test_check_positive_accepts(good):
     assert check_positive("mu_max", good) == float(good)
+
+
+@pytest.mark.parametrize("bad", [0, 1e-20, np.nextafter(MIN_AXIS, 0), np.nextafter(MAX_AXIS, INF), NAN, INF,
+                                 "1", None])
+def test_check_axis_end(bad):
+    with pytest.raises(ValueError, match=r"^mu_max must be a finite number in \[1e-06, 1e\+06\], got "):
+        check_axis_end("mu_max", bad)
+
+
+@pytest.mark.parametrize("good", [MIN_AXIS, 1e-3, 1, MAX_AXIS])
+def test_check_axis_end_accepts_its_ends(good):
+    assert check_axis_end("k_max", good) == good
+
+
+# -- a block that weighs nothing at every push -------------------------------------------------------
+
+@pytest.mark.parametrize("buoyancy,uplift", [(0.0, 1.0), (0.5, 0.5), (0.3, 0.7), (0.25, 0.75)])
+def test_a_weightless_block_is_refused_naming_the_sum(buoyancy, uplift):
+    assert 1.0 - buoyancy - uplift == 0.0
+    with pytest.raises(ValueError, match=r"^uplift must not be 1 - buoyancy when uplift_ratio is 0: .* = 1$"):
+        Parameters(3.0, 0.4, buoyancy=buoyancy, uplift=uplift)
+
+
+@pytest.mark.parametrize("loads", [dict(uplift=1.0, uplift_ratio=0.1), dict(uplift=np.nextafter(1.0, 0)),
+                                   dict(uplift=2.0), dict(buoyancy=0.5, uplift=0.4)])
+def test_a_block_with_some_weight_or_an_uplift_ratio_is_mapped(loads):
+    p = Parameters(3.0, 0.4, **loads)
+    check_weight(p.buoyancy, p.uplift, p.uplift_ratio)
+    from regimemap.mechanics.curves import map_curves
+
+    assert map_curves(p)  # the curves of the map (mu = (q0 + q1 k)/W) exist
+    grid = label_grid(np.linspace(0.0, 2.0, 9), np.linspace(0.0, 2.0, 9), p.gamma, p.kprime, **p.loads)
+    assert grid.shape == (9, 9)
 
 
 @pytest.mark.parametrize("bad", [1, 0, -5, MAX_RESOLUTION + 1, 10**12, 2.5, NAN, INF, 1e300, "1e3", "2.0",

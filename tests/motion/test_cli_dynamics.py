@@ -133,14 +133,16 @@ def test_simulate_pulse_file(tmp_path):
 # -- simulate: usage errors exit 2, name the option and the range, write nothing ---------------------
 
 @pytest.mark.parametrize("args,pattern", [
-    (["--half-width", "-1"], r"'--half-width'.*half_width must be a finite number in \(0, 1000\], got '-1'"),
+    (["--half-width", "-1"], r"'--half-width'.*half_width must be a finite number in \[0\.001, 1000\], got '-1'"),
+    (["--half-width", "1e-300"], r"'--half-width'.*\[0\.001, 1000\], got '1e-300'"),
     (["--mu", "nan"], r"'--mu'.*mu must be a finite number in \[0, 100\]"),
     (["--duration", "0"], r"'--duration'.*duration must be a finite number in \[0\.0001, 100\]"),
     (["--k-peak", "x"], r"'--k-peak'.*not a number"),
     (["--restitution", "2"], r"'--restitution'.*\[0, 1\]"),
     (["--buoyancy", "1"], r"'--buoyancy'.*\[0, 1\)"),
     (["--buoyancy", "0.5", "--uplift", "0.6"], r"'--uplift' / '--buoyancy'.*buoyancy \+ uplift must be < 1"),
-    (["--gyration", "5"], r"'--gyration'.*\(0, 3\.16228\] for gamma = 3"),
+    (["--gyration", "5"], r"'--gyration'.*\[0\.001, 3\.16228\] for gamma = 3"),
+    (["--gyration", "1e-300"], r"'--gyration'.*\[0\.001, 1000\], got '1e-300'"),
     (["--uplift-arm", "1.5"], r"'--uplift-arm'.*\[-1, 1\]"),
     (["--gamma", "0"], r"'--gamma'.*\[0\.001, 1000\]"),
     (["--kprime", "2"], r"'--kprime'.*\[-1, 1\]"),

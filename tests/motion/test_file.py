@@ -117,7 +117,7 @@ def test_a_run_over_the_step_limit_says_why() -> None:
     assert str(e.value) == (
         f"the run needs up to {steps} time steps (the pulse of 100 s at a step of at most 0.004/p = "
         f"{0.004 / p:.3g} s, then 60/p s of free motion), more than the limit of {MAX_STEPS}; give a "
-        "shorter pulse")
+        "shorter pulse (or a larger block: p grows as the half-width shrinks)")
 
 
 def test_a_map_takes_the_block_of_smallest_p() -> None:

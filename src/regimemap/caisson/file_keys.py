@@ -48,6 +48,9 @@ WIDTH_RANGE = (0.05, 500.0)
 MAX_CREST = 100.0
 MAX_BERM = 1000.0
 MAX_WEIGHT = 1e7
+# the least buoyant weight, kN/m (1 N/m): below it W'/(m g) rounds away beside the buoyancy
+# of any section in range, and the block would float (buoyancy = 1)
+MIN_WEIGHT = 1e-3
 
 
 def _length(lo: float, hi: float) -> Callable[[float], bool]:
@@ -174,12 +177,16 @@ class CaissonSpec:
                             default=0.0, why=_beyond(0.0, MAX_BERM, "m", "metres expected"),
                             example="berm_width = 8.0      # BM, berm width (Takahashi's impulsive "
                                     "coefficient)")
-    friction: float = key("a friction coefficient 0 < friction <= 2", lambda x: 0.0 < x <= 2.0,
+    friction: float = key("a friction coefficient 0.01 <= friction <= 2 (ice on steel is about 0.02)",
+                          lambda x: 0.01 <= x <= 2.0,
                           example="friction = 0.6        # mu, caisson on rubble")
-    buoyant_weight: float | None = key(f"a buoyant weight 0 < W' <= {MAX_WEIGHT:g} in kN per metre",
-                                       lambda x: 0.0 < x <= MAX_WEIGHT, default=None,
-                                       why=_beyond(0.0, MAX_WEIGHT, "kN/m", "more than forty times a 100 m "
-                                                   "square block of concrete; kN/m expected"),
+    buoyant_weight: float | None = key(f"a buoyant weight {MIN_WEIGHT:g} <= W' <= {MAX_WEIGHT:g} in kN per "
+                                       "metre", lambda x: MIN_WEIGHT <= x <= MAX_WEIGHT, default=None,
+                                       why=_out_of_range(lambda x: (
+                                           f"below {MIN_WEIGHT:g} kN/m, a caisson that floats (its buoyancy "
+                                           "is all its weight)" if x < MIN_WEIGHT else
+                                           f"above {MAX_WEIGHT:g} kN/m, more than forty times a 100 m square "
+                                           "block of concrete; kN/m expected")),
                                        example="buoyant_weight = 2312 # W', weight in still water, kN/m")
     concrete_fraction: float | None = key("an area fraction 0 <= concrete_fraction <= 1",
                                           lambda x: 0.0 <= x <= 1.0, default=None,

@@ -7,6 +7,7 @@ breakwater), lengths in m; the loaded block's numbers are dimensionless.
 
 from __future__ import annotations
 
+import math
 import operator
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field, fields
@@ -69,6 +70,8 @@ class Number:
     heading : str
         The lines before its row (a section of the report), which may name the values of
         :func:`text_context`.
+    undefined : str
+        The row's words when the number is not finite (it then reads ``n/a``), saying why.
     """
 
     path: str
@@ -78,6 +81,7 @@ class Number:
     words: str = ""
     digits: int = 4
     heading: str = ""
+    undefined: str = ""
 
     def value(self, r: CaissonReport) -> float:
         """The number in ``r``, in the report's unit (unrounded)."""
@@ -91,9 +95,9 @@ class Number:
 
 
 def number(path: str, unit: str = "", label: str = "", words: str = "", *, kilo: bool = False,
-           digits: int = 4, heading: str = "") -> Any:
+           digits: int = 4, heading: str = "", undefined: str = "") -> Any:
     """A field of :class:`CaissonNumbers`, declared once (:class:`Number`)."""
-    return field(metadata={"number": Number(path, kilo, unit, label, words, digits, heading)})
+    return field(metadata={"number": Number(path, kilo, unit, label, words, digits, heading, undefined)})
 
 
 _A = "analysis."
@@ -146,7 +150,9 @@ class CaissonNumbers:
                                heading="safety factors (Goda)")
     SF_overturning: float = number(_A + "stability.overturning", "", "overturning", "(W' t - Mu) / Mp, t = B")
     heel_pressure: float = number(_A + "stability.heel_pressure", "kPa", "heel pressure",
-                                  "bearing pressure at the heel", kilo=True)
+                                  "bearing pressure at the heel", kilo=True,
+                                  undefined="no bearing at the heel: the resultant falls outside the base "
+                                            "(Goda 2000, Sect. 4.2)")
     te: float = number(_A + "stability.te", "m")
     B: float = number(_A + "block.B", "m", "B", "half the width of the upright section",
                       heading="equivalent loaded block (docs/waves.md, Sect. 7)")
@@ -199,8 +205,9 @@ def number_rows(n: Mapping[str, float],
                 context: Mapping[str, str]) -> list[tuple[str, float, str, str, int, str]]:
     """``(label, value, unit, words, digits, heading)`` of every number with a row, in order, its words and
     heading filled from ``context`` (:func:`text_context`)."""
-    return [(s.label, n[name], s.text_unit, s.words.format_map(context), s.digits,
-             s.heading.format_map(context)) for name, s in NUMBERS.items() if s.label]
+    return [(s.label, n[name], s.text_unit,
+             (s.undefined if s.undefined and not math.isfinite(n[name]) else s.words).format_map(context),
+             s.digits, s.heading.format_map(context)) for name, s in NUMBERS.items() if s.label]
 
 
 def impulsive_words(r: CaissonReport) -> str:

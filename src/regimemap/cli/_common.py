@@ -17,11 +17,13 @@ from ..mechanics.validation import (
     GAMMA_MIN,
     LOAD_LIMITS,
     MAX_AXIS,
+    MIN_AXIS,
+    check_axis_end,
     check_gamma,
     check_kprime,
     check_loads,
-    check_positive,
     check_resolution,
+    check_weight,
 )
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -47,7 +49,7 @@ __all__ = [
     "kprime_option",
     "load_options",
     "load_range",
-    "positive_float",
+    "axis_end",
     "resolution_type",
 ]
 
@@ -92,9 +94,10 @@ def _number(name: str, check: Callable[[float], Any], allowed: str) -> Checked:
 GAMMA = _number("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
 
 
-def positive_float(name: str, hi: float = MAX_AXIS) -> ParamType:
-    """A click type for a finite float in (0, hi] (default: MAX_AXIS, for axis limits)."""
-    return _number(name, lambda v: check_positive(name, v, hi), f"a finite number > 0 (at most {hi:g})")
+def axis_end(name: str) -> ParamType:
+    """A click type for the end of a map's axis, a finite float in [MIN_AXIS, MAX_AXIS]."""
+    allowed = f"a finite number in [{MIN_AXIS:g}, {MAX_AXIS:g}]"
+    return _number(name, lambda v: check_axis_end(name, v), allowed)
 
 
 #: ``--resolution``: samples along an axis, a whole number in [2, 5000].
@@ -252,6 +255,12 @@ def load_options(f: Callable[..., Any] | None = None, *, sweep: int | None = Non
         loads = {name: v for name, v in loads.items() if v is not None}
         if sweep is None and kwargs.get("kprime") is not None:
             kwargs["kprime"] = check_kprime_crest(kwargs["kprime"], loads.get("crest", 1.0))
+        if sweep is None:
+            try:
+                check_weight(loads.get("buoyancy", 0.0), loads.get("uplift", 0.0),
+                             loads.get("uplift_ratio", 0.0))
+            except ValueError as exc:
+                raise click.BadParameter(str(exc), param_hint="'--uplift'") from None
         return f(*args, loads=loads, **kwargs)
 
     out: Callable[..., Any] = wrapper
@@ -323,7 +332,7 @@ def axis_options(k_help: str, mu_help: str, *, metavars: bool = True) -> Callabl
     (``K-MAX``, ``k-max must be ...``).
     """
     return option_group(*(
-        click.option(f"--{axis}-max", type=positive_float(f"{axis}{'_' if metavars else '-'}max"),
+        click.option(f"--{axis}-max", type=axis_end(f"{axis}{'_' if metavars else '-'}max"),
                      default=None, metavar=axis.upper() if metavars else None, help=text)
         for axis, text in (("k", k_help), ("mu", mu_help))))
 

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING, Any
 import click
 
 from ..io.formats import suffix_of
+from ..mechanics.validation import MAX_VALUE
 from ._common import Checked, gamma_option, json_option, kprime_option, load_options, output_option
 from ._inputs import POINTS_FILE
 from ._main import RunError
@@ -27,8 +28,8 @@ def _non_negative(what: str) -> Checked:
             v = float(text)
         except ValueError:
             v = math.nan
-        if not math.isfinite(v) or v < 0.0:
-            raise ValueError(f"{what} must be a finite number >= 0, got {text!r}")
+        if not (math.isfinite(v) and 0.0 <= v <= MAX_VALUE):
+            raise ValueError(f"{what} must be a finite number in [0, {MAX_VALUE:g}], got {text!r}")
         return v
 
     return Checked("number", check)
@@ -41,9 +42,9 @@ def _non_negative(what: str) -> Checked:
 @gamma_option(required=False)
 @kprime_option(required=False)
 @click.option("--k", "k", type=_non_negative("k"), metavar="K",
-              help="Force F/(mg) >= 0 (one point).")
+              help=f"Force F/(mg) in [0, {MAX_VALUE:g}] (one point).")
 @click.option("--mu", "mu", type=_non_negative("mu"), metavar="MU",
-              help="Friction coefficient >= 0 (one point).")
+              help=f"Friction coefficient in [0, {MAX_VALUE:g}] (one point).")
 @click.option("--points", "points_file", type=POINTS_FILE,
               metavar="FILE.csv",
               help="Classify every row of a CSV with columns k,mu and optionally gamma,kprime,name.")

@@ -1,7 +1,7 @@
 """The inputs of a simulation, their ranges and checks, and the work limits (no matplotlib).
 
 Every check raises :class:`ValueError` naming the input, the allowed range and
-the value received, e.g. ``half_width must be a finite number in (0, 1000], got -1.0``;
+the value received, e.g. ``half_width must be a finite number in [0.001, 1000], got -1.0``;
 the command line (``regimemap simulate``, ``regimemap outcome``) and the pulse
 file reader use the same ranges.
 """
@@ -65,7 +65,8 @@ class Limit:
 INPUT_LIMITS: dict[str, Limit] = {
     "gamma": Limit(GAMMA_MIN, GAMMA_MAX),
     "kprime": Limit(-1.0, 1.0),
-    "half_width": Limit(0.0, 1000.0, open_lo=True, unit="m"),
+    # a millimetre: below it p (about 1/sqrt(B)) and the step count grow without bound
+    "half_width": Limit(1e-3, 1000.0, unit="m"),
     "mu": Limit(0.0, 100.0),
     "k_peak": Limit(0.0, 100.0),
     "duration": Limit(1e-4, 100.0, unit="s"),
@@ -75,7 +76,9 @@ INPUT_LIMITS: dict[str, Limit] = {
     "uplift": Limit(0.0, 1.0, open_hi=True),
     "uplift_ratio": Limit(0.0, 10.0),
     "uplift_arm": Limit(-1.0, 1.0),
-    "gyration": Limit(0.0, 1000.0, open_lo=True),
+    # below about 1e-8 the rotational inertia m (i B)^2 is too small for the contact solve in
+    # floats (no admissible state, then overflow); every real block has i > 0.3
+    "gyration": Limit(1e-3, 1000.0),
     # the smallest largest rotation that counts as rocking (--min-rotation), in degrees
     "min_rotation": Limit(0.0, 90.0, unit="deg"),
     # a sampled pulse (pulse file): force and its height at each sample time
@@ -120,12 +123,14 @@ def check_net_weight(buoyancy: float, uplift: float) -> None:
 def check_gyration(gyration: float, gamma: float) -> float:
     """The radius of gyration about C over B: at most the half diagonal sqrt(1 + gamma^2).
 
-    (A mass inside the rectangle has I <= m R^2 about C.)  Returns i2 = gyration^2.
+    (A mass inside the rectangle has I <= m R^2 about C; the lower end is that of
+    :data:`INPUT_LIMITS`.)  Returns i2 = gyration^2.
     """
     top = math.hypot(1.0, gamma)
-    if not 0.0 < gyration <= top * (1.0 + 1e-12):
-        raise ValueError(f"gyration must be a finite number in (0, sqrt(1 + gamma^2)] = "
-                         f"(0, {top:.6g}] for gamma = {gamma:g}, got {gyration:g}")
+    lo = INPUT_LIMITS["gyration"].lo
+    if not lo <= gyration <= top * (1.0 + 1e-12):
+        raise ValueError(f"gyration must be a finite number in [{lo:g}, sqrt(1 + gamma^2)] = "
+                         f"[{lo:g}, {top:.6g}] for gamma = {gamma:g}, got {gyration:g}")
     return gyration * gyration
 
 
@@ -158,7 +163,8 @@ def check_run_steps(block: Block, duration: float) -> int:
         raise ValueError(
             f"the run needs up to {steps} time steps (the pulse of {duration:g} s at a step of at most "
             f"{FREE_STEP:g}/p = {FREE_STEP / float(block.p):.3g} s, then {FREE_TIME:g}/p s of free motion), "
-            f"more than the limit of {MAX_STEPS}; give a shorter pulse")
+            f"more than the limit of {MAX_STEPS}; give a shorter pulse (or a larger block: p grows as the "
+            f"half-width shrinks)")
     return steps
 
 

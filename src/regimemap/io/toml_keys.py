@@ -301,6 +301,9 @@ class KeyReader:
                 raise self.bad(table, key, v, f"the sliding {name!r} is not > 0 m")
             if isinstance(p, bool) or not isinstance(p, (int, float)) or not 0.0 <= float(p) <= 1.0:
                 raise self.bad(table, key, v, f"the probability {p!r} of {name} m is not in [0, 1]")
+            if x in out:
+                first = next(n for n, _ in _flatten(v) if float(n) == x)
+                raise self.bad(table, key, v, f"the sliding {name!r} is given twice (also as {first!r})")
             out[x] = float(p)
         return dict(sorted(out.items()))
 

@@ -26,12 +26,16 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-__all__ = ["DISTRIBUTIONS", "FITTED_DISTRIBUTIONS", "Climate"]
+__all__ = ["DISTRIBUTIONS", "FITTED_DISTRIBUTIONS", "WEIBULL_SHAPE_RANGE", "Climate"]
 
 FloatArray = NDArray[np.float64]
 
 #: The storm-peak distributions of two return values or of annual maxima (the design file's).
 DISTRIBUTIONS: tuple[str, ...] = ("weibull", "gumbel")
+#: The Weibull shape k a storm climate may take, fixed or given: Goda's storm peaks take
+#: 0.75 to 2 (Goda 2000, Sect. 11.2); far outside, the return values of H0_10 and H0_50
+#: overflow or the climate is one height for every storm.
+WEIBULL_SHAPE_RANGE: tuple[float, float] = (0.5, 5.0)
 #: The distributions a record's fit gives too (:mod:`regimemap.climate`): the generalised Pareto
 #: of storm peaks over the threshold ``B`` and the generalised extreme value of annual maxima;
 #: for both ``shape`` is ``xi`` (any sign).

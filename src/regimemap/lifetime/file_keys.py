@@ -23,6 +23,9 @@ from typing import TYPE_CHECKING, Any
 # significant periods of sea waves, 1-30 s: the design file's limits of the physics of sea waves
 from ..caisson.file_keys import MAX_HEIGHT, PERIOD_RANGE
 from ..io.toml_keys import Key, key, keys_of
+from .climate import WEIBULL_SHAPE_RANGE
+
+_K_LO, _K_HI = WEIBULL_SHAPE_RANGE
 
 if TYPE_CHECKING:
     from .file_record import RecordSpec
@@ -106,9 +109,10 @@ class LifetimeSpec:
         lambda x: x in ("weibull", "gumbel"), kind="text", default="weibull",
         example="distribution = \"weibull\"  # storm peaks H0': \"weibull\" or \"gumbel\"")
     shape: float = key(
-        "a Weibull shape k > 0 (default 2; fitting annual_maxima needs k > 1)", _positive,
+        f"a Weibull shape {_K_LO:g} <= k <= {_K_HI:g} (default 2; Goda's storm peaks take 0.75 to 2; "
+        "fitting annual_maxima needs k > 1)", lambda x: _K_LO <= x <= _K_HI,
         default=2.0,
-        example="shape = 2.0               # Weibull shape k (> 0)")
+        example=f"shape = 2.0               # Weibull shape k ({_K_LO:g} to {_K_HI:g})")
     H0_10: float | None = key(
         f"the 10-year return value of H0', 0 < H0_10 <= {MAX_HEIGHT:g} m (the largest "
         "significant heights measured are about 20 m)", _height, why=_why_height, default=None,

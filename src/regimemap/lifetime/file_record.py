@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 from regimemap.climate.wave_record import HS_MAX
 
 from ..io.toml_keys import Key, KeyReader, key, keys_of, number_of
+from .climate import WEIBULL_SHAPE_RANGE
 
 if TYPE_CHECKING:
     from regimemap.climate import ClimateResult
@@ -70,7 +71,8 @@ class RecordSpec:
                            default=48.0)
     distribution: str | None = key('"gpd" or "weibull" (pot; default gpd), "gumbel" or "gev" '
                                    "(annual-maxima; default gumbel)", kind="text", default=None)
-    shape: float = key("the fixed Weibull shape k, 0.5 to 5 (default 2)", lambda x: 0.5 <= x <= 5.0,
+    shape: float = key(f"the fixed Weibull shape k, {WEIBULL_SHAPE_RANGE[0]:g} to {WEIBULL_SHAPE_RANGE[1]:g} "
+                       "(default 2)", lambda x: WEIBULL_SHAPE_RANGE[0] <= x <= WEIBULL_SHAPE_RANGE[1],
                        default=2.0)
     coverage: float = key("the least share of a calendar year observed for its annual maximum, in (0, 1] "
                           "(default 0.8)", lambda x: 0.0 < x <= 1.0, default=0.8)

@@ -59,7 +59,7 @@ from ..mechanics import constants as C
 from ..mechanics.loads import BlockConstants, block_constants
 from ..mechanics.modes import Mode
 from ..mechanics.regions import affine_terms, column_intervals, rule_expressions
-from ..mechanics.validation import check_gamma, check_kprime, check_loads, check_nonnegative_array
+from ..mechanics.validation import MAX_VALUE, check_gamma, check_kprime, check_loads, check_nonnegative_array
 from .classify import classify
 
 __all__ = [
@@ -237,7 +237,7 @@ def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndar
     """Nearest change of mode from x in one direction; returns (found, at, to)."""
     n = x.size
     xc = x[:, None]
-    ok = np.isfinite(roots) & (roots >= 0.0)
+    ok = np.isfinite(roots) & (roots >= 0.0) & (roots <= MAX_VALUE)  # a probe stays a valid k or mu
     if up:
         ok &= roots > xc
         cand = np.sort(np.where(ok, roots, np.inf), axis=1)
@@ -270,8 +270,9 @@ def _walk(var: str, x: np.ndarray, other: np.ndarray, g: np.ndarray, kp: np.ndar
         prev_valid &= vi
     if up:
         # the open half-line beyond the last root: one probe suffices (no root there)
-        probes[:, 2 * m] = 2.0 * prev + 1.0
-        pvalid[:, 2 * m] = True
+        beyond = np.minimum(2.0 * prev + 1.0, MAX_VALUE)
+        probes[:, 2 * m] = beyond
+        pvalid[:, 2 * m] = beyond > prev  # nothing beyond the largest k or mu accepted
     else:
         pvalid[:, 2 * m] = False  # nothing below 0
         probes[:, 2 * m] = np.nan

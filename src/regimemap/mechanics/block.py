@@ -20,7 +20,7 @@ from typing import Any
 
 from . import constants as C
 from .loads import BlockConstants, block_constants
-from .validation import check_gamma, check_kprime, check_loads
+from .validation import check_gamma, check_kprime, check_loads, check_weight
 
 __all__ = ["Case", "Parameters", "case_of"]
 
@@ -170,6 +170,7 @@ class Parameters:
     def __post_init__(self) -> None:
         beta, u, nu, eu, gy, crest = check_loads(self.buoyancy, self.uplift, self.uplift_ratio,
                                                   self.uplift_arm, self.gyration, self.crest)
+        check_weight(beta, u, nu)
         g = check_gamma(self.gamma)
         kp = check_kprime(self.kprime, crest)
         for name, value in (("gamma", g), ("kprime", kp), ("buoyancy", beta), ("uplift", u),

@@ -21,6 +21,7 @@ __all__ = [
     "check_gamma",
     "check_kprime",
     "check_loads",
+    "check_weight",
     "check_positive",
     "check_nonnegative_array",
     "check_axis",
@@ -31,6 +32,8 @@ __all__ = [
     "GAMMA_MAX",
     "MAX_VALUE",
     "MAX_AXIS",
+    "MIN_AXIS",
+    "check_axis_end",
     "LOAD_LIMITS",
 ]
 
@@ -50,6 +53,9 @@ MAX_VALUE = 1e100
 #: Largest end of a plotted or exported axis (--k-max, --mu-max): the view is
 #: sampled a little beyond it, and the samples must stay below MAX_VALUE.
 MAX_AXIS = 1e6
+#: Smallest end of a plotted or exported axis: near 1e-14 the other axis's automatic
+#: end rounds to 0 and the view has no width.
+MIN_AXIS = 1e-6
 #: The loads of a block and their allowed ranges, as
 #: ``name: (low, high, low open, high open)``: buoyancy beta in [0, 1) (beta = 1
 #: floats the block), uplift u and its ratio nu to the push >= 0, the uplift's
@@ -170,11 +176,39 @@ def check_loads(buoyancy: Any = 0.0, uplift: Any = 0.0, uplift_ratio: Any = 0.0,
             _check_load("crest", crest))
 
 
+def check_weight(buoyancy: float, uplift: float, uplift_ratio: float) -> None:
+    """Refuse a block that weighs nothing at every push: W = 1 - beta - u - nu k = 0 for all k.
+
+    With buoyancy + uplift = 1 and no uplift ratio the normal force is zero whatever the
+    push, so no friction holds the block and the map's lines mu = (q0 + q1 k)/W are
+    undefined.  A block lighter or heavier than that (W0 < 0 lifts off, W0 > 0 rests) is
+    mapped as usual.
+
+    Raises
+    ------
+    ValueError
+        Naming the uplift and the sum, e.g. ``uplift must not be 1 - buoyancy ...``.
+    """
+    if 1.0 - buoyancy - uplift == 0.0 and uplift_ratio == 0.0:
+        raise ValueError(f"uplift must not be 1 - buoyancy when uplift_ratio is 0: the block would "
+                         f"weigh nothing at every push (W = 1 - buoyancy - uplift = 0), got buoyancy "
+                         f"{buoyancy:g} + uplift {uplift:g} = 1")
+
+
 def check_positive(name: str, value: Any, hi: float = MAX_VALUE) -> float:
     """Return ``value`` as a float if it is > 0 and <= ``hi`` (default MAX_VALUE = 1e100), else raise."""
     allowed = f"a finite number > 0 (at most {hi:g})"
     v = _as_float(name, value, allowed)
     if not math.isfinite(v) or v <= 0.0 or v > hi:
+        raise ValueError(f"{name} must be {allowed}, got {_describe(value)}")
+    return v
+
+
+def check_axis_end(name: str, value: Any) -> float:
+    """Return the end of a map's axis (``k_max``, ``mu_max``) as a float in [MIN_AXIS, MAX_AXIS], or raise."""
+    allowed = f"a finite number in [{MIN_AXIS:g}, {MAX_AXIS:g}]"
+    v = _as_float(name, value, allowed)
+    if not MIN_AXIS <= v <= MAX_AXIS:
         raise ValueError(f"{name} must be {allowed}, got {_describe(value)}")
     return v
 

@@ -82,11 +82,12 @@ def _rounded(obj: Any, digits: int) -> Any:
 def format_significant(x: float, digits: int = 4) -> str:
     """``x`` to ``digits`` significant digits for a report: ``26210`` (not ``2.621e+04``), ``0.5200``.
 
-    Trailing zeros are kept (they state the precision); non-finite values read
-    ``inf`` or ``n/a``; a value that rounds to zero reads ``0``.
+    Trailing zeros are kept (they state the precision); a value that is not finite
+    (an infinite heel pressure: no equilibrium) reads ``n/a``, never ``inf``; a value
+    that rounds to zero reads ``0``.
     """
     if not math.isfinite(x):
-        return "inf" if x > 0 else "n/a"
+        return "n/a"
     if 10.0 ** digits <= abs(float(f"{x:.{digits}g}")) < 1e12:  # 9999.7 to 4 digits: 10000
         s = f"{x:.0f}"
     else:
@@ -102,12 +103,10 @@ def significant(x: float, digits: int = 4) -> str:
 
 
 def number(x: float, digits: int = 4) -> str:
-    """``x`` to ``digits`` significant digits, plainly: ``0.2525``, ``1.2e+05``, ``n/a`` for NaN."""
+    """``x`` to ``digits`` significant digits, plainly: ``0.2525``, ``1.2e+05``, ``n/a`` when not finite."""
     x = float(x)
-    if math.isnan(x):
+    if not math.isfinite(x):
         return "n/a"
-    if math.isinf(x):
-        return "inf" if x > 0 else "-inf"
     text = f"{x:.{digits}g}"
     return "0" if float(text) == 0.0 else text
 
