@@ -8,9 +8,12 @@ atomic path and survives one real failure.
 from __future__ import annotations
 
 import builtins
+import contextlib
 import errno
 import io
 import os
+import stat
+import threading
 import zipfile
 from pathlib import Path
 from xml.etree import ElementTree
@@ -211,3 +214,68 @@ def writer_params(keys=None) -> list:
 
     return [pytest.param(k, marks=pytest.mark.render) if SINGLE_FILE_WRITERS[k][0] in DRAWING_COMMANDS else k
             for k in sorted(SINGLE_FILE_WRITERS if keys is None else keys)]
+
+
+# -- devices and FIFOs ----------------------------------------------------------------------
+
+def make_device(folder: Path, name: str, minor: int) -> Path:
+    """A character device of the kernel's memory driver in ``folder`` (``minor`` 3: a null, 7: a
+    full one), so that a test never writes to /dev/full itself; skips where mknod is refused."""
+    import pytest
+
+    path = folder / name
+    try:
+        os.mknod(path, 0o666 | stat.S_IFCHR, os.makedev(1, minor))
+    except (OSError, AttributeError) as exc:
+        pytest.skip(f"no device can be made here ({exc})")
+    return path
+
+
+class FifoReader:
+    """A FIFO at ``path`` and a thread that reads it to the end (``data``, after ``join``)."""
+
+    def __init__(self, path: Path):
+        os.mkfifo(path)
+        self.path = path
+        self.data = b""
+        self._thread = threading.Thread(target=self._read, daemon=True)
+        self._thread.start()
+
+    def _read(self) -> None:
+        with open(self.path, "rb") as fh:
+            self.data = fh.read()
+
+    def join(self) -> bytes:
+        """The bytes read; a reader left waiting (nothing opened the FIFO) is released first.
+        A FIFO replaced by a file fails at once (its reader waits on the FIFO for ever)."""
+        assert self.path.is_fifo(), f"{self.path} is no longer a FIFO"
+        if self._thread.is_alive():
+            with contextlib.suppress(OSError):  # a writer that never came: open it, so the read ends
+                fd = os.open(self.path, os.O_WRONLY | os.O_NONBLOCK)
+                os.close(fd)
+        self._thread.join(10)
+        assert not self._thread.is_alive(), "the FIFO's reader never finished"
+        return self.data
+
+
+@contextlib.contextmanager
+def guarded_dev_null():
+    """Around a write to /dev/null: skip where there is none; should the write replace it by a
+    file (or leave ``/dev/null.*`` beside it), the device is made again and the test fails."""
+    import pytest
+
+    if not os.path.exists("/dev/null") or not stat.S_ISCHR(os.stat("/dev/null").st_mode):
+        pytest.skip("no /dev/null device here")
+    before = set(os.listdir("/dev"))
+    try:
+        yield Path("/dev/null")
+    finally:
+        broken = [f"/dev/{n}" for n in sorted(set(os.listdir("/dev")) - before)]
+        for extra in broken:
+            os.unlink(extra)
+        if not stat.S_ISCHR(os.stat("/dev/null").st_mode):
+            os.unlink("/dev/null")
+            os.mknod("/dev/null", 0o666 | stat.S_IFCHR, os.makedev(1, 3))
+            os.chmod("/dev/null", 0o666)
+            broken.append("/dev/null replaced by a file (made again)")
+        assert not broken, broken

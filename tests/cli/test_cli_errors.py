@@ -20,6 +20,7 @@ import errno
 import math
 import os
 import re
+import stat
 import subprocess
 import sys
 from pathlib import Path
@@ -34,10 +35,13 @@ from .._writers import (
     FAILURES,
     OLD,
     SINGLE_FILE_WRITERS,
+    FifoReader,
     WriteFailure,
     WriteSpy,
     check_complete,
     folder_state,
+    guarded_dev_null,
+    make_device,
     writer_args,
     writer_params,
 )
@@ -307,6 +311,51 @@ def test_figures_out_unwritable_by_access(tmp_path, monkeypatch):
     assert_clean_failure(invoke_cli(["figures", "--out", str(tmp_path), "--format", "svg"]), 2,
                          r"'--out': folder .* is not writable")
     assert list(tmp_path.iterdir()) == []
+
+
+# -- devices and FIFOs: written into, never replaced ---------------------------------------------------
+
+@pytest.mark.parametrize("key", ["export-csv", "export-npz", "export-json", "plot-png", "plot-svg"])
+def test_output_into_a_fifo(tmp_path, inputs, key):
+    """A FIFO gets the whole file (a PNG and an npz are made whole first: both seek) and stays one."""
+    needs(SINGLE_FILE_WRITERS[key][0])
+    args, target = writer_args(key, tmp_path / "result", inputs)
+    reader = FifoReader(target)
+    r = invoke_cli(args)
+    data = reader.join()
+    assert r.code == 0 and "Traceback" not in r.output, r.output
+    assert target.is_fifo() and sorted(p.name for p in tmp_path.iterdir()) == ["inputs", target.name]
+    copy = tmp_path / f"copy{target.suffix}"
+    copy.write_bytes(data)
+    check_complete(copy)
+
+
+def test_output_to_a_full_device_is_one_line(tmp_path, inputs):
+    """A device that refuses the bytes (a /dev/full, made in tmp_path): the write failure's one line,
+    exit 1, and the device is still there."""
+    full = make_device(tmp_path, "full", 7)
+    r = invoke_cli(["export", "--gamma", "3", "--kprime", "0.4", "--resolution", "5", "-o", str(full),
+                    "--format", "csv"])
+    assert_clean_failure(r, 1, r"^regimemap: error: cannot write .*full: No space left on device$")
+    assert stat.S_ISCHR(full.stat().st_mode)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["full", "inputs"]
+
+
+@pytest.mark.parametrize("args", [
+    ["export", "--gamma", "3", "--kprime", "0.4", "--resolution", "5", "-o", "/dev/null", "--format", "csv"],
+    ["plot", "--gamma", "3", "--kprime", "0.4", "--resolution", "20", "-o", "/dev/null"],  # no .png added
+    ["plot", "--gamma", "3", "--kprime", "0.4", "--resolution", "20", "-o", "/dev/null", "--format", "svg"],
+], ids=["export", "plot", "plot-format"])
+def test_output_to_dev_null(args, monkeypatch):
+    """-o /dev/null: the command runs and /dev/null stays the device, even where /dev accepts no new
+    file (os.access says no for it, as for anyone but root)."""
+    real_access = os.access
+    monkeypatch.setattr(os, "access",
+                        lambda p, mode, **kw: False if str(p) == "/dev" else real_access(p, mode, **kw))
+    with guarded_dev_null():
+        r = invoke_cli(args)
+    assert r.code == 0 and "Traceback" not in r.output, r.output
+    assert r.stdout.splitlines()[-1] == "/dev/null"
 
 
 # -- points files --------------------------------------------------------------------------------------

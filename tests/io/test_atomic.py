@@ -226,3 +226,104 @@ def test_every_failure_kind_through_a_command(tmp_path, monkeypatch, key, failur
     assert "Traceback" not in r.output and r.code == code, (r.code, r.output)
     assert len(r.error_lines()) == 1 and r.error_lines()[0].startswith("regimemap"), r.stderr
     assert folder_state(out_dir) == before  # old file byte-identical (or absent), no temp file left
+
+
+# -- devices and FIFOs: written into, never replaced -----------------------------------------------------
+#
+# A rename would put a regular file in the place of /dev/null or of a FIFO.  The devices here are made in
+# tmp_path (make_device), so that a failing test never replaces the real /dev/full; /dev/null itself is
+# written to once, and put back if it ever is replaced.
+
+from .._writers import FifoReader, guarded_dev_null, make_device  # noqa: E402
+
+
+def _no_temp_left(tmp_path: Path, monkeypatch) -> Path:
+    """The system's temporary folder, made ``tmp_path/tmp`` (empty), to see nothing is left there."""
+    import tempfile
+
+    temp = tmp_path / "tmp"
+    temp.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(temp))
+    return temp
+
+
+@pytest.mark.parametrize("mode", ["w", "wb"])
+def test_a_fifo_receives_the_bytes(tmp_path, monkeypatch, mode):
+    temp = _no_temp_left(tmp_path, monkeypatch)
+    reader = FifoReader(tmp_path / "out.fifo")
+    with atomic_open(reader.path, mode) as fh:
+        fh.write("new ✓\n" if mode == "w" else b"new\x00\xff\n")
+    assert reader.join() == ("new ✓\n".encode() if mode == "w" else b"new\x00\xff\n")
+    assert reader.path.is_fifo() and _listing(tmp_path) == ["out.fifo", "tmp"] and _listing(temp) == []
+
+
+def test_a_link_to_a_fifo_writes_into_the_fifo(tmp_path):
+    reader = FifoReader(tmp_path / "out.fifo")
+    link = tmp_path / "link"
+    link.symlink_to(reader.path)
+    with atomic_path(link) as tmp:
+        tmp.write_bytes(b"through the link")
+    assert reader.join() == b"through the link"
+    assert link.is_symlink() and reader.path.is_fifo()
+
+
+def test_a_writer_that_seeks_works_into_a_fifo(tmp_path):
+    """The file is made whole first: a writer that seeks (zipfile, PNG) writes into a FIFO too."""
+    reader = FifoReader(tmp_path / "out.fifo")
+    with atomic_open(reader.path, "wb") as fh:
+        fh.write(b"xxxx tail")
+        fh.seek(0)
+        fh.write(b"head")
+    assert reader.join() == b"head tail"
+
+
+def test_a_writer_that_fails_sends_nothing_into_a_fifo(tmp_path, monkeypatch):
+    temp = _no_temp_left(tmp_path, monkeypatch)
+    reader = FifoReader(tmp_path / "out.fifo")
+    with pytest.raises(Boom):
+        with atomic_open(reader.path, "wb") as fh:
+            fh.write(b"half")
+            raise Boom()
+    assert reader.join() == b"" and reader.path.is_fifo() and _listing(temp) == []
+
+
+def test_a_null_device_is_written_into(tmp_path, monkeypatch):
+    temp = _no_temp_left(tmp_path, monkeypatch)
+    null = make_device(tmp_path, "null", 3)
+    with atomic_open(null, "w") as fh:
+        fh.write("gone")
+    assert stat.S_ISCHR(null.stat().st_mode) and _listing(tmp_path) == ["null", "tmp"]
+    assert _listing(temp) == []
+
+
+def test_a_full_device_is_the_disk_full_error_and_stays(tmp_path, monkeypatch):
+    temp = _no_temp_left(tmp_path, monkeypatch)
+    full = make_device(tmp_path, "full", 7)
+    with pytest.raises(OSError) as e:
+        with atomic_open(full, "w") as fh:
+            fh.write("no room")
+    assert e.value.errno == 28  # ENOSPC: No space left on device
+    assert stat.S_ISCHR(full.stat().st_mode) and _listing(tmp_path) == ["full", "tmp"]
+    assert _listing(temp) == []
+
+
+def test_dev_null_is_written_into_not_replaced():
+    with guarded_dev_null() as null, atomic_open(null, "w") as fh:
+        fh.write("gone")
+
+
+def test_check_output_path_takes_a_device_in_a_folder_it_cannot_write(monkeypatch):
+    """-o /dev/null is fine where /dev accepts no new file (as for anyone but root)."""
+    import regimemap.io.atomic as atomic
+
+    monkeypatch.setattr(atomic, "folder_problem", lambda folder: "is not writable")
+    assert check_output_path("/dev/null", "-o") == Path("/dev/null")
+    with pytest.raises(ValueError, match=r"^-o folder '/dev' is not writable$"):
+        check_output_path("/dev/regimemap-test.csv", "-o")
+
+
+def test_check_output_path_refuses_a_device_it_cannot_write(tmp_path, monkeypatch):
+    null = make_device(tmp_path, "null", 3)
+    monkeypatch.setattr(os, "access", lambda path, mode, **kw: False)
+    with pytest.raises(ValueError, match=r"^-o '.*null' is not writable$"):
+        check_output_path(null, "-o")

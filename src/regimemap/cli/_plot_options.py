@@ -235,9 +235,13 @@ def resolve_output(output: str | None, fmt: str | None, default_name: str) -> tu
         raise click.BadParameter(f"{suffix_error(output, 'figure')} (or give --format)",
                                  param_hint="'-o' / '--output'")
     else:
-        # no suffix (or an unknown one with --format): add the format's suffix, as matplotlib does
+        # no suffix (or an unknown one with --format): add the format's suffix, as matplotlib does,
+        # but not to a device or a FIFO (-o /dev/null), which is written into as it is
+        from ..io.atomic import special_file
+
         fmt = fmt or "png"
-        path = path.with_name(f"{path.name}.{fmt}")
+        if not special_file(path):
+            path = path.with_name(f"{path.name}.{fmt}")
     return output_path(path, "--output"), fmt
 
 

@@ -3,7 +3,10 @@
 A failure or an interrupt while writing leaves either the old file or none,
 never a half-written one.  The temporary file is named ``.<name>.<random>.part``
 (hidden, beside the target, so the final rename never crosses file systems) and
-is removed on any exception, including KeyboardInterrupt.
+is removed on any exception, including KeyboardInterrupt.  A target that exists
+and is not a regular file -- a device such as ``/dev/null``, a FIFO -- is never
+replaced (a rename would put a regular file in its place): the whole file is
+written into it once it is made (:func:`special_file`).
 """
 
 from __future__ import annotations
@@ -12,13 +15,14 @@ import contextlib
 import errno
 import logging
 import os
+import shutil
 import stat
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 from typing import IO, Any
 
-__all__ = ["atomic_path", "atomic_open", "check_output_path", "folder_problem"]
+__all__ = ["atomic_path", "atomic_open", "check_output_path", "folder_problem", "special_file"]
 
 #: Longest part of the target's name kept in the temporary file's name (the
 #: temporary name adds about 15 characters; most file systems allow 255).
@@ -31,14 +35,27 @@ def _folder_of(p: Path) -> Path:
     return p.parent if str(p.parent) else Path(".")
 
 
+def special_file(path: str | os.PathLike[str]) -> bool:
+    """Whether ``path`` (its links followed) exists and is neither a regular file nor a folder:
+    a device (``/dev/null``, ``/dev/full``, a terminal), a FIFO or a socket -- written into,
+    never replaced."""
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):  # absent, a loop of links, a NUL in the name ...
+        return False
+    return not (stat.S_ISREG(mode) or stat.S_ISDIR(mode))
+
+
 def check_output_path(path: str | os.PathLike[str], param: str = "output") -> Path:
     """Return ``path`` as a Path if a file can be written there, else raise ValueError.
 
     Checks that the name is usable, that ``path`` is not a folder, that its
     folder exists and is a folder, and that a file can be created in it (by
     creating and removing an empty hidden file: permission bits alone do not
-    tell, e.g. for root or on read-only and virtual file systems).  The message
-    starts with ``param`` (e.g. ``--output folder 'x' does not exist``).
+    tell, e.g. for root or on read-only and virtual file systems).  A device or
+    a FIFO (:func:`special_file`) is written into, not replaced: it needs only
+    to be writable, not its folder.  The message starts with ``param`` (e.g.
+    ``--output folder 'x' does not exist``).
     """
     text: str | bytes = os.fspath(path)  # bytes from an untyped caller's bytes path
     if isinstance(text, bytes):
@@ -51,6 +68,10 @@ def check_output_path(path: str | os.PathLike[str], param: str = "output") -> Pa
     name_bytes = len(os.fsencode(p.name))
     if name_bytes > 255:
         raise ValueError(f"{param} file name is too long ({name_bytes} bytes > 255)")
+    if special_file(p):
+        if not os.access(p, os.W_OK):
+            raise ValueError(f"{param} {text!r} is not writable")
+        return p
     folder = _folder_of(p)
     try:
         if p.is_dir():
@@ -129,6 +150,11 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     removed and ``path`` is left as it was.  If ``path`` is a symbolic link
     the file it points to is replaced (the link is kept).  The new file gets
     the permissions of the file it replaces, or the default ``0o666 & ~umask``.
+    A ``path`` that is (or links to) a device or a FIFO (:func:`special_file`)
+    is not replaced: the temporary file is made in the system's temporary
+    folder and, on success, copied into ``path`` (so that a writer that seeks
+    works, and one that fails sends nothing); a copy that fails half-way
+    (``/dev/full``, a reader that went away) cannot be taken back.
 
     Notes
     -----
@@ -137,6 +163,10 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
     ``numpy.savez`` must be given an open file (it appends ``.npz`` to names).
     """
     target = Path(path)
+    if special_file(target):
+        with _copied_into(target) as staged:
+            yield staged
+        return
     if target.is_symlink():
         target = Path(os.path.realpath(target))
     folder = _folder_of(target)
@@ -162,6 +192,26 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
         with contextlib.suppress(OSError):
             tmp_path.unlink()
         raise
+
+
+@contextlib.contextmanager
+def _copied_into(target: Path) -> Iterator[Path]:
+    """Yield a temporary path in the system's temporary folder; on success copy it into
+    ``target`` (a device or a FIFO, opened as it is, links followed); remove it in any case."""
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{target.name[:_TMP_NAME_CHARS]}.", suffix=".part")
+    except OSError as exc:
+        raise OSError(exc.errno, f"cannot create a temporary file: {exc.strerror}", str(target)) from None
+    tmp_path = Path(tmp)
+    try:
+        os.close(fd)
+        yield tmp_path
+        with open(tmp_path, "rb") as src, open(target, "wb") as dst:
+            shutil.copyfileobj(src, dst)
+        _log.info("wrote %s", target)
+    finally:
+        with contextlib.suppress(OSError):
+            tmp_path.unlink()
 
 
 @contextlib.contextmanager
