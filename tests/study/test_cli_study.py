@@ -68,6 +68,58 @@ def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, write_study, args, s
     assert says in out.stderr and out.stderr.count("\n") == 1
 
 
+def _store_refused(run_cli, tmp_path, path, *args: str) -> str:
+    """A study refused, exit 2 in one line naming --store, before any store or file is made."""
+    (tmp_path / "out").mkdir(exist_ok=True)  # -o's folder, refused by none of the tests
+    before = sorted(p.name for p in tmp_path.rglob("*"))
+    out = run_cli(["study", str(path), "--jobs", "1", "-q", "-o", str(tmp_path / "out" / "t.csv"), *args])
+    assert out.code == 2, out.output
+    assert "Traceback" not in out.output and out.stderr.count("\n") == 1 and out.stdout == ""
+    assert "Invalid value for '--store': " in out.stderr, out.stderr
+    assert sorted(p.name for p in tmp_path.rglob("*")) == before
+    return out.stderr
+
+
+def test_a_store_whose_parent_is_missing_exits_2_and_makes_nothing(run_cli, tmp_path, write_study):
+    """As -o does for a file in a missing folder: the store itself is made, not its parents."""
+    path = write_study(SMALL)
+    err = _store_refused(run_cli, tmp_path, path, "--store", str(tmp_path / "no" / "such" / "s"))
+    assert f"folder '{tmp_path / 'no' / 'such'}' does not exist" in err
+    err = _store_refused(run_cli, tmp_path, path, "--store", str(path / "s"))
+    assert f"folder '{path}' is a file, not a folder" in err
+
+
+@pytest.mark.parametrize("folder", ["/proc", "/sys"])
+def test_a_store_in_a_read_only_folder_exits_2(run_cli, tmp_path, write_study, folder):
+    """As -o in the same folder: 'folder is not writable', not the run's OSError (exit 1)."""
+    if not os.path.isdir(folder):
+        pytest.skip(f"no {folder} here")
+    path = write_study(SMALL)
+    err = _store_refused(run_cli, tmp_path, path, "--store", f"{folder}/regimemap-test-store")
+    assert f"folder '{folder}' is not writable" in err
+
+
+def test_a_store_that_accepts_no_file_exits_2(run_cli, tmp_path, write_study, monkeypatch):
+    """An existing store (or, by default, the study's folder) that accepts no new file: exit 2
+    naming --store; with --resume an existing store is only read, and is not asked to."""
+    path = write_study(SMALL)
+    store = tmp_path / "s"
+    assert run_cli(["study", str(path), "--jobs", "1", "-q", "--store", str(store)]).code == 0
+    real_access = os.access
+    refused: set[Path] = {store}
+    monkeypatch.setattr(os, "access", lambda p, mode, **kw: False if Path(p) in refused
+                        else real_access(p, mode, **kw))
+    assert f"folder '{store}' is not writable" in _store_refused(run_cli, tmp_path, path, "--store", str(store))
+    resumed = run_cli(["study", str(path), "--jobs", "1", "-q", "--resume", "--store", str(store)])
+    assert resumed.code == 0, resumed.output
+    refused.clear()
+    refused.add(tmp_path)  # the store accepts new files, its folder (the new run's, beside it) none
+    err = _store_refused(run_cli, tmp_path, path, "--store", str(store), "--overwrite")
+    assert f"folder '{tmp_path}' is not writable" in err
+    err = _store_refused(run_cli, tmp_path, path)
+    assert f"(the default store, '{tmp_path / 'study.store'}': give --store DIR)" in err
+
+
 def test_a_bad_study_file_exits_2_naming_its_line(run_cli, tmp_path, write_study):
     path = write_study(SMALL.replace('name = "b"', 'name = "a"'))
     out = run_cli(["study", str(path)])

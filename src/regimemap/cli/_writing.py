@@ -187,11 +187,16 @@ def echo_notes(notes: Iterable[str], prefix: str = "regimemap: ") -> None:
         click.echo(f"{prefix}{note}", err=True)
 
 
-def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False) -> Path:
+def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bool = False,
+               later: bool = False) -> Path:
     """Check that ``path`` is an existing folder where files can be created; usage error if not.
 
     With ``create``, a missing folder whose parent exists (and accepts new
-    files) is created first; a missing parent is still a usage error.
+    files) is created first; a missing parent is still a usage error.  With
+    ``later``, a missing folder is accepted, not created, when its parent
+    exists and accepts new files (the writer creates it, as a study's
+    ``--store``); a missing parent is refused as for a file of ``-o``
+    (:func:`output_path`): ``folder 'PARENT' does not exist``.
 
     Like :func:`output_path` for a folder: the check creates and removes an
     empty hidden file, since permission bits do not tell (root, read-only or
@@ -204,6 +209,15 @@ def output_dir(path: str | os.PathLike[str], param: str = "--out", *, create: bo
         raise click.BadParameter(f"must be a folder, got {str(path)!r}", param_hint=f"'{param}'")
     if p.exists() and not p.is_dir():
         raise click.BadParameter(f"{str(path)!r} is a file, not a folder", param_hint=f"'{param}'")
+    if later and not p.is_dir():
+        parent = p.parent if str(p.parent) else Path(".")
+        if not parent.is_dir():
+            what = "is a file, not a folder" if parent.exists() else "does not exist"
+            raise click.BadParameter(f"folder {str(parent)!r} {what}", param_hint=f"'{param}'")
+        problem = folder_problem(parent)
+        if problem:
+            raise click.BadParameter(f"folder {str(parent)!r} {problem}", param_hint=f"'{param}'")
+        return p
     if not p.is_dir() and create:
         parent = p.parent if str(p.parent) else Path(".")
         if parent.is_dir() and not folder_problem(parent):

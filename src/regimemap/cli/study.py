@@ -20,7 +20,7 @@ from ..io.formats import FIGURES, record_formats, suffix_of
 from ._common import Checked, jobs_option, json_option, outputs_option, quiet_option
 from ._inputs import DESIGN_FILE
 from ._main import RunError
-from ._writing import checked_output, echo_notices, print_report, write_files
+from ._writing import checked_output, echo_notices, output_dir, print_report, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -59,9 +59,39 @@ def _missing(module: str) -> bool:
         return True
 
 
+def _store_folder(study: str, store: str | None) -> Path:
+    """The results store's folder: ``--store``, else ``STUDY.store`` beside the study file."""
+    source = Path(study)
+    return Path(store) if store is not None else source.parent / f"{source.stem}.store"
+
+
+def _check_store(study: str, store: str | None, resume: bool, overwrite: bool) -> None:
+    """The store's folder checked before any work, as ``-o``'s are (a usage error naming
+    ``--store``): a missing one must have an existing parent that accepts new files (it is made
+    by the run, not here); an existing one must accept new files (not with ``--resume``: a
+    finished store is only read), and with ``--overwrite`` so must its parent (the new run is
+    stored beside it)."""
+    folder = _store_folder(study, store)
+    try:
+        if not folder.is_dir():
+            output_dir(folder, "--store", later=True)
+            return
+        if not resume:
+            output_dir(folder, "--store")
+        if overwrite:
+            output_dir(folder.parent if str(folder.parent) else Path("."), "--store")
+    except click.BadParameter as exc:
+        if store is not None:
+            raise
+        raise click.BadParameter(f"{exc.message} (the default store, {str(folder)!r}: give --store DIR)",
+                                 param_hint="'--store'") from None
+
+
 def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], scheduler: str | None,
-                jobs: int | None, resume: bool = False, overwrite: bool = False) -> None:
-    """The options that go together; the outputs' suffixes and folders; the extras they need."""
+                jobs: int | None, resume: bool = False, overwrite: bool = False,
+                store: str | None = None) -> None:
+    """The options that go together; the outputs' suffixes and folders, the store's folder; the
+    extras they need."""
     ctx = click.get_current_context()
     if example and study is not None:
         raise click.UsageError("--example prints the example study and takes no STUDY.toml", ctx=ctx)
@@ -76,6 +106,8 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
                                "store's run, --overwrite replaces the store with a new run", ctx=ctx)
     for path in outputs:
         checked_output(path, "study")
+    if study is not None:
+        _check_store(study, store, resume, overwrite)
     # the extras, before the store or any file is made and before a long run
     if scheduler is not None and _missing("distributed"):
         raise click.BadParameter(NO_DASK, param_hint="'--scheduler'")
@@ -128,8 +160,7 @@ def _run(study: Study, jobs: int | None, scheduler: str | None, resume: bool, ov
     from ..study.record_store import StudyStoreError
     from ..study.run import run_study
 
-    source = Path(study.source)
-    folder = Path(store) if store is not None else source.parent / f"{source.stem}.store"
+    folder = _store_folder(study.source, store)
     workers = jobs if jobs is not None else available_cores()
     try:
         with _progress(quiet) as step:
@@ -219,7 +250,7 @@ def study_cmd(study: str | None, example: bool, jobs: int | None, scheduler: str
     from ..study.run import study_checks
     from ..study.run_report import study_report_json, study_report_text
 
-    _check_call(study, example, outputs, scheduler, jobs, resume, overwrite)
+    _check_call(study, example, outputs, scheduler, jobs, resume, overwrite, store)
     if example:
         from ..study.file_example import example_study_text
 
