@@ -68,6 +68,17 @@ def test_usage_errors_exit_2_in_one_line(run_cli, tmp_path, write_study, args, s
     assert says in out.stderr and out.stderr.count("\n") == 1
 
 
+def test_the_same_output_twice_exits_2_before_the_run(run_cli, tmp_path, write_study, monkeypatch):
+    """As lifetime and climate refuse it (the one check, cli._writing.distinct_files), however spelt."""
+    path = write_study(SMALL)
+    monkeypatch.chdir(tmp_path)
+    out = run_cli(["study", str(path), "--jobs", "1", "-q", "-o", "t.csv", "-o", str(tmp_path / "t.csv")])
+    assert out.code == 2, out.output
+    assert "Invalid value for '-o' / '--output': the same file is given twice" in out.stderr
+    assert out.stderr.count("\n") == 1 and not (tmp_path / "study.store").exists()
+    assert not (tmp_path / "t.csv").exists()
+
+
 def _store_refused(run_cli, tmp_path, path, *args: str) -> str:
     """A study refused, exit 2 in one line naming --store, before any store or file is made."""
     (tmp_path / "out").mkdir(exist_ok=True)  # -o's folder, refused by none of the tests

@@ -20,7 +20,7 @@ from ..io.formats import FIGURES, record_formats, suffix_of
 from ._common import Checked, jobs_option, json_option, outputs_option, quiet_option
 from ._inputs import DESIGN_FILE
 from ._main import RunError
-from ._writing import checked_output, echo_notices, output_dir, print_report, write_files
+from ._writing import checked_output, distinct_files, echo_notices, output_dir, print_report, write_files
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -104,6 +104,7 @@ def _check_call(study: str | None, example: bool, outputs: tuple[str, ...], sche
     if resume and overwrite:
         raise click.UsageError("--resume and --overwrite exclude each other: --resume finishes the "
                                "store's run, --overwrite replaces the store with a new run", ctx=ctx)
+    distinct_files(outputs, "'-o' / '--output'")
     for path in outputs:
         checked_output(path, "study")
     if study is not None:
