@@ -335,9 +335,9 @@ def test_absurd_climates_are_refused_without_strict(run_cli, goda: Path, value: 
 
 
 @pytest.mark.parametrize(("args", "parts"), [
-    (["--width", "25:10:5"], ["'--width'", "0 < A < B", "need 0 < A < B"]),
+    (["--width", "25:10:5"], ["'--width'", "1 <= A < B <= 100", "(need A < B)"]),
     (["--width", "10:25:1"], ["'--width'", "N a whole number from 2 to 200", "(N = 1)"]),
-    (["--width", "0:25:5"], ["'--width'", "need 0 < A < B"]),
+    (["--width", "0:25:5"], ["'--width'", "(outside the 1-100 m of caisson widths)"]),
     (["--width", "a:b:c"], ["'--width'", "A or B is not a number"]),
     (["--width", "10:25"], ["'--width'", "A:B:N"]),
     (["--width", "10:25:2.5"], ["'--width'", "N is not a whole number"]),

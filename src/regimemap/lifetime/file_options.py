@@ -51,8 +51,8 @@ def parse_widths(text: str) -> list[float]:
         n = int(parts[2].strip(), 10)
     except ValueError:
         raise ValueError(f"widths must be {accepted}; got {text!r} (N is not a whole number)") from None
-    if not (math.isfinite(a) and math.isfinite(b) and 0.0 < a < b):
-        raise ValueError(f"widths must be {accepted}; got {text!r} (need 0 < A < B)")
+    if not (math.isfinite(a) and math.isfinite(b) and a < b):
+        raise ValueError(f"widths must be {accepted}; got {text!r} (need A < B)")
     if a < lo or b > hi:
         raise ValueError(f"widths must be {accepted}; got {text!r} (outside the {lo:g}-{hi:g} m "
                          "of caisson widths)")
