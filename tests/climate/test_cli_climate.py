@@ -166,6 +166,35 @@ def test_each_error_names_its_option(run_cli, args, option, parts):
     assert "'RECORD'" not in line
 
 
+@pytest.mark.parametrize(("args", "option", "parts"), [
+    (["--gap", "nan"], "'--gap'", ["gap must be a finite number in (0, 8760], got 'nan'"]),
+    (["--gap", "abc"], "'--gap'", ["(0, 8760]", "got 'abc' (not a number)"]),
+    (["--gap", "0"], "'--gap'", ["(0, 8760]"]),
+    (["--coverage", "nan"], "'--coverage'", ["coverage must be a finite number in (0, 1], got 'nan'"]),
+    (["--coverage", "abc"], "'--coverage'", ["(0, 1]", "(not a number)"]),
+    (["--confidence", "nan"], "'--confidence'", ["confidence must be a finite number in [0.5, 0.999]"]),
+    (["--confidence", "inf"], "'--confidence'", ["[0.5, 0.999], got 'inf'"]),
+    (["--shape", "nan"], "'--shape'", ["shape must be a finite number in [0.5, 5], got 'nan'"]),  # gpd too
+    (["--distribution", "weibull", "--shape", "nan"], "'--shape'", ["[0.5, 5], got 'nan'"]),
+    (["--shape", "x"], "'--shape'", ["[0.5, 5], got 'x' (not a number)"]),
+    (["--interval", "bootstrap", "--replicates", "1"], "'--replicates'",
+     ["replicates must be 0 (no interval) or at least 40 for a 90 % bootstrap interval", "got 1"]),
+    (["--interval", "bootstrap", "--replicates", "39"], "'--replicates'", ["at least 40", "got 39"]),
+    (["--interval", "bootstrap", "--confidence", "0.99"], "'--replicates'",
+     ["at least 400 for a 99 % bootstrap interval", "got 200"]),  # the default is too few there
+])
+def test_each_number_and_column_names_its_own_option(run_cli, args, option, parts):
+    """NaN, a word or too few bootstrap replicates: one line naming the option and its range (no
+    longer '--distribution' or RECORD); a column the semicolon text lacks as on a CSV record."""
+    line = failed(run_cli(["climate", EXCERPT, "--threshold", "99%", *args]), option, *parts)
+    assert "'--distribution'" not in line and "'RECORD'" not in line
+
+
+def test_enough_bootstrap_replicates_or_none_still_run(run_cli):
+    for n in ("0", "40"):
+        ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "bootstrap", "--replicates", n]))
+
+
 def test_a_threshold_far_above_any_sea_state_has_no_percent_hint(run_cli):
     line = failed(run_cli(["climate", EXCERPT, "--threshold", "250"]), "'--threshold'", "above any sea state")
     assert "did you mean" not in line

@@ -29,6 +29,8 @@ from ..mechanics.validation import (
 if TYPE_CHECKING:  # pragma: no cover
     from click.decorators import FC
 
+    from ..dynamics.limits import Limit
+
 
     #: Base of the option types.  Recent click makes ParamType generic in the
     #: converted value; click 8.1 cannot subscript it at run time.
@@ -50,6 +52,7 @@ __all__ = [
     "load_options",
     "load_range",
     "axis_end",
+    "number_in",
     "resolution_type",
 ]
 
@@ -74,10 +77,10 @@ class Checked(ParamType):
             self.fail(str(exc), param, ctx)
 
 
-def _number(name: str, check: Callable[[float], Any], allowed: str) -> Checked:
+def _number(name: str, check: Callable[[float], Any], allowed: str, kind: str | None = None) -> Checked:
     """A number as typed, checked by one of :mod:`regimemap.mechanics.validation`'s checks; the
     message names the parameter, what it allows and the value as typed (click prefixes the
-    option's name)."""
+    option's name).  ``kind``: the type's name (default ``name``)."""
     def convert(text: str) -> Any:
         try:
             number = float(text)
@@ -88,7 +91,7 @@ def _number(name: str, check: Callable[[float], Any], allowed: str) -> Checked:
         except ValueError:
             raise ValueError(f"{name} must be {allowed}, got {text!r}") from None
 
-    return Checked(name, convert)
+    return Checked(kind or name, convert)
 
 
 GAMMA = _number("gamma", check_gamma, f"a finite number in [{GAMMA_MIN:g}, {GAMMA_MAX:g}]")
@@ -198,6 +201,18 @@ def check_kprime_crest(kprime: float, crest: float, option: str = "--kprime") ->
 
 def _load_type(name: str) -> ParamType:
     return _number(name, lambda v: check_load_value(name, v), load_range(name))
+
+
+def number_in(name: str, limit: Limit) -> ParamType:
+    """A click type for a finite float in the range of ``limit``
+    (:class:`regimemap.dynamics.limits.Limit`): NaN, an infinity, a value outside or a word is
+    refused with the range, e.g. ``gap must be a finite number in (0, 8760], got 'nan'``."""
+    def check(v: float) -> float:
+        if not limit.contains(v):
+            raise ValueError(name)
+        return v
+
+    return _number(name, check, limit.text, kind="number")
 
 
 class Values(ParamType):

@@ -13,11 +13,11 @@ from typing import TYPE_CHECKING
 import click
 
 from ..climate.run_options import return_periods_option, threshold_option
+from ..dynamics.limits import Limit
 from ..io.formats import FIGURES
 from ._check import refuse_notices
-from ._common import Checked, json_option, outputs_option
+from ._common import Checked, json_option, number_in, outputs_option
 from ._inputs import RECORD_FILE
-from ._main import refusing
 from ._writing import checked_output, distinct_files, echo_notices, print_report, write_files
 
 if TYPE_CHECKING:
@@ -28,6 +28,19 @@ if TYPE_CHECKING:
     from ..climate.run import ClimateRecord
 
 __all__ = ["climate_cmd"]
+
+#: The ranges of the numeric options (``[lifetime.record]`` takes gap_hours, shape and coverage in the
+#: same ranges).
+GAP = Limit(0.0, 8760.0, open_lo=True, unit="h")
+SHAPE = Limit(0.5, 5.0)
+COVERAGE = Limit(0.0, 1.0, open_lo=True)
+CONFIDENCE = Limit(0.5, 0.999)
+
+#: The option a refusal of :meth:`regimemap.climate.ClimateOptions.check` blames, by the field its
+#: message starts with (a distribution that does not fit the method: ``--distribution``).
+_CHECKED_OPTIONS = {"gap": "--gap", "shape": "--shape", "coverage": "--coverage",
+                    "confidence": "--confidence", "replicates": "--replicates", "interval": "--interval",
+                    "method": "--method"}
 
 
 def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
@@ -47,21 +60,21 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--threshold", type=Checked("threshold", threshold_option), default="99.5%", show_default=True,
               metavar="U",
               help="Storm threshold: a height in metres, or a quantile of the heights such as 99.5%.")
-@click.option("--gap", "gap_hours", type=click.FloatRange(min=0.0, min_open=True, max=8760.0), default=48.0,
+@click.option("--gap", "gap_hours", type=number_in("gap", GAP), default=48.0,
               show_default=True, metavar="HOURS",
-              help="A storm ends when no exceedance follows within this many hours (> 0).")
+              help="A storm ends when no exceedance follows within this many hours (> 0, at most 8760).")
 @click.option("--distribution", type=click.Choice(["gpd", "weibull", "gumbel", "gev"]), default=None,
               help="gpd or weibull for storm peaks (default gpd); gumbel or gev for annual maxima "
                    "(default gumbel).")
-@click.option("--shape", type=click.FloatRange(min=0.5, max=5.0), default=2.0, show_default=True,
+@click.option("--shape", type=number_in("shape", SHAPE), default=2.0, show_default=True,
               metavar="K", help="The fixed Weibull shape k (Goda: 0.75 to 2), 0.5 to 5.")
-@click.option("--coverage", type=click.FloatRange(min=0.0, min_open=True, max=1.0), default=0.8,
+@click.option("--coverage", type=number_in("coverage", COVERAGE), default=0.8,
               show_default=True, metavar="SHARE",
               help="Least share of a calendar year's hours observed for its annual maximum, (0, 1].")
 @click.option("--return-periods", type=Checked("periods", return_periods_option), default="10,50,100",
               show_default=True, metavar="R,R",
               help="Return periods in years (> 1), comma-separated.")
-@click.option("--confidence", type=click.FloatRange(min=0.5, max=0.999), default=0.9, show_default=True,
+@click.option("--confidence", type=number_in("confidence", CONFIDENCE), default=0.9, show_default=True,
               metavar="LEVEL", help="Level of the intervals, 0.5 to 0.999.")
 @click.option("--interval", "interval", type=click.Choice(["posterior", "profile", "bootstrap"]),
               default="posterior", show_default=True,
@@ -72,7 +85,9 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--replicates", "--bootstrap", "replicates", type=click.IntRange(min=0, max=100000),
               default=200, show_default=True, metavar="N",
               help="Replicate fits: posterior or likelihood draws, or bootstrap refits (0: no "
-                   "interval). --bootstrap N is the old spelling.")
+                   "interval). A bootstrap interval needs at least 4/(1 - LEVEL) of them (40 at 0.9), "
+                   "so that each tail beyond it holds two replicates or more. --bootstrap N is the "
+                   "old spelling.")
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="S",
               help="Root seed of the draws (the same seed, the same intervals).")
 @click.option("--time", "time_col", default=None, metavar="NAME", help="The time column (CSV, NetCDF).")
@@ -124,8 +139,7 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
                              distribution=distribution, shape=shape, coverage=coverage,
                              return_periods=return_periods, confidence=confidence, interval=interval,
                              replicates=replicates, seed=seed)
-    with refusing("'--distribution'"):
-        options.check()
+    _check_options(options)
     result = _run(record, options, time_col, hs_col, period_col, drop_spikes, diagnostics is not None)
     if strict:
         refuse_notices(result.notices, ("record-quality", "fit"),
@@ -138,6 +152,16 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
         written += write_files([diagnostics],
                                lambda: _diagnostics_figure(found, threshold_used, title, moved))
     print_report(as_json, result.report_text, lambda: result.report_json(written), written)
+
+
+def _check_options(options: ClimateOptions) -> None:
+    """The options' combination checked (:meth:`~regimemap.climate.ClimateOptions.check`); a refusal is
+    a usage error naming the option its message names."""
+    try:
+        options.check()
+    except ValueError as exc:
+        option = _CHECKED_OPTIONS.get(str(exc).split(" ", 1)[0], "--distribution")
+        raise click.BadParameter(str(exc), param_hint=f"'{option}'") from None
 
 
 def _run(record: str, options: ClimateOptions, time_col: str | None, hs_col: str | None,

@@ -18,6 +18,7 @@ from .intervals import (
     DEFAULT_INTERVAL,
     INTERVALS,
     Band,
+    bootstrap_minimum,
     grid_quantiles,
     interval_band,
     likelihood_grid,
@@ -128,12 +129,19 @@ class ClimateOptions:
             raise ValueError(f"confidence must be in (0, 1), got {self.confidence!r}")
         if not 0.0 < self.coverage <= 1.0:
             raise ValueError(f"coverage must be in (0, 1], got {self.coverage!r}")
+        if not (np.isfinite(self.shape) and self.shape > 0.0):  # checked whatever the distribution
+            raise ValueError(f"shape must be a Weibull k > 0, got {self.shape!r}")
         if self.interval not in INTERVALS:
             raise ValueError(f"interval must be one of {', '.join(INTERVALS)}, got {self.interval!r}")
         if self.hs_limit is not None and not (self.hs_limit > 0.0 and np.isfinite(self.hs_limit)):
             raise ValueError(f"hs_limit must be a height in metres > 0, got {self.hs_limit!r}")
         if not self.replicates >= 0:
             raise ValueError(f"replicates must be a number >= 0, got {self.replicates!r}")
+        fewest = bootstrap_minimum(self.confidence)
+        if self.interval == "bootstrap" and 0 < self.replicates < fewest:
+            raise ValueError(f"replicates must be 0 (no interval) or at least {fewest} for a "
+                             f"{100 * self.confidence:g} % bootstrap interval (4/(1 - confidence): each "
+                             f"tail beyond it holds two replicates or more), got {self.replicates!r}")
 
 
 def _old_bootstrap(self: ClimateOptions) -> int:

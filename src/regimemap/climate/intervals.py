@@ -49,7 +49,8 @@ from scipy import stats
 from .fits import AM_DISTRIBUTIONS, GEV_XI, POT_DISTRIBUTIONS, Fit, fit, return_levels
 
 __all__ = ["DEFAULT_INTERVAL", "INTERVALS", "POSTERIOR_DRAWS", "XI_PRIOR", "Band", "Grid", "bootstrap",
-           "grid_quantiles", "interval_band", "likelihood_grid", "profile_interval", "return_values"]
+           "bootstrap_minimum", "grid_quantiles", "interval_band", "likelihood_grid", "profile_interval",
+           "return_values"]
 
 FloatArray = NDArray[np.float64]
 
@@ -61,6 +62,23 @@ DEFAULT_INTERVAL = "posterior"
 XI_PRIOR = (-1.0, 1.5)
 #: Posterior draws behind an interval (at least; the replicate fits are the first of them).
 POSTERIOR_DRAWS = 20_000
+#: Replicates in each tail beyond a percentile bootstrap interval, at least (:func:`bootstrap_minimum`).
+TAIL_REPLICATES = 2
+
+
+def bootstrap_minimum(confidence: float) -> int:
+    """The fewest bootstrap replicates for a ``confidence`` percentile interval: each tail beyond it,
+    a share (1 - confidence)/2 of them, holds at least :data:`TAIL_REPLICATES` (two: a bound is
+    then not one replicate's value), so 4/(1 - confidence): 40 at 0.9, 400 at 0.99.
+
+    Examples
+    --------
+    >>> bootstrap_minimum(0.9), bootstrap_minimum(0.95), bootstrap_minimum(0.999)
+    (40, 80, 4000)
+    """
+    return math.ceil(round(2 * TAIL_REPLICATES / (1.0 - confidence), 6))
+
+
 #: Log-likelihood drop [nepers] below its maximum that bounds the grid (e^-16: nothing left).
 DROP = 16.0
 #: Points per axis of the coarse and of the fine grid, by number of parameters.
