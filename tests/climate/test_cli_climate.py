@@ -182,6 +182,8 @@ def test_each_error_names_its_option(run_cli, args, option, parts):
     (["--interval", "bootstrap", "--replicates", "39"], "'--replicates'", ["at least 40", "got 39"]),
     (["--interval", "bootstrap", "--confidence", "0.99"], "'--replicates'",
      ["at least 400 for a 99 % bootstrap interval", "got 200"]),  # the default is too few there
+    (["--period", "nope"], "'--period'", ["no column 'nope' for the period (columns: time, Hs, Tz"]),
+    (["--hs", "WVHT"], "'--hs'", ["no column 'WVHT' for the significant wave height"]),
 ])
 def test_each_number_and_column_names_its_own_option(run_cli, args, option, parts):
     """NaN, a word or too few bootstrap replicates: one line naming the option and its range (no

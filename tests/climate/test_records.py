@@ -231,3 +231,13 @@ def test_a_gzip_record_that_decompresses_past_the_limit_is_refused(tmp_path, mon
     monkeypatch.setattr(records, "MAX_RECORD_FILE_BYTES", 1_000_000)
     with pytest.raises(records.RecordError, match="broken gzip"):
         records.read_record(f)
+
+
+@pytest.mark.parametrize(("column", "what"), [({"period": "nope"}, "period"), ({"period": "Hs"}, "period"),
+                                              ({"hs": "WVHT"}, "significant wave height"),
+                                              ({"time": "when"}, "time")])
+def test_the_semicolon_text_refuses_a_column_it_does_not_have(column, what):
+    name = next(iter(column.values()))
+    with pytest.raises(RecordError, match=rf"no column '{name}' for the {what} \(columns: time, Hs, Tz"):
+        read_record(NDBC44007, **column)
+    assert read_record(NDBC44007, time="time", hs="hs", period="Tz").period_name == "Tz"  # its own names

@@ -193,7 +193,18 @@ def _read_csv(path: str, text: str, time: str | None, hs: str | None, period: st
     return make_record(path, t, h, p, pname, drop_spikes, lines=np.asarray(lines, dtype=np.int64))
 
 
-def _read_semicolon(path: str, lines_text: list[str], drop_spikes: bool) -> Record:
+#: The columns of the semicolon text, as its messages name them: a column option must name one of these
+#: (its own), as it names a column of a CSV file.
+SEMICOLON_COLUMNS = ("time", "Hs", "Tz")
+
+
+def _read_semicolon(path: str, lines_text: list[str], drop_spikes: bool, time: str | None = None,
+                    hs_name: str | None = None, period: str | None = None) -> Record:
+    given = ((time, "time"), (hs_name, "significant wave height"), (period, "period"))
+    for column, (wanted, what) in zip(SEMICOLON_COLUMNS, given):
+        if wanted is not None and wanted.strip().lower() != column.lower():
+            raise RecordError(f"{path}: no column {wanted!r} for the {what} (columns: "
+                              f"{', '.join(SEMICOLON_COLUMNS)}; the semicolon text's {what} is {column!r})")
     times, hs, tz, lines = [], [], [], []
     for k, line in enumerate(lines_text[1:], start=2):
         if not line.strip():
@@ -337,7 +348,7 @@ def read_record(path: str | Path, time: str | None = None, hs: str | None = None
         if first.startswith("#YY") or first.startswith("YY"):
             return _read_ndbc(p, lines, period, drop_spikes)
         if ";" in first:
-            return _read_semicolon(p, lines, drop_spikes)
+            return _read_semicolon(p, lines, drop_spikes, time, hs, period)
         return _read_csv(p, text, time, hs, period, drop_spikes)
     except RecordError:
         raise
