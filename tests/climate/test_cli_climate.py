@@ -197,6 +197,15 @@ def test_enough_bootstrap_replicates_or_none_still_run(run_cli):
         ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "bootstrap", "--replicates", n]))
 
 
+def test_return_periods_sorted_each_once_and_told_apart(run_cli):
+    out = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--replicates", "0", "--return-periods",
+                      "100,10,10,1.0000001,1.0000002,10"])).stdout
+    rows = out.split("return period", 1)[1].split("\n\n")[0].splitlines()[1:]
+    assert [row.split(" years")[0].strip() for row in rows] == ["1.0000001", "1.0000002", "10", "100"], rows
+    again = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--replicates", "0"])).stdout
+    assert "     10 years" in again and "    100 years" in again  # the usual widths unchanged
+
+
 def test_a_threshold_far_above_any_sea_state_has_no_percent_hint(run_cli):
     line = failed(run_cli(["climate", EXCERPT, "--threshold", "250"]), "'--threshold'", "above any sea state")
     assert "did you mean" not in line

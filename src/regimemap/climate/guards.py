@@ -27,6 +27,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from ..records.notices import Notice
+from ..records.numbers import shortest
 from .fits import GEV_XI, Fit
 
 __all__ = ["XI_NEAR_BOUND", "XI_NONREGULAR", "endpoint", "endpoint_close", "fit_notices", "limit_notices"]
@@ -114,7 +115,10 @@ def limit_notices(return_values: Sequence[dict[str, float | None]], limit: float
             v = rv.get(key)
             if v is not None and math.isfinite(v) and v > limit:
                 name = "return value" if key == "value" else "interval's upper bound"
-                out.append(Notice("fit", f"the {rv['period']:g}-year {name} {v:.3g} m is above {what} "
+                period = rv["period"]
+                assert period is not None
+                years = shortest(period)
+                out.append(Notice("fit", f"the {years}-year {name} {v:.3g} m is above {what} "
                                          f"({limit:g} m): the fit cannot be trusted that far",
                                   f"H{rv['period']:g}", v))
     return out

@@ -6,7 +6,7 @@ from typing import Any
 
 import numpy as np
 
-from ..records.numbers import optional_float, rounded
+from ..records.numbers import optional_float, rounded, shortest
 from .analysis import ClimateResult, Sensitivity
 
 __all__ = ["climate_json", "format_climate", "parameter_text",
@@ -138,16 +138,16 @@ def format_climate(result: ClimateResult, source: str | None = None,
     lines.append("")
     lines.append("return period    Hs       " + (f"{100 * o.confidence:g} % interval" if result.band else ""))
     for rv in result.return_values:
-        value = rv["value"]
-        assert value is not None
+        years, value = rv["period"], rv["value"]
+        assert years is not None and value is not None
         band = ("" if rv["lower"] is None or rv["upper"] is None
                 else f"{rv['lower']:.2f} to {rv['upper']:.2f} m")
-        lines.append(f"  {rv['period']:>5g} years  {value:6.2f} m  {band}")
+        lines.append(f"  {shortest(years):>5} years  {value:6.2f} m  {band}")
     if sensitivity is not None:
         lines.append("")
         level = f"{100 * sensitivity.confidence:g} %"
-        lines.append(f"{sensitivity.period:g}-year value across thresholds ({level} {sensitivity.interval} "
-                     "interval):")
+        lines.append(f"{shortest(sensitivity.period)}-year value across thresholds ({level} "
+                     f"{sensitivity.interval} interval):")
         for q, u, n, v, lo, hi in zip(sensitivity.quantiles, sensitivity.thresholds, sensitivity.storms,
                                       sensitivity.value, sensitivity.lower, sensitivity.upper):
             got = (f"{v:6.2f} m  {lo:.2f} to {hi:.2f} m" if np.isfinite(v) and np.isfinite(lo)

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, ClassVar
 
 from ..records.fields import Field, Record
 from ..records.notices import Notice
+from ..records.numbers import shortest
 
 if TYPE_CHECKING:
     from .analysis import ClimateOptions, ClimateResult, Curves, Diagnostics, Sensitivity
@@ -76,7 +77,8 @@ class ClimateRecord(Record):
         for rv in self.result.return_values:
             band = ("" if rv["lower"] is None or rv["upper"] is None
                     else f" ({rv['lower']:.2f} to {rv['upper']:.2f} m)")
-            parts.append(f"{rv['period']:g} years: {rv['value']:.2f} m{band}")
+            assert rv["period"] is not None
+            parts.append(f"{shortest(rv['period'])} years: {rv['value']:.2f} m{band}")
         return "; ".join(parts)
 
     def report_text(self) -> str:

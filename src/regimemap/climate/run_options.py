@@ -65,11 +65,14 @@ def threshold_option(text: str) -> tuple[str, float]:
 
 def return_periods_option(text: str) -> tuple[float, ...]:
     """``--return-periods``: years, comma-separated, each in (1, 100000]; ValueError otherwise.
+    Sorted, each period once (as ``[lifetime] thresholds`` are).
 
     Examples
     --------
     >>> return_periods_option("10,50,100")
     (10.0, 50.0, 100.0)
+    >>> return_periods_option("100,10,10")
+    (10.0, 100.0)
     """
     try:
         out = tuple(float(v) for v in text.split(","))
@@ -78,4 +81,4 @@ def return_periods_option(text: str) -> tuple[float, ...]:
                          ) from None
     if not out or any(not (1.0 < v <= 1e5) for v in out):
         raise ValueError(f"return periods must be numbers of years in (1, 100000], got {text!r}")
-    return out
+    return tuple(sorted(set(out)))

@@ -8,7 +8,7 @@ digits keep every number the report's closed forms produce well beyond what a ma
 margin can tell.  A report's number keeps its trailing zeros (:func:`format_significant`), a
 figure's label has a true minus (:func:`significant`), a notebook's table is plain
 (:func:`number`, :func:`number_range`), and a parameter in a title is as short as Python
-writes it (:func:`short`).
+writes it (:func:`short`; with every digit it needs to read back, :func:`shortest`).
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ from typing import Any, TypeVar
 import numpy as np
 
 __all__ = ["DIGITS", "format_significant", "json_number", "number", "number_range", "optional_float",
-           "round_sig", "rounded", "short", "significant", "text"]
+           "round_sig", "rounded", "short", "shortest", "significant", "text"]
 
 #: Significant digits of the numbers written as text (CSV, JSON).
 DIGITS = 12
@@ -125,3 +125,16 @@ def number_range(values: Iterable[float], digits: int = 4) -> str:
 def short(x: float) -> str:
     """``x`` as Python's ``g`` format writes it (``0.5``, ``1e-05``): a parameter in a title."""
     return f"{x:g}"
+
+
+def shortest(x: float) -> str:
+    """``x`` as :func:`short` writes it when that reads back as ``x``, else every digit Python needs
+    (``repr``): two different numbers never read the same (a return period in a table).
+
+    Examples
+    --------
+    >>> shortest(50.0), shortest(1.0000001), shortest(0.1)
+    ('50', '1.0000001', '0.1')
+    """
+    s = short(x)
+    return s if float(s) == x else repr(float(x))
