@@ -233,6 +233,19 @@ def test_a_gzip_record_that_decompresses_past_the_limit_is_refused(tmp_path, mon
         records.read_record(f)
 
 
+@pytest.mark.parametrize(("shares", "limit", "shown"), [
+    ({1991: 0.9996, 1992: 0.45}, 1.0, ["1991 (99.96 %)", "1992 (45 %)"]),  # not 1991 (100 %)
+    ({1991: 0.796}, 0.8, ["1991 (79.6 %)"]),
+    ({1991: 0.79999999999}, 0.8, ["1991 (79.999999999 %)"]),
+    ({1991: 0.5}, 0.8, ["1991 (50 %)"]),
+])
+def test_a_year_below_the_coverage_never_reads_as_the_limit(shares, limit, shown):
+    from regimemap.climate.wave_record import Quality
+
+    (warning,) = Quality(missing=0, duplicates=0, unsorted=0, coverage=shares).warnings(limit)
+    assert warning.endswith(", ".join(shown)), warning
+
+
 @pytest.mark.parametrize(("column", "what"), [({"period": "nope"}, "period"), ({"period": "Hs"}, "period"),
                                               ({"hs": "WVHT"}, "significant wave height"),
                                               ({"time": "when"}, "time")])

@@ -12,6 +12,7 @@ names the first such time, its copies and how far apart the copies are.
 
 from __future__ import annotations
 
+import decimal
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -149,8 +150,25 @@ class Quality:
         if short:
             out.append(f"{len(short)} calendar year(s) below {100 * (min_coverage or 0.0):g} % coverage "
                        "left out of the annual maxima: "
-                       + ", ".join(f"{y} ({100 * self.coverage[y]:.0f} %)" for y in short))
+                       + ", ".join(f"{y} ({_percent_below(self.coverage[y], min_coverage or 0.0)} %)"
+                                   for y in short))
         return out
+
+
+def _percent_below(share: float, limit: float) -> str:
+    """``share`` (below ``limit``) in per cent, whole unless that reads as the limit (as the warning
+    writes it, ``{100 * limit:g}``) or above: then with the fewest decimals that keep it below
+    (99.96 % below 100 % reads ``99.96``, not ``100``)."""
+    text = f"{100 * share:.0f}"
+    with decimal.localcontext() as ctx:
+        ctx.prec = 2000  # every digit of a float: the products below are exact
+        exact = decimal.Decimal(share) * 100
+        top = min(decimal.Decimal(limit) * 100, decimal.Decimal(f"{100 * limit:g}"))
+        digits = 0
+        while decimal.Decimal(text) >= top and exact < top:
+            digits += 1
+            text = f"{exact:.{digits}f}"
+    return text
 
 
 @dataclass(frozen=True)
