@@ -254,3 +254,26 @@ def test_the_semicolon_text_refuses_a_column_it_does_not_have(column, what):
     with pytest.raises(RecordError, match=rf"no column '{name}' for the {what} \(columns: time, Hs, Tz"):
         read_record(NDBC44007, **column)
     assert read_record(NDBC44007, time="time", hs="hs", period="Tz").period_name == "Tz"  # its own names
+
+
+def test_a_file_named_nc_that_is_not_netcdf_is_said_in_one_short_line(tmp_path):
+    p = tmp_path / "x.nc"
+    p.write_bytes(gzip.decompress(OREGON.read_bytes()))
+    with pytest.raises(RecordError) as info:
+        read_record(p)
+    assert str(info.value).startswith(f"{p}: cannot open as NetCDF: not a NetCDF file (")
+    assert "xarray" not in str(info.value) and "http" not in str(info.value)
+
+
+@pytest.mark.parametrize(("raw", "where"), [
+    (b"tim\x94e,hs\n2000-01-01,1\n", "byte 0x94 at offset 3, line 1"),
+    (b"\xef\xbb\xbftime,hs\n2000-01-01,1.\x94\n", "byte 0x94 at offset 24, line 2"),  # counted with the BOM
+])
+def test_a_file_that_is_not_utf8_names_the_byte(tmp_path, raw, where):
+    p = tmp_path / "b.csv"
+    p.write_bytes(raw)
+    with pytest.raises(RecordError, match=rf"^{p}: not a UTF-8 text file \(nor NetCDF\): {where}$"):
+        read_record(p)
+    (tmp_path / "b.csv.gz").write_bytes(gzip.compress(raw))
+    with pytest.raises(RecordError, match=r"of the decompressed text"):
+        read_record(tmp_path / "b.csv.gz")

@@ -21,6 +21,7 @@ a missing code (:data:`MISSING_CODES`) or empty are missing, and counted.
 
 from __future__ import annotations
 
+import codecs
 import csv
 import io
 import math
@@ -48,6 +49,10 @@ PERIOD_NAMES = ("tp", "tz", "dpd", "apd")
 #: Values that mean "missing" in wave records (NDBC's 99.00 and 999, the common -999 and 9999).
 MISSING_CODES = (99.0, 999.0, 9999.0, -99.0, -999.0, -9999.0)
 _MISSING_TEXT = {"", "nan", "na", "n/a", "null", "mm", "-"}
+
+
+#: The suffixes of a NetCDF file (which must then start as one: ``CDF``, or HDF5's signature).
+NETCDF_SUFFIXES = (".nc", ".nc4", ".cdf", ".netcdf")
 
 
 class RecordError(ValueError):
@@ -277,6 +282,9 @@ def _read_netcdf(path: str, time: str | None, hs: str | None, period: str | None
     try:
         ds = xr.open_dataset(path)
     except Exception as exc:  # the engines raise many kinds
+        if "xarray's" in str(exc) and "IO backends" in str(exc):  # NetCDF-4 (HDF5) without netCDF4
+            raise RecordError(f"{path}: cannot open as NetCDF: no installed engine reads it (NetCDF-4 "
+                              "needs netCDF4: pip install 'regimemap[metocean]')") from None
         raise RecordError(f"{path}: cannot open as NetCDF ({exc})") from None
     with ds:
         names = [str(v) for v in ds.variables]
@@ -300,6 +308,33 @@ def _read_netcdf(path: str, time: str | None, hs: str | None, period: str | None
         p = np.where(np.isin(p, MISSING_CODES), np.nan, p)
     _check_values(path, h, p, [k + 1 for k in range(h.size)], names[ih], None if ip is None else names[ip])
     return make_record(path, t, h, p, None if ip is None else names[ip], drop_spikes)
+
+
+def _is_netcdf(raw: bytes) -> bool:
+    """Whether ``raw`` starts as NetCDF does: classic ``CDF``, or NetCDF-4's HDF5 signature (at 0, or
+    after a user block of 512, 1024, 2048 ... bytes)."""
+    if raw[:3] == b"CDF":
+        return True
+    at = 0
+    while at < len(raw):
+        if raw[at:at + 4] == b"\x89HDF":
+            return True
+        at = 512 if at == 0 else 2 * at
+    return False
+
+
+def _text(path: str, raw: bytes, gzipped: bool) -> str:
+    """``raw`` as UTF-8 text (a byte-order mark dropped); else an error naming the first byte that is
+    not UTF-8, its offset (in the decompressed text of a gzip file) and its line."""
+    start = len(codecs.BOM_UTF8) if raw.startswith(codecs.BOM_UTF8) else 0
+    try:
+        return raw[start:].decode("utf-8")
+    except UnicodeDecodeError as exc:
+        at = start + exc.start
+        where = " of the decompressed text" if gzipped else ""
+        line = raw.count(b"\n", 0, at) + 1
+        raise RecordError(f"{path}: not a UTF-8 text file (nor NetCDF): byte 0x{raw[at]:02x} at offset "
+                          f"{at}{where}, line {line}") from None
 
 
 def read_record(path: str | Path, time: str | None = None, hs: str | None = None,
@@ -331,16 +366,16 @@ def read_record(path: str | Path, time: str | None = None, hs: str | None = None
         raise RecordError(f"{p}: cannot read the wave record: {exc.reason}") from None
     except OSError as exc:
         raise RecordError(f"{p}: cannot read ({exc.strerror or exc})") from None
-    if raw[:2] == b"\x1f\x8b":
+    gzipped = raw[:2] == b"\x1f\x8b"
+    if gzipped:
         raw = _gunzip(p, raw)
     try:
-        if Path(p).suffix.lower() in (".nc", ".nc4", ".cdf", ".netcdf") or raw[:3] == b"CDF" \
-                or raw[:4] == b"\x89HDF":
+        if _is_netcdf(raw):
             return _read_netcdf(p, time, hs, period, drop_spikes)
-        try:
-            text = raw.decode("utf-8-sig")
-        except UnicodeDecodeError:
-            raise RecordError(f"{p}: not a text file (nor NetCDF)") from None
+        if Path(p).suffix.lower() in NETCDF_SUFFIXES:
+            raise RecordError(f"{p}: cannot open as NetCDF: not a NetCDF file (it starts with neither "
+                              "'CDF' nor HDF5's signature)")
+        text = _text(p, raw, gzipped)
         lines = text.splitlines()
         if not lines or not any(line.strip() for line in lines[1:]):
             raise RecordError(f"{p}: no data (a header line and at least one line of values expected)")
