@@ -215,7 +215,8 @@ def test_the_figure_names_the_method(method, label):
     from regimemap.climate.figures import climate_figure
 
     r = analyse(read_record(DATA / "ndbc44007_1996_hs_tz.txt.gz"),
-                ClimateOptions(threshold=("quantile", 0.99), interval=method, replicates=20))
+                ClimateOptions(threshold=("quantile", 0.99), interval=method,
+                               replicates=40 if method == "bootstrap" else 20))  # 40: a 90 % bootstrap's least
     fig = climate_figure(r, curves(r))
     ax = next(a for a in fig.axes if a.get_label() == "return levels")
     assert label in [t.get_text() for t in ax.get_legend().get_texts()]
@@ -243,3 +244,16 @@ def test_the_lifetimes_replicate_climates_are_the_posterior_draws():
     assert len(climates) == 12
     assert [c.shape for c in climates] == r.band.draws["xi"][:12].tolist()
     assert [c.storms_per_year for c in climates] == r.band.draws["rate"][:12].tolist()
+
+
+def test_a_bootstrap_interval_needs_two_replicates_in_each_tail():
+    from regimemap.climate.intervals import bootstrap_minimum
+
+    assert [bootstrap_minimum(c) for c in (0.5, 0.9, 0.95, 0.99, 0.999)] == [8, 40, 80, 400, 4000]
+    ClimateOptions(interval="bootstrap", replicates=40).check()
+    ClimateOptions(interval="bootstrap", replicates=0).check()  # no interval
+    ClimateOptions(interval="posterior", replicates=1).check()  # the posterior draws its own
+    with pytest.raises(ValueError, match=r"^replicates must be 0 \(no interval\) or at least 80 for a 95 %"):
+        ClimateOptions(interval="bootstrap", replicates=79, confidence=0.95).check()
+    with pytest.raises(ValueError, match=r"^shape must be a Weibull k > 0, got nan"):
+        ClimateOptions(shape=float("nan")).check()  # whatever the distribution
