@@ -15,6 +15,7 @@ import click
 from ..climate.run_options import return_periods_option, threshold_option
 from ..dynamics.limits import Limit
 from ..io.formats import FIGURES
+from ..lifetime.climate import WEIBULL_SHAPE_RANGE
 from ._check import refuse_notices
 from ._common import Checked, json_option, number_in, outputs_option
 from ._inputs import RECORD_FILE
@@ -32,7 +33,7 @@ __all__ = ["climate_cmd"]
 #: The ranges of the numeric options (``[lifetime.record]`` takes gap_hours, shape and coverage in the
 #: same ranges).
 GAP = Limit(0.0, 8760.0, open_lo=True, unit="h")
-SHAPE = Limit(0.5, 5.0)
+SHAPE = Limit(*WEIBULL_SHAPE_RANGE)
 COVERAGE = Limit(0.0, 1.0, open_lo=True)
 CONFIDENCE = Limit(0.5, 0.999)
 
@@ -67,7 +68,7 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
               help="gpd or weibull for storm peaks (default gpd); gumbel or gev for annual maxima "
                    "(default gumbel).")
 @click.option("--shape", type=number_in("shape", SHAPE), default=2.0, show_default=True,
-              metavar="K", help="The fixed Weibull shape k (Goda: 0.75 to 2), 0.5 to 5.")
+              metavar="K", help=f"The fixed Weibull shape k (Goda: 0.75 to 2), {SHAPE.lo:g} to {SHAPE.hi:g}.")
 @click.option("--coverage", type=number_in("coverage", COVERAGE), default=0.8,
               show_default=True, metavar="SHARE",
               help="Least share of a calendar year's hours observed for its annual maximum, (0, 1].")
