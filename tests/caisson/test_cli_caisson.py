@@ -114,9 +114,12 @@ def test_bad_file_exits_2_with_one_line_and_writes_nothing(tmp_path: Path, old: 
 
 
 def test_usage_errors(tmp_path: Path, goda: Path) -> None:
+    goda.with_name("binary.toml").write_bytes(b"abc\x94\x95")
     for args, pattern in (
         (["caisson"], "missing DESIGN.toml"),
         (["caisson", str(tmp_path / "absent.toml")], "cannot read the design file"),
+        (["caisson", str(goda.with_name("binary.toml"))],
+         r"binary\.toml: cannot read the design file: not a UTF-8 text file: byte 0x94 at offset 3, line 1 "),
         (["caisson", "--example", str(goda)], "--example prints the example file"),
         (["caisson", str(goda), "-o", str(tmp_path / "sheet.txt")], r"\.png, \.svg or \.pdf for the design sheet"),
         (["caisson", str(goda), "-o", str(tmp_path / "no" / "sheet.pdf")], "does not exist"),
@@ -124,7 +127,7 @@ def test_usage_errors(tmp_path: Path, goda: Path) -> None:
         r = invoke_cli(args)
         assert r.code == 2, (args, r.output)
         assert len(r.stderr.strip().splitlines()) == 1 and re.search(pattern, r.stderr), r.stderr
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["goda.toml"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["binary.toml", "goda.toml"]
 
 
 @pytest.mark.render

@@ -198,6 +198,25 @@ def test_a_bad_study_is_refused_in_one_line(write_study, text, says):
     assert says in str(info.value) and str(info.value).startswith(str(path))
 
 
+def test_a_study_file_that_cannot_be_read_says_so_once(tmp_path):
+    # not 'cannot read the study file: ...: cannot read the design file: ...'
+    with pytest.raises(StudyFileError) as info:
+        read_study(tmp_path / "none.toml")
+    assert str(info.value) == f"{tmp_path / 'none.toml'}: cannot read the study file: No such file or directory"
+    binary = tmp_path / "b.toml"
+    binary.write_bytes(b"seed = 1\n\xff\xfe\n")
+    with pytest.raises(StudyFileError) as info:
+        read_study(binary)
+    assert str(info.value) == (f"{binary}: cannot read the study file: not a UTF-8 text file: byte 0xff at "
+                               "offset 9, line 2")
+    path = tmp_path / "s.toml"
+    path.write_text('seed = 1\nbase = "missing.toml"\n', encoding="utf-8")
+    with pytest.raises(StudyFileError) as info:
+        read_study(path)
+    assert str(info.value) == (f"{path}, line 2: base = 'missing.toml': cannot read the design file "
+                               f"'{tmp_path / 'missing.toml'}': No such file or directory")
+
+
 def test_the_text_parses_without_a_file():
     s = parse_study(example_study_text(), "example.toml")
     assert s.source == "example.toml" and len(s.sections) == 3

@@ -109,6 +109,9 @@ def test_typo_suggests_the_key(tmp_path: Path) -> None:
     assert "unknown key [site] sea_bed_slope" in msg and "did you mean 'seabed_slope'?" in msg
     msg = error_of(edit(EXAMPLE, "[caisson]", "[caison]"), tmp_path)
     assert "unknown table [caison]" in msg and "did you mean 'caisson'?" in msg
+    # a key above every table (a study file given as a design file) is a key, not a table
+    msg = error_of("seed = 2026\n" + EXAMPLE, tmp_path)
+    assert ", line 1: unknown key seed above the tables; a design file has only the tables [site]," in msg
 
 
 def test_unknown_key_without_suggestion(tmp_path: Path) -> None:

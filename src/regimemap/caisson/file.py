@@ -191,6 +191,9 @@ def _check_tables(data: Mapping[str, Any], r: KeyReader) -> None:
     are checked with it, :func:`~regimemap.lifetime.file.read_lifetime`), none other."""
     tables = [*DESIGN_KEYS, "lifetime"]
     for section, table in data.items():
+        if section not in tables and not isinstance(table, dict):  # a key above every table
+            raise r.fail(f"unknown key {section} above the tables; a design file has only the "
+                         f"tables {', '.join(f'[{s}]' for s in tables)}", section)
         if section not in tables:
             raise r.fail(f"unknown table [{section}]{did_you_mean(section, dict.fromkeys(tables))}; "
                          f"accepted tables: {', '.join(f'[{s}]' for s in tables)}", section)

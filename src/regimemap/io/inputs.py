@@ -159,7 +159,7 @@ class DesignInputError(InputFileError, DesignFileError):
 
 def _design_error(exc: InputFileError) -> DesignInputError:
     return DesignInputError(exc.path, exc.what, exc.reason,
-                            f"{exc.path}: cannot read the design file: {exc.reason}")
+                            f"{exc.path}: cannot read the {exc.what}: {exc.reason}")
 
 
 def check_design_file(path: str | os.PathLike[str]) -> int:
@@ -176,21 +176,32 @@ def check_design_file(path: str | os.PathLike[str]) -> int:
         raise _design_error(exc) from None
 
 
-def read_design_text(path: str | os.PathLike[str]) -> str:
+def read_design_text(path: str | os.PathLike[str], what: str = "design file") -> str:
     """The text of a design file, after :func:`check_design_file` (UTF-8, newlines as ``\\n``,
     as ``Path.read_text`` gives them, and a byte order mark at its start dropped, as editors on
     Windows write one).  Every TOML file the tool reads -- a design file, a study file, a study's
     base design -- is read here.
 
+    ``what`` names the file in the messages (``"study file"``).
+
     Raises
     ------
     DesignInputError
-        See :func:`check_design_file`.
-    OSError, UnicodeDecodeError
-        If the file cannot be read, or is not UTF-8.
+        See :func:`check_design_file`; also when the file is not UTF-8 (``/x.toml: cannot read the
+        design file: not a UTF-8 text file: byte 0x94 at offset 3, line 1``).
+    OSError
+        If the file cannot be read.
     """
     try:
-        data = read_limited(path, max_bytes=MAX_DESIGN_FILE_BYTES, what="design file")
+        data = read_limited(path, max_bytes=MAX_DESIGN_FILE_BYTES, what=what)
     except InputFileError as exc:
         raise _design_error(exc) from None
-    return data.decode("utf-8-sig").replace("\r\n", "\n").replace("\r", "\n")
+    try:
+        text = data.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        at = exc.start
+        line = 1 + data[:at].count(b"\n")
+        reason = f"not a UTF-8 text file: byte 0x{data[at]:02x} at offset {at}, line {line}"
+        p = os.fspath(path)
+        raise _design_error(InputFileError(p, what, reason, f"{what} {p!r}: {reason}")) from None
+    return text.replace("\r\n", "\n").replace("\r", "\n")

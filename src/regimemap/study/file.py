@@ -33,7 +33,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from ..io.inputs import read_design_text
+from ..io.inputs import InputFileError, read_design_text
 from ..io.toml_errors import did_you_mean
 from ..io.toml_keys import number_of
 from ..io.toml_lines import key_line
@@ -269,7 +269,10 @@ def _base_tables(data: Mapping[str, Any], text: str, source: str, where: Where) 
         base_path = Path(source).parent / data["base"]
         try:
             base_text = read_design_text(base_path)
-        except (OSError, UnicodeDecodeError, ValueError) as exc:
+        except InputFileError as exc:
+            raise where.fail_at(line, f"base = {data['base']!r}: cannot read the design file "
+                                      f"{str(base_path)!r}: {exc.reason}") from None
+        except (OSError, ValueError) as exc:
             raise where.fail_at(line,
                                 f"base = {data['base']!r}: cannot read the design file: {exc}") from None
         base_data = load_toml(base_text, str(base_path))
@@ -346,7 +349,9 @@ def read_study(path: str | Path) -> Study:
     """
     p = Path(path)
     try:
-        text = read_design_text(p)
-    except (OSError, UnicodeDecodeError, ValueError) as exc:
+        text = read_design_text(p, "study file")
+    except InputFileError as exc:
+        raise StudyFileError(f"{p}: cannot read the study file: {exc.reason}") from None
+    except (OSError, ValueError) as exc:
         raise StudyFileError(f"{p}: cannot read the study file: {exc}") from None
     return parse_study(text, source=str(p))
