@@ -39,6 +39,11 @@ def test_crlf_and_quoted_names(tmp_path):
     assert read_points_csv(path) == [DesignPoint(0.1, 0.2, "a, b"), DesignPoint(0.001, 2.0, 'x"y')]
 
 
+def test_empty_fields_past_the_header_are_no_values(tmp_path):
+    assert read_points_csv(_write(tmp_path, "k,mu\n0.1,0.2,,\n0.3,0.4, \n")) == [DesignPoint(0.1, 0.2),
+                                                                              DesignPoint(0.3, 0.4)]
+
+
 def test_header_only_is_no_points(tmp_path):
     assert read_points_csv(_write(tmp_path, "k,mu\n")) == []
 
@@ -68,6 +73,9 @@ BAD_FILES = [
     ("k,mu\n0.1,abc\n", r", line 2, column mu: mu must be a finite number >= 0 \(at most 1e\+100\), got 'abc' \(not a number\)"),
     ("k,mu\n0.1,0.2\nfoo,0.2\n", r", line 3, column k: k must be a finite number >= 0 \(at most 1e\+100\), got 'foo'"),
     ("k,mu\n0.1,0.2\n\n0.3\n", r", line 4, column mu: mu is missing"),
+    # a value without a column (an unquoted name with the separator) is not dropped unsaid
+    ("k,mu\n0.3,0.6,7,8,9\n", r", line 2: 5 fields, but the header names 2 columns \(a value without a column"),
+    ("k,mu,name\n0.3,0.6,pier, head\n", r", line 2: 4 fields, but the header names 3 columns"),
     ("k,mu\n,0.2\n", r", line 2, column k: k is missing"),
     ("k,mu\n-0.1,0.2\n", r", line 2, column k: k must be a finite number >= 0 \(at most 1e\+100\), got '-0.1'$"),
     ("k,mu\n0.1,-1e-9\n", r", line 2, column mu: mu must be a finite number >= 0 \(at most 1e\+100\), got '-1e-9'$"),

@@ -158,9 +158,13 @@ def read_points_table(path: str | os.PathLike[str]) -> PointsTable:
                 line = reader.line_num
                 if not row or all(not c.strip() for c in row):
                     continue
+                where = f"{path}, line {line}"
+                if len(row) > len(cols) and any(c.strip() for c in row[len(cols):]):
+                    raise ValueError(f"{where}: {len(row)} fields, but the header names {len(cols)} "
+                                     "columns (a value without a column; quote a name that holds the "
+                                     "separator)")
                 if len(row) < len(cols):
                     row = row + [""] * (len(cols) - len(row))
-                where = f"{path}, line {line}"
 
                 def cell(c: str, row: list[str] = row) -> str:
                     v = row[idx[c]].strip()
