@@ -190,6 +190,10 @@ def test_a_key_of_a_record_table_is_refused_at_its_own_line(tmp_path, write_stud
     ('trials = 0\nbase = "goda.toml"\n' + SECTIONS + SCENARIOS, "trials = 0"),
     ('seed = 1\nbase = "goda.toml"\n[[section]]\nname = "x"\n' + SCENARIOS, "chainage = None"),
     ('seed = [1\n', "TOML syntax error"),
+    # a tolerance as wide as the bracket: the search would stop at once, its width outside its band
+    ('seed = 1\nbase = "goda.toml"\n' + section_table("c", 0.0, "target = 0.1", "widths = [16.0, 40.0]",
+                                                      "tolerance = 24") + SCENARIOS,
+     "[[section]] tolerance = 24: not below the bracket of widths (16 to 40 m, 24 m wide)"),
 ])
 def test_a_bad_study_is_refused_in_one_line(write_study, text, says):
     path = write_study(text, "s.toml")

@@ -297,12 +297,24 @@ def section_widths(where: Where, index: int, sec: Mapping[str, Any]
                                 "bracket of the width for the target)")
     tolerance: float = default_of(SectionKeys, "tolerance")
     if "tolerance" in sec:
-        t = number_of(sec["tolerance"])
-        if target is None or t is None or not (math.isfinite(t) and SECTION_KEYS["tolerance"].check(t)):
-            raise where.fail_at(line("tolerance"), f"[[section]] tolerance = {sec['tolerance']!r}: accepted: "
-                                f"{SECTION_KEYS['tolerance'].accepted}, with target")
-        tolerance = t
+        tolerance = _tolerance(where, line("tolerance"), sec["tolerance"], target, widths)
     return widths, target, tolerance
+
+
+def _tolerance(where: Where, at: int | None, value: Any, target: float | None,
+               widths: tuple[float, ...] | None) -> float:
+    """A section's ``tolerance``: > 0, with a target, and below the bracket of its widths."""
+    t = number_of(value)
+    if target is None or t is None or not (math.isfinite(t) and SECTION_KEYS["tolerance"].check(t)):
+        raise where.fail_at(at, f"[[section]] tolerance = {value!r}: accepted: "
+                            f"{SECTION_KEYS['tolerance'].accepted}, with target")
+    assert widths is not None  # a target has its bracket
+    span = widths[-1] - widths[0]
+    if t >= span:
+        raise where.fail_at(at, f"[[section]] tolerance = {value!r}: not below the bracket of widths "
+                            f"({widths[0]:g} to {widths[-1]:g} m, {span:g} m wide): the search would stop "
+                            "at its first step")
+    return t
 
 
 def year_table(where: Where, index: int, key: str, value: Any, years: int, factor: bool
