@@ -54,6 +54,20 @@ def test_json_keys_and_bands(run_cli):
     assert again.stdout == r.stdout  # --bootstrap is the old spelling of --replicates
 
 
+@pytest.mark.slow
+def test_the_default_replicates_are_enough_for_the_bootstrap_s_level(run_cli):
+    # 200 by default; a 99 % bootstrap needs 4/(1 - 0.99) = 400, and the default gives them
+    r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--interval", "bootstrap", "--confidence",
+                    "0.99", "--json"]))
+    assert json.loads(r.stdout)["replicates"] == 400
+    r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--replicates", "0", "--json"]))
+    assert json.loads(r.stdout)["replicates"] == 0
+    r = ok(run_cli(["climate", EXCERPT, "--threshold", "99%", "--json"]))
+    assert json.loads(r.stdout)["replicates"] == 200
+    failed(run_cli(["climate", EXCERPT, "--interval", "bootstrap", "--confidence", "0.99", "--replicates", "200"]),
+           "'--replicates'", "at least 400")
+
+
 def test_text_report_annual_maxima_needs_years(run_cli):
     failed(run_cli(["climate", OREGON, "--method", "annual-maxima"]), "annual maxima", "at least 5 years")
     r = ok(run_cli(["climate", OREGON, "--threshold", "4.5", "--gap", "24", "--bootstrap", "20"]))

@@ -84,11 +84,11 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
                    "profile (the profile likelihood of the storm count and the peaks) or bootstrap "
                    "(non-parametric percentile; it covers less than it claims on short records).")
 @click.option("--replicates", "--bootstrap", "replicates", type=click.IntRange(min=0, max=100000),
-              default=200, show_default=True, metavar="N",
+              default=None, metavar="N",
               help="Replicate fits: posterior or likelihood draws, or bootstrap refits (0: no "
-                   "interval). A bootstrap interval needs at least 4/(1 - LEVEL) of them (40 at 0.9), "
-                   "so that each tail beyond it holds two replicates or more. --bootstrap N is the "
-                   "old spelling.")
+                   "interval; default 200, or 4/(1 - LEVEL) for a bootstrap when more). A bootstrap "
+                   "interval needs at least 4/(1 - LEVEL) of them (40 at 0.9), so that each tail beyond "
+                   "it holds two replicates or more. --bootstrap N is the old spelling.")
 @click.option("--seed", type=click.IntRange(min=0), default=0, show_default=True, metavar="S",
               help="Root seed of the draws (the same seed, the same intervals).")
 @click.option("--time", "time_col", default=None, metavar="NAME", help="The time column (CSV, NetCDF).")
@@ -104,7 +104,7 @@ def _check_figures(outputs: tuple[str, ...], diagnostics: str | None) -> None:
 @click.option("--strict", is_flag=True, help="Quality-control and fit warnings are errors (exit 2).")
 def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hours: float,
                 distribution: str | None, shape: float, coverage: float, return_periods: tuple[float, ...],
-                confidence: float, interval: str, replicates: int, seed: int, time_col: str | None,
+                confidence: float, interval: str, replicates: int | None, seed: int, time_col: str | None,
                 hs_col: str | None, period_col: str | None, drop_spikes: bool, as_json: bool,
                 outputs: tuple[str, ...], diagnostics: str | None, strict: bool) -> None:
     """Return values of the significant wave height, with their intervals, from a wave RECORD.
@@ -134,8 +134,12 @@ def climate_cmd(record: str, method: str, threshold: tuple[str, float], gap_hour
       regimemap climate buoy.csv --method annual-maxima --distribution gev --json
     """
     from ..climate import ClimateOptions
+    from ..climate.intervals import bootstrap_minimum
 
     _check_figures(outputs, diagnostics)
+    if replicates is None:  # the default: 200, or as many as the bootstrap's level needs
+        fewest = bootstrap_minimum(confidence) if interval == "bootstrap" else 0
+        replicates = max(ClimateOptions.replicates, fewest)
     options = ClimateOptions(method=method, threshold=threshold, gap_hours=gap_hours,
                              distribution=distribution, shape=shape, coverage=coverage,
                              return_periods=return_periods, confidence=confidence, interval=interval,
