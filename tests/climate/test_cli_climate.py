@@ -194,8 +194,8 @@ def test_each_error_names_its_option(run_cli, args, option, parts):
     (["--interval", "bootstrap", "--replicates", "1"], "'--replicates'",
      ["replicates must be 0 (no interval) or at least 40 for a 90 % bootstrap interval", "got 1"]),
     (["--interval", "bootstrap", "--replicates", "39"], "'--replicates'", ["at least 40", "got 39"]),
-    (["--interval", "bootstrap", "--confidence", "0.99"], "'--replicates'",
-     ["at least 400 for a 99 % bootstrap interval", "got 200"]),  # the default is too few there
+    (["--interval", "bootstrap", "--confidence", "0.99", "--replicates", "200"], "'--replicates'",
+     ["at least 400 for a 99 % bootstrap interval", "got 200"]),
     (["--period", "nope"], "'--period'", ["no column 'nope' for the period (columns: time, Hs, Tz"]),
     (["--hs", "WVHT"], "'--hs'", ["no column 'WVHT' for the significant wave height"]),
 ])
