@@ -367,7 +367,7 @@ POINTS_ERRORS = [
     ("gamma0.csv", r"gamma0\.csv, line 2, column gamma: gamma must be"),
     ("kprime2.csv", r"kprime2\.csv, line 2, column kprime: kprime must be a number in \[-1, 1\]"),
     ("empty.csv", r"empty\.csv: empty file"),
-    ("binary.csv", r"binary\.csv, line \d+: not CSV text"),
+    ("binary.csv", r"binary\.csv: not a UTF-8 text file \(byte 0x80; save it as UTF-8\)"),
     ("missing.csv", r"missing\.csv"),
     ("", r"'--points'"),
 ]

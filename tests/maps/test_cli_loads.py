@@ -23,7 +23,8 @@ GODA_P = Parameters(0.7, -0.018, buoyancy=0.318, uplift_ratio=0.524)
     ("--uplift", "-1", r"uplift must be a number in [0, 1e+06], got '-1'"),
     ("--uplift-ratio", "nan", r"uplift_ratio must be a number in [0, 1e+06], got 'nan'"),
     ("--uplift-arm", "1.5", r"uplift_arm must be a number in [-1, 1], got '1.5'"),
-    ("--gyration", "0", r"gyration must be a number in (0, 1000], got '0'"),
+    ("--gyration", "0", r"gyration must be a number in [0.001, 1000], got '0'"),
+    ("--gyration", "1e-300", r"gyration must be a number in [0.001, 1000], got '1e-300'"),
     ("--crest", "x", r"crest must be a number in (0, 1000], got 'x' (not a number)"),
 ])
 @pytest.mark.parametrize("command", ["plot", "classify", "export"])

@@ -97,9 +97,9 @@ BAD_FILES = [
     ("k,mu,kprime\n0.1,0.2,nan\n", r", line 2, column kprime: kprime must be a number in \[-1, 1\]"),
     ('k,mu\n"0.1,0.2\n', r", line 2, column k: .*not a number"),
     ("k,mu\x00\n1,2\n", r", line 1: not CSV text \(NUL bytes; a binary file\?\)"),
-    (b"k,mu\n\xff\xfe\x00garbage\n", r", line \d+: not CSV text \('utf-8' codec can't decode"),
-    (bytes(range(256)) * 8, r", line \d+: not CSV text"),
-    (b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR", r", line \d+: not CSV text"),
+    (b"k,mu\n\xff\xfe\x00garbage\n", r": not a UTF-8 text file \(byte 0xff; save it as UTF-8\)$"),
+    (bytes(range(256)) * 8, r": not a UTF-8 text file \(byte 0x80; save it as UTF-8\)$"),
+    (b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR", r": not a UTF-8 text file \(byte 0x89; save it as UTF-8\)$"),  # a PNG
     ("k,mu\n" + "1" * 200_000 + ",2\n", r", line 2: not CSV text \(a line longer than 65536 characters\)$"),
     ('k,mu\n"' + ("1" * 1000 + "\n") * 200 + '",2\n', r", line \d+: not CSV text \(field larger than field limit"),
 ]

@@ -113,7 +113,7 @@ def test_parameters_are_validated():
                     (dict(uplift=-1.0), r"uplift must be a number in \[0, 1e\+06\], got -1.0"),
                     (dict(uplift_ratio=float("nan")), r"uplift_ratio must be a number in \[0, 1e\+06\], got nan"),
                     (dict(uplift_arm=1.5), r"uplift_arm must be a number in \[-1, 1\], got 1.5"),
-                    (dict(gyration=0.0), r"gyration must be a number in \(0, 1000\], got 0.0"),
+                    (dict(gyration=0.0), r"gyration must be a number in \[0.001, 1000\], got 0.0"),
                     (dict(gyration="1"), r"gyration must be .*got '1' \(not a number\)"),
                     (dict(crest=0.0), r"crest must be a number in \(0, 1000\], got 0.0")):
         with pytest.raises(ValueError, match=msg):

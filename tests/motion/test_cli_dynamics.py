@@ -197,7 +197,7 @@ def test_pulse_file_errors(tmp_path, text, pattern):
 def test_pulse_file_binary_and_folder(tmp_path):
     b = tmp_path / "b.csv"
     b.write_bytes(bytes(range(256)) * 4)
-    one_error(run("simulate", *MR, "--pulse-file", str(b)), 2, r"not CSV text")
+    one_error(run("simulate", *MR, "--pulse-file", str(b)), 2, r"b\.csv: not a UTF-8 text file \(byte 0x80; save it as UTF-8\)")
     one_error(run("simulate", *MR, "--pulse-file", str(tmp_path)), 2, r"is a (folder|directory)")
     one_error(run("simulate", *MR, "--pulse-file", str(tmp_path / "none.csv")), 2, r"cannot read pulse file")
 

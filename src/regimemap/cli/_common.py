@@ -140,7 +140,7 @@ LOAD_OPTIONS: tuple[tuple[str, str, str, str], ...] = (
      "Where the uplift acts, from C towards the seaward corner O', over B, in [-1, 1] "
      "(default 1/3: Goda's triangle)."),
     ("gyration", "--gyration", "I",
-     "Radius of gyration about C over B, i > 0 (default: the uniform block, "
+     "Radius of gyration about C over B, i >= 0.001 (default: the uniform block, "
      "i^2 = (1 + gamma^2)/3)."),
     ("crest", "--crest", "CREST",
      "Top of the block above C over H, > 0 (default 1); the force may act up to it: "

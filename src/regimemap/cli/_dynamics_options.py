@@ -51,7 +51,7 @@ def values_type(what: str) -> ParamType:
 
 
 _HELP = {
-    "half_width": "Half width B of the block (m), > 0 up to 1000.",
+    "half_width": "Half width B of the block (m), 0.001 to 1000.",
     "mu": "Friction coefficient (0 to 100), static = kinetic.",
     "k_peak": "Peak of the pulse, F/(m g) (0 to 100); positive pushes towards O.",
     "duration": "Whole duration of the pulse (s), 1e-4 to 100.",
@@ -65,7 +65,7 @@ _HELP = {
     "uplift_arm": "Where the uplift acts, from C towards O' over B (-1 to 1). Default 1/3 "
                   "(a triangular uplift pressure).",
     "gyration": "Radius of gyration about C over B (default: the uniform block's, "
-                "sqrt((1 + gamma^2)/3)); at most sqrt(1 + gamma^2).",
+                "sqrt((1 + gamma^2)/3)); 0.001 to sqrt(1 + gamma^2).",
 }
 
 _SWEEPS = " A list a,b,c or a range start:stop:count sweeps it."

@@ -52,7 +52,11 @@ def guarded_lines(fh: TextIO, path: str, what: str, max_bytes: int) -> Iterator[
     total = 0
     number = 0
     while True:
-        line = fh.readline(MAX_LINE + 1)
+        try:
+            line = fh.readline(MAX_LINE + 1)
+        except UnicodeDecodeError as exc:  # decoded a block at a time: the line is not known
+            raise ValueError(f"{path}: not a UTF-8 text file (byte 0x{exc.object[exc.start]:02x}; save it "
+                             "as UTF-8)") from None
         if not line:
             return
         number += 1

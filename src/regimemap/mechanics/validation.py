@@ -60,14 +60,15 @@ MIN_AXIS = 1e-6
 #: ``name: (low, high, low open, high open)``: buoyancy beta in [0, 1) (beta = 1
 #: floats the block), uplift u and its ratio nu to the push >= 0, the uplift's
 #: arm e_u in [-1, 1] (a fraction of B from C towards O'), the radius of
-#: gyration i > 0 (over B) and the crest (the top of the block over H) > 0,
+#: gyration i >= 0.001 (over B; below, the solve's accelerations overflow) and the
+#: crest (the top of the block over H) > 0,
 #: which bounds kprime from above.  The upper ends keep the closed forms finite.
 LOAD_LIMITS: dict[str, tuple[float, float, bool, bool]] = {
     "buoyancy": (0.0, 1.0, False, True),
     "uplift": (0.0, 1e6, False, False),
     "uplift_ratio": (0.0, 1e6, False, False),
     "uplift_arm": (-1.0, 1.0, False, False),
-    "gyration": (0.0, 1e3, True, False),
+    "gyration": (1e-3, 1e3, False, False),
     "crest": (0.0, 1e3, True, False),
 }
 #: kprime closer to 0 than this is taken as 0 (a subnormal k' would make
