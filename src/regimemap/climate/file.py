@@ -21,7 +21,6 @@ a missing code (:data:`MISSING_CODES`) or empty are missing, and counted.
 
 from __future__ import annotations
 
-import codecs
 import csv
 import io
 import math
@@ -33,7 +32,7 @@ from pathlib import Path
 import numpy as np
 from numpy.typing import NDArray
 
-from ..io.inputs import InputFileError, check_input_file, read_limited
+from ..io.inputs import InputFileError, NotUTF8Error, check_input_file, read_limited, utf8_text
 from .wave_record import HS_MAX, PERIOD_MAX, Record, make_record
 
 __all__ = ["HS_NAMES", "MISSING_CODES", "PERIOD_NAMES", "TIME_NAMES", "RecordError", "read_record"]
@@ -326,15 +325,11 @@ def _is_netcdf(raw: bytes) -> bool:
 def _text(path: str, raw: bytes, gzipped: bool) -> str:
     """``raw`` as UTF-8 text (a byte-order mark dropped); else an error naming the first byte that is
     not UTF-8, its offset (in the decompressed text of a gzip file) and its line."""
-    start = len(codecs.BOM_UTF8) if raw.startswith(codecs.BOM_UTF8) else 0
     try:
-        return raw[start:].decode("utf-8")
-    except UnicodeDecodeError as exc:
-        at = start + exc.start
-        where = " of the decompressed text" if gzipped else ""
-        line = raw.count(b"\n", 0, at) + 1
-        raise RecordError(f"{path}: not a UTF-8 text file (nor NetCDF): byte 0x{raw[at]:02x} at offset "
-                          f"{at}{where}, line {line}") from None
+        return utf8_text(raw)
+    except NotUTF8Error as exc:
+        where = exc.where.replace(", line", " of the decompressed text, line") if gzipped else exc.where
+        raise RecordError(f"{path}: not a UTF-8 text file (nor NetCDF): {where}") from None
 
 
 def read_record(path: str | Path, time: str | None = None, hs: str | None = None,

@@ -18,13 +18,14 @@ inputs gives its own.
 
 from __future__ import annotations
 
+import codecs
 import os
 import stat
 
 from .toml_errors import DesignFileError
 
-__all__ = ["DesignInputError", "InputFileError", "MAX_DESIGN_FILE_BYTES", "check_design_file",
-           "check_input_file", "file_kind", "read_design_text", "read_limited"]
+__all__ = ["DesignInputError", "InputFileError", "MAX_DESIGN_FILE_BYTES", "NotUTF8Error", "check_design_file",
+           "check_input_file", "file_kind", "read_design_text", "read_limited", "utf8_text"]
 
 #: Largest design file (TOML) accepted, in bytes.
 MAX_DESIGN_FILE_BYTES = 4 * 1024 * 1024
@@ -152,6 +153,32 @@ def read_limited(path: str | os.PathLike[str], *, max_bytes: int, what: str) -> 
     return data
 
 
+class NotUTF8Error(ValueError):
+    """Bytes that are not UTF-8 text: :attr:`where` says the first bad byte, its offset and its line
+    (``byte 0x94 at offset 3, line 1``)."""
+
+    def __init__(self, where: str) -> None:
+        super().__init__(f"not a UTF-8 text file: {where}")
+        self.where = where
+
+
+def utf8_text(raw: bytes) -> str:
+    """``raw`` decoded as UTF-8, a byte order mark at its start dropped.
+
+    Raises
+    ------
+    NotUTF8Error
+        Naming the first byte that is not UTF-8, its offset in ``raw`` and its line.
+    """
+    start = len(codecs.BOM_UTF8) if raw.startswith(codecs.BOM_UTF8) else 0
+    try:
+        return raw[start:].decode("utf-8")
+    except UnicodeDecodeError as exc:
+        at = start + exc.start
+        line = raw.count(b"\n", 0, at) + 1
+        raise NotUTF8Error(f"byte 0x{raw[at]:02x} at offset {at}, line {line}") from None
+
+
 class DesignInputError(InputFileError, DesignFileError):
     """A design file refused by :func:`check_input_file`: both an :class:`InputFileError` and a
     :class:`~regimemap.io.toml_errors.DesignFileError`."""
@@ -197,11 +224,8 @@ def read_design_text(path: str | os.PathLike[str], what: str = "design file") ->
     except InputFileError as exc:
         raise _design_error(exc) from None
     try:
-        text = data.decode("utf-8-sig")
-    except UnicodeDecodeError as exc:
-        at = exc.start
-        line = 1 + data[:at].count(b"\n")
-        reason = f"not a UTF-8 text file: byte 0x{data[at]:02x} at offset {at}, line {line}"
+        text = utf8_text(data)
+    except NotUTF8Error as exc:
         p = os.fspath(path)
-        raise _design_error(InputFileError(p, what, reason, f"{what} {p!r}: {reason}")) from None
+        raise _design_error(InputFileError(p, what, str(exc), f"{what} {p!r}: {exc}")) from None
     return text.replace("\r\n", "\n").replace("\r", "\n")
